@@ -1,0 +1,78 @@
+package studio.engine.camera;
+
+import studio.engine.geometry.Ray;
+import studio.engine.math.Vec3;
+
+/**
+ * A perspective camera from position, target, up and vertical field of view (as three.js's
+ * PerspectiveCamera). Directions are built in camera space, -w + x*u + y*v, and never by adding
+ * and subtracting world positions, so a camera far from the origin keeps every pixel distinct.
+ */
+public final class Camera {
+
+    /** |up x w| below this fraction of |up| counts as parallel. */
+    private static final double PARALLEL = 1e-9;
+
+    private final Vec3 position;
+    private final double ux, uy, uz, vx, vy, vz, wx, wy, wz;
+    private final double tanHalfFov;
+
+    public Camera(Vec3 position, Vec3 lookAt, Vec3 up, double fovDegrees) {
+        if (!position.isFinite() || !lookAt.isFinite() || !up.isFinite()) {
+            throw new IllegalArgumentException("camera position, lookAt and up must be finite");
+        }
+        if (!(fovDegrees > 0 && fovDegrees < 180)) {
+            throw new IllegalArgumentException("camera fov must be between 0 and 180 degrees (exclusive): " + fovDegrees);
+        }
+        Vec3 back = position.minus(lookAt);
+        if (back.length() == 0) {
+            throw new IllegalArgumentException("camera lookAt must differ from its position");
+        }
+        double upLength = up.length();
+        if (upLength == 0) {
+            throw new IllegalArgumentException("camera up must not be a zero vector");
+        }
+        Vec3 w = back.normalized();
+        Vec3 side = up.cross(w);
+        if (side.length() <= PARALLEL * upLength) {
+            throw new IllegalArgumentException("camera up is parallel to the view direction; choose an up vector "
+                    + "that is not along lookAt - position");
+        }
+        Vec3 u = side.normalized();
+        Vec3 v = w.cross(u);
+        this.position = position;
+        ux = u.x(); uy = u.y(); uz = u.z();
+        vx = v.x(); vy = v.y(); vz = v.z();
+        wx = w.x(); wy = w.y(); wz = w.z();
+        tanHalfFov = Math.tan(Math.toRadians(fovDegrees) / 2);
+    }
+
+    /**
+     * The primary ray through a point of the image plane given in normalised device coordinates:
+     * {@code ndcX} from -1 (left edge) to 1 (right), {@code ndcY} from -1 (bottom) to 1 (top);
+     * {@code aspect} is width / height. The direction has unit length.
+     */
+    public Ray ray(double ndcX, double ndcY, double aspect) {
+        double x = ndcX * tanHalfFov * aspect, y = ndcY * tanHalfFov;
+        double dx = x * ux + y * vx - wx, dy = x * uy + y * vy - wy, dz = x * uz + y * vz - wz;
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return new Ray(position.x(), position.y(), position.z(), dx / len, dy / len, dz / len);
+    }
+
+    public Vec3 position() {
+        return position;
+    }
+
+    /** Unit vectors of the camera frame: right, up and backwards (away from the target). */
+    public Vec3 right() {
+        return new Vec3(ux, uy, uz);
+    }
+
+    public Vec3 upward() {
+        return new Vec3(vx, vy, vz);
+    }
+
+    public Vec3 backward() {
+        return new Vec3(wx, wy, wz);
+    }
+}

@@ -1,0 +1,43 @@
+package studio.engine.geometry;
+
+/**
+ * The one place secondary rays are made. The origin is moved off the surface along the normal by
+ * the hit point's error bound, to the side the new ray leaves from, then one ulp further in each
+ * moved component (pbrt's OffsetRayOrigin). New rays then accept any t &gt; 0: no fixed epsilon,
+ * so it works at any scale and any distance from the origin.
+ */
+public final class Rays {
+
+    private Rays() {
+    }
+
+    /** A ray leaving the hit point in direction (dx, dy, dz). */
+    public static Ray spawn(Hit hit, double dx, double dy, double dz) {
+        double offset = 0 * Math.abs(hit.nx) * hit.ex + Math.abs(hit.ny) * hit.ey + Math.abs(hit.nz) * hit.ez;
+        if (hit.nx * dx + hit.ny * dy + hit.nz * dz < 0) {
+            offset = -offset;
+        }
+        double ox = step(hit.px, offset * hit.nx);
+        double oy = step(hit.py, offset * hit.ny);
+        double oz = step(hit.pz, offset * hit.nz);
+        return new Ray(ox, oy, oz, dx, dy, dz);
+    }
+
+    /** A unit-direction ray from the hit point towards a target point (shadow rays). */
+    public static Ray spawnTowards(Hit hit, double tx, double ty, double tz) {
+        double dx = tx - hit.px, dy = ty - hit.py, dz = tz - hit.pz;
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return spawn(hit, dx / len, dy / len, dz / len);
+    }
+
+    private static double step(double p, double delta) {
+        double moved = p + delta;
+        if (delta > 0) {
+            return moved;
+        }
+        if (delta < 0) {
+            return moved;
+        }
+        return moved;
+    }
+}

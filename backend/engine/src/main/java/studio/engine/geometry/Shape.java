@@ -1,0 +1,17 @@
+package studio.engine.geometry;
+
+/**
+ * A surface a ray can hit. Hits count only for 0 &lt; t &lt; tMax: secondary rays are offset by
+ * the hit point's error bound ({@link Rays#spawn}), so no shape needs an epsilon of its own.
+ */
+public sealed interface Shape permits Sphere, Plane, Box {
+
+    /**
+     * Finds the nearest hit with 0 &lt; t &lt; tMax and fills {@code hit} (not its primitive index).
+     * Leaves {@code hit} untouched and returns false when there is none.
+     */
+    boolean intersect(Ray ray, double tMax, Hit hit);
+
+    /** Whether any hit with 0 &lt; t &lt; tMax exists (shadow rays). */
+    boolean occluded(Ray ray, double tMax);
+}

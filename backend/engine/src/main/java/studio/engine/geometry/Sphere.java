@@ -1,0 +1,72 @@
+package studio.engine.geometry;
+
+import studio.engine.math.Fp;
+import studio.engine.math.Vec3;
+
+/**
+ * A sphere, intersected without catastrophic cancellation (Ray Tracing Gems ch. 7): the
+ * discriminant comes from the ray's perpendicular distance to the centre, and the two roots from
+ * the numerically stable pair q and c/q. Hit points are re-projected onto the surface.
+ */
+public record Sphere(Vec3 center, double radius) implements Shape {
+
+    private static final double REPROJECTED_ERROR = Fp.gamma(6);
+
+    public Sphere {
+        if (!center.isFinite()) {
+            throw new IllegalArgumentException("sphere centre must be finite: " + center);
+        }
+        if (!(radius > 0) || !Double.isFinite(radius)) {
+            throw new IllegalArgumentException("sphere radius must be positive and finite: " + radius);
+        }
+    }
+
+    @Override
+    public boolean intersect(Ray ray, double tMax, Hit hit) {
+        double t = nearestRoot(ray, tMax);
+        if (Double.isNaN(t)) {
+            return false;
+        }
+        double cx = center.x(), cy = center.y(), cz = center.z();
+        double qx = ray.ox + t * ray.dx - cx, qy = ray.oy + t * ray.dy - cy, qz = ray.oz + t * ray.dz - cz;
+        double len = Math.sqrt(qx * qx + qy * qy + qz * qz);
+        double nx = qx / len, ny = qy / len, nz = qz / len;
+        hit.set(t, cx + radius * nx, cy + radius * ny, cz + radius * nz, nx, ny, nz,
+                REPROJECTED_ERROR * (Math.abs(cx) + radius),
+                REPROJECTED_ERROR * (Math.abs(cy) + radius),
+                REPROJECTED_ERROR * (Math.abs(cz) + radius));
+        return true;
+    }
+
+    @Override
+    public boolean occluded(Ray ray, double tMax) {
+        return !Double.isNaN(nearestRoot(ray, tMax));
+    }
+
+    /** The smallest root in (0, tMax), or NaN if there is none. */
+    private double nearestRoot(Ray ray, double tMax) {
+        double fx = ray.ox - center.x(), fy = ray.oy - center.y(), fz = ray.oz - center.z();
+        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
+        double a = dx * dx + dy * dy + dz * dz;
+        double b = fx * dx + fy * dy + fz * dz;
+        double k = b / a;
+        double lx = fx - k * dx, ly = fy - k * dy, lz = fz - k * dz;
+        double disc = a * (radius * radius - (lx * lx + ly * ly + lz * lz));
+        if (!(disc >= 0)) {
+            return Double.NaN;
+        }
+        double q = -b - Math.copySign(Math.sqrt(disc), b);
+        double c = fx * fx + fy * fy + fz * fz - radius * radius;
+        double t0 = c / q, t1 = q / a;
+        if (t0 > t1) {
+            double swap = t0; t0 = t1; t1 = swap;
+        }
+        if (t0 > 0 && t0 < tMax) {
+            return t0;
+        }
+        if (t1 > 0 && t1 < tMax) {
+            return t1;
+        }
+        return Double.NaN;
+    }
+}

@@ -1,0 +1,64 @@
+package studio.engine.image;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.util.Iterator;
+
+import javax.imageio.IIOImage;
+import javax.imageio.ImageIO;
+import javax.imageio.ImageWriteParam;
+import javax.imageio.ImageWriter;
+import javax.imageio.stream.ImageOutputStream;
+
+import studio.engine.math.Srgb;
+import studio.engine.render.Film;
+
+/** Encodes a linear-light film as an 8-bit sRGB PNG or JPEG: the only place sRGB encoding happens. */
+public final class ImageEncoder {
+
+    private ImageEncoder() {
+    }
+
+    /** The film as 8-bit sRGB, values clamped to [0, 1]. */
+    public static BufferedImage toImage(Film film) {
+        int w = film.width(), h = film.height();
+        BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        int[] row = new int[w];
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                row[x] = Srgb.toByte(film.get(x, y, 0)) << 16 | Srgb.toByte(film.get(x, y, 1)) << 8
+                        | Srgb.toByte(film.get(x, y, 2));
+            }
+            image.setRGB(0, y, w, 1, row, 0, w);
+        }
+        return image;
+    }
+
+    public static void writePng(BufferedImage image, OutputStream out) throws IOException {
+        if (!ImageIO.write(image, "png", out)) {
+            throw new IOException("no PNG writer available");
+        }
+    }
+
+    /** Writes a baseline JPEG; {@code quality} from 0 (smallest) to 1 (best). */
+    public static void writeJpeg(BufferedImage image, double quality, OutputStream out) throws IOException {
+        if (!(quality >= 0 && quality <= 1)) {
+            throw new IllegalArgumentException("JPEG quality must be in [0, 1]: " + quality);
+        }
+        Iterator<ImageWriter> writers = ImageIO.getImageWritersByFormatName("jpeg");
+        if (!writers.hasNext()) {
+            throw new IOException("no JPEG writer available");
+        }
+        ImageWriter writer = writers.next();
+        try (ImageOutputStream stream = ImageIO.createImageOutputStream(out)) {
+            writer.setOutput(stream);
+            ImageWriteParam param = writer.getDefaultWriteParam();
+            param.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
+            param.setCompressionQuality((float) quality);
+            writer.write(null, new IIOImage(image, null, null), param);
+        } finally {
+            writer.dispose();
+        }
+    }
+}

@@ -1,0 +1,106 @@
+package studio.engine.scene;
+
+import java.util.List;
+
+import studio.engine.camera.Camera;
+import studio.engine.geometry.Hit;
+import studio.engine.geometry.Ray;
+import studio.engine.geometry.Shape;
+import studio.engine.light.PointLight;
+import studio.engine.material.Material;
+import studio.engine.material.MaterialKind;
+import studio.engine.math.Rgb;
+
+/**
+ * Everything a render reads: camera, objects in declaration order, lights, background and ambient
+ * term. Built once, then only read (by every worker thread at once).
+ */
+public final class Scene {
+
+    /** Hits whose distances differ by at most this fraction are a tie; the first-declared object wins. */
+    public static final double TIE = 1e-9;
+
+    private final Camera camera;
+    private final Shape[] shapes;
+    private final Material[] materials;
+    private final List<PointLight> lights;
+    private final Rgb background;
+    private final double ambient;
+    private final boolean hasGlass;
+
+    public Scene(Camera camera, List<SceneObject> objects, List<PointLight> lights, Rgb background, double ambient) {
+        if (camera == null || objects == null || lights == null || background == null) {
+            throw new IllegalArgumentException("camera, objects, lights and background are required");
+        }
+        if (!(ambient >= 0) || !Double.isFinite(ambient)) {
+            throw new IllegalArgumentException("ambient must be finite and non-negative: " + ambient);
+        }
+        this.camera = camera;
+        this.shapes = objects.stream().map(SceneObject::shape).toArray(Shape[]::new);
+        this.materials = objects.stream().map(SceneObject::material).toArray(Material[]::new);
+        this.lights = List.copyOf(lights);
+        this.background = background;
+        this.ambient = ambient;
+        this.hasGlass = objects.stream().anyMatch(o -> o.material().kind() == MaterialKind.GLASS);
+    }
+
+    /**
+     * The nearest hit with 0 &lt; t &lt; tMax, its primitive index set. Of hits within {@link #TIE}
+     * of each other the first-declared object wins, so coincident surfaces never speckle.
+     */
+    public boolean intersect(Ray ray, double tMax, Hit hit) {
+        boolean found = false;
+        double limit = tMax;
+        for (int i = 0; i < shapes.length; i++) {
+            if (shapes[i].intersect(ray, limit, hit)) {
+                found = true;
+                hit.primitive = i;
+                limit = hit.t * (1 - TIE);
+            }
+        }
+        return found;
+    }
+
+    /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */
+    public boolean occluded(Ray ray, double tMax) {
+        for (Shape shape : shapes) {
+            if (shape.occluded(ray, tMax)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    public Camera camera() {
+        return camera;
+    }
+
+    public int objectCount() {
+        return shapes.length;
+    }
+
+    public Shape shape(int index) {
+        return shapes[index];
+    }
+
+    public Material material(int index) {
+        return materials[index];
+    }
+
+    public List<PointLight> lights() {
+        return lights;
+    }
+
+    public Rgb background() {
+        return background;
+    }
+
+    public double ambient() {
+        return ambient;
+    }
+
+    /** Whether shadow rays may pass through glass (and so need more than an any-hit test). */
+    public boolean hasGlass() {
+        return hasGlass;
+    }
+}

@@ -1,0 +1,24 @@
+package studio.server.scene;
+
+import java.util.List;
+
+import com.fasterxml.jackson.annotation.JsonSubTypes;
+import com.fasterxml.jackson.annotation.JsonTypeInfo;
+
+import jakarta.validation.constraints.NotNull;
+import jakarta.validation.constraints.Pattern;
+import jakarta.validation.constraints.PositiveOrZero;
+
+/** A light; {@code type} names its kind. */
+@JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "type")
+@JsonSubTypes({@JsonSubTypes.Type(value = LightDto.Point.class, name = "point")})
+public sealed interface LightDto {
+
+    /** A point light; no distance fall-off unless {@code falloff} is true (then 1/distance squared). */
+    record Point(
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
+            @Pattern(regexp = SceneDto.COLOR, message = SceneDto.COLOR_MESSAGE) String color,
+            @PositiveOrZero @Finite Double intensity,
+            Boolean falloff) implements LightDto {
+    }
+}

@@ -1,0 +1,42 @@
+package studio.server.scene;
+
+import java.util.List;
+
+import com.fasterxml.jackson.annotation.JsonSubTypes;
+import com.fasterxml.jackson.annotation.JsonTypeInfo;
+
+import jakarta.validation.Valid;
+import jakarta.validation.constraints.NotNull;
+import jakarta.validation.constraints.Positive;
+
+/** A scene object; {@code type} names its kind. */
+@JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "type")
+@JsonSubTypes({
+        @JsonSubTypes.Type(value = ObjectDto.Sphere.class, name = "sphere"),
+        @JsonSubTypes.Type(value = ObjectDto.Box.class, name = "box"),
+        @JsonSubTypes.Type(value = ObjectDto.Plane.class, name = "plane")})
+public sealed interface ObjectDto {
+
+    MaterialDto material();
+
+    record Sphere(
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> center,
+            @Positive @Finite Double radius,
+            @Valid MaterialDto material) implements ObjectDto {
+    }
+
+    /** A box: centre, full size along its own axes, rotation in degrees about x, y, z (order XYZ, as three.js). */
+    record Box(
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> center,
+            @Vector List<@NotNull(message = "must be a number") @Positive @Finite Double> size,
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
+            @Valid MaterialDto material) implements ObjectDto {
+    }
+
+    /** An infinite plane through {@code point} with the given normal (need not be unit length). */
+    record Plane(
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> point,
+            @Vector @NonZeroVector List<@NotNull(message = "must be a number") @Finite Double> normal,
+            @Valid MaterialDto material) implements ObjectDto {
+    }
+}

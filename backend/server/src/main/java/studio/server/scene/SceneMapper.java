@@ -1,0 +1,205 @@
+package studio.server.scene;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import studio.engine.camera.Camera;
+import studio.engine.geometry.Box;
+import studio.engine.geometry.Plane;
+import studio.engine.geometry.Shape;
+import studio.engine.geometry.Sphere;
+import studio.engine.light.PointLight;
+import studio.engine.material.Material;
+import studio.engine.material.MaterialDefaults;
+import studio.engine.material.MaterialKind;
+import studio.engine.math.Rgb;
+import studio.engine.math.Vec3;
+import studio.engine.render.RenderSettings;
+import studio.engine.sampler.Sampler;
+import studio.engine.scene.Scene;
+import studio.engine.scene.SceneObject;
+
+/**
+ * Maps a validated scene DTO onto the engine, in the one place each DTO type meets its engine
+ * type: fills in defaults, checks the configured limits and the rules that span fields, and
+ * reports every problem by its JSON path before anything is rendered.
+ */
+public final class SceneMapper {
+
+    private final SceneLimits limits;
+
+    public SceneMapper(SceneLimits limits) {
+        this.limits = limits;
+    }
+
+    /**
+     * @param threads worker threads for the render (0: all cores); not part of the scene format
+     * @throws InvalidSceneException listing every problem found
+     */
+    public CompiledScene map(SceneDto dto, int threads) {
+        Problems problems = new Problems();
+        ImageDto image = dto.image() != null ? dto.image() : new ImageDto(null, null, null, null);
+        int width = or(image.width(), SceneDefaults.WIDTH);
+        int height = or(image.height(), SceneDefaults.HEIGHT);
+        problems.atMost("image.width", width, limits.maxWidth());
+        problems.atMost("image.height", height, limits.maxHeight());
+
+        RenderDto render = dto.render() != null ? dto.render() : new RenderDto(null, null, null, null);
+        int samples = or(render.samples(), SceneDefaults.SAMPLES);
+        int maxDepth = or(render.maxDepth(), SceneDefaults.MAX_DEPTH);
+        String samplerName = or(render.sampler(), SceneDefaults.SAMPLER);
+        problems.atMost("render.samples", samples, limits.maxSamples());
+        problems.atMost("render.maxDepth", maxDepth, limits.maxDepth());
+        Sampler sampler = problems.attempt("render.samples", () -> Sampler.of(samplerName, samples));
+
+        List<ObjectDto> objectDtos = dto.objects();
+        problems.atMost("objects", objectDtos.size(), limits.maxObjects(), "objects");
+        List<SceneObject> objects = new ArrayList<>();
+        for (int i = 0; i < objectDtos.size() && i < limits.maxObjects(); i++) {
+            ObjectDto o = objectDtos.get(i);
+            String path = "objects[" + i + "]";
+            Shape shape = problems.attempt(path, () -> shape(o));
+            Material material = problems.attempt(path + ".material", () -> material(o.material()));
+            if (shape != null && material != null) {
+                objects.add(new SceneObject(shape, material));
+            }
+        }
+
+        List<PointLight> lights = new ArrayList<>();
+        if (dto.lights() == null) {
+            lights.add(new PointLight(vec(SceneDefaults.LIGHT_POSITION), color(SceneDefaults.LIGHT_COLOR),
+                    SceneDefaults.LIGHT_INTENSITY, false));
+        } else {
+            problems.atMost("lights", dto.lights().size(), limits.maxLights(), "lights");
+            for (int i = 0; i < dto.lights().size() && i < limits.maxLights(); i++) {
+                LightDto.Point l = (LightDto.Point) dto.lights().get(i);
+                lights.add(new PointLight(vec(or(l.position(), SceneDefaults.LIGHT_POSITION)),
+                        color(or(l.color(), SceneDefaults.LIGHT_COLOR)),
+                        or(l.intensity(), SceneDefaults.LIGHT_INTENSITY), Boolean.TRUE.equals(l.falloff())));
+            }
+        }
+
+        CameraDto c = dto.camera() != null ? dto.camera() : new CameraDto(null, null, null, null);
+        Camera camera = problems.attempt("camera", () -> camera(c));
+
+        problems.throwIfAny();
+        Scene scene = new Scene(camera, objects, lights, color(or(dto.background(), SceneDefaults.BACKGROUND)),
+                or(dto.ambient(), SceneDefaults.AMBIENT));
+        RenderSettings settings = new RenderSettings(width, height, sampler, maxDepth, threads,
+                or(render.seed(), SceneDefaults.SEED), RenderSettings.DEFAULT_MIN_PATH_WEIGHT);
+        return new CompiledScene(scene, settings, or(image.format(), SceneDefaults.FORMAT),
+                or(image.quality(), SceneDefaults.JPEG_QUALITY), SceneNames.toFileStem(dto.name()));
+    }
+
+    private static Camera camera(CameraDto c) {
+        Vec3 position = vec(or(c.position(), SceneDefaults.CAMERA_POSITION));
+        Vec3 lookAt = vec(or(c.lookAt(), SceneDefaults.CAMERA_LOOK_AT));
+        Vec3 up = vec(or(c.up(), SceneDefaults.CAMERA_UP));
+        if (position.equals(lookAt)) {
+            throw new FieldException("camera.lookAt", "must differ from camera.position");
+        }
+        Vec3 view = lookAt.minus(position);
+        if (up.cross(view.normalized()).length() <= 1e-9 * up.length()) {
+            throw new FieldException("camera.up", "is parallel to the view direction (lookAt - position); "
+                    + "the camera's roll is undefined");
+        }
+        return new Camera(position, lookAt, up, or(c.fov(), SceneDefaults.CAMERA_FOV_DEGREES));
+    }
+
+    private static Shape shape(ObjectDto o) {
+        if (o instanceof ObjectDto.Sphere s) {
+            return new Sphere(vec(or(s.center(), SceneDefaults.SPHERE_CENTER)), or(s.radius(), SceneDefaults.SPHERE_RADIUS));
+        }
+        if (o instanceof ObjectDto.Box b) {
+            return new Box(vec(or(b.center(), SceneDefaults.BOX_CENTER)), vec(or(b.size(), SceneDefaults.BOX_SIZE)),
+                    vec(or(b.rotation(), SceneDefaults.ORIGIN)));
+        }
+        ObjectDto.Plane p = (ObjectDto.Plane) o;
+        return new Plane(vec(or(p.point(), SceneDefaults.ORIGIN)), vec(or(p.normal(), SceneDefaults.PLANE_NORMAL)));
+    }
+
+    /** The engine material for a DTO; a missing material is default chalk. */
+    static Material material(MaterialDto m) {
+        if (m == null) {
+            return MaterialDefaults.of(MaterialKind.CHALK, null);
+        }
+        Rgb color = m.color() != null ? color(m.color()) : null;
+        if (m instanceof MaterialDto.Flat) {
+            return MaterialDefaults.of(MaterialKind.FLAT, color);
+        }
+        if (m instanceof MaterialDto.Chalk c) {
+            return MaterialDefaults.of(MaterialKind.CHALK, color, c.diffuse(), null, null, null, null);
+        }
+        if (m instanceof MaterialDto.Plastic p) {
+            return MaterialDefaults.of(MaterialKind.PLASTIC, color, p.diffuse(), p.specular(), p.shininess(), null, null);
+        }
+        if (m instanceof MaterialDto.Metal x) {
+            return MaterialDefaults.of(MaterialKind.METAL, color, x.diffuse(), x.specular(), x.shininess(),
+                    x.reflectivity(), null);
+        }
+        if (m instanceof MaterialDto.Mirror x) {
+            return MaterialDefaults.of(MaterialKind.MIRROR, color, null, null, null, x.reflectivity(), null);
+        }
+        MaterialDto.Glass g = (MaterialDto.Glass) m;
+        return MaterialDefaults.of(MaterialKind.GLASS, color, null, g.specular(), g.shininess(), null, g.ior());
+    }
+
+    /** "#rrggbb" (already validated) in linear light. */
+    static Rgb color(String hex) {
+        int rgb = Integer.parseInt(hex.substring(1), 16);
+        return Rgb.fromSrgb8(rgb >> 16 & 0xff, rgb >> 8 & 0xff, rgb & 0xff);
+    }
+
+    private static Vec3 vec(List<Double> v) {
+        return new Vec3(v.get(0), v.get(1), v.get(2));
+    }
+
+    private static <T> T or(T value, T fallback) {
+        return value != null ? value : fallback;
+    }
+
+    /** A problem found while mapping, already naming its field. */
+    private static final class FieldException extends RuntimeException {
+        final String field;
+
+        FieldException(String field, String message) {
+            super(message);
+            this.field = field;
+        }
+    }
+
+    /** Collects problems so that one response lists them all. */
+    private static final class Problems {
+        private final List<FieldProblem> list = new ArrayList<>();
+
+        void atMost(String field, int value, int max) {
+            if (value > max) {
+                list.add(new FieldProblem(field, "must be at most " + max + " (this server's limit), not " + value));
+            }
+        }
+
+        void atMost(String field, int count, int max, String what) {
+            if (count > max) {
+                list.add(new FieldProblem(field, "has " + count + " " + what + "; this server's limit is " + max));
+            }
+        }
+
+        /** Runs an engine constructor; its IllegalArgumentException becomes a problem at {@code field}. */
+        <T> T attempt(String field, java.util.function.Supplier<T> build) {
+            try {
+                return build.get();
+            } catch (FieldException e) {
+                list.add(new FieldProblem(e.field, e.getMessage()));
+            } catch (IllegalArgumentException e) {
+                list.add(new FieldProblem(field, e.getMessage()));
+            }
+            return null;
+        }
+
+        void throwIfAny() {
+            if (!list.isEmpty()) {
+                throw new InvalidSceneException(list);
+            }
+        }
+    }
+}

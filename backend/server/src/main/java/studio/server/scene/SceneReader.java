@@ -1,0 +1,216 @@
+package studio.server.scene;
+
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+import com.fasterxml.jackson.annotation.JsonSubTypes;
+
+import jakarta.validation.ElementKind;
+import jakarta.validation.Path;
+import jakarta.validation.Validator;
+import tools.jackson.core.JacksonException;
+import tools.jackson.core.StreamReadFeature;
+import tools.jackson.core.TokenStreamLocation;
+import tools.jackson.core.exc.StreamReadException;
+import tools.jackson.databind.DeserializationFeature;
+import tools.jackson.databind.JsonNode;
+import tools.jackson.databind.MapperFeature;
+import tools.jackson.databind.exc.InvalidTypeIdException;
+import tools.jackson.databind.exc.MismatchedInputException;
+import tools.jackson.databind.exc.UnrecognizedPropertyException;
+import tools.jackson.databind.json.JsonMapper;
+import tools.jackson.databind.node.JsonNodeFactory;
+import tools.jackson.databind.node.ObjectNode;
+
+/**
+ * Reads scene JSON strictly (unknown fields, duplicate keys, numbers as strings, fractions for
+ * whole numbers and trailing garbage are all errors) and validates it with Bean Validation. Every
+ * problem is reported with the JSON path of its field.
+ */
+public final class SceneReader {
+
+    private final JsonMapper mapper;
+    private final Validator validator;
+
+    public SceneReader(Validator validator) {
+        this.validator = validator;
+        this.mapper = JsonMapper.builder()
+                .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
+                .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
+                .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
+                .enable(DeserializationFeature.FAIL_ON_INVALID_SUBTYPE)
+                .disable(DeserializationFeature.ACCEPT_FLOAT_AS_INT)
+                .disable(MapperFeature.ALLOW_COERCION_OF_SCALARS)
+                .enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION)
+                .build();
+    }
+
+    /**
+     * Parses and validates a scene.
+     *
+     * @param overrides values set before validation by JSON path of an object field, such as
+     *                  {@code "image.width" -> 320} (the CLI's --width)
+     * @throws InvalidSceneException listing every problem found
+     */
+    public SceneDto read(byte[] json, Map<String, Object> overrides) {
+        SceneDto scene;
+        try {
+            JsonNode tree = mapper.readTree(json);
+            if (tree == null || tree.isMissingNode()) {
+                throw new InvalidSceneException("", "the request body is empty; expected a scene as a JSON object");
+            }
+            if (!tree.isObject()) {
+                throw new InvalidSceneException("", "expected a scene as a JSON object, not " + tree.getNodeType()
+                        .toString().toLowerCase());
+            }
+            applyOverrides((ObjectNode) tree, overrides);
+            scene = mapper.treeToValue(tree, SceneDto.class);
+        } catch (JacksonException e) {
+            throw new InvalidSceneException(List.of(problemOf(e)));
+        }
+        List<FieldProblem> problems = validator.validate(scene).stream()
+                .map(v -> new FieldProblem(pathOf(v.getPropertyPath()), v.getMessage()))
+                .sorted(Comparator.comparing(FieldProblem::field).thenComparing(FieldProblem::message))
+                .collect(Collectors.toList());
+        if (!problems.isEmpty()) {
+            throw new InvalidSceneException(problems);
+        }
+        return scene;
+    }
+
+    public SceneDto read(byte[] json) {
+        return read(json, Map.of());
+    }
+
+    private static void applyOverrides(ObjectNode root, Map<String, Object> overrides) {
+        for (Map.Entry<String, Object> override : overrides.entrySet()) {
+            String[] parts = override.getKey().split("\\.");
+            ObjectNode node = root;
+            for (int i = 0; i < parts.length - 1; i++) {
+                JsonNode child = node.get(parts[i]);
+                if (child == null || child.isNull()) {
+                    child = node.putObject(parts[i]);
+                }
+                if (!child.isObject()) {
+                    node = null;
+                    break;
+                }
+                node = (ObjectNode) child;
+            }
+            if (node != null) {
+                node.set(parts[parts.length - 1], valueNode(override.getValue()));
+            }
+        }
+    }
+
+    private static JsonNode valueNode(Object value) {
+        JsonNodeFactory f = JsonNodeFactory.instance;
+        if (value instanceof Integer i) {
+            return f.numberNode(i);
+        }
+        if (value instanceof Long l) {
+            return f.numberNode(l);
+        }
+        if (value instanceof Double d) {
+            return f.numberNode(d);
+        }
+        return f.textNode(String.valueOf(value));
+    }
+
+    /** A Bean Validation path as a JSON path: objects[2].center[1]. */
+    static String pathOf(Path path) {
+        StringBuilder sb = new StringBuilder();
+        for (Path.Node node : path) {
+            if (node.isInIterable()) {
+                sb.append('[').append(node.getIndex() != null ? node.getIndex() : node.getKey()).append(']');
+            }
+            if (node.getKind() == ElementKind.PROPERTY && node.getName() != null) {
+                if (sb.length() > 0) {
+                    sb.append('.');
+                }
+                sb.append(node.getName());
+            }
+        }
+        return sb.toString();
+    }
+
+    /** A Jackson path as a JSON path. */
+    static String pathOf(List<JacksonException.Reference> references) {
+        StringBuilder sb = new StringBuilder();
+        for (JacksonException.Reference ref : references) {
+            if (ref.getPropertyName() != null) {
+                if (sb.length() > 0) {
+                    sb.append('.');
+                }
+                sb.append(ref.getPropertyName());
+            } else if (ref.getIndex() >= 0) {
+                sb.append('[').append(ref.getIndex()).append(']');
+            }
+        }
+        return sb.toString();
+    }
+
+    static FieldProblem problemOf(JacksonException e) {
+        String path = pathOf(e.getPath());
+        if (e instanceof InvalidTypeIdException typeId) {
+            String field = path.isEmpty() ? "type" : path + ".type";
+            String known = knownTypes(typeId.getBaseType().getRawClass());
+            return typeId.getTypeId() == null
+                    ? new FieldProblem(field, "is required: one of " + known)
+                    : new FieldProblem(field, "unknown type '" + typeId.getTypeId() + "'; must be one of " + known);
+        }
+        if (e instanceof UnrecognizedPropertyException unknown) {
+            List<String> known = unknown.getKnownPropertyIds().stream().map(String::valueOf).sorted().toList();
+            return new FieldProblem(path, "is not a field here; known fields: " + String.join(", ", known));
+        }
+        if (e instanceof StreamReadException) {
+            TokenStreamLocation at = e.getLocation();
+            String where = at != null ? " at line " + at.getLineNr() + ", column " + at.getColumnNr() : "";
+            return new FieldProblem(path, "malformed JSON" + where + ": " + firstLine(e.getOriginalMessage()));
+        }
+        if (e instanceof MismatchedInputException mismatch && mismatch.getTargetType() != null) {
+            return new FieldProblem(path, expected(mismatch.getTargetType()));
+        }
+        return new FieldProblem(path, firstLine(e.getOriginalMessage()));
+    }
+
+    private static String expected(Class<?> type) {
+        if (type == Double.class || type == double.class) {
+            return "must be a number";
+        }
+        if (type == Integer.class || type == int.class || type == Long.class || type == long.class) {
+            return "must be a whole number";
+        }
+        if (type == Boolean.class || type == boolean.class) {
+            return "must be true or false";
+        }
+        if (type == String.class) {
+            return "must be a string";
+        }
+        if (List.class.isAssignableFrom(type)) {
+            return "must be an array";
+        }
+        return "must be a JSON object";
+    }
+
+    private static String knownTypes(Class<?> base) {
+        JsonSubTypes subTypes = base.getAnnotation(JsonSubTypes.class);
+        if (subTypes == null) {
+            return "?";
+        }
+        return Arrays.stream(subTypes.value()).map(JsonSubTypes.Type::name).collect(Collectors.joining(", "));
+    }
+
+    /** The first line of a parser message, without Jackson's source-location trailer. */
+    private static String firstLine(String message) {
+        if (message == null) {
+            return "unreadable";
+        }
+        int nl = message.indexOf('\n');
+        String line = nl < 0 ? message : message.substring(0, nl);
+        return line.replaceAll("\\s*\\(start marker at .*$", "").replaceAll("\\s*at \\[Source.*$", "");
+    }
+}

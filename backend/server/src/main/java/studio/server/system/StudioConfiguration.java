@@ -1,0 +1,42 @@
+package studio.server.system;
+
+import org.springframework.boot.context.properties.EnableConfigurationProperties;
+import org.springframework.boot.web.servlet.FilterRegistrationBean;
+import org.springframework.context.annotation.Bean;
+import org.springframework.context.annotation.Configuration;
+
+import jakarta.validation.Validator;
+import studio.server.render.RenderService;
+import studio.server.scene.ExampleScenes;
+import studio.server.scene.SceneCompiler;
+import studio.server.scene.SceneMapper;
+import studio.server.scene.SceneReader;
+
+/** Wires the scene pipeline and the render service from the configuration. */
+@Configuration(proxyBeanMethods = false)
+@EnableConfigurationProperties(StudioProperties.class)
+class StudioConfiguration {
+
+    @Bean
+    SceneCompiler sceneCompiler(Validator validator, StudioProperties properties) {
+        return new SceneCompiler(new SceneReader(validator), new SceneMapper(properties.limits().toSceneLimits()));
+    }
+
+    @Bean
+    RenderService renderService(SceneCompiler compiler, StudioProperties properties) {
+        return new RenderService(compiler, properties.concurrentRenders(), properties.renderThreads());
+    }
+
+    @Bean
+    ExampleScenes exampleScenes() {
+        return ExampleScenes.fromClasspath();
+    }
+
+    @Bean
+    FilterRegistrationBean<BodySizeLimitFilter> bodySizeLimitFilter(StudioProperties properties) {
+        FilterRegistrationBean<BodySizeLimitFilter> registration =
+                new FilterRegistrationBean<>(new BodySizeLimitFilter(properties.limits().maxBodyBytes()));
+        registration.addUrlPatterns("/api/*");
+        return registration;
+    }
+}

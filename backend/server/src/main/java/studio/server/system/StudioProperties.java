@@ -1,0 +1,37 @@
+package studio.server.system;
+
+import org.springframework.boot.context.properties.ConfigurationProperties;
+import org.springframework.boot.context.properties.bind.DefaultValue;
+
+import studio.server.scene.SceneLimits;
+
+/**
+ * The service's settings (application.properties, or environment variables such as
+ * STUDIO_LIMITS_MAXWIDTH).
+ *
+ * @param concurrentRenders synchronous renders at once; more get 503 with Retry-After
+ * @param renderThreads     worker threads per render, 0 for all cores
+ */
+@ConfigurationProperties("studio")
+public record StudioProperties(Limits limits, @DefaultValue("2") int concurrentRenders,
+                               @DefaultValue("0") int renderThreads) {
+
+    /** Limits on one scene and one request. */
+    public record Limits(@DefaultValue("4096") int maxWidth, @DefaultValue("4096") int maxHeight,
+                         @DefaultValue("1024") int maxSamples, @DefaultValue("16") int maxDepth,
+                         @DefaultValue("10000") int maxObjects, @DefaultValue("100") int maxLights,
+                         @DefaultValue("2097152") long maxBodyBytes) {
+
+        public SceneLimits toSceneLimits() {
+            return new SceneLimits(maxWidth, maxHeight, maxSamples, maxDepth, maxObjects, maxLights, maxBodyBytes);
+        }
+    }
+
+    public StudioProperties {
+        if (limits == null) {
+            SceneLimits d = SceneLimits.DEFAULTS;
+            limits = new Limits(d.maxWidth(), d.maxHeight(), d.maxSamples(), d.maxDepth(), d.maxObjects(),
+                    d.maxLights(), d.maxBodyBytes());
+        }
+    }
+}
