@@ -1,0 +1,46 @@
+package studio.server.scene;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+
+import jakarta.validation.Validation;
+import jakarta.validation.ValidatorFactory;
+
+/** The scenes/ folder of the repository, for tests. */
+public final class ExampleSceneFiles {
+
+    private ExampleSceneFiles() {
+    }
+
+    public static Path dir() {
+        String configured = System.getProperty("studio.scenesDir");
+        Path dir = configured != null ? Path.of(configured) : Path.of("../../scenes");
+        if (!Files.isDirectory(dir)) {
+            throw new IllegalStateException("cannot find the scenes folder at " + dir.toAbsolutePath());
+        }
+        return dir.normalize();
+    }
+
+    public static List<Path> all() {
+        try (Stream<Path> files = Files.list(dir())) {
+            return files.filter(p -> p.getFileName().toString().endsWith(".json")).sorted().toList();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    public static String stem(Path file) {
+        String name = file.getFileName().toString();
+        return name.substring(0, name.length() - ".json".length());
+    }
+
+    /** A compiler with the default limits, as the CLI builds it. */
+    public static SceneCompiler compiler() {
+        ValidatorFactory factory = Validation.buildDefaultValidatorFactory();
+        return new SceneCompiler(new SceneReader(factory.getValidator()), new SceneMapper(SceneLimits.DEFAULTS));
+    }
+}
