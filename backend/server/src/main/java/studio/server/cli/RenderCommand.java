@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
@@ -119,9 +120,10 @@ public final class RenderCommand {
     private static void writeAtomically(Path output, RenderResult result, String format, double quality)
             throws IOException {
         Path absolute = output.toAbsolutePath();
-        Path temp = Files.createTempFile(absolute.getParent(), ".render-", ".part");
+        // Not Files.createTempFile: its owner-only permissions would carry over to the image.
+        Path temp = absolute.resolveSibling("." + absolute.getFileName() + "." + ProcessHandle.current().pid() + ".part");
         try {
-            try (OutputStream stream = Files.newOutputStream(temp)) {
+            try (OutputStream stream = Files.newOutputStream(temp, StandardOpenOption.CREATE_NEW)) {
                 ImageFiles.write(result.film(), format, quality, stream);
             }
             try {

@@ -5,6 +5,7 @@ import java.util.List;
 import com.fasterxml.jackson.annotation.JsonSubTypes;
 import com.fasterxml.jackson.annotation.JsonTypeInfo;
 
+import jakarta.validation.constraints.DecimalMax;
 import jakarta.validation.constraints.NotNull;
 import jakarta.validation.constraints.Pattern;
 import jakarta.validation.constraints.PositiveOrZero;
@@ -18,7 +19,7 @@ public sealed interface LightDto {
     record Point(
             @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
             @Pattern(regexp = SceneDto.COLOR, message = SceneDto.COLOR_MESSAGE) String color,
-            @PositiveOrZero @Finite Double intensity,
+            @PositiveOrZero @DecimalMax("1e6") @Finite Double intensity,
             Boolean falloff) implements LightDto {
     }
 }

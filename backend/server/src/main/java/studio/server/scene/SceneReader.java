@@ -14,10 +14,14 @@ import jakarta.validation.Validator;
 import tools.jackson.core.JacksonException;
 import tools.jackson.core.StreamReadFeature;
 import tools.jackson.core.TokenStreamLocation;
+import tools.jackson.core.exc.InputCoercionException;
 import tools.jackson.core.exc.StreamReadException;
 import tools.jackson.databind.DeserializationFeature;
 import tools.jackson.databind.JsonNode;
 import tools.jackson.databind.MapperFeature;
+import tools.jackson.databind.cfg.CoercionAction;
+import tools.jackson.databind.cfg.CoercionInputShape;
+import tools.jackson.databind.type.LogicalType;
 import tools.jackson.databind.exc.InvalidTypeIdException;
 import tools.jackson.databind.exc.MismatchedInputException;
 import tools.jackson.databind.exc.UnrecognizedPropertyException;
@@ -45,6 +49,11 @@ public final class SceneReader {
                 .disable(DeserializationFeature.ACCEPT_FLOAT_AS_INT)
                 .disable(MapperFeature.ALLOW_COERCION_OF_SCALARS)
                 .enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION)
+                // a number or boolean where text belongs ("name": 123) is an error, not silently text
+                .withCoercionConfig(LogicalType.Textual, text -> text
+                        .setCoercion(CoercionInputShape.Integer, CoercionAction.Fail)
+                        .setCoercion(CoercionInputShape.Float, CoercionAction.Fail)
+                        .setCoercion(CoercionInputShape.Boolean, CoercionAction.Fail))
                 .build();
     }
 
@@ -166,15 +175,33 @@ public final class SceneReader {
             List<String> known = unknown.getKnownPropertyIds().stream().map(String::valueOf).sorted().toList();
             return new FieldProblem(path, "is not a field here; known fields: " + String.join(", ", known));
         }
-        if (e instanceof StreamReadException) {
+        if (e instanceof InputCoercionException coercion && wholeNumberRange(coercion.getTargetType()) != null) {
+            return new FieldProblem(path, "must be a whole number " + wholeNumberRange(coercion.getTargetType()));
+        }
+        // reading the tree can only mismatch on content after the scene (FAIL_ON_TRAILING_TOKENS)
+        boolean trailing = e instanceof MismatchedInputException m && m.getTargetType() != null
+                && JsonNode.class.isAssignableFrom(m.getTargetType());
+        if (e instanceof StreamReadException || trailing) {
             TokenStreamLocation at = e.getLocation();
             String where = at != null ? " at line " + at.getLineNr() + ", column " + at.getColumnNr() : "";
-            return new FieldProblem(path, "malformed JSON" + where + ": " + firstLine(e.getOriginalMessage()));
+            return new FieldProblem(path, "malformed JSON" + where + ": "
+                    + (trailing ? "unexpected content after the scene's closing '}'" : firstLine(e.getOriginalMessage())));
         }
         if (e instanceof MismatchedInputException mismatch && mismatch.getTargetType() != null) {
             return new FieldProblem(path, expected(mismatch.getTargetType()));
         }
         return new FieldProblem(path, firstLine(e.getOriginalMessage()));
+    }
+
+    /** "from MIN to MAX" for an integer type, else null. */
+    private static String wholeNumberRange(Class<?> type) {
+        if (type == Integer.class || type == int.class) {
+            return "from " + Integer.MIN_VALUE + " to " + Integer.MAX_VALUE;
+        }
+        if (type == Long.class || type == long.class) {
+            return "from " + Long.MIN_VALUE + " to " + Long.MAX_VALUE;
+        }
+        return null;
     }
 
     private static String expected(Class<?> type) {

@@ -1,0 +1,28 @@
+# syntax=docker/dockerfile:1
+# Three stages: Node builds the editor, Maven builds the jar, a JRE runs it as a non-root user.
+
+FROM node:20-bookworm-slim AS editor
+WORKDIR /src/frontend
+COPY frontend/package.json frontend/package-lock.json ./
+RUN npm ci --no-audit --no-fund
+COPY frontend/ ./
+RUN npm run build
+
+FROM maven:3.9-eclipse-temurin-17 AS jar
+WORKDIR /src
+COPY backend/ backend/
+COPY scenes/ scenes/
+COPY --from=editor /src/frontend/dist frontend/dist
+RUN mvn -B -q -f backend/pom.xml package -DskipTests -DskipFrontend
+
+FROM eclipse-temurin:17-jre
+RUN apt-get update && apt-get install -y --no-install-recommends curl && rm -rf /var/lib/apt/lists/* \
+    && useradd --system --uid 10001 --home-dir /app studio
+WORKDIR /app
+COPY --from=jar /src/backend/server/target/studio.jar studio.jar
+USER studio
+EXPOSE 8080
+ENV JAVA_TOOL_OPTIONS="-XX:MaxRAMPercentage=75 -XX:+ExitOnOutOfMemoryError"
+HEALTHCHECK --interval=15s --timeout=3s --start-period=30s --retries=3 \
+    CMD curl -fsS http://localhost:8080/actuator/health || exit 1
+ENTRYPOINT ["java", "-jar", "/app/studio.jar"]

@@ -1,0 +1,378 @@
+package studio.server.render;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.hamcrest.Matchers.containsInAnyOrder;
+import static org.hamcrest.Matchers.containsString;
+import static org.hamcrest.Matchers.hasItem;
+import static org.hamcrest.Matchers.not;
+import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.get;
+import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.post;
+import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.content;
+import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.header;
+import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.jsonPath;
+import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.status;
+
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import javax.imageio.ImageIO;
+
+import org.junit.jupiter.api.Test;
+import org.springframework.beans.factory.annotation.Autowired;
+import org.springframework.boot.test.context.SpringBootTest;
+import org.springframework.boot.test.web.server.LocalServerPort;
+import org.springframework.boot.webmvc.test.autoconfigure.AutoConfigureMockMvc;
+import org.springframework.http.HttpHeaders;
+import org.springframework.http.MediaType;
+import org.springframework.test.web.servlet.MockMvc;
+import org.springframework.test.web.servlet.MvcResult;
+
+import studio.server.scene.ExampleSceneFiles;
+import tools.jackson.databind.json.JsonMapper;
+
+/**
+ * The HTTP API end to end: MockMvc through the whole application (filters, advice, converters),
+ * and a real server on a random port where only a socket shows the behaviour (chunked bodies,
+ * raw headers).
+ */
+@SpringBootTest(webEnvironment = SpringBootTest.WebEnvironment.RANDOM_PORT, properties = {
+        "studio.limits.max-body-bytes=" + RenderApiTest.MAX_BODY_BYTES,
+        "studio.render-threads=2"})
+@AutoConfigureMockMvc
+class RenderApiTest {
+
+    static final int MAX_BODY_BYTES = 4096;
+
+    /** 16x12, one sample: renders in milliseconds. */
+    static final String TINY_SCENE = """
+            {
+              "name": "tiny",
+              "image": { "width": 16, "height": 12 },
+              "camera": { "position": [0, 1.5, 5], "lookAt": [0, 0.8, 0] },
+              "render": { "samples": 1, "maxDepth": 2 },
+              "objects": [
+                { "type": "sphere", "material": { "type": "plastic", "color": "#cc3333" } },
+                { "type": "plane" }
+              ]
+            }
+            """;
+
+    private static final JsonMapper JSON = JsonMapper.builder().build();
+    private static final HttpClient HTTP = HttpClient.newBuilder().version(HttpClient.Version.HTTP_1_1)
+            .connectTimeout(Duration.ofSeconds(5)).build();
+
+    @Autowired
+    MockMvc mvc;
+
+    @LocalServerPort
+    int port;
+
+    private MvcResult render(String scene) throws Exception {
+        return mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(scene)).andReturn();
+    }
+
+    /** The tiny scene with some top-level fields replaced. */
+    private static String tinyWith(Map<String, Object> fields) {
+        @SuppressWarnings("unchecked")
+        Map<String, Object> scene = JSON.readValue(TINY_SCENE, LinkedHashMap.class);
+        scene.putAll(fields);
+        return JSON.writeValueAsString(scene);
+    }
+
+    private static BufferedImage image(byte[] bytes) throws IOException {
+        BufferedImage image = ImageIO.read(new ByteArrayInputStream(bytes));
+        assertThat(image).as("a readable image").isNotNull();
+        return image;
+    }
+
+    private void assertRendersTinyScene() throws Exception {
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(TINY_SCENE))
+                .andExpect(status().isOk())
+                .andExpect(content().contentType(MediaType.IMAGE_PNG));
+    }
+
+    // --- POST /api/render: images ----------------------------------------------------------------
+
+    @Test
+    void rendersPngOfTheScenesSizeAsAttachment() throws Exception {
+        MvcResult result = mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(TINY_SCENE))
+                .andExpect(status().isOk())
+                .andExpect(content().contentType(MediaType.IMAGE_PNG))
+                .andExpect(header().string(HttpHeaders.CONTENT_DISPOSITION, "attachment; filename=\"tiny.png\""))
+                .andExpect(header().string("X-Image-Size", "16x12"))
+                .andExpect(header().exists("X-Render-Millis"))
+                .andExpect(header().exists("X-Rays-Per-Second"))
+                .andReturn();
+        byte[] body = result.getResponse().getContentAsByteArray();
+        assertThat(body).startsWith(0x89, 'P', 'N', 'G');
+        BufferedImage image = image(body);
+        assertThat(image.getWidth()).isEqualTo(16);
+        assertThat(image.getHeight()).isEqualTo(12);
+    }
+
+    @Test
+    void rendersJpegWhenTheSceneAsksForJpg() throws Exception {
+        MvcResult result = mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                        .content(tinyWith(Map.of("image", Map.of("width", 20, "height", 10, "format", "jpg")))))
+                .andExpect(status().isOk())
+                .andExpect(content().contentType(MediaType.IMAGE_JPEG))
+                .andExpect(header().string(HttpHeaders.CONTENT_DISPOSITION, "attachment; filename=\"tiny.jpg\""))
+                .andReturn();
+        byte[] body = result.getResponse().getContentAsByteArray();
+        assertThat(body).startsWith(0xff, 0xd8, 0xff);
+        assertThat(image(body).getWidth()).isEqualTo(20);
+        assertThat(image(body).getHeight()).isEqualTo(10);
+    }
+
+    @Test
+    void namesTheFileRenderWhenTheSceneHasNoName() throws Exception {
+        mvc.perform(post("/api/render").content("{\"image\":{\"width\":4,\"height\":4},\"render\":{\"samples\":1},"
+                        + "\"objects\":[]}"))
+                .andExpect(status().isOk())
+                .andExpect(header().string(HttpHeaders.CONTENT_DISPOSITION, "attachment; filename=\"render.png\""));
+    }
+
+    @Test
+    void sanitisesTheNameInContentDisposition() throws Exception {
+        String evil = "../../etc/passwd\"\r\nX-Evil: 1";
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(tinyWith(Map.of("name", evil))))
+                .andExpect(status().isOk())
+                .andExpect(header().string(HttpHeaders.CONTENT_DISPOSITION,
+                        "attachment; filename=\"etc-passwd-X-Evil-1.png\""))
+                .andExpect(header().doesNotExist("X-Evil"));
+    }
+
+    @Test
+    void sanitisedNameNeverReachesTheWireRaw() throws Exception {
+        String evil = "../../etc/passwd\"\r\nX-Evil: 1";
+        HttpResponse<byte[]> response = send(HttpRequest.newBuilder(uri("/api/render"))
+                .header("Content-Type", "application/json")
+                .POST(HttpRequest.BodyPublishers.ofString(tinyWith(Map.of("name", evil)))).build());
+        assertThat(response.statusCode()).isEqualTo(200);
+        assertThat(response.headers().firstValue("Content-Disposition"))
+                .hasValue("attachment; filename=\"etc-passwd-X-Evil-1.png\"");
+        assertThat(response.headers().map().keySet()).noneMatch(name -> name.equalsIgnoreCase("X-Evil"));
+        assertThat(String.join("\n", response.headers().allValues("Content-Disposition")))
+                .doesNotContain("..").doesNotContain("/").doesNotContain("\r");
+    }
+
+    // --- POST /api/render: problems --------------------------------------------------------------
+
+    @Test
+    void invalidSceneGives400ProblemNamingEachField() throws Exception {
+        String scene = """
+                {"image": {"width": 0}, "background": "red",
+                 "objects": [{"type": "sphere", "radius": -1}, {"type": "box", "size": [1, 0, 1]}]}
+                """;
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(scene))
+                .andExpect(status().isBadRequest())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.status").value(400))
+                .andExpect(jsonPath("$.title").value("Invalid scene"))
+                .andExpect(jsonPath("$.detail").value(containsString("4 problems")))
+                .andExpect(jsonPath("$.errors.length()").value(4))
+                .andExpect(jsonPath("$.errors[*].field").value(containsInAnyOrder(
+                        "image.width", "background", "objects[0].radius", "objects[1].size[1]")))
+                .andExpect(jsonPath("$.errors[?(@.field == 'background')].message")
+                        .value(hasItem("must be a colour of the form #rrggbb")));
+    }
+
+    @Test
+    void singleProblemIsTheDetail() throws Exception {
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                        .content("{\"objects\":[{\"type\":\"cone\"}]}"))
+                .andExpect(status().isBadRequest())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.errors[0].field").value("objects[0].type"))
+                .andExpect(jsonPath("$.errors[0].message").value(containsString("'cone'")))
+                .andExpect(jsonPath("$.detail").value(containsString("objects[0].type: unknown type 'cone'")));
+    }
+
+    @Test
+    void unknownFieldGives400NamingIt() throws Exception {
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                        .content("{\"objects\":[{\"type\":\"sphere\",\"material\":{\"type\":\"chalk\",\"colour\":\"#ffffff\"}}]}"))
+                .andExpect(status().isBadRequest())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.errors[0].field").value("objects[0].material.colour"))
+                .andExpect(jsonPath("$.errors[0].message").value(containsString("color")));
+    }
+
+    @Test
+    void limitOverrunGives400NamingTheField() throws Exception {
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                        .content(tinyWith(Map.of("image", Map.of("width", 5000, "height", 10)))))
+                .andExpect(status().isBadRequest())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.errors[0].field").value("image.width"))
+                .andExpect(jsonPath("$.errors[0].message").value(containsString("4096")));
+    }
+
+    @Test
+    void malformedJsonGives400WithLineAndColumn() throws Exception {
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\": [\n{,"))
+                .andExpect(status().isBadRequest())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.status").value(400))
+                .andExpect(jsonPath("$.errors[0].field").value(""))
+                .andExpect(jsonPath("$.errors[0].message").value(containsString("line 2")));
+    }
+
+    @Test
+    void emptyBodyGives400() throws Exception {
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON))
+                .andExpect(status().isBadRequest())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.errors[0].message").value(containsString("empty")));
+    }
+
+    @Test
+    void serviceStillRendersAfterBadRequests() throws Exception {
+        mvc.perform(post("/api/render").content("[1, 2"))
+                .andExpect(status().isBadRequest());
+        mvc.perform(post("/api/render").content("{\"objects\":[{\"type\":\"sphere\",\"radius\":0}]}"))
+                .andExpect(status().isBadRequest());
+        assertRendersTinyScene();
+    }
+
+    @Test
+    void getOnRenderGives405Problem() throws Exception {
+        mvc.perform(get("/api/render"))
+                .andExpect(status().isMethodNotAllowed())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.status").value(405));
+    }
+
+    // --- body size limit -------------------------------------------------------------------------
+
+    /** A valid scene padded with spaces to {@code bytes} bytes. */
+    private static String sceneOfSize(int bytes) {
+        String scene = "{\"objects\":[]}";
+        return scene + " ".repeat(bytes - scene.length());
+    }
+
+    @Test
+    void bodyOverLimitGives413Problem() throws Exception {
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(sceneOfSize(MAX_BODY_BYTES + 1)))
+                .andExpect(status().isContentTooLarge())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.status").value(413))
+                .andExpect(jsonPath("$.detail").value(containsString(Integer.toString(MAX_BODY_BYTES))));
+        assertRendersTinyScene();
+    }
+
+    @Test
+    void bodyAtLimitIsRead() throws Exception {
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(
+                        tinyWith(Map.of()) + " ".repeat(MAX_BODY_BYTES - tinyWith(Map.of()).length())))
+                .andExpect(status().isOk());
+    }
+
+    @Test
+    void chunkedBodyOverLimitGives413AndServerKeepsAnswering() throws Exception {
+        byte[] big = sceneOfSize(16 * MAX_BODY_BYTES).getBytes(StandardCharsets.UTF_8);
+        HttpResponse<byte[]> response = send(HttpRequest.newBuilder(uri("/api/render"))
+                .header("Content-Type", "application/json")
+                // no length known in advance: sent chunked, so only counting while reading can stop it
+                .POST(HttpRequest.BodyPublishers.ofInputStream(() -> new ByteArrayInputStream(big))).build());
+        assertThat(response.statusCode()).isEqualTo(413);
+        assertThat(response.headers().firstValue("Content-Type")).hasValueSatisfying(
+                type -> assertThat(type).startsWith("application/problem+json"));
+        assertThat(new String(response.body(), StandardCharsets.UTF_8)).contains("\"status\":413");
+
+        HttpResponse<byte[]> after = send(HttpRequest.newBuilder(uri("/api/render"))
+                .header("Content-Type", "application/json")
+                .POST(HttpRequest.BodyPublishers.ofString(TINY_SCENE)).build());
+        assertThat(after.statusCode()).isEqualTo(200);
+        assertThat(image(after.body()).getWidth()).isEqualTo(16);
+    }
+
+    @Test
+    void declaredLengthOverLimitGives413OnTheWire() throws Exception {
+        HttpResponse<byte[]> response = send(HttpRequest.newBuilder(uri("/api/render"))
+                .header("Content-Type", "application/json")
+                .POST(HttpRequest.BodyPublishers.ofString(sceneOfSize(2 * MAX_BODY_BYTES))).build());
+        assertThat(response.statusCode()).isEqualTo(413);
+        assertThat(new String(response.body(), StandardCharsets.UTF_8)).contains("\"status\":413");
+    }
+
+    // --- example scenes --------------------------------------------------------------------------
+
+    @Test
+    void listsEveryExampleScene() throws Exception {
+        List<String> expected = ExampleSceneFiles.all().stream().map(ExampleSceneFiles::stem).toList();
+        assertThat(expected).isNotEmpty();
+        mvc.perform(get("/api/scenes"))
+                .andExpect(status().isOk())
+                .andExpect(content().contentTypeCompatibleWith(MediaType.APPLICATION_JSON))
+                .andExpect(jsonPath("$.length()").value(expected.size()))
+                .andExpect(jsonPath("$[*].name").value(containsInAnyOrder(expected.toArray())));
+    }
+
+    @Test
+    void returnsAnExampleSceneAsItsFile() throws Exception {
+        Path file = ExampleSceneFiles.dir().resolve("still-life.json");
+        MvcResult result = mvc.perform(get("/api/scenes/still-life"))
+                .andExpect(status().isOk())
+                .andExpect(content().contentTypeCompatibleWith(MediaType.APPLICATION_JSON))
+                .andExpect(jsonPath("$.name").value("still-life"))
+                .andReturn();
+        assertThat(result.getResponse().getContentAsByteArray()).isEqualTo(Files.readAllBytes(file));
+    }
+
+    @Test
+    void unknownExampleSceneGives404Problem() throws Exception {
+        mvc.perform(get("/api/scenes/nope"))
+                .andExpect(status().isNotFound())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.status").value(404))
+                .andExpect(jsonPath("$.detail").value(containsString("'nope'")));
+    }
+
+    @Test
+    void exampleSceneNameInProblemIsSanitised() throws Exception {
+        mvc.perform(get("/api/scenes/{name}", "<script>alert(1)</script>"))
+                .andExpect(status().isNotFound())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.detail").value(not(containsString("<"))));
+    }
+
+    // --- everything else -------------------------------------------------------------------------
+
+    @Test
+    void unknownApiPathGives404Problem() throws Exception {
+        mvc.perform(get("/api/nope"))
+                .andExpect(status().isNotFound())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.status").value(404));
+    }
+
+    @Test
+    void healthIsUp() throws Exception {
+        mvc.perform(get("/actuator/health"))
+                .andExpect(status().isOk())
+                .andExpect(jsonPath("$.status").value("UP"));
+    }
+
+    // --- the real server -------------------------------------------------------------------------
+
+    private URI uri(String path) {
+        return URI.create("http://localhost:" + port + path);
+    }
+
+    private static HttpResponse<byte[]> send(HttpRequest request) throws IOException, InterruptedException {
+        return HTTP.send(request, HttpResponse.BodyHandlers.ofByteArray());
+    }
+}
