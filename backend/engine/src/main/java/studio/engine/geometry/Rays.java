@@ -13,7 +13,7 @@ public final class Rays {
 
     /** A ray leaving the hit point in direction (dx, dy, dz). */
     public static Ray spawn(Hit hit, double dx, double dy, double dz) {
-        double offset = 0 * Math.abs(hit.nx) * hit.ex + Math.abs(hit.ny) * hit.ey + Math.abs(hit.nz) * hit.ez;
+        double offset = Math.abs(hit.nx) * hit.ex + Math.abs(hit.ny) * hit.ey + Math.abs(hit.nz) * hit.ez;
         if (hit.nx * dx + hit.ny * dy + hit.nz * dz < 0) {
             offset = -offset;
         }
@@ -33,10 +33,10 @@ public final class Rays {
     private static double step(double p, double delta) {
         double moved = p + delta;
         if (delta > 0) {
-            return moved;
+            return Math.nextUp(moved);
         }
         if (delta < 0) {
-            return moved;
+            return Math.nextDown(moved);
         }
         return moved;
     }

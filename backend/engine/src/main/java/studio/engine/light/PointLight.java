@@ -16,6 +16,9 @@ public record PointLight(Vec3 position, Rgb color, double intensity, boolean fal
         if (!(intensity >= 0) || !Double.isFinite(intensity)) {
             throw new IllegalArgumentException("light intensity must be finite and non-negative: " + intensity);
         }
+        if (color == null || !(color.r() >= 0 && color.g() >= 0 && color.b() >= 0) || !Double.isFinite(color.max())) {
+            throw new IllegalArgumentException("light colour must be finite and non-negative: " + color);
+        }
     }
 
     /** Colour times intensity: the radiance scale before fall-off. */

@@ -32,6 +32,10 @@ public final class Scene {
         if (camera == null || objects == null || lights == null || background == null) {
             throw new IllegalArgumentException("camera, objects, lights and background are required");
         }
+        if (!(background.r() >= 0 && background.g() >= 0 && background.b() >= 0)
+                || !Double.isFinite(background.max())) {
+            throw new IllegalArgumentException("background must be finite and non-negative: " + background);
+        }
         if (!(ambient >= 0) || !Double.isFinite(ambient)) {
             throw new IllegalArgumentException("ambient must be finite and non-negative: " + ambient);
         }
