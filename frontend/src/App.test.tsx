@@ -1,3 +1,4 @@
+import { formatScene } from './model/formatScene';
 import { render, screen, waitFor } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { beforeEach, describe, expect, it, vi } from 'vitest';
@@ -30,7 +31,7 @@ async function pickSixMaterials(user: ReturnType<typeof userEvent.setup>) {
   await screen.findByRole('option', { name: 'six-materials' });
   await user.selectOptions(screen.getByLabelText('Example scene'), 'six-materials');
   await waitFor(() =>
-    expect(screen.getByLabelText('Scene JSON')).toHaveValue(JSON.stringify(SIX_MATERIALS, null, 2)),
+    expect(screen.getByLabelText('Scene JSON')).toHaveValue(formatScene(SIX_MATERIALS)),
   );
 }
 
@@ -99,7 +100,7 @@ describe('App', () => {
       'objects[2].radius — must be greater than 0',
       'image.width — must be at most 4096',
     ]);
-    expect(renderCalls(fetchFn)[0][1]?.body).toBe(JSON.stringify(SIX_MATERIALS, null, 2));
+    expect(renderCalls(fetchFn)[0][1]?.body).toBe(formatScene(SIX_MATERIALS));
   });
 
   it('disables Render while rendering, then shows the image, statistics and download', async () => {

@@ -1,5 +1,6 @@
 import { useCallback, useEffect, useRef, useState } from 'react';
 import { ApiError, fetchScene, fetchSceneList, type FetchFn, type SceneSummary } from '../api/client';
+import { formatScene } from '../model/formatScene';
 
 /** The example gallery: its list, the chosen example and the loading state. */
 export interface SceneExamples {
@@ -40,7 +41,7 @@ export function useSceneExamples(fetchFn: FetchFn | undefined, onError: (error: 
       setLoading(true);
       try {
         const scene = await fetchScene(name, fetchFn);
-        return request === latest.current ? JSON.stringify(scene, null, 2) : null;
+        return request === latest.current ? formatScene(scene) : null;
       } catch (error) {
         if (request === latest.current) reportError.current(asApiError(error));
         return null;
