@@ -13,6 +13,7 @@ import javax.imageio.stream.ImageOutputStream;
 
 import studio.engine.math.Srgb;
 import studio.engine.render.Film;
+import studio.engine.render.TileRect;
 
 /** Encodes a linear-light film as an 8-bit sRGB PNG or JPEG: the only place sRGB encoding happens. */
 public final class ImageEncoder {
@@ -22,13 +23,19 @@ public final class ImageEncoder {
 
     /** The film as 8-bit sRGB, values clamped to [0, 1]. */
     public static BufferedImage toImage(Film film) {
-        int w = film.width(), h = film.height();
+        return toImage(film, new TileRect(0, 0, film.width(), film.height()));
+    }
+
+    /** A rectangle of the film (a finished tile, say) as 8-bit sRGB. */
+    public static BufferedImage toImage(Film film, TileRect region) {
+        int w = region.width(), h = region.height();
         BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         int[] row = new int[w];
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
-                row[x] = Srgb.toByte(film.get(x, y, 0)) << 16 | Srgb.toByte(film.get(x, y, 1)) << 8
-                        | Srgb.toByte(film.get(x, y, 2));
+                int fx = region.x() + x, fy = region.y() + y;
+                row[x] = Srgb.toByte(film.get(fx, fy, 0)) << 16 | Srgb.toByte(film.get(fx, fy, 1)) << 8
+                        | Srgb.toByte(film.get(fx, fy, 2));
             }
             image.setRGB(0, y, w, 1, row, 0, w);
         }

@@ -14,6 +14,9 @@ import org.springframework.web.bind.annotation.ExceptionHandler;
 import org.springframework.web.bind.annotation.RestControllerAdvice;
 import org.springframework.web.servlet.mvc.method.annotation.ResponseEntityExceptionHandler;
 
+import studio.server.job.JobNotDoneException;
+import studio.server.job.JobNotFoundException;
+import studio.server.job.JobQueueFullException;
 import studio.server.render.RenderBusyException;
 import studio.server.scene.FieldProblem;
 import studio.server.scene.InvalidSceneException;
@@ -37,6 +40,25 @@ class ProblemAdvice extends ResponseEntityExceptionHandler {
         problem.setProperty("errors", problems.stream()
                 .map(p -> Map.of("field", p.field(), "message", p.message())).toList());
         return ResponseEntity.badRequest().body(problem);
+    }
+
+    @ExceptionHandler(JobNotFoundException.class)
+    ResponseEntity<ProblemDetail> jobNotFound(JobNotFoundException e) {
+        return ResponseEntity.status(HttpStatus.NOT_FOUND)
+                .body(ProblemDetail.forStatusAndDetail(HttpStatus.NOT_FOUND, e.getMessage()));
+    }
+
+    @ExceptionHandler(JobNotDoneException.class)
+    ResponseEntity<ProblemDetail> jobNotDone(JobNotDoneException e) {
+        return ResponseEntity.status(HttpStatus.CONFLICT)
+                .body(ProblemDetail.forStatusAndDetail(HttpStatus.CONFLICT, e.getMessage()));
+    }
+
+    @ExceptionHandler(JobQueueFullException.class)
+    ResponseEntity<ProblemDetail> queueFull(JobQueueFullException e) {
+        return ResponseEntity.status(HttpStatus.TOO_MANY_REQUESTS)
+                .header(HttpHeaders.RETRY_AFTER, Integer.toString(e.retryAfterSeconds()))
+                .body(ProblemDetail.forStatusAndDetail(HttpStatus.TOO_MANY_REQUESTS, e.getMessage()));
     }
 
     @ExceptionHandler(BodyTooLargeException.class)

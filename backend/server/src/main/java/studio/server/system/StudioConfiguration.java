@@ -6,6 +6,7 @@ import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
 
 import jakarta.validation.Validator;
+import studio.server.job.JobService;
 import studio.server.render.RenderService;
 import studio.server.scene.ExampleScenes;
 import studio.server.scene.SceneCompiler;
@@ -25,6 +26,11 @@ class StudioConfiguration {
     @Bean
     RenderService renderService(SceneCompiler compiler, StudioProperties properties) {
         return new RenderService(compiler, properties.concurrentRenders(), properties.renderThreads());
+    }
+
+    @Bean(destroyMethod = "close")
+    JobService jobService(StudioProperties properties) {
+        return new JobService(properties.jobSettings());
     }
 
     @Bean

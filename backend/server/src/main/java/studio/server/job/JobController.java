@@ -1,0 +1,69 @@
+package studio.server.job;
+
+import java.net.URI;
+
+import org.springframework.http.ContentDisposition;
+import org.springframework.http.HttpHeaders;
+import org.springframework.http.MediaType;
+import org.springframework.http.ResponseEntity;
+import org.springframework.web.bind.annotation.DeleteMapping;
+import org.springframework.web.bind.annotation.GetMapping;
+import org.springframework.web.bind.annotation.PathVariable;
+import org.springframework.web.bind.annotation.PostMapping;
+import org.springframework.web.bind.annotation.RequestBody;
+import org.springframework.web.bind.annotation.RestController;
+import org.springframework.web.servlet.mvc.method.annotation.SseEmitter;
+
+import studio.server.scene.CompiledScene;
+import studio.server.scene.SceneCompiler;
+
+/** Render jobs: start, watch (status and an event stream of tiles), fetch the image, cancel. */
+@RestController
+class JobController {
+
+    private final SceneCompiler compiler;
+    private final JobService jobs;
+
+    JobController(SceneCompiler compiler, JobService jobs) {
+        this.compiler = compiler;
+        this.jobs = jobs;
+    }
+
+    @PostMapping("/api/jobs")
+    ResponseEntity<JobStatus> start(@RequestBody(required = false) byte[] scene) {
+        CompiledScene compiled = compiler.compile(scene != null ? scene : new byte[0]);
+        JobStatus status = jobs.submit(compiled);
+        return ResponseEntity.accepted().location(URI.create("/api/jobs/" + status.id())).body(status);
+    }
+
+    @GetMapping("/api/jobs/{id}")
+    JobStatus status(@PathVariable String id) {
+        return jobs.status(id);
+    }
+
+    @GetMapping(path = "/api/jobs/{id}/events", produces = MediaType.TEXT_EVENT_STREAM_VALUE)
+    SseEmitter events(@PathVariable String id) {
+        JobEventStream stream = new JobEventStream(id, jobs);
+        jobs.subscribe(id, stream);
+        return stream.emitter();
+    }
+
+    @GetMapping("/api/jobs/{id}/image")
+    ResponseEntity<byte[]> image(@PathVariable String id) {
+        JobService.JobImage image = jobs.image(id);
+        JobStatus status = image.status();
+        return ResponseEntity.ok()
+                .contentType(MediaType.parseMediaType(status.mediaType()))
+                .header(HttpHeaders.CONTENT_DISPOSITION,
+                        ContentDisposition.attachment().filename(status.fileName()).build().toString())
+                .header("X-Render-Millis", Long.toString(status.elapsedMillis()))
+                .header("X-Rays-Per-Second", Long.toString(Math.round(status.raysPerSecond())))
+                .header("X-Image-Size", status.width() + "x" + status.height())
+                .body(image.bytes());
+    }
+
+    @DeleteMapping("/api/jobs/{id}")
+    ResponseEntity<JobStatus> cancel(@PathVariable String id) {
+        return ResponseEntity.accepted().body(jobs.cancel(id));
+    }
+}

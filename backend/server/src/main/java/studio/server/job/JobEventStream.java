@@ -1,0 +1,69 @@
+package studio.server.job;
+
+import java.io.IOException;
+
+import org.springframework.http.MediaType;
+import org.springframework.web.servlet.mvc.method.annotation.SseEmitter;
+
+/**
+ * One client's server-sent event stream of a job: {@code status}, {@code tile} and finally
+ * {@code end}, then the stream closes. A write that fails (the client went away) unsubscribes it.
+ */
+final class JobEventStream implements JobListener {
+
+    /** An open stream lives at most this long; the client may reconnect. */
+    static final long TIMEOUT_MILLIS = 60 * 60 * 1000L;
+
+    private final String jobId;
+    private final JobService service;
+    private final SseEmitter emitter = new SseEmitter(TIMEOUT_MILLIS);
+
+    JobEventStream(String jobId, JobService service) {
+        this.jobId = jobId;
+        this.service = service;
+        emitter.onCompletion(this::close);
+        emitter.onTimeout(this::close);
+        emitter.onError(e -> close());
+    }
+
+    SseEmitter emitter() {
+        return emitter;
+    }
+
+    @Override
+    public void status(JobStatus status) {
+        send(SseEmitter.event().name("status").data(status, MediaType.APPLICATION_JSON));
+    }
+
+    @Override
+    public void tile(TileEvent tile) {
+        send(SseEmitter.event().name("tile").data(tile, MediaType.APPLICATION_JSON));
+    }
+
+    @Override
+    public void end(JobStatus status) {
+        if (send(SseEmitter.event().name("end").data(status, MediaType.APPLICATION_JSON))) {
+            emitter.complete();
+        }
+    }
+
+    @Override
+    public void heartbeat() {
+        send(SseEmitter.event().comment("keep-alive"));
+    }
+
+    private boolean send(SseEmitter.SseEventBuilder event) {
+        try {
+            emitter.send(event);
+            return true;
+        } catch (IOException | IllegalStateException e) {
+            close();
+            emitter.completeWithError(e);
+            return false;
+        }
+    }
+
+    private void close() {
+        service.unsubscribe(jobId, this);
+    }
+}

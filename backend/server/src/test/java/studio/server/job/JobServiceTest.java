@@ -1,0 +1,218 @@
+package studio.server.job;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.BooleanSupplier;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+import studio.server.scene.CompiledScene;
+import studio.server.scene.ExampleSceneFiles;
+
+class JobServiceTest {
+
+    /** 64x48 in 32-pixel tiles: 2 x 2 = 4 tiles, fast. */
+    static final String SMALL = scene(64, 48, 1);
+    /** Big enough to still be running when the test acts on it (many tiles, many samples). */
+    static final String LARGE = scene(1024, 768, 256);
+
+    static String scene(int width, int height, int samples) {
+        return """
+                {"name": "job-test", "image": {"width": %d, "height": %d},
+                 "render": {"samples": %d},
+                 "objects": [{"type": "sphere", "material": {"type": "glass"}}, {"type": "plane"}]}
+                """.formatted(width, height, samples);
+    }
+
+    static CompiledScene compile(String json) {
+        return ExampleSceneFiles.compiler().compile(json.getBytes(StandardCharsets.UTF_8));
+    }
+
+    private JobService service;
+
+    private JobService service(JobSettings settings) {
+        service = new JobService(settings);
+        return service;
+    }
+
+    private static JobSettings settings(int concurrent, int queue) {
+        return new JobSettings(concurrent, queue, Duration.ofMinutes(10), 50, Duration.ofMinutes(10), 2);
+    }
+
+    @AfterEach
+    void stop() {
+        if (service != null) {
+            service.shutdown(10_000);
+        }
+    }
+
+    static void await(String what, BooleanSupplier condition) throws InterruptedException {
+        long deadline = System.nanoTime() + Duration.ofSeconds(30).toNanos();
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > deadline) {
+                throw new AssertionError("timed out waiting until " + what);
+            }
+            Thread.sleep(10);
+        }
+    }
+
+    @Test
+    void jobGoesFromQueuedThroughRunningToDoneWithItsImage() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus started = jobs.submit(compile(SMALL));
+        assertTrue(started.state() == JobState.QUEUED || started.state() == JobState.RUNNING, started.toString());
+        assertEquals("job-test.png", started.fileName());
+        await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
+        JobStatus done = jobs.status(started.id());
+        assertEquals(1.0, done.progress());
+        assertNotNull(done.raysPerSecond());
+        assertTrue(done.raysPerSecond() > 0);
+        byte[] png = jobs.image(started.id()).bytes();
+        assertArrayEquals(new byte[] {(byte) 0x89, 'P', 'N', 'G'}, java.util.Arrays.copyOf(png, 4));
+    }
+
+    @Test
+    void listenerHearsEachStateEveryTileAndTheEnd() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus blocker = jobs.submit(compile(LARGE));
+        JobStatus small = jobs.submit(compile(SMALL));
+        Recorder recorder = new Recorder();
+        jobs.subscribe(small.id(), recorder);
+        jobs.cancel(blocker.id());
+        await("end", () -> recorder.ended != null);
+        assertEquals(List.of("status:queued", "status:running"), recorder.events.subList(0, 2));
+        assertEquals(JobState.DONE, recorder.ended.state());
+        List<String> tiles = recorder.events.stream().filter(e -> e.startsWith("tile:")).sorted().toList();
+        assertEquals(List.of("tile:0,0", "tile:0,32", "tile:32,0", "tile:32,32"), tiles);
+        assertEquals(7, recorder.events.size(), recorder.events.toString());
+        assertEquals("end:done", recorder.events.get(6));
+    }
+
+    @Test
+    void lateSubscriberGetsTheTilesFinishedSoFar() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus started = jobs.submit(compile(LARGE));
+        await("a few tiles", () -> jobs.status(started.id()).progress() > 0.02);
+        Recorder late = new Recorder();
+        jobs.subscribe(started.id(), late);
+        long replayed = late.events.stream().filter(e -> e.startsWith("tile:")).count();
+        assertTrue(replayed >= 0.02 * 768, "replayed only " + replayed + " tiles");
+        jobs.cancel(started.id());
+    }
+
+    @Test
+    void cancellingARunningJobStopsItWithinATile() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus started = jobs.submit(compile(LARGE));
+        await("running", () -> jobs.status(started.id()).progress() > 0);
+        long before = System.nanoTime();
+        jobs.cancel(started.id());
+        await("cancelled", () -> jobs.status(started.id()).state() == JobState.CANCELLED);
+        long millis = (System.nanoTime() - before) / 1_000_000;
+        assertTrue(millis < 5_000, "took " + millis + " ms to stop");
+        assertTrue(jobs.status(started.id()).progress() < 1);
+        assertThrows(JobNotDoneException.class, () -> jobs.image(started.id()));
+    }
+
+    @Test
+    void cancellingAQueuedJobEndsItAtOnce() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus running = jobs.submit(compile(LARGE));
+        JobStatus queued = jobs.submit(compile(SMALL));
+        assertEquals(JobState.QUEUED, queued.state());
+        assertEquals(JobState.CANCELLED, jobs.cancel(queued.id()).state());
+        jobs.cancel(running.id());
+    }
+
+    @Test
+    void fullQueueIsRefusedWithARetryDelay() {
+        JobService jobs = service(settings(1, 1));
+        JobStatus running = jobs.submit(compile(LARGE));
+        jobs.submit(compile(LARGE));
+        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(compile(SMALL)));
+        assertTrue(full.retryAfterSeconds() >= 1);
+        jobs.cancel(running.id());
+    }
+
+    @Test
+    void finishedJobsExpireAfterTheirKeepTime() throws Exception {
+        JobService jobs = service(new JobSettings(1, 4, Duration.ZERO, 50, Duration.ofMinutes(10), 2));
+        JobStatus started = jobs.submit(compile(SMALL));
+        await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
+        Thread.sleep(2);
+        jobs.sweep();
+        assertThrows(JobNotFoundException.class, () -> jobs.status(started.id()));
+    }
+
+    @Test
+    void onlyTheNewestFinishedJobsAreKept() throws Exception {
+        JobService jobs = service(new JobSettings(1, 4, Duration.ofMinutes(10), 1, Duration.ofMinutes(10), 2));
+        JobStatus first = jobs.submit(compile(SMALL));
+        await("first done", () -> jobs.status(first.id()).state() == JobState.DONE);
+        JobStatus second = jobs.submit(compile(SMALL));
+        await("second done", () -> jobs.status(second.id()).state() == JobState.DONE);
+        jobs.sweep();
+        assertThrows(JobNotFoundException.class, () -> jobs.status(first.id()));
+        assertEquals(JobState.DONE, jobs.status(second.id()).state());
+    }
+
+    @Test
+    void jobNobodyAsksAboutIsCancelled() throws Exception {
+        JobService jobs = service(new JobSettings(1, 4, Duration.ofMinutes(10), 50, Duration.ofMillis(50), 2));
+        JobStatus started = jobs.submit(compile(LARGE));
+        Thread.sleep(100);
+        jobs.sweep();
+        await("cancelled", () -> jobs.status(started.id()).state() == JobState.CANCELLED);
+    }
+
+    @Test
+    void jobWithAnOpenEventStreamIsNotAbandoned() throws Exception {
+        JobService jobs = service(new JobSettings(1, 4, Duration.ofMinutes(10), 50, Duration.ofMillis(50), 2));
+        JobStatus started = jobs.submit(compile(LARGE));
+        jobs.subscribe(started.id(), new Recorder());
+        Thread.sleep(100);
+        jobs.sweep();
+        assertEquals(JobState.RUNNING, jobs.status(started.id()).state());
+        jobs.cancel(started.id());
+    }
+
+    @Test
+    void unknownJobIsNotFound() {
+        JobService jobs = service(settings(1, 4));
+        assertThrows(JobNotFoundException.class, () -> jobs.status("nope"));
+        assertThrows(JobNotFoundException.class, () -> jobs.cancel("nope"));
+        assertThrows(JobNotFoundException.class, () -> jobs.image("nope"));
+    }
+
+    /** Records events as "status:running", "tile:x,y", "end:done". */
+    static final class Recorder implements JobListener {
+        final List<String> events = new CopyOnWriteArrayList<>();
+        volatile JobStatus ended;
+
+        @Override
+        public void status(JobStatus status) {
+            events.add("status:" + status.state().json());
+        }
+
+        @Override
+        public void tile(TileEvent tile) {
+            assertTrue(tile.png().length() > 0);
+            events.add("tile:" + tile.x() + "," + tile.y());
+        }
+
+        @Override
+        public void end(JobStatus status) {
+            events.add("end:" + status.state().json());
+            ended = status;
+        }
+    }
+}
