@@ -10,6 +10,7 @@ import studio.server.job.JobService;
 import studio.server.render.RenderService;
 import studio.server.scene.ExampleScenes;
 import studio.server.scene.SceneCompiler;
+import studio.server.scene.SceneLimits;
 import studio.server.scene.SceneMapper;
 import studio.server.scene.SceneReader;
 
@@ -19,8 +20,13 @@ import studio.server.scene.SceneReader;
 class StudioConfiguration {
 
     @Bean
-    SceneCompiler sceneCompiler(Validator validator, StudioProperties properties) {
-        return new SceneCompiler(new SceneReader(validator), new SceneMapper(properties.limits().toSceneLimits()));
+    SceneLimits sceneLimits(StudioProperties properties) {
+        return properties.limits().toSceneLimits();
+    }
+
+    @Bean
+    SceneCompiler sceneCompiler(Validator validator, SceneLimits limits) {
+        return new SceneCompiler(new SceneReader(validator), new SceneMapper(limits));
     }
 
     @Bean

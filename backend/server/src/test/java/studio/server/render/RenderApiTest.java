@@ -366,6 +366,15 @@ class RenderApiTest {
                 .andExpect(jsonPath("$.status").value("UP"));
     }
 
+    @Test
+    void publishesTheSceneSchemaWithThisServersLimits() throws Exception {
+        mvc.perform(get("/api/scene-schema"))
+                .andExpect(status().isOk())
+                .andExpect(jsonPath("$.required[0]").value("objects"))
+                .andExpect(jsonPath("$.$defs.SphereObject.properties.type.const").value("sphere"))
+                .andExpect(jsonPath("$.$defs.Image.properties.width.maximum").value(4096));
+    }
+
     // --- the real server -------------------------------------------------------------------------
 
     private URI uri(String path) {
