@@ -1,9 +1,12 @@
-import { formatScene } from './model/formatScene';
-import { render, screen, waitFor } from '@testing-library/react';
+import { act, fireEvent, render, screen, waitFor, within } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { beforeEach, describe, expect, it, vi } from 'vitest';
 import type { FetchFn } from './api/client';
 import { App } from './App';
+import { STARTER_SCENE } from './model/starterScene';
+import { useSceneStore } from './store/sceneStore';
+
+const store = () => useSceneStore.getState();
 
 const SIX_MATERIALS = {
   version: 1,
@@ -13,26 +16,21 @@ const SIX_MATERIALS = {
 
 type Route = (init?: RequestInit) => Response | Promise<Response>;
 
-/** A fetch mock answering the example routes, plus whatever the test adds for /api/render. */
-function mockServer(renderRoute?: Route) {
+/** A fetch mock answering the example routes, plus any "METHOD path" route a test adds. */
+function mockServer(routes: Record<string, Route> = {}) {
   return vi.fn<FetchFn>(async (url, init) => {
-    if (url === '/api/scenes') return Response.json([{ name: 'six-materials' }, { name: 'empty' }]);
+    const route = routes[`${init?.method ?? 'GET'} ${url}`];
+    if (route) return route(init);
+    if (url === '/api/scenes') return Response.json([{ name: 'six-materials' }, { name: 'still-life' }]);
     if (url === '/api/scenes/six-materials') return Response.json(SIX_MATERIALS);
-    if (url === '/api/render' && renderRoute) return renderRoute(init);
     return new Response('', { status: 404, statusText: 'Not Found' });
   });
 }
 
-function renderCalls(fetchFn: ReturnType<typeof mockServer>) {
-  return fetchFn.mock.calls.filter(([url]) => url === '/api/render');
-}
-
-async function pickSixMaterials(user: ReturnType<typeof userEvent.setup>) {
-  await screen.findByRole('option', { name: 'six-materials' });
-  await user.selectOptions(screen.getByLabelText('Example scene'), 'six-materials');
-  await waitFor(() =>
-    expect(screen.getByLabelText('Scene JSON')).toHaveValue(formatScene(SIX_MATERIALS)),
-  );
+async function renderApp(fetchFn = mockServer()) {
+  const utils = render(<App fetchFn={fetchFn} />);
+  await waitFor(() => expect(fetchFn).toHaveBeenCalledWith('/api/scenes', expect.anything()));
+  return utils;
 }
 
 describe('App', () => {
@@ -42,130 +40,159 @@ describe('App', () => {
     vi.spyOn(URL, 'revokeObjectURL').mockImplementation(() => {});
   });
 
-  it('shows the product name', async () => {
-    render(<App fetchFn={mockServer()} />);
+  it('lays out toolbar, both views, the 3D preview, the render area and the inspector', async () => {
+    await renderApp();
     expect(screen.getByRole('heading', { name: 'Ray Studio' })).toBeInTheDocument();
-    await screen.findByRole('option', { name: 'empty' });
+    for (const name of ['New', 'Save', 'Undo', 'Redo', 'Add sphere', 'Add box', 'Add plane', 'Add light']) {
+      expect(screen.getByRole('button', { name })).toBeInTheDocument();
+    }
+    expect(screen.getByTestId('top-view')).toBeInTheDocument();
+    expect(screen.getByTestId('side-view')).toBeInTheDocument();
+    expect(await screen.findByTestId('preview-3d')).toBeInTheDocument();
+    expect(screen.getByRole('complementary', { name: 'Inspector' })).toBeInTheDocument();
+    expect(screen.getByRole('button', { name: 'Render' })).toBeInTheDocument();
+    expect(within(screen.getByTestId('top-view')).getAllByTestId(/^object-/)).toHaveLength(STARTER_SCENE.objects.length);
   });
 
-  it('loads a picked example into the editor, pretty-printed', async () => {
+  it('adds a sphere, selected in both views and the inspector; Undo and Redo buttons', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    await user.click(screen.getByTestId('add-sphere'));
+    const index = STARTER_SCENE.objects.length;
+    for (const view of ['top-view', 'side-view']) {
+      expect(within(screen.getByTestId(view)).getByTestId(`object-${index}`)).toHaveAttribute('data-selected', 'true');
+    }
+    expect(screen.getByRole('heading', { name: `Sphere ${index + 1}` })).toBeInTheDocument();
+    expect(screen.getByLabelText('Center x')).toHaveAttribute('data-field', `objects[${index}].center[0]`);
+    await user.click(screen.getByRole('button', { name: 'Undo' }));
+    expect(store().scene.objects).toHaveLength(index);
+    expect(screen.getByRole('button', { name: 'Undo' })).toBeDisabled();
+    await user.click(screen.getByRole('button', { name: 'Redo' }));
+    expect(store().scene.objects).toHaveLength(index + 1);
+  });
+
+  it('deletes with the Delete key, undoes with Ctrl+Z, redoes with Ctrl+Shift+Z and Ctrl+Y', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    act(() => store().select({ kind: 'object', index: 0 }));
+    await user.keyboard('{Delete}');
+    expect(store().scene.objects).toHaveLength(STARTER_SCENE.objects.length - 1);
+    await user.keyboard('{Control>}z{/Control}');
+    expect(store().scene).toEqual(STARTER_SCENE);
+    await user.keyboard('{Control>}{Shift>}z{/Shift}{/Control}');
+    expect(store().scene.objects).toHaveLength(STARTER_SCENE.objects.length - 1);
+    await user.keyboard('{Control>}z{/Control}{Control>}y{/Control}');
+    expect(store().scene.objects).toHaveLength(STARTER_SCENE.objects.length - 1);
+  });
+
+  it('leaves Delete alone while typing in a field', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    act(() => store().select({ kind: 'object', index: 1 }));
+    await user.click(screen.getByLabelText('Radius'));
+    await user.keyboard('{Delete}');
+    expect(store().scene.objects).toHaveLength(STARTER_SCENE.objects.length);
+  });
+
+  it('commits a half-typed field when the user moves on to a view', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    act(() => store().select({ kind: 'object', index: 1 }));
+    const radius = screen.getByLabelText('Radius');
+    await user.clear(radius);
+    await user.type(radius, '0.9');
+    expect(store().scene.objects[1]).toMatchObject({ radius: 0.5 });
+    const svg = screen.getByTestId('top-view');
+    fireEvent.pointerDown(svg, { clientX: 3, clientY: 3, button: 0, pointerId: 7 });
+    fireEvent.pointerUp(svg, { clientX: 3, clientY: 3, pointerId: 7 });
+    expect(store().scene.objects[1]).toMatchObject({ radius: 0.9 });
+    expect(store().past).toHaveLength(1);
+  });
+
+  it('says what is wrong with a file that is not a scene, and keeps the scene', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    const bad = new File(['{ "objects": [ { "type": "cone" } ] }'], 'bad.json', { type: 'application/json' });
+    await user.upload(screen.getByLabelText('Open scene file'), bad);
+    const alert = await screen.findByRole('alert');
+    expect(alert).toHaveTextContent('Cannot open bad.json');
+    expect(alert).toHaveTextContent('objects[0].type');
+    expect(store().scene).toEqual(STARTER_SCENE);
+
+    const broken = new File(['{ nope'], 'broken.json', { type: 'application/json' });
+    await user.upload(screen.getByLabelText('Open scene file'), broken);
+    await waitFor(() => expect(screen.getByRole('alert')).toHaveTextContent('not valid JSON'));
+  });
+
+  it('opens a scene file', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    const good = new File([JSON.stringify(SIX_MATERIALS)], 'six.json', { type: 'application/json' });
+    await user.upload(screen.getByLabelText('Open scene file'), good);
+    await waitFor(() => expect(store().scene).toEqual(SIX_MATERIALS));
+    expect(store().past).toHaveLength(1);
+  });
+
+  it('saves the scene as NAME.json', async () => {
+    const user = userEvent.setup();
+    const click = vi.spyOn(HTMLAnchorElement.prototype, 'click').mockImplementation(() => {});
+    await renderApp();
+    await user.click(screen.getByRole('button', { name: 'Save' }));
+    expect(click).toHaveBeenCalledTimes(1);
+    const link = click.mock.contexts[0] as HTMLAnchorElement;
+    expect(link.download).toBe('still-life.json');
+    const blob = vi.mocked(URL.createObjectURL).mock.calls[0][0] as Blob;
+    expect(JSON.parse(await blob.text())).toEqual(STARTER_SCENE);
+  });
+
+  it('loads an example from the gallery, and New starts a blank scene', async () => {
     const user = userEvent.setup();
     const fetchFn = mockServer();
-    render(<App fetchFn={fetchFn} />);
-    await pickSixMaterials(user);
-    expect(fetchFn).toHaveBeenCalledWith('/api/scenes/six-materials', expect.anything());
+    await renderApp(fetchFn);
+    await user.click(screen.getByText('Examples'));
+    await user.click(await screen.findByRole('button', { name: 'six-materials' }));
+    await waitFor(() => expect(store().scene).toEqual(SIX_MATERIALS));
+    await user.click(screen.getByRole('button', { name: 'New' }));
+    expect(store().scene.objects).toEqual([]);
+    expect(store().past).toHaveLength(2);
   });
 
-  it('reports invalid JSON locally without calling the server', async () => {
+  it('keeps the JSON tab and the store in step both ways', async () => {
     const user = userEvent.setup();
-    const fetchFn = mockServer(() => new Response(''));
-    render(<App fetchFn={fetchFn} />);
-    await screen.findByRole('option', { name: 'six-materials' });
-    await user.type(screen.getByLabelText('Scene JSON'), '{{ "objects": ');
-    await user.click(screen.getByRole('button', { name: 'Render' }));
+    await renderApp();
+    await user.click(screen.getByRole('tab', { name: 'JSON' }));
+    const text = screen.getByLabelText('Scene JSON') as HTMLTextAreaElement;
+    expect(JSON.parse(text.value)).toEqual(STARTER_SCENE);
+    act(() => store().setName('renamed'));
+    expect(JSON.parse(text.value).name).toBe('renamed');
 
-    const alert = screen.getByRole('alert');
-    expect(alert).toHaveTextContent('The scene is not valid JSON');
-    expect(alert.textContent?.length ?? 0).toBeGreaterThan('The scene is not valid JSON'.length);
-    expect(renderCalls(fetchFn)).toHaveLength(0);
+    fireEvent.change(text, { target: { value: '{ "objects": 3 }' } });
+    expect(screen.getByRole('alert')).toHaveTextContent('objects: must be a list');
+    expect(screen.getByRole('button', { name: 'Apply JSON' })).toBeDisabled();
+    fireEvent.change(text, { target: { value: JSON.stringify(SIX_MATERIALS) } });
+    await user.click(screen.getByRole('button', { name: 'Apply JSON' }));
+    expect(store().scene).toEqual(SIX_MATERIALS);
   });
 
-  it('lists each field error of a 400 problem response', async () => {
+  it('shows the server’s field errors next to their inputs and in a list', async () => {
     const user = userEvent.setup();
-    const fetchFn = mockServer(
-      () =>
-        new Response(
-          JSON.stringify({
-            type: 'about:blank',
-            title: 'Invalid scene',
-            status: 400,
-            detail: '2 fields are invalid',
-            errors: [
-              { field: 'objects[2].radius', message: 'must be greater than 0' },
-              { field: 'image.width', message: 'must be at most 4096' },
-            ],
-          }),
-          { status: 400, headers: { 'Content-Type': 'application/problem+json' } },
-        ),
-    );
-    render(<App fetchFn={fetchFn} />);
-    await pickSixMaterials(user);
+    const problem = {
+      title: 'Invalid scene',
+      status: 400,
+      detail: '2 problems',
+      errors: [
+        { field: 'objects[1].radius', message: 'must be greater than 0' },
+        { field: 'image.width', message: 'must be at most 4096' },
+      ],
+    };
+    const bad = () => new Response(JSON.stringify(problem), { status: 400, headers: { 'Content-Type': 'application/problem+json' } });
+    await renderApp(mockServer({ 'POST /api/jobs': bad, 'POST /api/render': bad }));
     await user.click(screen.getByRole('button', { name: 'Render' }));
-
-    const alert = await screen.findByRole('alert');
-    expect(alert).toHaveTextContent('Invalid scene');
-    expect(alert).toHaveTextContent('2 fields are invalid');
-    const items = screen.getAllByRole('listitem').map((item) => item.textContent);
-    expect(items).toEqual([
-      'objects[2].radius — must be greater than 0',
-      'image.width — must be at most 4096',
-    ]);
-    expect(renderCalls(fetchFn)[0][1]?.body).toBe(formatScene(SIX_MATERIALS));
-  });
-
-  it('disables Render while rendering, then shows the image, statistics and download', async () => {
-    const user = userEvent.setup();
-    let finish: (response: Response) => void = () => {};
-    const fetchFn = mockServer(() => new Promise<Response>((resolve) => (finish = resolve)));
-    render(<App fetchFn={fetchFn} />);
-    await pickSixMaterials(user);
-    await user.click(screen.getByRole('button', { name: 'Render' }));
-
-    expect(screen.getByRole('button', { name: 'Render' })).toBeDisabled();
-    expect(screen.getByRole('status')).toHaveTextContent('Rendering…');
-
-    finish(
-      new Response(new Uint8Array([0x89, 0x50]), {
-        headers: {
-          'Content-Type': 'image/png',
-          'Content-Disposition': 'attachment; filename="six-materials.png"',
-          'X-Render-Millis': '850',
-          'X-Rays-Per-Second': '12300000',
-        },
-      }),
-    );
-
-    const image = await screen.findByRole('img', { name: 'Rendered scene' });
-    expect(image).toHaveAttribute('src', 'blob:test/1');
-    expect(screen.getByRole('button', { name: 'Render' })).toBeEnabled();
-    expect(screen.queryByText('Rendering…')).not.toBeInTheDocument();
-    expect(screen.getByText('850 ms')).toBeInTheDocument();
-    expect(screen.getByText('12.3 M rays/s')).toBeInTheDocument();
-    const link = screen.getByRole('link', { name: /Download/ });
-    expect(link).toHaveAttribute('download', 'six-materials.png');
-    expect(link).toHaveAttribute('href', 'blob:test/1');
-  });
-
-  it('revokes the previous image when a new render arrives', async () => {
-    const user = userEvent.setup();
-    const fetchFn = mockServer(
-      () => new Response(new Uint8Array([1]), { headers: { 'Content-Type': 'image/jpeg' } }),
-    );
-    render(<App fetchFn={fetchFn} />);
-    await pickSixMaterials(user);
-    await user.click(screen.getByRole('button', { name: 'Render' }));
-    await screen.findByRole('img', { name: 'Rendered scene' });
-    await user.click(screen.getByRole('button', { name: 'Render' }));
-
-    await waitFor(() =>
-      expect(screen.getByRole('img', { name: 'Rendered scene' })).toHaveAttribute('src', 'blob:test/2'),
-    );
-    expect(URL.revokeObjectURL).toHaveBeenCalledWith('blob:test/1');
-    expect(screen.getByRole('link', { name: /Download/ })).toHaveAttribute('download', 'render.jpg');
-  });
-
-  it('shows a readable error when the server cannot be reached', async () => {
-    const user = userEvent.setup();
-    const fetchFn = mockServer(() => {
-      throw new TypeError('Failed to fetch');
-    });
-    render(<App fetchFn={fetchFn} />);
-    await pickSixMaterials(user);
-    await user.click(screen.getByRole('button', { name: 'Render' }));
-
-    const alert = await screen.findByRole('alert');
-    expect(alert).toHaveTextContent('Cannot reach the server');
-    expect(alert).toHaveTextContent('Failed to fetch');
-    expect(screen.getByRole('button', { name: 'Render' })).toBeEnabled();
+    const list = await screen.findByRole('region', { name: 'Problems found by the server' });
+    expect(list).toHaveTextContent('objects[1].radius must be greater than 0');
+    expect(screen.getByLabelText('Width (px)')).toHaveAccessibleDescription('must be at most 4096');
+    await user.click(within(list).getByRole('button', { name: 'objects[1].radius' }));
+    expect(store().selection).toEqual({ kind: 'object', index: 1 });
+    expect(screen.getByLabelText('Radius')).toHaveAccessibleDescription('must be greater than 0');
   });
 });

@@ -1,13 +1,15 @@
-import { useCallback, useState } from 'react';
-import { renderScene, type FetchFn } from './api/client';
-import { ErrorPanel, type DisplayError } from './components/ErrorPanel';
-import { Header } from './components/Header';
-import { RenderButton } from './components/RenderButton';
-import { RenderView, type RenderedImage } from './components/RenderView';
-import { SceneEditor } from './components/SceneEditor';
-import { ScenePicker } from './components/ScenePicker';
-import { asApiError, useSceneExamples } from './hooks/useSceneExamples';
-import { useObjectUrl } from './hooks/useObjectUrl';
+import { lazy, Suspense, useState } from 'react';
+import type { FetchFn } from './api/client';
+import { FieldErrorsProvider, type FieldErrors } from './components/fieldErrors';
+import { Inspector } from './components/Inspector';
+import { JsonTab } from './components/JsonTab';
+import { ProblemList } from './components/ProblemList';
+import { RenderSlot } from './components/RenderSlot';
+import { Toolbar } from './components/Toolbar';
+import { useEditorShortcuts } from './hooks/useEditorShortcuts';
+import { useSceneStore } from './store/sceneStore';
+import { SideView } from './views/SideView';
+import { TopView } from './views/TopView';
 
 /** Props of {@link App}. */
 export interface AppProps {
@@ -15,70 +17,67 @@ export interface AppProps {
   fetchFn?: FetchFn;
 }
 
-/** The first page of Ray Studio: pick or edit a scene on the left, render it on the right. */
+type CentreTab = 'preview' | 'json';
+
+// three.js is most of the page's weight: load the preview in its own chunk.
+const Preview3D = lazy(() => import('./views/Preview3D').then((m) => ({ default: m.Preview3D })));
+
+/**
+ * The scene editor: toolbar on top; top and side views on the left; the 3D preview (or the
+ * JSON text) in the centre with the render area below; the inspector on the right.
+ */
 export function App({ fetchFn }: AppProps) {
-  const [text, setText] = useState('');
-  const [error, setError] = useState<DisplayError | null>(null);
-  const [rendering, setRendering] = useState(false);
-  const [stats, setStats] = useState<Omit<RenderedImage, 'url'> | null>(null);
-  const [imageUrl, setImage] = useObjectUrl();
-  const examples = useSceneExamples(fetchFn, setError);
+  const [message, setMessage] = useState<string | null>(null);
+  const [fieldErrors, setFieldErrors] = useState<FieldErrors>({});
+  const [tab, setTab] = useState<CentreTab>('preview');
+  const scene = useSceneStore((s) => s.scene);
+  useEditorShortcuts();
 
-  const pickExample = useCallback(
-    async (name: string) => {
-      setError(null);
-      const json = await examples.select(name);
-      if (json !== null) setText(json);
-    },
-    [examples],
+  const tabButton = (id: CentreTab, label: string) => (
+    <button type="button" role="tab" id={`tab-${id}`} aria-selected={tab === id} aria-controls={`panel-${id}`} onClick={() => setTab(id)}>
+      {label}
+    </button>
   );
-
-  const render = useCallback(async () => {
-    try {
-      JSON.parse(text);
-    } catch (parseError) {
-      const message = parseError instanceof Error ? parseError.message : String(parseError);
-      setError({ title: 'The scene is not valid JSON', detail: message });
-      return;
-    }
-    setError(null);
-    setRendering(true);
-    try {
-      const output = await renderScene(text, fetchFn);
-      setImage(output.image);
-      setStats({
-        filename: output.filename,
-        renderMillis: output.renderMillis,
-        raysPerSecond: output.raysPerSecond,
-      });
-    } catch (renderError) {
-      setError(asApiError(renderError));
-    } finally {
-      setRendering(false);
-    }
-  }, [text, fetchFn, setImage]);
-
-  const image = imageUrl && stats ? { url: imageUrl, ...stats } : null;
-
   return (
-    <div className="app">
-      <Header title="Ray Studio" />
-      <main className="app-main">
-        <section className="panel panel--editor" aria-label="Scene">
-          <ScenePicker
-            scenes={examples.scenes}
-            selected={examples.selected}
-            loading={examples.loading}
-            onSelect={pickExample}
-          />
-          <SceneEditor value={text} onChange={setText} />
-          <RenderButton rendering={rendering} onRender={render} />
-        </section>
-        <section className="panel panel--result" aria-label="Result">
-          <ErrorPanel error={error} />
-          <RenderView image={image} />
-        </section>
-      </main>
-    </div>
+    <FieldErrorsProvider errors={fieldErrors}>
+      <div className="studio">
+        <Toolbar fetchFn={fetchFn} onMessage={setMessage} />
+        {message && (
+          <div className="studio-message" role="alert">
+            <pre>{message}</pre>
+            <button type="button" className="small" onClick={() => setMessage(null)}>
+              Dismiss
+            </button>
+          </div>
+        )}
+        <main className="studio-main">
+          <div className="studio-views">
+            <TopView />
+            <SideView />
+          </div>
+          <div className="studio-centre">
+            <div role="tablist" aria-label="Centre panel" className="tabs">
+              {tabButton('preview', '3D preview')}
+              {tabButton('json', 'JSON')}
+            </div>
+            <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
+              <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
+                <Preview3D />
+              </Suspense>
+            </div>
+            <div role="tabpanel" id="panel-json" aria-labelledby="tab-json" hidden={tab !== 'json'} className="tab-panel">
+              {tab === 'json' && <JsonTab />}
+            </div>
+            <div className="studio-render">
+              <RenderSlot scene={scene} onFieldErrors={setFieldErrors} fetchFn={fetchFn} />
+            </div>
+          </div>
+          <div className="studio-inspector">
+            <ProblemList />
+            <Inspector />
+          </div>
+        </main>
+      </div>
+    </FieldErrorsProvider>
   );
 }

@@ -1,14 +1,12 @@
 import { useCallback, useEffect, useRef, useState } from 'react';
 import { ApiError, fetchScene, fetchSceneList, type FetchFn, type SceneSummary } from '../api/client';
-import { formatScene } from '../model/formatScene';
 
-/** The example gallery: its list, the chosen example and the loading state. */
+/** The example gallery: its list, whether it is loading, and a loader for one example. */
 export interface SceneExamples {
   scenes: SceneSummary[];
-  selected: string;
   loading: boolean;
-  /** Loads an example; resolves with its pretty-printed JSON, or null if superseded. */
-  select: (name: string) => Promise<string | null>;
+  /** Loads an example; resolves with its parsed JSON, or null if it failed or was superseded. */
+  load: (name: string) => Promise<unknown | null>;
 }
 
 /**
@@ -17,7 +15,6 @@ export interface SceneExamples {
  */
 export function useSceneExamples(fetchFn: FetchFn | undefined, onError: (error: ApiError) => void): SceneExamples {
   const [scenes, setScenes] = useState<SceneSummary[]>([]);
-  const [selected, setSelected] = useState('');
   const [loading, setLoading] = useState(true);
   const latest = useRef(0);
   const reportError = useRef(onError);
@@ -34,25 +31,21 @@ export function useSceneExamples(fetchFn: FetchFn | undefined, onError: (error: 
     };
   }, [fetchFn]);
 
-  const select = useCallback(
+  const load = useCallback(
     async (name: string) => {
       const request = ++latest.current;
-      setSelected(name);
-      setLoading(true);
       try {
         const scene = await fetchScene(name, fetchFn);
-        return request === latest.current ? formatScene(scene) : null;
+        return request === latest.current ? scene : null;
       } catch (error) {
         if (request === latest.current) reportError.current(asApiError(error));
         return null;
-      } finally {
-        if (request === latest.current) setLoading(false);
       }
     },
     [fetchFn],
   );
 
-  return { scenes, selected, loading, select };
+  return { scenes, loading, load };
 }
 
 /** Any thrown value as an ApiError, so the page has one error shape to show. */

@@ -1,0 +1,62 @@
+import { resolveLight, sceneLights } from '../model/defaults';
+import * as edits from '../model/edits';
+import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
+import { CheckboxField } from './fields/CheckboxField';
+import { ColorField } from './fields/ColorField';
+import { NumberField } from './fields/NumberField';
+import { VectorField } from './fields/VectorField';
+
+/** Props of {@link InspectorLight}. */
+export interface InspectorLightProps {
+  /** Index of the light in `scene.lights`. */
+  index: number;
+}
+
+/** Fields of one point light. */
+export function InspectorLight({ index }: InspectorLightProps) {
+  const lights = useSceneStore((s) => selectDisplayScene(s).lights);
+  const light = sceneLights({ lights, objects: [] })[index];
+  const setField = useSceneStore((s) => s.setLightField);
+  const setPreview = useSceneStore((s) => s.setPreview);
+  const cancelPreview = useSceneStore((s) => s.cancelPreview);
+  if (!light) return null;
+  const r = resolveLight(light);
+  const path = `lights[${index}]`;
+  return (
+    <section className="inspector-section" aria-label={`Light ${index + 1} properties`} data-testid="inspector-light">
+      <h3>Light {index + 1}</h3>
+      <VectorField
+        label="Light position"
+        path={`${path}.position`}
+        value={r.position}
+        hint="Where the point light is (metres)"
+        onCommit={(v) => setField(index, 'position', v)}
+      />
+      <ColorField
+        label="Light color"
+        path={`${path}.color`}
+        value={r.color}
+        hint="Colour of the light (sRGB)"
+        onCommit={(c) => setField(index, 'color', c)}
+        onPreview={(c) => setPreview(edits.setLightField(useSceneStore.getState().scene, index, 'color', c))}
+        onPreviewEnd={cancelPreview}
+      />
+      <NumberField
+        label="Intensity"
+        path={`${path}.intensity`}
+        value={r.intensity}
+        min={0}
+        step={0.05}
+        hint="Brightness; 1 lights a white chalk surface facing it fully"
+        onCommit={(v) => setField(index, 'intensity', v)}
+      />
+      <CheckboxField
+        label="Falls off with distance (1/d²)"
+        path={`${path}.falloff`}
+        checked={r.falloff}
+        hint="Off: the same light at any distance (as POV-Ray's default). On: divided by the squared distance."
+        onCommit={(v) => setField(index, 'falloff', v)}
+      />
+    </section>
+  );
+}

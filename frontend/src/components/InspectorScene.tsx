@@ -1,0 +1,62 @@
+import { resolveScene } from '../model/defaults';
+import type { ImageFormat, SamplerName } from '../model/types';
+import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
+import { ColorField } from './fields/ColorField';
+import { NumberField } from './fields/NumberField';
+import { SelectField } from './fields/SelectField';
+import { TextField } from './fields/TextField';
+
+/** Scene-wide settings: name, background, ambient, output image and render quality. */
+export function InspectorScene() {
+  const scene = useSceneStore(selectDisplayScene);
+  const s = useSceneStore.getState();
+  const r = resolveScene(scene);
+  return (
+    <section className="inspector-section" aria-label="Scene settings" data-testid="inspector-scene">
+      <h3>Scene</h3>
+      <TextField label="Name" path="name" value={r.name} maxLength={200} hint="Default file name of the scene and of the rendered image" onCommit={s.setName} />
+      <ColorField
+        label="Background"
+        path="background"
+        value={r.background}
+        hint="Colour of rays that hit nothing"
+        onCommit={s.setBackground}
+        onPreview={(background) => s.setPreview({ ...useSceneStore.getState().scene, background })}
+        onPreviewEnd={s.cancelPreview}
+      />
+      <NumberField label="Ambient" path="ambient" value={r.ambient} min={0} max={1} step={0.01} hint="Ambient light in [0, 1], times each surface's diffuse colour" onCommit={s.setAmbient} />
+      <fieldset className="inspector-group">
+        <legend>Image</legend>
+        <NumberField label="Width (px)" path="image.width" value={r.image.width} integer min={1} max={4096} step={1} onCommit={(width) => s.setImage({ width })} />
+        <NumberField label="Height (px)" path="image.height" value={r.image.height} integer min={1} max={4096} step={1} onCommit={(height) => s.setImage({ height })} />
+        <SelectField
+          label="Format"
+          path="image.format"
+          value={r.image.format}
+          options={[
+            { value: 'png', label: 'PNG (lossless)' },
+            { value: 'jpg', label: 'JPEG' },
+          ]}
+          onCommit={(format) => s.setImage({ format: format as ImageFormat })}
+        />
+        <NumberField label="JPEG quality" path="image.quality" value={r.image.quality} min={0} max={1} step={0.01} hint="0 to 1; only used for JPEG" onCommit={(quality) => s.setImage({ quality })} />
+      </fieldset>
+      <fieldset className="inspector-group">
+        <legend>Render</legend>
+        <SelectField
+          label="Sampler"
+          path="render.sampler"
+          value={r.render.sampler}
+          options={[
+            { value: 'jittered', label: 'Jittered', hint: 'One random sample in each cell of a grid' },
+            { value: 'regular', label: 'Regular', hint: 'Cell centres; needs a square number of samples' },
+          ]}
+          onCommit={(sampler) => s.setRender({ sampler: sampler as SamplerName })}
+        />
+        <NumberField label="Samples per pixel" path="render.samples" value={r.render.samples} integer min={1} step={1} hint="More samples: smoother edges, slower" onCommit={(samples) => s.setRender({ samples })} />
+        <NumberField label="Max depth" path="render.maxDepth" value={r.render.maxDepth} integer min={0} step={1} hint="Reflection/refraction bounces" onCommit={(maxDepth) => s.setRender({ maxDepth })} />
+        <NumberField label="Seed" path="render.seed" value={r.render.seed} integer step={1} hint="Varies the noise pattern; the same seed gives the same image" onCommit={(seed) => s.setRender({ seed })} />
+      </fieldset>
+    </section>
+  );
+}

@@ -1,0 +1,82 @@
+import { useEffect, useId, useRef, useState } from 'react';
+import { FieldErrorMessage, useFieldError } from '../fieldErrors';
+
+const HEX = /^#[0-9a-fA-F]{6}$/;
+
+/** Props of {@link ColorField}. */
+export interface ColorFieldProps {
+  /** Accessible label of the swatch; the text box is labelled "`label` hex". */
+  label: string;
+  /** JSON path, e.g. `background`, `objects[0].material.color`. */
+  path: string;
+  /** `#rrggbb`. */
+  value: string;
+  /** One call per finished choice (picker closed, Enter, or leaving the hex box). */
+  onCommit: (color: string) => void;
+  /** Called while the picker is being dragged (not an undo step), if given. */
+  onPreview?: (color: string) => void;
+  /** Called when the swatch loses focus, to drop a preview that was never committed. */
+  onPreviewEnd?: () => void;
+  hint?: string;
+}
+
+/** A colour swatch (`type=color`) and its `#rrggbb` text, kept in step. */
+export function ColorField({ label, path, value, onCommit, onPreview, onPreviewEnd, hint }: ColorFieldProps) {
+  const id = useId();
+  const swatch = useRef<HTMLInputElement>(null);
+  const [text, setText] = useState(value);
+  const serverError = useFieldError(path);
+  useEffect(() => setText(value), [value]);
+
+  // The native `change` event fires once the picker closes: that is the edit to keep.
+  const latest = useRef({ value, onCommit });
+  latest.current = { value, onCommit };
+  useEffect(() => {
+    const input = swatch.current;
+    const done = () => {
+      const color = input!.value;
+      if (color.toLowerCase() !== latest.current.value.toLowerCase()) latest.current.onCommit(color);
+    };
+    input?.addEventListener('change', done);
+    return () => input?.removeEventListener('change', done);
+  }, []);
+
+  const commitText = () => {
+    if (HEX.test(text)) {
+      if (text.toLowerCase() !== value.toLowerCase()) onCommit(text.toLowerCase());
+    } else setText(value);
+  };
+  const localError = HEX.test(text) ? undefined : 'must be #rrggbb';
+  const message = localError ?? serverError;
+  return (
+    <div className="field field--color" title={hint}>
+      <label htmlFor={id}>{label}</label>
+      <div className="color-field">
+        <input
+          ref={swatch}
+          id={id}
+          type="color"
+          value={HEX.test(value) ? value.toLowerCase() : '#000000'}
+          data-field={path}
+          onChange={(event) => onPreview?.(event.target.value)}
+          onBlur={() => onPreviewEnd?.()}
+        />
+        <input
+          type="text"
+          className="color-field__hex"
+          aria-label={`${label} hex`}
+          data-field={path}
+          value={text}
+          maxLength={7}
+          spellCheck={false}
+          aria-invalid={message ? true : undefined}
+          aria-describedby={message ? `${id}-error` : undefined}
+          onChange={(event) => setText(event.target.value)}
+          onBlur={commitText}
+          onKeyDown={(event) => event.key === 'Enter' && commitText()}
+        />
+      </div>
+      <FieldErrorMessage id={`${id}-error`} message={message} path={path} />
+    </div>
+  );
+}

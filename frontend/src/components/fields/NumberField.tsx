@@ -1,0 +1,101 @@
+import { useEffect, useId, useState, type KeyboardEvent } from 'react';
+import { FieldErrorMessage, useFieldError } from '../fieldErrors';
+
+/** Props of {@link NumberField}. */
+export interface NumberFieldProps {
+  /** Accessible (and, unless `compact`, visible) label, e.g. "Radius". */
+  label: string;
+  /** Scene JSON path the field edits, e.g. `objects[2].radius`; becomes `data-field`. */
+  path: string;
+  value: number;
+  /** Called once per edit (Enter, leaving the field, or a spinner step) with a valid, changed value. */
+  onCommit: (value: number) => void;
+  min?: number;
+  max?: number;
+  /** Spinner step; also the arrow-key step. */
+  step?: number;
+  /** Whole numbers only. */
+  integer?: boolean;
+  /** Tooltip. */
+  hint?: string;
+  /** Shows only a short visible tag (e.g. "x") while the accessible label stays full. */
+  compact?: string;
+}
+
+/**
+ * A numeric input that keeps what the user types until they press Enter or leave the field,
+ * then commits it once (so typing "1.25" is one undo step). Escape reverts. Out-of-range or
+ * non-numeric text is flagged and not committed.
+ */
+export function NumberField({ label, path, value, onCommit, min, max, step = 0.1, integer = false, hint, compact }: NumberFieldProps) {
+  const id = useId();
+  const shown = formatNumber(value);
+  const [draft, setDraft] = useState(shown);
+  const [editing, setEditing] = useState(false);
+  const serverError = useFieldError(path);
+  useEffect(() => {
+    if (!editing) setDraft(shown);
+  }, [shown, editing]);
+
+  const localError = check(draft, integer, min, max);
+
+  const commitText = (text: string) => {
+    setEditing(false);
+    const error = check(text, integer, min, max);
+    if (error) setDraft(shown);
+    else if (text.trim() !== shown && Number(text) !== value) onCommit(Number(text));
+  };
+  const commit = () => commitText(draft);
+  const onKeyDown = (event: KeyboardEvent<HTMLInputElement>) => {
+    if (event.key === 'Enter') commit();
+    if (event.key === 'Escape') {
+      setEditing(false);
+      setDraft(shown);
+    }
+  };
+  const message = (editing ? localError : undefined) ?? serverError;
+  return (
+    <div className={compact ? 'field field--compact' : 'field'} title={hint}>
+      <label htmlFor={id}>{compact ?? label}</label>
+      <input
+        id={id}
+        type="number"
+        inputMode="decimal"
+        step={step}
+        min={min}
+        max={max}
+        value={draft}
+        aria-label={compact ? label : undefined}
+        aria-invalid={message ? true : undefined}
+        aria-describedby={message ? `${id}-error` : undefined}
+        data-field={path}
+        onChange={(event) => {
+          setDraft(event.target.value);
+          // A spinner click or arrow key (no inputType) commits at once; typing waits for Enter/blur.
+          const typed = (event.nativeEvent as Partial<InputEvent>).inputType;
+          if (typed) setEditing(true);
+          else commitText(event.target.value);
+        }}
+        onFocus={() => setEditing(true)}
+        onBlur={commit}
+        onKeyDown={onKeyDown}
+      />
+      <FieldErrorMessage id={`${id}-error`} message={message} path={path} />
+    </div>
+  );
+}
+
+/** Why a typed text is not an acceptable value, or undefined when it is. */
+function check(text: string, integer: boolean, min?: number, max?: number): string | undefined {
+  const n = text.trim() === '' ? NaN : Number(text);
+  if (!Number.isFinite(n)) return 'must be a number';
+  if (integer && !Number.isInteger(n)) return 'must be a whole number';
+  if (min !== undefined && n < min) return `must be at least ${min}`;
+  if (max !== undefined && n > max) return `must be at most ${max}`;
+  return undefined;
+}
+
+/** A value as the field shows it: 10 significant digits, no float noise (0.30000000000000004 → 0.3). */
+export function formatNumber(value: number): string {
+  return Number.isFinite(value) ? String(Number(value.toPrecision(10))) : String(value);
+}

@@ -1,0 +1,42 @@
+/** Display names and tooltips shared by the inspector, the outline, the toolbar and the views. */
+import type { MaterialType, ObjectType } from '../model/types';
+
+export const OBJECT_LABELS: Record<ObjectType, string> = { sphere: 'Sphere', box: 'Box', plane: 'Plane' };
+
+export const OBJECT_HINTS: Record<ObjectType, string> = {
+  sphere: 'A sphere: centre and radius',
+  box: 'A box: centre, full edge lengths and rotation in degrees (x, y, z applied in order XYZ)',
+  plane: 'An infinite plane through a point, facing its normal (e.g. a floor)',
+};
+
+export const MATERIAL_LABELS: Record<MaterialType, string> = {
+  flat: 'Flat',
+  chalk: 'Chalk',
+  plastic: 'Plastic',
+  metal: 'Metal',
+  mirror: 'Mirror',
+  glass: 'Glass',
+};
+
+export const MATERIAL_HINTS: Record<MaterialType, string> = {
+  flat: 'Its colour, unlit',
+  chalk: 'Diffuse only (matte)',
+  plastic: 'Diffuse plus a white highlight',
+  metal: 'Highlight and reflection tinted by its colour',
+  mirror: 'Perfect reflection, tinted',
+  glass: 'Refraction and Fresnel reflection; its colour tints the light that enters',
+};
+
+/** Number-field settings of each material override. */
+export const OVERRIDE_FIELDS: Record<string, { label: string; min: number; max: number; step: number; hint: string }> = {
+  diffuse: { label: 'Diffuse', min: 0, max: 1, step: 0.05, hint: 'How much light the surface scatters (0–1)' },
+  specular: { label: 'Specular', min: 0, max: 1, step: 0.05, hint: 'Strength of the highlight (0–1)' },
+  shininess: { label: 'Shininess', min: 1, max: 10000, step: 10, hint: 'Highlight exponent: higher is a smaller, sharper highlight' },
+  reflectivity: { label: 'Reflectivity', min: 0, max: 1, step: 0.05, hint: 'Share of light reflected (0–1)' },
+  ior: { label: 'Index of refraction', min: 1, max: 4, step: 0.01, hint: 'Glass about 1.5, water 1.33, diamond 2.42' },
+};
+
+/** "Sphere 2 · mirror" style name of an object. */
+export function objectName(type: ObjectType, index: number): string {
+  return `${OBJECT_LABELS[type]} ${index + 1}`;
+}

@@ -1,0 +1,138 @@
+/**
+ * The defaults of the scene format, the same values as the README's table, the server's
+ * SceneDefaults and the engine's MaterialDefaults; and {@link resolveScene}, which fills them
+ * in for display.
+ */
+import type {
+  Material,
+  MaterialOf,
+  MaterialType,
+  ObjectOf,
+  ObjectType,
+  PointLight,
+  ResolvedLight,
+  ResolvedMaterial,
+  ResolvedObject,
+  ResolvedScene,
+  Scene,
+  SceneObject,
+  Vec3,
+} from './types';
+
+export const FORMAT_VERSION = 1;
+
+/** Every scene-level default (objects and lights have their own below). */
+export const SCENE_DEFAULTS: Omit<ResolvedScene, 'lights' | 'objects'> = {
+  version: FORMAT_VERSION,
+  name: 'render',
+  image: { width: 800, height: 600, format: 'png', quality: 0.92 },
+  camera: { position: [0, 2, 8], lookAt: [0, 0, 0], up: [0, 1, 0], fov: 50 },
+  background: '#20232a',
+  ambient: 0.08,
+  render: { sampler: 'jittered', samples: 16, maxDepth: 6, seed: 0 },
+};
+
+/** A light's defaults; also the one light a scene without a `lights` field has. */
+export const LIGHT_DEFAULTS: ResolvedLight = {
+  type: 'point',
+  position: [5, 8, 5],
+  color: '#ffffff',
+  intensity: 1,
+  falloff: false,
+};
+
+/** The geometry defaults of each object kind. */
+export const OBJECT_DEFAULTS: { [T in ObjectType]: Required<Omit<ObjectOf<T>, 'material'>> } = {
+  sphere: { type: 'sphere', center: [0, 1, 0], radius: 1 },
+  box: { type: 'box', center: [0, 0.5, 0], size: [1, 1, 1], rotation: [0, 0, 0] },
+  plane: { type: 'plane', point: [0, 0, 0], normal: [0, 1, 0] },
+};
+
+/** A missing material is grey chalk. */
+export const DEFAULT_MATERIAL_TYPE: MaterialType = 'chalk';
+
+const GREY = '#cccccc';
+const WHITE = '#ffffff';
+
+/** Each material kind's defaults (engine MaterialDefaults). */
+export const MATERIAL_DEFAULTS: { [T in MaterialType]: Required<MaterialOf<T>> } = {
+  flat: { type: 'flat', color: GREY },
+  chalk: { type: 'chalk', color: GREY, diffuse: 0.9 },
+  plastic: { type: 'plastic', color: GREY, diffuse: 0.8, specular: 0.5, shininess: 60 },
+  metal: { type: 'metal', color: GREY, diffuse: 0.15, specular: 0.8, shininess: 120, reflectivity: 0.5 },
+  mirror: { type: 'mirror', color: WHITE, reflectivity: 1 },
+  glass: { type: 'glass', color: WHITE, ior: 1.5, specular: 0.6, shininess: 250 },
+};
+
+const copy = (v: Vec3): Vec3 => [v[0], v[1], v[2]];
+
+/** A material with every override of its kind filled in. */
+export function resolveMaterial(material: Material | undefined): ResolvedMaterial {
+  const kind = material?.type ?? DEFAULT_MATERIAL_TYPE;
+  return { ...MATERIAL_DEFAULTS[kind], ...definedOnly(material ?? {}) } as ResolvedMaterial;
+}
+
+/** An object with its geometry defaults and its resolved material. */
+export function resolveObject(object: SceneObject): ResolvedObject {
+  const defaults = OBJECT_DEFAULTS[object.type];
+  const geometry = cloneVectors({ ...defaults, ...definedOnly(object) });
+  return { ...geometry, material: resolveMaterial(object.material) } as ResolvedObject;
+}
+
+export function resolveLight(light: PointLight): ResolvedLight {
+  return cloneVectors({ ...LIGHT_DEFAULTS, ...definedOnly(light) });
+}
+
+/** The lights a scene really has: its own, or the default light when the field is left out. */
+export function sceneLights(scene: Scene): PointLight[] {
+  return scene.lights ?? [{ ...LIGHT_DEFAULTS, position: copy(LIGHT_DEFAULTS.position) }];
+}
+
+/** The scene with every default filled in; the input is not changed. */
+export function resolveScene(scene: Scene): ResolvedScene {
+  const d = SCENE_DEFAULTS;
+  return {
+    version: scene.version ?? d.version,
+    name: scene.name ?? d.name,
+    image: { ...d.image, ...definedOnly(scene.image ?? {}) },
+    camera: cloneVectors({ ...d.camera, ...definedOnly(scene.camera ?? {}) }),
+    background: scene.background ?? d.background,
+    ambient: scene.ambient ?? d.ambient,
+    render: { ...d.render, ...definedOnly(scene.render ?? {}) },
+    lights: sceneLights(scene).map(resolveLight),
+    objects: scene.objects.map(resolveObject),
+  };
+}
+
+/** The image's width / height, as the engine's camera uses it. */
+export function imageAspect(scene: Scene): number {
+  const { width, height } = resolveScene({ ...scene, objects: [] }).image;
+  return width / height;
+}
+
+/** A new object of a kind as the toolbar adds it: its defaults written out, grey chalk. */
+export function newObject(kind: ObjectType): SceneObject {
+  const object = cloneVectors({ ...OBJECT_DEFAULTS[kind] }) as SceneObject;
+  const material: Material = kind === 'plane' ? { type: 'chalk', color: '#c8c0b0' } : { type: 'plastic', color: '#4f8fd6' };
+  return { ...object, material };
+}
+
+/** A new light, written out in full. */
+export function newLight(): PointLight {
+  return { ...LIGHT_DEFAULTS, position: copy(LIGHT_DEFAULTS.position) };
+}
+
+/** A blank scene for "New": no objects, the default light written out. */
+export function blankScene(): Scene {
+  return { version: FORMAT_VERSION, name: 'untitled', lights: [newLight()], objects: [] };
+}
+
+function definedOnly<T extends object>(value: T): Partial<T> {
+  return Object.fromEntries(Object.entries(value).filter(([, v]) => v !== undefined)) as Partial<T>;
+}
+
+function cloneVectors<T extends object>(value: T): T {
+  return Object.fromEntries(
+    Object.entries(value).map(([k, v]) => [k, Array.isArray(v) ? [...v] : v]),
+  ) as T;
+}

@@ -1,0 +1,160 @@
+/**
+ * Pure scene edits: each takes a scene and returns a new one (the input is never changed).
+ * The store wraps each in a named action that pushes one history entry; drags use the same
+ * functions for their transient preview.
+ */
+import { newLight, newObject, resolveObject, sceneLights, SCENE_DEFAULTS } from './defaults';
+import type { DragTarget } from './selection';
+import {
+  MATERIAL_FIELDS,
+  type CameraSettings,
+  type ImageSettings,
+  type Material,
+  type MaterialType,
+  type ObjectType,
+  type PointLight,
+  type RenderSettings,
+  type Scene,
+  type SceneObject,
+  type Vec3,
+} from './types';
+import { add, normalize, scale } from './vec';
+
+/** Distance a duplicate is moved from its original, so both stay visible. */
+export const DUPLICATE_OFFSET: Vec3 = [0.5, 0, 0.5];
+
+export function addObject(scene: Scene, kind: ObjectType): Scene {
+  return { ...scene, objects: [...scene.objects, newObject(kind)] };
+}
+
+export function addLight(scene: Scene): Scene {
+  const light = newLight();
+  const lights = sceneLights(scene);
+  if (lights.length > 0) light.position = add(light.position!, [-2 * lights.length, 0, 0]);
+  return { ...scene, lights: [...lights, light] };
+}
+
+export function removeObject(scene: Scene, index: number): Scene {
+  return { ...scene, objects: scene.objects.filter((_, i) => i !== index) };
+}
+
+export function removeLight(scene: Scene, index: number): Scene {
+  return { ...scene, lights: sceneLights(scene).filter((_, i) => i !== index) };
+}
+
+export function duplicateObject(scene: Scene, index: number): Scene {
+  const original = scene.objects[index];
+  if (!original) return scene;
+  const copy = structuredClone(original);
+  const resolved = resolveObject(original);
+  if (copy.type === 'plane' && resolved.type === 'plane') {
+    // A plane moved sideways is the same plane: move it half a metre along its normal.
+    copy.point = add(resolved.point, scale(normalize(resolved.normal), 0.5));
+  } else if (copy.type !== 'plane' && resolved.type !== 'plane') {
+    copy.center = add(resolved.center, DUPLICATE_OFFSET);
+  }
+  const objects = [...scene.objects];
+  objects.splice(index + 1, 0, copy);
+  return { ...scene, objects };
+}
+
+export function duplicateLight(scene: Scene, index: number): Scene {
+  const lights = sceneLights(scene);
+  const original = lights[index];
+  if (!original) return scene;
+  const copy = structuredClone(original);
+  copy.position = add(original.position ?? newLight().position!, DUPLICATE_OFFSET);
+  const next = [...lights];
+  next.splice(index + 1, 0, copy);
+  return { ...scene, lights: next };
+}
+
+/** Sets one field of an object (its geometry, or the whole `material`). */
+export function setObjectField<K extends string>(scene: Scene, index: number, field: K, value: unknown): Scene {
+  if (!scene.objects[index]) return scene;
+  const objects = scene.objects.map((o, i) => (i === index ? ({ ...o, [field]: value } as SceneObject) : o));
+  return { ...scene, objects };
+}
+
+/** Moves an object: a sphere's or box's centre, a plane's point. */
+export function moveObject(scene: Scene, index: number, to: Vec3): Scene {
+  const object = scene.objects[index];
+  if (!object) return scene;
+  return setObjectField(scene, index, object.type === 'plane' ? 'point' : 'center', [...to]);
+}
+
+export function setMaterial(scene: Scene, index: number, material: Material): Scene {
+  return setObjectField(scene, index, 'material', material);
+}
+
+/**
+ * A material of another kind, keeping the colour and every override the new kind also takes.
+ */
+export function changeMaterialType(material: Material | undefined, type: MaterialType): Material {
+  const fields: readonly string[] = MATERIAL_FIELDS[type];
+  const kept = Object.entries(material ?? {}).filter(([k]) => k !== 'type' && fields.includes(k));
+  const next = { type, ...Object.fromEntries(kept) } as Material;
+  return next;
+}
+
+export function setLightField<K extends keyof PointLight>(scene: Scene, index: number, field: K, value: PointLight[K]): Scene {
+  const lights = sceneLights(scene);
+  if (!lights[index]) return scene;
+  return { ...scene, lights: lights.map((l, i) => (i === index ? { ...l, [field]: value } : l)) };
+}
+
+export function moveLight(scene: Scene, index: number, to: Vec3): Scene {
+  return setLightField(scene, index, 'position', [...to] as Vec3);
+}
+
+export function setCamera(scene: Scene, patch: Partial<CameraSettings>): Scene {
+  return { ...scene, camera: { ...scene.camera, ...patch } };
+}
+
+export function setImage(scene: Scene, patch: Partial<ImageSettings>): Scene {
+  return { ...scene, image: { ...scene.image, ...patch } };
+}
+
+export function setRender(scene: Scene, patch: Partial<RenderSettings>): Scene {
+  return { ...scene, render: { ...scene.render, ...patch } };
+}
+
+/** Where a draggable thing is, with defaults filled in. */
+export function positionOf(scene: Scene, target: DragTarget): Vec3 | null {
+  switch (target.kind) {
+    case 'object': {
+      const object = scene.objects[target.index];
+      if (!object) return null;
+      const r = resolveObject(object);
+      return r.type === 'plane' ? r.point : r.center;
+    }
+    case 'light': {
+      const light = sceneLights(scene)[target.index];
+      return light ? (light.position ?? newLight().position!) : null;
+    }
+    case 'camera':
+      return scene.camera?.position ?? SCENE_DEFAULTS.camera.position;
+    case 'target':
+      return scene.camera?.lookAt ?? SCENE_DEFAULTS.camera.lookAt;
+  }
+}
+
+/** Moves whatever a drag holds to a new position. */
+export function moveTarget(scene: Scene, target: DragTarget, to: Vec3): Scene {
+  switch (target.kind) {
+    case 'object':
+      return moveObject(scene, target.index, to);
+    case 'light':
+      return moveLight(scene, target.index, to);
+    case 'camera':
+      return setCamera(scene, { position: [...to] as Vec3 });
+    case 'target':
+      return setCamera(scene, { lookAt: [...to] as Vec3 });
+  }
+}
+
+/** Moves a target by an offset from where it is now. */
+export function nudgeTarget(scene: Scene, target: DragTarget, by: Vec3): Scene {
+  const at = positionOf(scene, target);
+  return at ? moveTarget(scene, target, add(at, by)) : scene;
+}

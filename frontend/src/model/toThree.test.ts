@@ -1,0 +1,151 @@
+import { BoxGeometry, Euler, Mesh, Quaternion, Vector3 } from 'three';
+import { describe, expect, it } from 'vitest';
+import { cameraFrame } from './projection';
+import { letterbox, LIGHT_SCALE, makeRenderCamera, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
+import type { Scene, Vec3 } from './types';
+import { rotateXYZ } from './vec';
+
+/** The engine's camera (Camera.java + Renderer.java), ported: the ray through a pixel position. */
+function engineRay(position: Vec3, lookAt: Vec3, up: Vec3, fov: number, width: number, height: number) {
+  const f = cameraFrame(position, lookAt, up)!;
+  const t = Math.tan((fov * Math.PI) / 180 / 2);
+  const aspect = width / height;
+  /** `px`, `py` are continuous: pixel (x, y)'s centre is (x + 0.5, y + 0.5). */
+  return (px: number, py: number): Vec3 => {
+    const ndcX = (2 * px) / width - 1;
+    const ndcY = 1 - (2 * py) / height;
+    const x = ndcX * t * aspect;
+    const y = ndcY * t;
+    return [0, 1, 2].map((i) => x * f.u[i] + y * f.v[i] - f.w[i]) as Vec3;
+  };
+}
+
+/** Inverts the engine's mapping: the pixel position whose ray passes through `p`. */
+function enginePixel(position: Vec3, lookAt: Vec3, up: Vec3, fov: number, width: number, height: number, p: Vec3) {
+  const f = cameraFrame(position, lookAt, up)!;
+  const d = [0, 1, 2].map((i) => p[i] - position[i]) as Vec3;
+  const depth = -(d[0] * f.w[0] + d[1] * f.w[1] + d[2] * f.w[2]);
+  const x = (d[0] * f.u[0] + d[1] * f.u[1] + d[2] * f.u[2]) / depth;
+  const y = (d[0] * f.v[0] + d[1] * f.v[1] + d[2] * f.v[2]) / depth;
+  const t = Math.tan((fov * Math.PI) / 180 / 2);
+  const ndcX = x / (t * (width / height));
+  const ndcY = y / t;
+  return [((ndcX + 1) * width) / 2, ((1 - ndcY) * height) / 2] as [number, number];
+}
+
+function rng(seed: number) {
+  let s = seed >>> 0;
+  return () => {
+    s = (s * 1664525 + 1013904223) >>> 0;
+    return s / 2 ** 32;
+  };
+}
+
+const CAMERAS: { position: Vec3; lookAt: Vec3; up: Vec3 }[] = [
+  { position: [0, 2, 8], lookAt: [0, 0, 0], up: [0, 1, 0] },
+  { position: [4, 3, 6], lookAt: [0, 0.7, 0], up: [0, 1, 0] },
+  { position: [-7, 1, -3], lookAt: [2, 2, 5], up: [0.2, 1, 0.1] },
+  { position: [1e3, 50, -200], lookAt: [990, 52, -190], up: [0, 0, 1] },
+];
+
+describe('the preview camera frames the scene as the engine does', () => {
+  const sizes: [number, number][] = [[800, 600], [600, 800], [1920, 1080], [1, 1]];
+  for (const [width, height] of sizes) {
+    for (const fov of [10, 50, 120]) {
+      it(`puts world points on the engine's pixel within half a pixel at ${width}x${height}, fov ${fov}`, () => {
+        const r = rng(width * 7 + height * 13 + fov);
+        for (const cam of CAMERAS) {
+          const scene: Scene = { image: { width, height }, camera: { ...cam, fov }, objects: [] };
+          const three = makeRenderCamera(sceneToThree(scene).camera);
+          const ray = engineRay(cam.position, cam.lookAt, cam.up, fov, width, height);
+          let checked = 0;
+          for (let i = 0; i < 60; i++) {
+            // A pixel position inside the image, and a point some way along its engine ray.
+            const px = r() * width;
+            const py = r() * height;
+            const dir = ray(px, py);
+            const dist = 0.5 + r() * 20;
+            const p = [0, 1, 2].map((k) => cam.position[k] + dir[k] * dist) as Vec3;
+            const [ex, ey] = enginePixel(cam.position, cam.lookAt, cam.up, fov, width, height, p);
+            expect(Math.abs(ex - px)).toBeLessThan(1e-6 * Math.max(1, width));
+            expect(Math.abs(ey - py)).toBeLessThan(1e-6 * Math.max(1, height));
+            const [tx, ty] = projectToPixel(three, p, width, height);
+            expect(Math.abs(tx - ex)).toBeLessThan(0.5);
+            expect(Math.abs(ty - ey)).toBeLessThan(0.5);
+            checked++;
+          }
+          expect(checked).toBe(60);
+        }
+      });
+    }
+  }
+
+  it('sees the target at the image centre', () => {
+    const three = makeRenderCamera(sceneToThree({ camera: { lookAt: [1, 1, 1] }, objects: [] }).camera);
+    const [x, y] = projectToPixel(three, [1, 1, 1], 800, 600);
+    expect(x).toBeCloseTo(400, 6);
+    expect(y).toBeCloseTo(300, 6);
+  });
+});
+
+describe('sceneToThree', () => {
+  const scene: Scene = {
+    background: '#112233',
+    ambient: 0.1,
+    lights: [{ type: 'point', position: [1, 2, 3], color: '#ff0000', intensity: 0.5, falloff: true }, { type: 'point' }],
+    objects: [
+      { type: 'sphere', center: [1, 2, 3], radius: 2, material: { type: 'flat', color: '#00ff00' } },
+      { type: 'box', center: [0, 1, 0], size: [1, 2, 3], rotation: [10, 20, 30], material: { type: 'plastic' } },
+      { type: 'plane', point: [0, -1, 0], normal: [0, 2, 0], material: { type: 'glass', ior: 1.4 } },
+      { type: 'sphere', material: { type: 'metal', reflectivity: 1 } },
+      { type: 'sphere', material: { type: 'mirror' } },
+      { type: 'sphere' },
+    ],
+  };
+
+  it('maps geometry, materials, lights, background and ambient', () => {
+    const d = sceneToThree(scene, { kind: 'object', index: 1 });
+    expect(d.background).toBe('#112233');
+    expect(d.ambient).toBeCloseTo(0.1 * LIGHT_SCALE);
+    expect(d.meshes.map((m) => m.geometry)).toEqual(['sphere', 'box', 'plane', 'sphere', 'sphere', 'sphere']);
+    expect(d.meshes[0]).toMatchObject({ position: [1, 2, 3], scale: [2, 2, 2], material: { kind: 'basic', color: '#00ff00' }, selected: false });
+    expect(d.meshes[1]).toMatchObject({ scale: [1, 2, 3], selected: true, material: { kind: 'phong', diffuse: 0.8, specular: 0.5, shininess: 60 } });
+    expect(d.meshes[1].rotation.map((a) => (a * 180) / Math.PI)).toEqual([10, 20, 30].map((a) => expect.closeTo(a, 9)));
+    expect(d.meshes[2].material).toMatchObject({ kind: 'physical', ior: 1.4 });
+    expect(d.meshes[2].position[1]).toBeCloseTo(-1);
+    expect(d.meshes[3].material).toMatchObject({ kind: 'standard', metalness: 1 });
+    expect(d.meshes[4].material).toEqual({ kind: 'standard', color: '#ffffff', metalness: 1, roughness: 0 });
+    expect(d.meshes[5].material).toMatchObject({ kind: 'lambert', diffuse: 0.9 });
+    expect(d.lights).toEqual([
+      { index: 0, position: [1, 2, 3], color: '#ff0000', intensity: 0.5 * LIGHT_SCALE, decay: 2, selected: false },
+      { index: 1, position: [5, 8, 5], color: '#ffffff', intensity: LIGHT_SCALE, decay: 0, selected: false },
+    ]);
+    expect(d.camera).toMatchObject({ fov: 50, aspect: 800 / 600, position: [0, 2, 8] });
+    expect(d.camera.far).toBeGreaterThan(d.extent);
+  });
+
+  it('rotates a box as the engine does (Euler XYZ in degrees)', () => {
+    const d = sceneToThree(scene).meshes[1];
+    const mesh = new Mesh(new BoxGeometry(1, 1, 1));
+    mesh.rotation.copy(new Euler(...d.rotation, 'XYZ'));
+    const v = new Vector3(0.3, -0.7, 1.1).applyEuler(mesh.rotation);
+    const ours = rotateXYZ([0.3, -0.7, 1.1], [10, 20, 30]);
+    expect([v.x, v.y, v.z].map((c, i) => c - ours[i]).every((e) => Math.abs(e) < 1e-12)).toBe(true);
+  });
+
+  it('turns the plane quad (+z) onto the plane normal', () => {
+    for (const n of [[0, 1, 0], [0, 0, -1], [1, 1, 1], [0, -3, 0]] as Vec3[]) {
+      const q = new Quaternion(...quaternionFromZ(n));
+      const z = new Vector3(0, 0, 1).applyQuaternion(q);
+      const len = Math.hypot(...n);
+      expect(z.x).toBeCloseTo(n[0] / len, 9);
+      expect(z.y).toBeCloseTo(n[1] / len, 9);
+      expect(z.z).toBeCloseTo(n[2] / len, 9);
+    }
+  });
+
+  it('letterboxes to the image aspect', () => {
+    expect(letterbox(800, 800, 2)).toEqual({ width: 800, height: 400, left: 0, top: 200 });
+    expect(letterbox(800, 300, 2)).toEqual({ width: 600, height: 300, left: 100, top: 0 });
+  });
+});

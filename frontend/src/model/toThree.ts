@@ -1,0 +1,203 @@
+/**
+ * Pure mapping of a scene onto what the three.js preview draws: plain descriptors (no three
+ * objects, no React), plus the one helper that builds the render camera as a three.js
+ * PerspectiveCamera. The preview component turns descriptors into meshes.
+ */
+import { PerspectiveCamera, Vector3 } from 'three';
+import { resolveScene } from './defaults';
+import type { Selection } from './selection';
+import type { ResolvedMaterial, ResolvedObject, Scene, Vec3 } from './types';
+import { cross, dot, length, normalize, sub } from './vec';
+
+/**
+ * three.js lights divide diffuse light by pi (physically based units); the engine does not.
+ * Light and ambient intensities are multiplied by this so a chalk surface looks as bright.
+ */
+export const LIGHT_SCALE = Math.PI;
+
+/** How a material is approximated in the preview. */
+export type MaterialDescriptor =
+  | { kind: 'basic'; color: string }
+  | { kind: 'lambert'; color: string; diffuse: number }
+  | { kind: 'phong'; color: string; diffuse: number; specular: number; shininess: number }
+  | { kind: 'standard'; color: string; metalness: number; roughness: number }
+  | { kind: 'physical'; color: string; transmission: number; opacity: number; ior: number; roughness: number };
+
+export interface MeshDescriptor {
+  /** Index of the scene object. */
+  index: number;
+  /** Shared unit geometry: sphere radius 1, box edge 1, plane 1x1 in its x-y plane (normal +z). */
+  geometry: 'sphere' | 'box' | 'plane';
+  position: Vec3;
+  scale: Vec3;
+  /** Euler angles in radians, order XYZ (boxes); planes use `quaternion` instead. */
+  rotation: Vec3;
+  /** [x, y, z, w]; identity except for planes. */
+  quaternion: [number, number, number, number];
+  material: MaterialDescriptor;
+  selected: boolean;
+}
+
+export interface LightDescriptor {
+  index: number;
+  position: Vec3;
+  color: string;
+  /** three.js intensity (scene intensity times {@link LIGHT_SCALE}). */
+  intensity: number;
+  /** three.js decay: 0 without fall-off, 2 (inverse square) with. */
+  decay: number;
+  selected: boolean;
+}
+
+export interface CameraDescriptor {
+  position: Vec3;
+  lookAt: Vec3;
+  up: Vec3;
+  /** Vertical field of view in degrees. */
+  fov: number;
+  /** Image width / height. */
+  aspect: number;
+  near: number;
+  far: number;
+}
+
+export interface ThreeSceneDescriptor {
+  background: string;
+  /** three.js ambient intensity (scene ambient times {@link LIGHT_SCALE}). */
+  ambient: number;
+  camera: CameraDescriptor;
+  meshes: MeshDescriptor[];
+  lights: LightDescriptor[];
+  /** A length that covers the scene seen from the camera (for far planes and plane quads). */
+  extent: number;
+}
+
+/** Maps a material kind onto the closest three.js material. */
+export function materialToThree(m: ResolvedMaterial): MaterialDescriptor {
+  switch (m.type) {
+    case 'flat':
+      return { kind: 'basic', color: m.color };
+    case 'chalk':
+      return { kind: 'lambert', color: m.color, diffuse: m.diffuse };
+    case 'plastic':
+      return { kind: 'phong', color: m.color, diffuse: m.diffuse, specular: m.specular, shininess: m.shininess };
+    case 'metal':
+      return { kind: 'standard', color: m.color, metalness: 0.5 + 0.5 * m.reflectivity, roughness: shininessToRoughness(m.shininess) };
+    case 'mirror':
+      return { kind: 'standard', color: m.color, metalness: 1, roughness: 0 };
+    case 'glass':
+      return { kind: 'physical', color: m.color, transmission: 1, opacity: 0.5, ior: m.ior, roughness: 0 };
+  }
+}
+
+/** Blinn-Phong exponent to a GGX roughness (the usual sqrt(2 / (n + 2))). */
+export function shininessToRoughness(shininess: number): number {
+  return Math.min(1, Math.max(0.05, Math.sqrt(2 / (shininess + 2))));
+}
+
+/** The quaternion [x, y, z, w] turning +z onto the direction of `normal`. */
+export function quaternionFromZ(normal: Vec3): [number, number, number, number] {
+  const n = normalize(normal);
+  const d = n[2];
+  if (d < -1 + 1e-12) return [1, 0, 0, 0];
+  const axis = cross([0, 0, 1], n);
+  const q: [number, number, number, number] = [axis[0], axis[1], axis[2], 1 + d];
+  const l = Math.hypot(...q);
+  return q.map((c) => c / l) as [number, number, number, number];
+}
+
+function meshOf(o: ResolvedObject, index: number, selected: boolean, camera: Vec3, extent: number): MeshDescriptor {
+  const base = { index, selected, material: materialToThree(o.material), rotation: [0, 0, 0] as Vec3, quaternion: [0, 0, 0, 1] as [number, number, number, number] };
+  switch (o.type) {
+    case 'sphere':
+      return { ...base, geometry: 'sphere', position: o.center, scale: [o.radius, o.radius, o.radius] };
+    case 'box':
+      return { ...base, geometry: 'box', position: o.center, scale: o.size, rotation: o.rotation.map(toRadians) as Vec3 };
+    case 'plane': {
+      // An infinite plane drawn as a large square centred where it is nearest the camera.
+      const n = normalize(o.normal);
+      const off = dot(sub(camera, o.point), n);
+      const near: Vec3 = [camera[0] - off * n[0], camera[1] - off * n[1], camera[2] - off * n[2]];
+      const size = extent * 4;
+      return { ...base, geometry: 'plane', position: near, scale: [size, size, 1], quaternion: quaternionFromZ(o.normal) };
+    }
+  }
+}
+
+const toRadians = (d: number) => (d * Math.PI) / 180;
+
+/** The whole preview scene, with the selected object or light marked. */
+export function sceneToThree(scene: Scene, selection: Selection = null): ThreeSceneDescriptor {
+  const r = resolveScene(scene);
+  const cam = r.camera;
+  const targetDistance = Math.max(length(sub(cam.lookAt, cam.position)), 1e-9);
+  let reach = targetDistance;
+  for (const o of r.objects) {
+    if (o.type === 'sphere') reach = Math.max(reach, length(sub(o.center, cam.position)) + o.radius);
+    if (o.type === 'box') reach = Math.max(reach, length(sub(o.center, cam.position)) + length(o.size));
+  }
+  for (const l of r.lights) reach = Math.max(reach, length(sub(l.position, cam.position)));
+  const extent = reach * 2;
+  return {
+    background: r.background,
+    ambient: r.ambient * LIGHT_SCALE,
+    camera: {
+      position: cam.position,
+      lookAt: cam.lookAt,
+      up: cam.up,
+      fov: cam.fov,
+      aspect: r.image.width / r.image.height,
+      near: targetDistance / 1000,
+      far: extent * 4,
+    },
+    meshes: r.objects.map((o, i) => meshOf(o, i, selection?.kind === 'object' && selection.index === i, cam.position, extent)),
+    lights: r.lights.map((l, i) => ({
+      index: i,
+      position: l.position,
+      color: l.color,
+      intensity: l.intensity * LIGHT_SCALE,
+      decay: l.falloff ? 2 : 0,
+      selected: selection?.kind === 'light' && selection.index === i,
+    })),
+    extent,
+  };
+}
+
+/** Puts a three.js PerspectiveCamera where the render camera is (position, up, lookAt, fov, aspect). */
+export function applyRenderCamera(camera: PerspectiveCamera, d: CameraDescriptor): PerspectiveCamera {
+  camera.fov = d.fov;
+  camera.aspect = d.aspect;
+  camera.near = d.near;
+  camera.far = d.far;
+  camera.zoom = 1;
+  camera.position.set(...d.position);
+  camera.up.set(...d.up);
+  camera.lookAt(new Vector3(...d.lookAt));
+  camera.updateProjectionMatrix();
+  camera.updateMatrixWorld();
+  return camera;
+}
+
+/** A new PerspectiveCamera framing exactly what the engine renders. */
+export function makeRenderCamera(d: CameraDescriptor): PerspectiveCamera {
+  return applyRenderCamera(new PerspectiveCamera(), d);
+}
+
+/**
+ * Where a world point lands in the rendered image, in continuous pixel coordinates (the
+ * centre of pixel (i, j) is (i + 0.5, j + 0.5)), via the three.js camera.
+ */
+export function projectToPixel(camera: PerspectiveCamera, point: Vec3, width: number, height: number): [number, number] {
+  const ndc = new Vector3(...point).project(camera);
+  return [((ndc.x + 1) / 2) * width, ((1 - ndc.y) / 2) * height];
+}
+
+/**
+ * The largest box of the given aspect that fits a container, centred (letterboxing):
+ * `{ width, height, left, top }` in the container's pixels.
+ */
+export function letterbox(containerWidth: number, containerHeight: number, aspect: number) {
+  const width = Math.min(containerWidth, containerHeight * aspect);
+  const height = width / aspect;
+  return { width, height, left: (containerWidth - width) / 2, top: (containerHeight - height) / 2 };
+}

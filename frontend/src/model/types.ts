@@ -1,0 +1,213 @@
+/**
+ * The scene format (README "The scene format"), as TypeScript types. Every field but
+ * `objects` may be left out and then takes its default (see `defaults.ts`). Polymorphic
+ * elements are discriminated unions on `type`; each material kind carries only its own
+ * overrides, exactly as the server's DTOs and the published JSON Schema.
+ */
+
+/** A point or direction `[x, y, z]`: metres, right-handed, y up (as three.js). */
+export type Vec3 = [number, number, number];
+
+/** An sRGB colour `"#rrggbb"`, as `<input type="color">` gives it. */
+export type Color = string;
+
+/** Its colour, unlit. */
+export interface FlatMaterial {
+  type: 'flat';
+  color?: Color;
+}
+
+/** Diffuse only. */
+export interface ChalkMaterial {
+  type: 'chalk';
+  color?: Color;
+  diffuse?: number;
+}
+
+/** Diffuse plus a white highlight. */
+export interface PlasticMaterial {
+  type: 'plastic';
+  color?: Color;
+  diffuse?: number;
+  specular?: number;
+  shininess?: number;
+}
+
+/** Highlight and reflection tinted by its colour. */
+export interface MetalMaterial {
+  type: 'metal';
+  color?: Color;
+  diffuse?: number;
+  specular?: number;
+  shininess?: number;
+  reflectivity?: number;
+}
+
+/** Perfect reflection, tinted. */
+export interface MirrorMaterial {
+  type: 'mirror';
+  color?: Color;
+  reflectivity?: number;
+}
+
+/** Refraction with an index of refraction, Fresnel reflection; its colour tints the light. */
+export interface GlassMaterial {
+  type: 'glass';
+  color?: Color;
+  ior?: number;
+  specular?: number;
+  shininess?: number;
+}
+
+export type Material =
+  | FlatMaterial
+  | ChalkMaterial
+  | PlasticMaterial
+  | MetalMaterial
+  | MirrorMaterial
+  | GlassMaterial;
+export type MaterialType = Material['type'];
+/** The material of one kind, e.g. `MaterialOf<'glass'>` is {@link GlassMaterial}. */
+export type MaterialOf<T extends MaterialType> = Extract<Material, { type: T }>;
+
+export interface Sphere {
+  type: 'sphere';
+  center?: Vec3;
+  radius?: number;
+  material?: Material;
+}
+
+/** A box: centre, full edge lengths, rotation in degrees about x, y, z (three.js order XYZ). */
+export interface Box {
+  type: 'box';
+  center?: Vec3;
+  size?: Vec3;
+  rotation?: Vec3;
+  material?: Material;
+}
+
+/** An infinite plane through `point` with the given normal (any non-zero length). */
+export interface Plane {
+  type: 'plane';
+  point?: Vec3;
+  normal?: Vec3;
+  material?: Material;
+}
+
+export type SceneObject = Sphere | Box | Plane;
+export type ObjectType = SceneObject['type'];
+export type ObjectOf<T extends ObjectType> = Extract<SceneObject, { type: T }>;
+
+/** A point light; without `falloff` its irradiance does not depend on distance. */
+export interface PointLight {
+  type: 'point';
+  position?: Vec3;
+  color?: Color;
+  intensity?: number;
+  falloff?: boolean;
+}
+
+export type Light = PointLight;
+export type LightType = Light['type'];
+
+export type ImageFormat = 'png' | 'jpg';
+export type SamplerName = 'jittered' | 'regular';
+
+export interface ImageSettings {
+  width?: number;
+  height?: number;
+  format?: ImageFormat;
+  /** JPEG quality in [0, 1]. */
+  quality?: number;
+}
+
+/** A perspective camera; `fov` is the vertical field of view in degrees (as three.js). */
+export interface CameraSettings {
+  position?: Vec3;
+  lookAt?: Vec3;
+  up?: Vec3;
+  fov?: number;
+}
+
+export interface RenderSettings {
+  sampler?: SamplerName;
+  samples?: number;
+  maxDepth?: number;
+  seed?: number;
+}
+
+/** A whole scene file. */
+export interface Scene {
+  version?: number;
+  name?: string;
+  image?: ImageSettings;
+  camera?: CameraSettings;
+  background?: Color;
+  ambient?: number;
+  render?: RenderSettings;
+  /** Left out: one white light at [5,8,5]; `[]`: no lights. */
+  lights?: Light[];
+  objects: SceneObject[];
+}
+
+/** Every field present: what the renderer will use. */
+type Complete<T> = { [K in keyof T]-?: Exclude<T[K], undefined> };
+
+export type ResolvedMaterial = { [T in MaterialType]: Complete<MaterialOf<T>> }[MaterialType];
+export type ResolvedObject = {
+  [T in ObjectType]: Complete<Omit<ObjectOf<T>, 'material'>> & { material: ResolvedMaterial };
+}[ObjectType];
+export type ResolvedLight = Complete<PointLight>;
+
+/** A scene with every default filled in (for display; files keep what the user wrote). */
+export interface ResolvedScene {
+  version: number;
+  name: string;
+  image: Complete<ImageSettings>;
+  camera: Complete<CameraSettings>;
+  background: Color;
+  ambient: number;
+  render: Complete<RenderSettings>;
+  lights: ResolvedLight[];
+  objects: ResolvedObject[];
+}
+
+/**
+ * The field names of each kind, checked against the types at compile time (a missing or
+ * extra name is a type error), so a test can compare them with the server's JSON Schema.
+ */
+function fieldsOf<T>() {
+  return <const K extends readonly (keyof T)[]>(
+    keys: K & ([Exclude<keyof T, K[number]>] extends [never] ? unknown : { missing: Exclude<keyof T, K[number]> }),
+  ): K => keys;
+}
+
+export const OBJECT_FIELDS = {
+  sphere: fieldsOf<Sphere>()(['type', 'center', 'radius', 'material']),
+  box: fieldsOf<Box>()(['type', 'center', 'size', 'rotation', 'material']),
+  plane: fieldsOf<Plane>()(['type', 'point', 'normal', 'material']),
+} as const;
+
+export const MATERIAL_FIELDS = {
+  flat: fieldsOf<FlatMaterial>()(['type', 'color']),
+  chalk: fieldsOf<ChalkMaterial>()(['type', 'color', 'diffuse']),
+  plastic: fieldsOf<PlasticMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess']),
+  metal: fieldsOf<MetalMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess', 'reflectivity']),
+  mirror: fieldsOf<MirrorMaterial>()(['type', 'color', 'reflectivity']),
+  glass: fieldsOf<GlassMaterial>()(['type', 'color', 'ior', 'specular', 'shininess']),
+} as const;
+
+export const LIGHT_FIELDS = {
+  point: fieldsOf<PointLight>()(['type', 'position', 'color', 'intensity', 'falloff']),
+} as const;
+
+export const SCENE_FIELDS = fieldsOf<Scene>()([
+  'version', 'name', 'image', 'camera', 'background', 'ambient', 'render', 'lights', 'objects',
+]);
+export const IMAGE_FIELDS = fieldsOf<ImageSettings>()(['width', 'height', 'format', 'quality']);
+export const CAMERA_FIELDS = fieldsOf<CameraSettings>()(['position', 'lookAt', 'up', 'fov']);
+export const RENDER_FIELDS = fieldsOf<RenderSettings>()(['sampler', 'samples', 'maxDepth', 'seed']);
+
+export const OBJECT_TYPES = Object.keys(OBJECT_FIELDS) as ObjectType[];
+export const MATERIAL_TYPES = Object.keys(MATERIAL_FIELDS) as MaterialType[];
+export const LIGHT_TYPES = Object.keys(LIGHT_FIELDS) as LightType[];

@@ -1,0 +1,51 @@
+import type { FieldError } from '../api/client';
+
+/** Props of {@link ErrorSummary}. */
+export interface ErrorSummaryProps {
+  /** The server's headline, e.g. "Invalid scene". */
+  title: string;
+  /** The server's explanation, shown when it names no field. */
+  detail?: string;
+  /** The invalid fields, by JSON path. */
+  errors: FieldError[];
+}
+
+/** The summary of a rejected scene: one line per invalid field ("field — message"). */
+export function ErrorSummary({ title, detail, errors }: ErrorSummaryProps) {
+  const heading =
+    errors.length === 0 ? title : `${title}: ${errors.length} ${errors.length === 1 ? 'problem' : 'problems'}`;
+  return (
+    <div className="error-summary" role="alert" data-testid="error-summary">
+      <strong>{heading}</strong>
+      {errors.length === 0 && detail && <p>{detail}</p>}
+      {errors.length > 0 && (
+        <ul>
+          {errors.map((error, index) => (
+            <li key={`${error.field}-${index}`}>
+              {error.field ? (
+                <>
+                  <code>{error.field}</code> — {error.message}
+                </>
+              ) : (
+                error.message
+              )}
+            </li>
+          ))}
+        </ul>
+      )}
+    </div>
+  );
+}
+
+/**
+ * The field errors as the editor shows them next to its inputs: `{field: message}`, with the
+ * messages of a field named twice joined by "; ". Errors that name no field are left out.
+ */
+export function toFieldErrorMap(errors: FieldError[]): Record<string, string> {
+  const map: Record<string, string> = {};
+  for (const { field, message } of errors) {
+    if (!field) continue;
+    map[field] = map[field] ? `${map[field]}; ${message}` : message;
+  }
+  return map;
+}

@@ -1,0 +1,37 @@
+import { formatMillis, formatRate } from './format';
+import type { FinishedImage } from './useRenderJob';
+
+/** Props of {@link RenderResult}. */
+export interface RenderResultProps {
+  /** The finished image; its URL is owned by the render hook. */
+  image: FinishedImage;
+}
+
+/** The finished image with its size, render time, rays per second and a Download link. */
+export function RenderResult({ image }: RenderResultProps) {
+  return (
+    <figure className="render-result">
+      <div className="render-frame">
+        <img
+          src={image.url}
+          alt={`Rendered image ${image.filename}`}
+          width={image.width || undefined}
+          height={image.height || undefined}
+          data-testid="render-image"
+        />
+      </div>
+      <figcaption className="render-result__meta" data-testid="render-stats">
+        {image.width > 0 && image.height > 0 && (
+          <span>
+            {image.width} × {image.height} px
+          </span>
+        )}
+        <span>{formatMillis(image.renderMillis)}</span>
+        {image.raysPerSecond !== null && <span>{formatRate(image.raysPerSecond)}</span>}
+        <a className="button" href={image.url} download={image.filename} data-testid="download-link">
+          Download {image.filename}
+        </a>
+      </figcaption>
+    </figure>
+  );
+}

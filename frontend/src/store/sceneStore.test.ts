@@ -1,0 +1,154 @@
+import { describe, expect, it } from 'vitest';
+import { STARTER_SCENE } from '../model/starterScene';
+import type { Scene } from '../model/types';
+import { loadSavedScene, STORAGE_KEY } from './persistence';
+import { persistSceneStore, resetSceneStore, useSceneStore, type SceneState } from './sceneStore';
+
+const store = () => useSceneStore.getState();
+
+/** Each named action, with a selection to start from where it needs one. */
+const ACTIONS: [string, (s: SceneState) => void, SceneState['selection']?][] = [
+  ['loadScene', (s) => s.loadScene({ name: 'x', objects: [] })],
+  ['newScene', (s) => s.newScene()],
+  ['setScene', (s) => s.setScene({ ...STARTER_SCENE, ambient: 0.3 })],
+  ['setName', (s) => s.setName('renamed')],
+  ['setBackground', (s) => s.setBackground('#000000')],
+  ['setAmbient', (s) => s.setAmbient(0.5)],
+  ['setImage', (s) => s.setImage({ width: 320 })],
+  ['setRender', (s) => s.setRender({ samples: 4, seed: 3 })],
+  ['setCamera', (s) => s.setCamera({ fov: 30 })],
+  ['addObject(sphere)', (s) => s.addObject('sphere')],
+  ['addObject(box)', (s) => s.addObject('box')],
+  ['addObject(plane)', (s) => s.addObject('plane')],
+  ['addLight', (s) => s.addLight()],
+  ['duplicateSelected (object)', (s) => s.duplicateSelected(), { kind: 'object', index: 1 }],
+  ['duplicateSelected (light)', (s) => s.duplicateSelected(), { kind: 'light', index: 0 }],
+  ['deleteSelected (object)', (s) => s.deleteSelected(), { kind: 'object', index: 2 }],
+  ['deleteSelected (light)', (s) => s.deleteSelected(), { kind: 'light', index: 1 }],
+  ['moveObject', (s) => s.moveObject(1, [3, 0.5, 3])],
+  ['setObjectField', (s) => s.setObjectField(1, 'radius', 2)],
+  ['setMaterial', (s) => s.setMaterial(0, { type: 'glass', ior: 1.3 })],
+  ['setMaterialType', (s) => s.setMaterialType(0, 'metal')],
+  ['moveLight', (s) => s.moveLight(0, [1, 2, 3])],
+  ['setLightField', (s) => s.setLightField(0, 'falloff', true)],
+  ['moveTarget (camera)', (s) => s.moveTarget({ kind: 'camera' }, [1, 1, 9])],
+  ['moveTarget (target)', (s) => s.moveTarget({ kind: 'target' }, [0, 0, 0])],
+];
+
+describe('sceneStore', () => {
+  it('starts from the still life with no history', () => {
+    expect(store().scene).toEqual(STARTER_SCENE);
+    expect(store().past).toEqual([]);
+    expect(store().selection).toBeNull();
+  });
+
+  it.each(ACTIONS)('%s pushes exactly one history entry; undo restores, redo repeats', (_name, act, selection) => {
+    if (selection) store().select(selection);
+    const before = structuredClone(store().scene);
+    act(store());
+    const after = structuredClone(store().scene);
+    expect(after).not.toEqual(before);
+    expect(store().past).toHaveLength(1);
+    expect(store().future).toHaveLength(0);
+    store().undo();
+    expect(store().scene).toEqual(before);
+    expect(store().past).toHaveLength(0);
+    store().redo();
+    expect(store().scene).toEqual(after);
+    expect(store().past).toHaveLength(1);
+  });
+
+  it('pushes nothing for an edit that changes nothing', () => {
+    store().setName('still-life');
+    store().moveObject(99, [0, 0, 0]);
+    store().deleteSelected();
+    expect(store().past).toHaveLength(0);
+  });
+
+  it('never changes the scene it was given', () => {
+    const scene: Scene = { name: 'mine', objects: [{ type: 'sphere', center: [0, 0, 0] }] };
+    const copy = structuredClone(scene);
+    store().loadScene(scene);
+    store().moveObject(0, [1, 1, 1]);
+    store().setObjectField(0, 'radius', 3);
+    expect(scene).toEqual(copy);
+  });
+
+  it('makes one drag one history entry, however many steps it had', () => {
+    const before = structuredClone(store().scene);
+    for (let i = 1; i <= 20; i++) store().dragTo({ kind: 'object', index: 1 }, [i / 10, 0.5, 0]);
+    expect(store().past).toHaveLength(0);
+    expect(store().scene).toEqual(before);
+    expect(store().preview?.objects[1]).toMatchObject({ center: [2, 0.5, 0] });
+    store().commitPreview();
+    expect(store().preview).toBeNull();
+    expect(store().past).toHaveLength(1);
+    expect(store().scene.objects[1]).toMatchObject({ center: [2, 0.5, 0] });
+    store().undo();
+    expect(store().scene).toEqual(before);
+  });
+
+  it('adds no entry for a drag that ends where it started or is cancelled', () => {
+    const center = (STARTER_SCENE.objects[1] as { center: [number, number, number] }).center;
+    store().dragTo({ kind: 'object', index: 1 }, [9, 9, 9]);
+    store().dragTo({ kind: 'object', index: 1 }, center);
+    store().commitPreview();
+    store().dragTo({ kind: 'light', index: 0 }, [9, 9, 9]);
+    store().cancelPreview();
+    expect(store().past).toHaveLength(0);
+    expect(store().preview).toBeNull();
+  });
+
+  it('selects what it adds or duplicates, and clears a selection that no longer exists', () => {
+    store().addObject('box');
+    expect(store().selection).toEqual({ kind: 'object', index: STARTER_SCENE.objects.length });
+    store().duplicateSelected();
+    expect(store().selection).toEqual({ kind: 'object', index: STARTER_SCENE.objects.length + 1 });
+    store().undo();
+    store().undo();
+    expect(store().selection).toBeNull();
+    store().addLight();
+    expect(store().selection).toEqual({ kind: 'light', index: 2 });
+    store().deleteSelected();
+    expect(store().selection).toBeNull();
+  });
+
+  it('materialises the default light when a scene without lights gets one more', () => {
+    store().loadScene({ objects: [] });
+    store().addLight();
+    expect(store().scene.lights).toHaveLength(2);
+    expect(store().scene.lights?.[0]).toMatchObject({ position: [5, 8, 5] });
+  });
+
+  it('keeps the colour and shared overrides when the material kind changes', () => {
+    store().loadScene({ objects: [{ type: 'sphere', material: { type: 'plastic', color: '#123456', specular: 0.2, diffuse: 0.3 } }] });
+    store().setMaterialType(0, 'glass');
+    expect(store().scene.objects[0].material).toEqual({ type: 'glass', color: '#123456', specular: 0.2 });
+  });
+
+  it('keeps view settings out of history', () => {
+    store().setView('top', { zoom: 80, pan: [1, 2] });
+    store().setSnap(true);
+    store().setGridSize(0.25);
+    store().select({ kind: 'camera' });
+    expect(store().past).toHaveLength(0);
+    expect(store()).toMatchObject({ snap: true, gridSize: 0.25, selection: { kind: 'camera' } });
+  });
+
+  it('saves every committed scene to localStorage and loads it back', () => {
+    const stop = persistSceneStore();
+    store().setName('persisted');
+    expect(JSON.parse(localStorage.getItem(STORAGE_KEY)!)).toMatchObject({ name: 'persisted' });
+    expect(loadSavedScene()?.name).toBe('persisted');
+    stop();
+    localStorage.setItem(STORAGE_KEY, '{"objects": "nope"}');
+    expect(loadSavedScene()).toBeNull();
+  });
+
+  it('is reset between tests', () => {
+    store().setName('dirty');
+    resetSceneStore();
+    expect(store().scene.name).toBe('still-life');
+    expect(store().past).toEqual([]);
+  });
+});

@@ -1,0 +1,197 @@
+/**
+ * The one store of the editor: the scene with its undo history, the selection, a transient
+ * drag preview (not history) and the view settings. Every scene edit is a named action that
+ * pushes exactly one history entry (an edit that changes nothing pushes none).
+ */
+import { create } from 'zustand';
+import { blankScene, sceneLights } from '../model/defaults';
+import * as edits from '../model/edits';
+import type { DragTarget, Selection } from '../model/selection';
+import { STARTER_SCENE } from '../model/starterScene';
+import type {
+  CameraSettings,
+  Color,
+  ImageSettings,
+  Material,
+  MaterialType,
+  ObjectType,
+  PointLight,
+  RenderSettings,
+  Scene,
+  Vec3,
+} from '../model/types';
+import { push, redo, undo, type Timeline } from './history';
+import { loadSavedScene, saveScene } from './persistence';
+
+/** Zoom (SVG pixels per metre) and pan (the world point at the view's centre) of one view. */
+export interface ViewState {
+  zoom: number;
+  pan: [number, number];
+}
+
+export type ViewKind = 'top' | 'side';
+
+export interface SceneState {
+  /** The committed scene (what undo/redo, save and render use). */
+  scene: Scene;
+  /** Earlier scenes, oldest first. */
+  past: Scene[];
+  /** Undone scenes, next redo first. */
+  future: Scene[];
+  /** The scene while a drag or a field edit is under way; null otherwise. Never in history. */
+  preview: Scene | null;
+  selection: Selection;
+  views: Record<ViewKind, ViewState>;
+  snap: boolean;
+  /** Grid spacing in metres (also the snapping step). */
+  gridSize: number;
+  /** Bumped when a whole new scene arrives: the views zoom to fit it. */
+  fitRequest: number;
+
+  loadScene(scene: Scene): void;
+  newScene(): void;
+  /** Replaces the scene but keeps the selection where it still exists (the JSON tab). */
+  setScene(scene: Scene): void;
+  setName(name: string): void;
+  setBackground(color: Color): void;
+  setAmbient(ambient: number): void;
+  setImage(patch: Partial<ImageSettings>): void;
+  setRender(patch: Partial<RenderSettings>): void;
+  setCamera(patch: Partial<CameraSettings>): void;
+  addObject(kind: ObjectType): void;
+  addLight(): void;
+  duplicateSelected(): void;
+  deleteSelected(): void;
+  moveObject(index: number, to: Vec3): void;
+  setObjectField(index: number, field: string, value: unknown): void;
+  setMaterial(index: number, material: Material): void;
+  setMaterialType(index: number, type: MaterialType): void;
+  moveLight(index: number, to: Vec3): void;
+  setLightField<K extends keyof PointLight>(index: number, field: K, value: PointLight[K]): void;
+  /** Moves an object, light, the camera or its target (one history entry). */
+  moveTarget(target: DragTarget, to: Vec3): void;
+  select(selection: Selection): void;
+  /** Shows an uncommitted scene (drag in progress, field being typed); not history. */
+  setPreview(scene: Scene | null): void;
+  /** Drag step: previews the target at a new position; not history. */
+  dragTo(target: DragTarget, to: Vec3): void;
+  /** Ends a drag or an edit: the preview becomes one history entry if it differs. */
+  commitPreview(): void;
+  cancelPreview(): void;
+  undo(): void;
+  redo(): void;
+  setView(kind: ViewKind, view: ViewState): void;
+  setSnap(snap: boolean): void;
+  setGridSize(size: number): void;
+  /** Asks both plan views to zoom to the whole scene. */
+  requestFit(): void;
+}
+
+export const DEFAULT_VIEWS: Record<ViewKind, ViewState> = {
+  top: { zoom: 40, pan: [0, 0] },
+  side: { zoom: 40, pan: [0, 1.5] },
+};
+
+type Data = Pick<SceneState, 'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest'>;
+
+function initialData(scene: Scene): Data {
+  return { scene, past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1 };
+}
+
+/** The selection if it still names something in the scene, else none. */
+function keepValid(scene: Scene, selection: Selection): Selection {
+  if (selection?.kind === 'object' && !scene.objects[selection.index]) return null;
+  if (selection?.kind === 'light' && !sceneLights(scene)[selection.index]) return null;
+  return selection;
+}
+
+const sameScene = (a: Scene, b: Scene) => a === b || JSON.stringify(a) === JSON.stringify(b);
+
+export const useSceneStore = create<SceneState>()((set, get) => {
+  /** The single write path: one edit, one history entry (none if nothing changed). */
+  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection) => {
+    const { scene, past, future, selection: current } = get();
+    const next = edit(scene);
+    if (sameScene(next, scene)) {
+      set({ preview: null });
+      return;
+    }
+    const timeline = push<Scene>({ past, present: scene, future }, next);
+    set({ scene: next, past: timeline.past, future: timeline.future, preview: null, selection: keepValid(next, selection ? selection(next) : current) });
+  };
+  const travel = (move: (t: Timeline<Scene>) => Timeline<Scene>) => {
+    const { scene, past, future, selection } = get();
+    const t = move({ past, present: scene, future });
+    set({ scene: t.present, past: t.past, future: t.future, preview: null, selection: keepValid(t.present, selection) });
+  };
+  return {
+    ...initialData(loadSavedScene() ?? structuredClone(STARTER_SCENE)),
+
+    loadScene: (scene) => {
+      commit(() => structuredClone(scene), () => null);
+      set({ fitRequest: get().fitRequest + 1 });
+    },
+    newScene: () => {
+      commit(() => blankScene(), () => null);
+      set({ fitRequest: get().fitRequest + 1 });
+    },
+    setScene: (scene) => commit(() => structuredClone(scene)),
+    setName: (name) => commit((s) => ({ ...s, name })),
+    setBackground: (background) => commit((s) => ({ ...s, background })),
+    setAmbient: (ambient) => commit((s) => ({ ...s, ambient })),
+    setImage: (patch) => commit((s) => edits.setImage(s, patch)),
+    setRender: (patch) => commit((s) => edits.setRender(s, patch)),
+    setCamera: (patch) => commit((s) => edits.setCamera(s, patch)),
+    addObject: (kind) => commit((s) => edits.addObject(s, kind), (n) => ({ kind: 'object', index: n.objects.length - 1 })),
+    addLight: () => commit((s) => edits.addLight(s), (n) => ({ kind: 'light', index: sceneLights(n).length - 1 })),
+    duplicateSelected: () => {
+      const sel = get().selection;
+      if (sel?.kind === 'object') commit((s) => edits.duplicateObject(s, sel.index), () => ({ kind: 'object', index: sel.index + 1 }));
+      if (sel?.kind === 'light') commit((s) => edits.duplicateLight(s, sel.index), () => ({ kind: 'light', index: sel.index + 1 }));
+    },
+    deleteSelected: () => {
+      const sel = get().selection;
+      if (sel?.kind === 'object') commit((s) => edits.removeObject(s, sel.index), () => null);
+      if (sel?.kind === 'light') commit((s) => edits.removeLight(s, sel.index), () => null);
+    },
+    moveObject: (index, to) => commit((s) => edits.moveObject(s, index, to)),
+    setObjectField: (index, field, value) => commit((s) => edits.setObjectField(s, index, field, value)),
+    setMaterial: (index, material) => commit((s) => edits.setMaterial(s, index, material)),
+    setMaterialType: (index, type) =>
+      commit((s) => edits.setMaterial(s, index, edits.changeMaterialType(s.objects[index]?.material, type))),
+    moveLight: (index, to) => commit((s) => edits.moveLight(s, index, to)),
+    setLightField: (index, field, value) => commit((s) => edits.setLightField(s, index, field, value)),
+    moveTarget: (target, to) => commit((s) => edits.moveTarget(s, target, to)),
+    select: (selection) => set({ selection: keepValid(get().scene, selection) }),
+
+    setPreview: (preview) => set({ preview }),
+    dragTo: (target, to) => set({ preview: edits.moveTarget(get().scene, target, to) }),
+    commitPreview: () => {
+      const { preview } = get();
+      if (preview) commit(() => preview);
+    },
+    cancelPreview: () => set({ preview: null }),
+    undo: () => travel(undo),
+    redo: () => travel(redo),
+
+    setView: (kind, view) => set({ views: { ...get().views, [kind]: view } }),
+    setSnap: (snap) => set({ snap }),
+    setGridSize: (gridSize) => set({ gridSize: gridSize > 0 ? gridSize : get().gridSize }),
+    requestFit: () => set({ fitRequest: get().fitRequest + 1 }),
+  };
+});
+
+/** The scene the views draw: the preview while one is under way, else the committed scene. */
+export const selectDisplayScene = (state: SceneState): Scene => state.preview ?? state.scene;
+
+/** Puts the store back to a fresh state (tests, and a "reset" if ever needed). */
+export function resetSceneStore(scene: Scene = STARTER_SCENE): void {
+  useSceneStore.setState(initialData(structuredClone(scene)));
+}
+
+/** Saves every committed scene to localStorage (call once at start-up). */
+export function persistSceneStore(): () => void {
+  return useSceneStore.subscribe((state, previous) => {
+    if (state.scene !== previous.scene) saveScene(state.scene);
+  });
+}

@@ -1,0 +1,167 @@
+import { act, createEvent, fireEvent, render as rtlRender, screen, within } from '@testing-library/react';
+import type { ReactElement } from 'react';
+import { describe, expect, it } from 'vitest';
+import { worldToSvg, type ViewTransform } from '../model/projection';
+import type { Scene } from '../model/types';
+import { DEFAULT_VIEWS, resetSceneStore, useSceneStore } from '../store/sceneStore';
+import { SideView } from './SideView';
+import { TopView } from './TopView';
+
+const store = () => useSceneStore.getState();
+/** The views measure 480 x 320 in tests (no layout); default zoom 40 px/m. */
+const top = (): ViewTransform => ({ ...store().views.top, width: 480, height: 320 });
+const side = (): ViewTransform => ({ ...store().views.side, width: 480, height: 320 });
+
+const SCENE: Scene = {
+  name: 'views',
+  camera: { position: [0, 2, 8], lookAt: [0, 0, 0] },
+  lights: [{ type: 'point', position: [2, 5, -1], color: '#ffcc00' }],
+  objects: [
+    { type: 'sphere', center: [1, 1, 2], radius: 0.5, material: { type: 'mirror' } },
+    { type: 'box', center: [-2, 0.5, 0], size: [2, 1, 1], rotation: [0, 90, 0] },
+    { type: 'plane', point: [0, 0, 0], normal: [0, 1, 0] },
+  ],
+};
+
+/** Renders, then puts both views at the default zoom (40 px/m) and pan the tests reason in. */
+function render(ui: ReactElement) {
+  const utils = rtlRender(ui);
+  act(() => {
+    store().setView('top', { zoom: 40, pan: [0, 0] });
+    store().setView('side', DEFAULT_VIEWS.side);
+  });
+  return utils;
+}
+
+function drag(element: Element, svg: Element, from: [number, number], by: [number, number], steps = 5) {
+  fireEvent.pointerDown(element, { clientX: from[0], clientY: from[1], button: 0, pointerId: 1 });
+  for (let i = 1; i <= steps; i++) {
+    fireEvent.pointerMove(svg, { clientX: from[0] + (by[0] * i) / steps, clientY: from[1] + (by[1] * i) / steps, pointerId: 1 });
+  }
+  fireEvent.pointerUp(svg, { clientX: from[0] + by[0], clientY: from[1] + by[1], pointerId: 1 });
+}
+
+describe('top and side views', () => {
+  it('draw every object, light, the camera and its target where the projection puts them', () => {
+    resetSceneStore(SCENE);
+    render(<><TopView /><SideView /></>);
+    const topSvg = screen.getByTestId('top-view');
+    const sphere = within(topSvg).getByTestId('object-0');
+    expect(sphere).toHaveAttribute('data-kind', 'sphere');
+    const circle = sphere.querySelector('circle')!;
+    const [x, y] = worldToSvg('top', top(), [1, 1, 2]);
+    expect(Number(circle.getAttribute('cx'))).toBeCloseTo(x);
+    expect(Number(circle.getAttribute('cy'))).toBeCloseTo(y);
+    expect(Number(circle.getAttribute('r'))).toBeCloseTo(0.5 * 40);
+    // A box turned 90° about y shows its 2 m side along z.
+    const points = within(topSvg).getByTestId('object-1').querySelector('polygon')!.getAttribute('points')!;
+    const ys = points.split(' ').map((p) => Number(p.split(',')[1]));
+    expect(Math.max(...ys) - Math.min(...ys)).toBeCloseTo(80);
+    expect(within(topSvg).getByTestId('object-2')).toHaveAttribute('data-kind', 'plane');
+    expect(within(topSvg).getByTestId('light-0')).toBeInTheDocument();
+    expect(within(topSvg).getByTestId('camera')).toBeInTheDocument();
+    expect(within(topSvg).getByTestId('camera-target')).toBeInTheDocument();
+    // The side view sees the floor edge-on: a line.
+    const sideSvg = screen.getByTestId('side-view');
+    expect(within(sideSvg).getByTestId('object-2').querySelector('line.plane-line')).not.toBeNull();
+    const sideCircle = within(sideSvg).getByTestId('object-0').querySelector('circle')!;
+    expect(Number(sideCircle.getAttribute('cx'))).toBeCloseTo(x);
+    expect(Number(sideCircle.getAttribute('cy'))).toBeCloseTo(worldToSvg('side', side(), [1, 1, 2])[1]);
+  });
+
+  it('select on click and show the selection in both views', () => {
+    resetSceneStore(SCENE);
+    render(<><TopView /><SideView /></>);
+    const [x, y] = worldToSvg('top', top(), [1, 1, 2]);
+    const glyph = within(screen.getByTestId('top-view')).getByTestId('object-0');
+    fireEvent.pointerDown(glyph, { clientX: x, clientY: y, button: 0, pointerId: 1 });
+    fireEvent.pointerUp(screen.getByTestId('top-view'), { clientX: x, clientY: y, pointerId: 1 });
+    expect(store().selection).toEqual({ kind: 'object', index: 0 });
+    expect(store().past).toHaveLength(0);
+    expect(within(screen.getByTestId('side-view')).getByTestId('object-0')).toHaveAttribute('data-selected', 'true');
+    // A click on empty space clears the selection.
+    fireEvent.pointerDown(screen.getByTestId('top-view'), { clientX: 5, clientY: 5, button: 0, pointerId: 2 });
+    fireEvent.pointerUp(screen.getByTestId('top-view'), { clientX: 5, clientY: 5, pointerId: 2 });
+    expect(store().selection).toBeNull();
+  });
+
+  it('move an object by dragging it, as one undo step, x and z in the top view', () => {
+    resetSceneStore(SCENE);
+    render(<><TopView /><SideView /></>);
+    const svg = screen.getByTestId('top-view');
+    const from = worldToSvg('top', top(), [1, 1, 2]);
+    drag(within(svg).getByTestId('object-0'), svg, from, [40, 20]);
+    expect(store().scene.objects[0]).toMatchObject({ center: [2, 1, 2.5] });
+    expect(store().past).toHaveLength(1);
+    expect(store().preview).toBeNull();
+    const sideCircle = within(screen.getByTestId('side-view')).getByTestId('object-0').querySelector('circle')!;
+    expect(Number(sideCircle.getAttribute('cx'))).toBeCloseTo(worldToSvg('side', side(), [2, 1, 2.5])[0]);
+    store().undo();
+    expect(store().scene.objects[0]).toMatchObject({ center: [1, 1, 2] });
+  });
+
+  it('move x and y in the side view, snapping to the grid when asked', () => {
+    resetSceneStore(SCENE);
+    store().setSnap(true);
+    render(<SideView />);
+    const svg = screen.getByTestId('side-view');
+    drag(within(svg).getByTestId('light-0'), svg, worldToSvg('side', side(), [2, 5, -1]), [13, -31]);
+    // 13 px = 0.325 m and 31 px = 0.775 m, snapped to the 0.5 m grid.
+    expect(store().scene.lights?.[0].position).toEqual([2.5, 6, -1]);
+    expect(store().past).toHaveLength(1);
+  });
+
+  it('drag the camera and its target', () => {
+    resetSceneStore(SCENE);
+    render(<TopView />);
+    const svg = screen.getByTestId('top-view');
+    drag(within(svg).getByTestId('camera-target'), svg, worldToSvg('top', top(), [0, 0, 0]), [-40, 0]);
+    expect(store().scene.camera?.lookAt).toEqual([-1, 0, 0]);
+    drag(within(svg).getByTestId('camera'), svg, worldToSvg('top', top(), [0, 2, 8]), [0, -40]);
+    expect(store().scene.camera?.position).toEqual([0, 2, 7]);
+    expect(store().past).toHaveLength(2);
+  });
+
+  it('pan on a drag over empty space and zoom about the cursor with the wheel', () => {
+    resetSceneStore(SCENE);
+    render(<TopView />);
+    const svg = screen.getByTestId('top-view');
+    drag(svg, svg, [10, 10], [40, 80]);
+    expect(store().views.top.pan).toEqual([-1, -2]);
+    // Fit zooms to the whole scene: every point of it inside the view.
+    fireEvent.click(screen.getByRole('button', { name: 'Fit' }));
+    for (const p of [[0, 2, 8], [2, 5, -1], [-3, 0.5, 0]] as const) {
+      const [x, y] = worldToSvg('top', top(), [...p]);
+      expect(x).toBeGreaterThan(0);
+      expect(x).toBeLessThan(480);
+      expect(y).toBeGreaterThan(0);
+      expect(y).toBeLessThan(320);
+    }
+    act(() => store().setView('top', { zoom: 40, pan: [-1, -2] }));
+    const under = worldToSvg('top', top(), [3, 0, 1]);
+    const wheel = createEvent.wheel(svg, { deltaY: -200 });
+    // happy-dom's WheelEvent has no pointer position; a browser's has.
+    Object.defineProperties(wheel, { clientX: { value: under[0] }, clientY: { value: under[1] } });
+    fireEvent(svg, wheel);
+    expect(store().views.top.zoom).toBeGreaterThan(40);
+    const after = worldToSvg('top', top(), [3, 0, 1]);
+    expect(after[0]).toBeCloseTo(under[0], 6);
+    expect(after[1]).toBeCloseTo(under[1], 6);
+    expect(store().past).toHaveLength(0);
+  });
+});
+
+describe('keyboard in the views', () => {
+  it('moves the focused glyph one grid step per arrow key, one undo step each', () => {
+    resetSceneStore(SCENE);
+    render(<><TopView /><SideView /></>);
+    const sphere = within(screen.getByTestId('top-view')).getByTestId('object-0');
+    fireEvent.keyDown(sphere, { key: 'ArrowRight' });
+    fireEvent.keyDown(sphere, { key: 'ArrowUp' });
+    expect(store().scene.objects[0]).toMatchObject({ center: [1.5, 1, 1.5] });
+    expect(store().selection).toEqual({ kind: 'object', index: 0 });
+    fireEvent.keyDown(within(screen.getByTestId('side-view')).getByTestId('light-0'), { key: 'ArrowUp' });
+    expect(store().scene.lights?.[0].position).toEqual([2, 5.5, -1]);
+    expect(store().past).toHaveLength(3);
+  });
+});

@@ -1,0 +1,166 @@
+/**
+ * The imperative side of the 3D preview (no React): owns the WebGL renderer, shared
+ * geometries, the render camera and an orbit camera, and draws one frame only when asked
+ * (scene change, resize, orbit movement).
+ */
+import {
+  AmbientLight,
+  BoxGeometry,
+  BoxHelper,
+  CameraHelper,
+  Color,
+  Group,
+  Mesh,
+  MeshBasicMaterial,
+  PerspectiveCamera,
+  PlaneGeometry,
+  PMREMGenerator,
+  PointLight,
+  Scene,
+  SphereGeometry,
+  WebGLRenderer,
+} from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
+import { applyRenderCamera, letterbox, type ThreeSceneDescriptor } from '../model/toThree';
+import { MaterialCache } from './previewMaterials';
+
+export type PreviewMode = 'camera' | 'orbit';
+
+const SELECTED = 0x4ea1ff;
+
+export class PreviewEngine {
+  readonly canvas: HTMLCanvasElement;
+  private readonly renderer: WebGLRenderer;
+  private readonly scene = new Scene();
+  private readonly content = new Group();
+  private readonly renderCamera = new PerspectiveCamera();
+  private readonly orbitCamera = new PerspectiveCamera(50, 1, 0.01, 1e4);
+  private readonly controls: OrbitControls;
+  private readonly materials = new MaterialCache();
+  private readonly geometries = { sphere: new SphereGeometry(1, 48, 32), box: new BoxGeometry(1, 1, 1), plane: new PlaneGeometry(1, 1), marker: new SphereGeometry(1, 16, 12) };
+  private readonly disposables: { dispose(): void }[] = [];
+  private mode: PreviewMode = 'camera';
+  private orbitPlaced = false;
+  private size = { width: 1, height: 1 };
+  private last: ThreeSceneDescriptor | null = null;
+  private frame = 0;
+
+  /** Throws when WebGL 2 is not available. */
+  constructor() {
+    if (!webgl2Available()) throw new Error('WebGL 2 is not available');
+    this.renderer = new WebGLRenderer({ antialias: true });
+    this.renderer.setPixelRatio(Math.min(2, globalThis.devicePixelRatio || 1));
+    this.canvas = this.renderer.domElement;
+    this.scene.add(this.content);
+    const pmrem = new PMREMGenerator(this.renderer);
+    this.scene.environment = pmrem.fromScene(new RoomEnvironment(), 0.04).texture;
+    this.scene.environmentIntensity = 0.35;
+    pmrem.dispose();
+    this.controls = new OrbitControls(this.orbitCamera, this.canvas);
+    this.controls.enabled = false;
+    this.controls.addEventListener('change', () => this.requestRender());
+  }
+
+  /** Rebuilds the preview's content from a descriptor (cheap for editor-sized scenes). */
+  update(d: ThreeSceneDescriptor): void {
+    this.last = d;
+    for (const item of this.disposables.splice(0)) item.dispose();
+    this.content.clear();
+    this.scene.background = new Color(d.background);
+    this.content.add(new AmbientLight(0xffffff, d.ambient));
+    for (const m of d.meshes) {
+      const mesh = new Mesh(this.geometries[m.geometry], this.materials.get(m.material, m.geometry === 'plane'));
+      mesh.position.set(...m.position);
+      mesh.scale.set(...m.scale);
+      if (m.geometry === 'plane') mesh.quaternion.set(...m.quaternion);
+      else mesh.rotation.set(m.rotation[0], m.rotation[1], m.rotation[2], 'XYZ');
+      this.content.add(mesh);
+      if (m.selected && m.geometry !== 'plane') this.addHelper(new BoxHelper(mesh, SELECTED));
+    }
+    this.materials.sweep();
+    for (const l of d.lights) {
+      const light = new PointLight(l.color, l.intensity, 0, l.decay);
+      light.position.set(...l.position);
+      this.content.add(light);
+      const markerMaterial = new MeshBasicMaterial({ color: l.selected ? SELECTED : l.color });
+      this.disposables.push(markerMaterial);
+      const marker = new Mesh(this.geometries.marker, markerMaterial);
+      marker.position.set(...l.position);
+      marker.scale.setScalar(d.extent * (l.selected ? 0.008 : 0.005));
+      this.content.add(marker);
+    }
+    applyRenderCamera(this.renderCamera, d.camera);
+    if (this.mode === 'orbit') {
+      const frustum = applyRenderCamera(new PerspectiveCamera(), { ...d.camera, far: Math.hypot(...d.camera.position.map((p, i) => p - d.camera.lookAt[i])) });
+      this.addHelper(new CameraHelper(frustum));
+    }
+    this.orbitCamera.far = d.camera.far;
+    this.orbitCamera.near = d.camera.near;
+    this.layout();
+  }
+
+  setMode(mode: PreviewMode): void {
+    this.mode = mode;
+    this.controls.enabled = mode === 'orbit';
+    if (mode === 'orbit' && !this.orbitPlaced && this.last) {
+      this.orbitPlaced = true;
+      this.orbitCamera.position.copy(this.renderCamera.position);
+      this.orbitCamera.up.copy(this.renderCamera.up);
+      this.controls.target.set(...this.last.camera.lookAt);
+      this.controls.update();
+    }
+    if (this.last) this.update(this.last);
+  }
+
+  /** The container's size; in camera mode the canvas is letterboxed to the image aspect. */
+  resize(width: number, height: number): void {
+    this.size = { width: Math.max(1, width), height: Math.max(1, height) };
+    this.layout();
+  }
+
+  requestRender(): void {
+    if (this.frame) return;
+    this.frame = requestAnimationFrame(() => {
+      this.frame = 0;
+      this.renderer.render(this.scene, this.mode === 'camera' ? this.renderCamera : this.orbitCamera);
+    });
+  }
+
+  dispose(): void {
+    cancelAnimationFrame(this.frame);
+    for (const item of this.disposables.splice(0)) item.dispose();
+    this.controls.dispose();
+    this.materials.dispose();
+    Object.values(this.geometries).forEach((g) => g.dispose());
+    this.scene.environment?.dispose();
+    this.renderer.dispose();
+    this.renderer.forceContextLoss();
+    this.canvas.remove();
+  }
+
+  private addHelper(helper: BoxHelper | CameraHelper): void {
+    this.content.add(helper);
+    this.disposables.push(helper);
+  }
+
+  private layout(): void {
+    const { width, height } = this.size;
+    const box = this.mode === 'camera' && this.last ? letterbox(width, height, this.last.camera.aspect) : { width, height, left: 0, top: 0 };
+    this.renderer.setSize(Math.max(1, Math.floor(box.width)), Math.max(1, Math.floor(box.height)));
+    this.canvas.style.left = `${box.left}px`;
+    this.canvas.style.top = `${box.top}px`;
+    this.orbitCamera.aspect = box.width / Math.max(1, box.height);
+    this.orbitCamera.updateProjectionMatrix();
+    this.requestRender();
+  }
+}
+
+/** Probes for WebGL 2 without letting three.js log its own error. */
+function webgl2Available(): boolean {
+  try {
+    return !!document.createElement('canvas').getContext('webgl2');
+  } catch {
+    return false;
+  }
+}

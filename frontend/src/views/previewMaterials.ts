@@ -1,0 +1,78 @@
+/** three.js materials for the preview's material descriptors, shared by equal descriptors. */
+import {
+  Color,
+  DoubleSide,
+  FrontSide,
+  MeshBasicMaterial,
+  MeshLambertMaterial,
+  MeshPhongMaterial,
+  MeshPhysicalMaterial,
+  MeshStandardMaterial,
+  type Material,
+} from 'three';
+import type { MaterialDescriptor } from '../model/toThree';
+
+/** Builds the three.js material of a descriptor (colours are sRGB, converted to linear). */
+export function createMaterial(d: MaterialDescriptor, doubleSided: boolean): Material {
+  const side = doubleSided ? DoubleSide : FrontSide;
+  const color = new Color(d.color);
+  switch (d.kind) {
+    case 'basic':
+      return new MeshBasicMaterial({ color, side });
+    case 'lambert':
+      return new MeshLambertMaterial({ color: color.multiplyScalar(d.diffuse), side });
+    case 'phong':
+      return new MeshPhongMaterial({
+        color: color.multiplyScalar(d.diffuse),
+        specular: new Color(1, 1, 1).multiplyScalar(d.specular),
+        shininess: d.shininess,
+        side,
+      });
+    case 'standard':
+      return new MeshStandardMaterial({ color, metalness: d.metalness, roughness: d.roughness, side });
+    case 'physical':
+      return new MeshPhysicalMaterial({
+        color,
+        transmission: d.transmission,
+        ior: d.ior,
+        roughness: d.roughness,
+        thickness: 0.5,
+        transparent: true,
+        opacity: d.opacity,
+        side,
+      });
+  }
+}
+
+/** Keeps one material per distinct descriptor; {@link sweep} disposes those no longer used. */
+export class MaterialCache {
+  private readonly live = new Map<string, Material>();
+  private used = new Set<string>();
+
+  get(d: MaterialDescriptor, doubleSided: boolean): Material {
+    const key = JSON.stringify([d, doubleSided]);
+    this.used.add(key);
+    let material = this.live.get(key);
+    if (!material) {
+      material = createMaterial(d, doubleSided);
+      this.live.set(key, material);
+    }
+    return material;
+  }
+
+  /** Disposes every material not asked for since the last sweep. */
+  sweep(): void {
+    for (const [key, material] of this.live) {
+      if (!this.used.has(key)) {
+        material.dispose();
+        this.live.delete(key);
+      }
+    }
+    this.used = new Set();
+  }
+
+  dispose(): void {
+    for (const material of this.live.values()) material.dispose();
+    this.live.clear();
+  }
+}
