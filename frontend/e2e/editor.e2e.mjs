@@ -1,0 +1,145 @@
+// The editor in headless Chromium against the real jar, as a new user would use it:
+// add a sphere, drag it in the top view, change its material, render through a job and watch
+// it arrive, then send a value the server refuses and see the error by its field.
+// Usage: node e2e/editor.e2e.mjs path/to/studio.jar   (screenshots go to frontend/test-output/)
+import { mkdirSync } from 'node:fs';
+import { chromium } from 'playwright-core';
+import { startServer } from './server.mjs';
+
+const jar = process.argv[2];
+if (!jar) {
+  console.error('usage: node e2e/editor.e2e.mjs path/to/studio.jar');
+  process.exit(2);
+}
+const out = new URL('../test-output/', import.meta.url).pathname;
+mkdirSync(out, { recursive: true });
+
+const results = [];
+async function step(name, body) {
+  const started = Date.now();
+  try {
+    await body();
+    results.push({ name, ok: true });
+    console.log(`  ok    ${name} (${Date.now() - started} ms)`);
+  } catch (error) {
+    results.push({ name, ok: false });
+    console.log(`  FAIL  ${name}: ${error.stack ?? error}`);
+    throw error;
+  }
+}
+function expect(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+const server = await startServer(jar);
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking',
+    '--no-first-run', '--disable-component-update', '--disable-sync',
+    '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+});
+let exitCode = 0;
+try {
+  const page = await browser.newPage({ viewport: { width: 1440, height: 1000 } });
+  const pageErrors = [];
+  page.on('pageerror', (error) => pageErrors.push(String(error)));
+  console.log(`browser test against ${server.base}`);
+
+  await step('the editor opens with its views, preview and inspector', async () => {
+    await page.goto(server.base);
+    await page.getByTestId('top-view').waitFor();
+    await page.getByTestId('side-view').waitFor();
+    expect(await page.getByText('3D preview').count() > 0, 'no 3D preview');
+  });
+
+  await step('New, then Add sphere selects a sphere drawn in the top view', async () => {
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByTestId('add-sphere').click();
+    const sphere = page.getByTestId('top-view').locator('[data-kind="sphere"]').last();
+    await sphere.waitFor();
+    expect((await sphere.getAttribute('data-selected')) === 'true', 'the new sphere is not selected');
+  });
+
+  let xBefore;
+  await step('dragging the sphere in the top view changes its x and z', async () => {
+    const centerX = page.getByLabel('Center x');
+    const centerZ = page.getByLabel('Center z');
+    xBefore = Number(await centerX.inputValue());
+    const zBefore = Number(await centerZ.inputValue());
+    const sphere = page.getByTestId('top-view').locator('[data-kind="sphere"]').last();
+    const box = await sphere.boundingBox();
+    // grab it off-centre: the camera's target sits on the sphere's centre in this view
+    const x = box.x + box.width * 0.75, y = box.y + box.height * 0.6;
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let i = 1; i <= 10; i++) await page.mouse.move(x + 8 * i, y + 5 * i);
+    await page.mouse.up();
+    const xAfter = Number(await centerX.inputValue());
+    const zAfter = Number(await centerZ.inputValue());
+    expect(xAfter > xBefore, `x did not grow: ${xBefore} -> ${xAfter}`);
+    expect(zAfter > zBefore, `z did not grow (screen down is +z in the top view): ${zBefore} -> ${zAfter}`);
+  });
+
+  await step('undo puts the sphere back, redo moves it again', async () => {
+    await page.getByRole('button', { name: 'Undo' }).click();
+    expect(Number(await page.getByLabel('Center x').inputValue()) === xBefore, 'undo did not restore x');
+    await page.getByRole('button', { name: 'Redo' }).click();
+    expect(Number(await page.getByLabel('Center x').inputValue()) > xBefore, 'redo did not move it again');
+  });
+
+  await step('changing its material to mirror', async () => {
+    await page.getByLabel('Material type').selectOption('mirror');
+    expect((await page.getByLabel('Material type').inputValue()) === 'mirror', 'material not changed');
+    await page.screenshot({ path: `${out}editor.png` });
+  });
+
+  await step('rendering through a job shows progress, tiles and then the image', async () => {
+    await page.getByTestId('render-button').click();
+    const progress = page.getByTestId('render-progress');
+    await progress.waitFor({ timeout: 15000 });
+    await page.getByTestId('render-canvas').waitFor({ timeout: 15000 });
+    await page.getByTestId('render-image').waitFor({ timeout: 120000 });
+    expect((await progress.getAttribute('aria-valuenow')) === '100', 'progress did not reach 100');
+    const stats = await page.getByTestId('render-stats').innerText();
+    expect(/800\s*[×x]\s*600/.test(stats), `no image size in "${stats}"`);
+    const download = page.getByTestId('download-link');
+    expect((await download.getAttribute('download')) === 'untitled.png', 'download is not named after the scene');
+    await page.getByTestId('render-image').scrollIntoViewIfNeeded();
+    await page.screenshot({ path: `${out}result.png` });
+  });
+
+  await step('a camera looking straight down its up vector is refused, with the error by the field', async () => {
+    await page.getByRole('button', { name: 'Camera', exact: true }).first().click();
+    for (const [axis, value] of [['x', '0'], ['y', '10'], ['z', '0']]) {
+      const input = page.getByLabel(`Camera position ${axis}`);
+      await input.fill(value);
+      await input.press('Enter');
+    }
+    for (const [axis, value] of [['x', '0'], ['y', '0'], ['z', '0']]) {
+      const input = page.getByLabel(`Look at ${axis}`);
+      await input.fill(value);
+      await input.press('Enter');
+    }
+    await page.getByTestId('render-button').click();
+    const summary = page.getByTestId('error-summary');
+    await summary.waitFor({ timeout: 15000 });
+    expect((await summary.innerText()).includes('camera.up'), 'the summary does not name camera.up');
+    const byField = page.locator('.field-error', { hasText: 'parallel' });
+    await byField.first().waitFor({ timeout: 5000 });
+    await byField.first().scrollIntoViewIfNeeded();
+    await page.screenshot({ path: `${out}field-error.png` });
+  });
+
+  await step('no uncaught errors in the page', async () => {
+    expect(pageErrors.length === 0, `page errors: ${pageErrors.join('\n')}`);
+  });
+} catch {
+  exitCode = 1;
+} finally {
+  await browser.close();
+  server.stop();
+}
+const passed = results.filter((r) => r.ok).length;
+console.log(`browser test: ${passed} passed, ${results.length - passed} failed (screenshots in ${out})`);
+if (exitCode !== 0) console.log(server.log().slice(-4000));
+process.exit(exitCode);
