@@ -4,7 +4,7 @@ import { FieldErrorsProvider, type FieldErrors } from './components/fieldErrors'
 import { Inspector } from './components/Inspector';
 import { JsonTab } from './components/JsonTab';
 import { ProblemList } from './components/ProblemList';
-import { RenderSlot } from './components/RenderSlot';
+import { RenderPanel } from './render/RenderPanel';
 import { Toolbar } from './components/Toolbar';
 import { useEditorShortcuts } from './hooks/useEditorShortcuts';
 import { useSceneStore } from './store/sceneStore';
@@ -69,7 +69,7 @@ export function App({ fetchFn }: AppProps) {
               {tab === 'json' && <JsonTab />}
             </div>
             <div className="studio-render">
-              <RenderSlot scene={scene} onFieldErrors={setFieldErrors} fetchFn={fetchFn} />
+              <RenderPanel scene={scene} onFieldErrors={setFieldErrors} fetchFn={fetchFn} />
             </div>
           </div>
           <div className="studio-inspector">
