@@ -94,7 +94,7 @@ describe('Inspector', () => {
     expect(screen.getByLabelText('Light position z')).toHaveValue(3);
     await user.click(screen.getByLabelText('Falls off with distance (1/d²)'));
     expect(store().scene.lights?.[0].falloff).toBe(true);
-    for (const path of ['camera.position[0]', 'camera.lookAt[2]', 'camera.up[1]', 'camera.fov', 'name', 'background', 'ambient', 'image.width', 'image.height', 'image.format', 'image.quality', 'render.sampler', 'render.samples', 'render.maxDepth', 'render.seed']) {
+    for (const path of ['camera.position[0]', 'camera.lookAt[2]', 'camera.up[1]', 'camera.fov', 'name', 'background', 'ambient', 'image.width', 'image.height', 'image.format', 'image.quality', 'render.sampler', 'render.samples', 'render.maxDepth', 'render.seed', 'render.adaptive']) {
       expect(field(path)).toBeInTheDocument();
     }
     const width = screen.getByLabelText('Width (px)');
@@ -103,6 +103,12 @@ describe('Inspector', () => {
     expect(store().scene.image).toMatchObject({ width: 320 });
     await user.selectOptions(screen.getByLabelText('Sampler'), 'regular');
     expect(store().scene.render?.sampler).toBe('regular');
+    await user.selectOptions(screen.getByLabelText('Sampler'), 'sobol');
+    expect(store().scene.render?.sampler).toBe('sobol');
+    const adaptive = screen.getByLabelText('Adaptive threshold');
+    await user.clear(adaptive);
+    await user.type(adaptive, '0.05{Enter}');
+    expect(store().scene.render).toMatchObject({ sampler: 'sobol', adaptive: 0.05 });
   });
 
   it('selects from the outline', async () => {

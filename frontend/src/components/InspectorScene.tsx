@@ -6,6 +6,15 @@ import { NumberField } from './fields/NumberField';
 import { SelectField } from './fields/SelectField';
 import { TextField } from './fields/TextField';
 
+/** The samplers, simplest first (as the server's Sampler.names()). */
+const SAMPLER_OPTIONS: { value: SamplerName; label: string; hint: string }[] = [
+  { value: 'regular', label: 'Regular', hint: 'Cell centres; needs a square number of samples; aliases on fine patterns' },
+  { value: 'random', label: 'Random', hint: 'Independent uniform samples; noisiest' },
+  { value: 'jittered', label: 'Jittered', hint: 'One random sample in each cell of a grid' },
+  { value: 'multijittered', label: 'Multi-jittered', hint: 'Jittered, and one sample in each narrow row and column too' },
+  { value: 'sobol', label: 'Sobol (scrambled)', hint: 'Owen-scrambled Sobol points: stratified at every aspect ratio; best with a power of two' },
+];
+
 /** Scene-wide settings: name, background, ambient, output image and render quality. */
 export function InspectorScene() {
   const scene = useSceneStore(selectDisplayScene);
@@ -47,13 +56,20 @@ export function InspectorScene() {
           label="Sampler"
           path="render.sampler"
           value={r.render.sampler}
-          options={[
-            { value: 'jittered', label: 'Jittered', hint: 'One random sample in each cell of a grid' },
-            { value: 'regular', label: 'Regular', hint: 'Cell centres; needs a square number of samples' },
-          ]}
+          options={SAMPLER_OPTIONS}
           onCommit={(sampler) => s.setRender({ sampler: sampler as SamplerName })}
         />
-        <NumberField label="Samples per pixel" path="render.samples" value={r.render.samples} integer min={1} step={1} hint="More samples: smoother edges, slower" onCommit={(samples) => s.setRender({ samples })} />
+        <NumberField label="Samples per pixel" path="render.samples" value={r.render.samples} integer min={1} step={1} hint="More samples: smoother edges, slower. With adaptive sampling: the most a pixel takes" onCommit={(samples) => s.setRender({ samples })} />
+        <NumberField
+          label="Adaptive threshold"
+          path="render.adaptive"
+          value={r.render.adaptive}
+          min={0}
+          max={1}
+          step={0.01}
+          hint="0: off. Otherwise a pixel stops taking samples (at least 8) once its estimated relative error is below this, e.g. 0.02; not with the regular sampler"
+          onCommit={(adaptive) => s.setRender({ adaptive })}
+        />
         <NumberField label="Max depth" path="render.maxDepth" value={r.render.maxDepth} integer min={0} step={1} hint="Reflection/refraction bounces" onCommit={(maxDepth) => s.setRender({ maxDepth })} />
         <NumberField label="Seed" path="render.seed" value={r.render.seed} integer step={1} hint="Varies the noise pattern; the same seed gives the same image" onCommit={(seed) => s.setRender({ seed })} />
       </fieldset>

@@ -111,7 +111,8 @@ export type Light = PointLight;
 export type LightType = Light['type'];
 
 export type ImageFormat = 'png' | 'jpg';
-export type SamplerName = 'jittered' | 'regular';
+/** Where a pixel's samples go (the server's Sampler.names(), simplest first). */
+export type SamplerName = 'regular' | 'random' | 'jittered' | 'multijittered' | 'sobol';
 
 export interface ImageSettings {
   width?: number;
@@ -131,9 +132,15 @@ export interface CameraSettings {
 
 export interface RenderSettings {
   sampler?: SamplerName;
+  /** Samples per pixel; with adaptive sampling, the most a pixel takes. */
   samples?: number;
   maxDepth?: number;
   seed?: number;
+  /**
+   * Adaptive sampling: a pixel stops taking samples (in batches of 4, at least 8) once the standard
+   * error of its mean is within this fraction of its brightness. 0 (or absent): off. In [0, 1].
+   */
+  adaptive?: number;
 }
 
 /** A whole scene file. */
@@ -206,7 +213,7 @@ export const SCENE_FIELDS = fieldsOf<Scene>()([
 ]);
 export const IMAGE_FIELDS = fieldsOf<ImageSettings>()(['width', 'height', 'format', 'quality']);
 export const CAMERA_FIELDS = fieldsOf<CameraSettings>()(['position', 'lookAt', 'up', 'fov']);
-export const RENDER_FIELDS = fieldsOf<RenderSettings>()(['sampler', 'samples', 'maxDepth', 'seed']);
+export const RENDER_FIELDS = fieldsOf<RenderSettings>()(['sampler', 'samples', 'maxDepth', 'seed', 'adaptive']);
 
 export const OBJECT_TYPES = Object.keys(OBJECT_FIELDS) as ObjectType[];
 export const MATERIAL_TYPES = Object.keys(MATERIAL_FIELDS) as MaterialType[];

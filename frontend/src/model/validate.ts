@@ -115,7 +115,13 @@ const scene = record(SCENE_FIELDS, {
   camera: record(CAMERA_FIELDS, { position: vector, lookAt: vector, up: vector, fov: number }),
   background: color,
   ambient: number,
-  render: record(RENDER_FIELDS, { sampler: oneOf('jittered', 'regular'), samples: integer, maxDepth: integer, seed: integer }),
+  render: record(RENDER_FIELDS, {
+    sampler: oneOf('regular', 'random', 'jittered', 'multijittered', 'sobol'),
+    samples: integer,
+    maxDepth: integer,
+    seed: integer,
+    adaptive: number,
+  }),
   lights: list(light),
   objects: list(object),
 });

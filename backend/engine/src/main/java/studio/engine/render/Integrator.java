@@ -47,7 +47,7 @@ final class Integrator {
         }
     }
 
-    /** Radiance arriving along the ray; {@code weight} is what the caller will multiply it by. */
+    /** Radiance arriving along the ray; {@code weight} is the path's throughput so far (1 for a camera ray). */
     Rgb trace(Ray ray, int depth, double weight) {
         rays++;
         Hit hit = hits[depth];

@@ -5,8 +5,16 @@ package studio.engine.render;
  *
  * @param raysTraced        primary, secondary and shadow rays
  * @param nonFiniteSamples  samples that came out NaN or infinite and were dropped (should be 0)
+ * @param samplesTaken      camera samples over all pixels (width x height x samples per pixel, or
+ *                          fewer with adaptive sampling)
  */
-public record RenderResult(Film film, long raysTraced, long nonFiniteSamples, long elapsedNanos) {
+public record RenderResult(Film film, long raysTraced, long nonFiniteSamples, long elapsedNanos,
+                           long samplesTaken) {
+
+    /** The mean number of samples a pixel took. */
+    public double meanSamplesPerPixel() {
+        return (double) samplesTaken / ((long) film.width() * film.height());
+    }
 
     public double raysPerSecond() {
         return elapsedNanos > 0 ? raysTraced * 1e9 / elapsedNanos : 0;

@@ -21,8 +21,41 @@ import studio.engine.scene.Scene;
  * ForkJoinPool of the requested size, each finished tile is reported, and a cancel request is
  * honoured between tiles. Each pixel's samples are seeded from the pixel, so the result is the
  * same, bit for bit, whatever the number of threads.
+ *
+ * <p><b>Adaptive sampling</b> ({@link RenderSettings#adaptiveThreshold()} t &gt; 0). With N the
+ * sampler's samples per pixel (the maximum), a pixel takes samples in batches of {@value #BATCH},
+ * each a fresh pattern of the configured sampler (so each batch is stratified), drawn from the
+ * pixel's random stream as it continues. After each full batch, with k the number of full batches
+ * so far, n = {@value #BATCH} k the samples so far, and per channel c (linear light):
+ * <ul>
+ * <li>m_c,j the mean of batch j and M_c = mean_j m_c,j (the pixel's mean),</li>
+ * <li>SE_c = sqrt(sum_j (m_c,j - M_c)^2 / (k (k - 1))), the standard error of M_c from the batch means,</li>
+ * <li>R_c = (largest - smallest sample in channel c) / n: the step one sample moving across the
+ *     samples' range makes in the mean,</li>
+ * </ul>
+ * the pixel stops when
+ * <pre>
+ *     k &gt;= {@value #MIN_BATCHES}  and  for every c: max(SE_c, R_c) &lt;= t * max(max_c M_c, 1/255)
+ * </pre>
+ * i.e. every channel's error is within t of the brightest channel's mean (or of 1/255 in linear
+ * light, for near-black pixels). The R_c term is there because with stratified batches and two or
+ * three batches a pixel cut by an edge often has identical batch means (SE = 0) by chance; the mean
+ * of n two-valued samples cannot be trusted to better than one sample's step. Otherwise the pixel
+ * stops at N samples; if N is not a multiple of {@value #BATCH}, the last batch is a pattern of
+ * N mod {@value #BATCH} samples. A pixel therefore takes at least min(N, {@value #MIN_BATCHES} x
+ * {@value #BATCH}) samples: a flat pixel (all samples equal, or varying smoothly by much less than
+ * the threshold) stops there; edges, shadow borders, highlights and reflections take more. The
+ * pixel's value is the mean of all its samples. The rule uses only the pixel's own samples, so the
+ * image is still the same at any thread count.
  */
 public final class Renderer {
+
+    /** Adaptive sampling: samples per batch. */
+    public static final int BATCH = 4;
+    /** Adaptive sampling: a pixel takes at least this many batches (if the maximum allows). */
+    public static final int MIN_BATCHES = 2;
+    /** Adaptive sampling: the error threshold is relative to the pixel's brightest channel, but to at least this. */
+    public static final double ERROR_FLOOR = 1.0 / 255;
 
     private Renderer() {
     }
@@ -43,6 +76,7 @@ public final class Renderer {
         List<TileRect> tiles = tiles(settings.width(), settings.height(), RenderSettings.TILE_SIZE);
         AtomicInteger done = new AtomicInteger();
         LongAdder rays = new LongAdder();
+        LongAdder samples = new LongAdder();
         LongAdder nonFinite = new LongAdder();
         ThreadLocal<TileWorker> workers = ThreadLocal.withInitial(() -> new TileWorker(scene, settings));
 
@@ -55,9 +89,10 @@ public final class Renderer {
                         return;
                     }
                     TileWorker worker = workers.get();
-                    long raysBefore = worker.integrator.rays;
+                    long raysBefore = worker.integrator.rays, samplesBefore = worker.samples;
                     long bad = worker.render(film, tile);
                     rays.add(worker.integrator.rays - raysBefore);
+                    samples.add(worker.samples - samplesBefore);
                     nonFinite.add(bad);
                     listener.tileFinished(film, tile, done.incrementAndGet(), tiles.size());
                 }));
@@ -83,7 +118,7 @@ public final class Renderer {
         if (done.get() < tiles.size()) {
             throw new RenderCancelledException();
         }
-        return new RenderResult(film, rays.sum(), nonFinite.sum(), System.nanoTime() - start);
+        return new RenderResult(film, rays.sum(), nonFinite.sum(), System.nanoTime() - start, samples.sum());
     }
 
     /** The image cut into tiles of at most size x size, row by row from the top left. */
@@ -97,54 +132,141 @@ public final class Renderer {
         return tiles;
     }
 
-    /** Per-thread state: the integrator, the random generator and the sample buffers. */
+    /** Per-thread state: the integrator, the random generator, the sample buffers and the batch statistics. */
     private static final class TileWorker {
         final Integrator integrator;
         final Camera camera;
         final Sampler sampler;
+        /** Adaptive sampling: a full batch, and the last, partial batch when the maximum is not a multiple. */
+        final Sampler batchSampler, remainderSampler;
         final PixelRandom random = new PixelRandom();
         final double[] xs, ys;
         final int width, height;
         final double aspect;
         final long seed;
+        final double threshold;
+        /** Camera samples taken so far by this worker. */
+        long samples;
+        /** The radiance summed over the last call of {@link #trace}. */
+        private double sumR, sumG, sumB;
+        /** The smallest and largest finite sample values per channel since the last {@link #resetRange}. */
+        private double minR, minG, minB, maxR, maxG, maxB;
 
         TileWorker(Scene scene, RenderSettings settings) {
             integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight());
             camera = scene.camera();
             sampler = settings.sampler();
-            xs = new double[sampler.samplesPerPixel()];
-            ys = new double[sampler.samplesPerPixel()];
+            int n = sampler.samplesPerPixel();
+            threshold = settings.adaptiveThreshold();
+            batchSampler = settings.adaptive() && n >= BATCH ? sampler.withSamplesPerPixel(BATCH) : null;
+            remainderSampler = settings.adaptive() && n % BATCH != 0 ? sampler.withSamplesPerPixel(n % BATCH) : null;
+            xs = new double[n];
+            ys = new double[n];
             width = settings.width();
             height = settings.height();
             aspect = (double) width / height;
             seed = settings.seed();
         }
 
-        /** Renders one tile into the film; returns how many pixels came out non-finite. */
+        /** Renders one tile into the film; returns how many samples came out non-finite. */
         long render(Film film, TileRect tile) {
             long bad = 0;
-            int n = sampler.samplesPerPixel();
             for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
                 for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
                     random.reset(x, y, seed);
-                    sampler.generate(random, xs, ys);
-                    double r = 0, g = 0, b = 0;
-                    for (int s = 0; s < n; s++) {
-                        double ndcX = 2 * (x + xs[s]) / width - 1;
-                        double ndcY = 1 - 2 * (y + ys[s]) / height;
-                        Ray ray = camera.ray(ndcX, ndcY, aspect);
-                        Rgb c = integrator.trace(ray, 0, 1.0 / n);
-                        if (Double.isFinite(c.r()) && Double.isFinite(c.g()) && Double.isFinite(c.b())) {
-                            r += c.r();
-                            g += c.g();
-                            b += c.b();
-                        } else {
-                            bad++;
-                        }
-                    }
-                    film.set(x, y, r / n, g / n, b / n);
+                    bad += threshold > 0 ? adaptivePixel(film, x, y) : fixedPixel(film, x, y);
                 }
             }
+            return bad;
+        }
+
+        /** All of the sampler's samples, from one pattern. */
+        private long fixedPixel(Film film, int x, int y) {
+            int n = sampler.samplesPerPixel();
+            sampler.generate(random, xs, ys);
+            long bad = trace(x, y, n);
+            samples += n;
+            film.set(x, y, sumR / n, sumG / n, sumB / n);
+            return bad;
+        }
+
+        /** Batches of {@link #BATCH} samples until the pixel's estimate is good enough (see {@link Renderer}). */
+        private long adaptivePixel(Film film, int x, int y) {
+            int max = sampler.samplesPerPixel();
+            long bad = 0;
+            int taken = 0, batches = 0;
+            double totalR = 0, totalG = 0, totalB = 0;
+            // Welford's running mean and sum of squared deviations of the full batches' means, per channel.
+            double meanR = 0, meanG = 0, meanB = 0, m2R = 0, m2G = 0, m2B = 0;
+            resetRange();
+            while (taken < max) {
+                int size = Math.min(BATCH, max - taken);
+                (size == BATCH ? batchSampler : remainderSampler).generate(random, xs, ys);
+                bad += trace(x, y, size);
+                taken += size;
+                totalR += sumR;
+                totalG += sumG;
+                totalB += sumB;
+                if (size < BATCH) {
+                    break; // the partial batch is the last one
+                }
+                batches++;
+                double r = sumR / BATCH, g = sumG / BATCH, b = sumB / BATCH;
+                double dR = r - meanR, dG = g - meanG, dB = b - meanB;
+                meanR += dR / batches;
+                meanG += dG / batches;
+                meanB += dB / batches;
+                m2R += dR * (r - meanR);
+                m2G += dG * (g - meanG);
+                m2B += dB * (b - meanB);
+                if (batches >= MIN_BATCHES) {
+                    double limit = threshold * Math.max(Math.max(meanR, Math.max(meanG, meanB)), ERROR_FLOOR);
+                    double step = Math.max(maxR - minR, Math.max(maxG - minG, maxB - minB)) / taken;
+                    // standard error^2 = m2 / (k (k - 1)) <= limit^2, and one sample's step <= limit
+                    if (Math.max(m2R, Math.max(m2G, m2B)) <= limit * limit * batches * (batches - 1)
+                            && step <= limit) {
+                        break;
+                    }
+                }
+            }
+            samples += taken;
+            film.set(x, y, totalR / taken, totalG / taken, totalB / taken);
+            return bad;
+        }
+
+        private void resetRange() {
+            minR = minG = minB = Double.POSITIVE_INFINITY;
+            maxR = maxG = maxB = Double.NEGATIVE_INFINITY;
+        }
+
+        /** Traces samples 0 .. count-1 of the buffers; their sum goes to sumR, sumG, sumB. Widens the range. */
+        private long trace(int x, int y, int count) {
+            long bad = 0;
+            double r = 0, g = 0, b = 0;
+            for (int s = 0; s < count; s++) {
+                double ndcX = 2 * (x + xs[s]) / width - 1;
+                double ndcY = 1 - 2 * (y + ys[s]) / height;
+                Ray ray = camera.ray(ndcX, ndcY, aspect);
+                // Each sample starts with throughput 1: culling by the sample's share of the pixel
+                // (1/N) would drop every weak reflection at high sample counts, a bias, not noise.
+                Rgb c = integrator.trace(ray, 0, 1.0);
+                if (Double.isFinite(c.r()) && Double.isFinite(c.g()) && Double.isFinite(c.b())) {
+                    r += c.r();
+                    g += c.g();
+                    b += c.b();
+                    minR = Math.min(minR, c.r());
+                    minG = Math.min(minG, c.g());
+                    minB = Math.min(minB, c.b());
+                    maxR = Math.max(maxR, c.r());
+                    maxG = Math.max(maxG, c.g());
+                    maxB = Math.max(maxB, c.b());
+                } else {
+                    bad++;
+                }
+            }
+            sumR = r;
+            sumG = g;
+            sumB = b;
             return bad;
         }
     }

@@ -7,28 +7,22 @@ package studio.engine.sampler;
 public record JitteredSampler(int samplesPerPixel) implements Sampler {
 
     public JitteredSampler {
-        if (samplesPerPixel < 1) {
-            throw new IllegalArgumentException("samples per pixel must be at least 1: " + samplesPerPixel);
-        }
-    }
-
-    /** The largest divisor of N not above its square root: the number of rows. */
-    static int rows(int n) {
-        int r = (int) Math.sqrt(n);
-        while (n % r != 0) {
-            r--;
-        }
-        return r;
+        Strata.requirePositive(samplesPerPixel);
     }
 
     @Override
     public void generate(PixelRandom random, double[] xs, double[] ys) {
-        int rows = rows(samplesPerPixel), columns = samplesPerPixel / rows;
+        int rows = Strata.rows(samplesPerPixel), columns = samplesPerPixel / rows;
         for (int j = 0, i = 0; j < rows; j++) {
             for (int c = 0; c < columns; c++, i++) {
-                xs[i] = (c + random.nextDouble()) / columns;
-                ys[i] = (j + random.nextDouble()) / rows;
+                xs[i] = Strata.offset(c, random.nextDouble(), columns);
+                ys[i] = Strata.offset(j, random.nextDouble(), rows);
             }
         }
+    }
+
+    @Override
+    public Sampler withSamplesPerPixel(int n) {
+        return new JitteredSampler(n);
     }
 }

@@ -18,8 +18,22 @@ public final class PixelRandom {
 
     /** A uniform double in [0, 1). */
     public double nextDouble() {
+        return (next() >>> 11) * 0x1.0p-53;
+    }
+
+    /** 32 uniform random bits (for scrambling seeds). */
+    public int nextInt() {
+        return (int) (next() >>> 32);
+    }
+
+    /** A uniform int in [0, bound), bound at least 1 (Lemire's multiply-shift; bias below 2^-32 * bound). */
+    public int nextInt(int bound) {
+        return (int) (((next() >>> 32) * bound) >>> 32);
+    }
+
+    private long next() {
         state += 0x9e3779b97f4a7c15L;
-        return (mix(state) >>> 11) * 0x1.0p-53;
+        return mix(state);
     }
 
     private static long mix(long z) {

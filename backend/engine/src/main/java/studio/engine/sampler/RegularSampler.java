@@ -24,4 +24,9 @@ public record RegularSampler(int samplesPerPixel) implements Sampler {
             }
         }
     }
+
+    @Override
+    public Sampler withSamplesPerPixel(int n) {
+        return new RegularSampler(n);
+    }
 }

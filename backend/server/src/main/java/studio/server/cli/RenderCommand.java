@@ -36,7 +36,8 @@ public final class RenderCommand {
     static final int OK = 0, IO_ERROR = 1, INVALID = 2;
 
     static final String USAGE = "usage: java -jar studio.jar render SCENE.json [-o OUT.png|OUT.jpg] [--width W] "
-            + "[--height H] [--samples N] [--sampler regular|jittered] [--threads N] [--quiet]";
+            + "[--height H] [--samples N] [--sampler regular|random|jittered|multijittered|sobol] [--threads N] "
+            + "[--quiet]";
 
     private RenderCommand() {
     }
@@ -96,10 +97,14 @@ public final class RenderCommand {
             return IO_ERROR;
         }
         if (!options.quiet) {
-            out.printf(Locale.ROOT, "wrote %s (%dx%d, %d samples/pixel, %.2f s, %.2f M rays/s)%n", output,
-                    compiled.settings().width(), compiled.settings().height(),
-                    compiled.settings().sampler().samplesPerPixel(), result.elapsedNanos() / 1e9,
-                    result.raysPerSecond() / 1e6);
+            int samples = compiled.settings().sampler().samplesPerPixel();
+            String perPixel = compiled.settings().adaptive()
+                    ? String.format(Locale.ROOT, "%.1f samples/pixel on average, at most %d",
+                            result.meanSamplesPerPixel(), samples)
+                    : samples + " samples/pixel";
+            out.printf(Locale.ROOT, "wrote %s (%dx%d, %s, %.2f s, %.2f M rays/s)%n", output,
+                    compiled.settings().width(), compiled.settings().height(), perPixel,
+                    result.elapsedNanos() / 1e9, result.raysPerSecond() / 1e6);
         }
         return OK;
     }

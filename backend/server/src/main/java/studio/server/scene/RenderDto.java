@@ -1,13 +1,29 @@
 package studio.server.scene;
 
+import jakarta.validation.constraints.DecimalMax;
 import jakarta.validation.constraints.Pattern;
 import jakarta.validation.constraints.Positive;
 import jakarta.validation.constraints.PositiveOrZero;
 
-/** How to sample: sampler name, samples per pixel, recursion depth and the noise seed. */
+/**
+ * How to sample: sampler name, samples per pixel (with adaptive sampling: the most a pixel takes),
+ * recursion depth, the noise seed, and the adaptive-sampling threshold (a relative error in [0, 1];
+ * absent or 0: off).
+ */
 public record RenderDto(
-        @Pattern(regexp = "regular|jittered", message = "must be \"regular\" or \"jittered\"") String sampler,
+        @Pattern(regexp = RenderDto.SAMPLERS, message = RenderDto.SAMPLERS_MESSAGE) String sampler,
         @Positive Integer samples,
         @PositiveOrZero Integer maxDepth,
-        Long seed) {
+        Long seed,
+        @PositiveOrZero @DecimalMax("1") @Finite Double adaptive) {
+
+    /** The engine's Sampler.names(), in its order (a test checks they agree). */
+    static final String SAMPLERS = "regular|random|jittered|multijittered|sobol";
+    static final String SAMPLERS_MESSAGE =
+            "must be one of \"regular\", \"random\", \"jittered\", \"multijittered\", \"sobol\"";
+
+    /** Without adaptive sampling. */
+    public RenderDto(String sampler, Integer samples, Integer maxDepth, Long seed) {
+        this(sampler, samples, maxDepth, seed, null);
+    }
 }

@@ -15,6 +15,7 @@ import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
 import studio.engine.render.RenderSettings;
+import studio.engine.sampler.RegularSampler;
 import studio.engine.sampler.Sampler;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
@@ -48,9 +49,14 @@ public final class SceneMapper {
         int samples = or(render.samples(), SceneDefaults.SAMPLES);
         int maxDepth = or(render.maxDepth(), SceneDefaults.MAX_DEPTH);
         String samplerName = or(render.sampler(), SceneDefaults.SAMPLER);
+        double adaptive = or(render.adaptive(), SceneDefaults.ADAPTIVE);
         problems.atMost("render.samples", samples, limits.maxSamples());
         problems.atMost("render.maxDepth", maxDepth, limits.maxDepth());
         Sampler sampler = problems.attempt("render.samples", () -> Sampler.of(samplerName, samples));
+        if (adaptive > 0 && sampler instanceof RegularSampler) {
+            problems.add("render.adaptive", "cannot be used with the regular sampler, which would put every batch "
+                    + "of samples on the same grid; choose another sampler or set it to 0");
+        }
 
         List<ObjectDto> objectDtos = dto.objects();
         problems.atMost("objects", objectDtos.size(), limits.maxObjects(), "objects");
@@ -86,7 +92,7 @@ public final class SceneMapper {
         Scene scene = new Scene(camera, objects, lights, color(or(dto.background(), SceneDefaults.BACKGROUND)),
                 or(dto.ambient(), SceneDefaults.AMBIENT));
         RenderSettings settings = new RenderSettings(width, height, sampler, maxDepth, threads,
-                or(render.seed(), SceneDefaults.SEED), RenderSettings.DEFAULT_MIN_PATH_WEIGHT);
+                or(render.seed(), SceneDefaults.SEED), RenderSettings.DEFAULT_MIN_PATH_WEIGHT, adaptive);
         return new CompiledScene(scene, settings, or(image.format(), SceneDefaults.FORMAT),
                 or(image.quality(), SceneDefaults.JPEG_QUALITY), SceneNames.toFileStem(dto.name()));
     }
@@ -171,6 +177,10 @@ public final class SceneMapper {
     /** Collects problems so that one response lists them all. */
     private static final class Problems {
         private final List<FieldProblem> list = new ArrayList<>();
+
+        void add(String field, String message) {
+            list.add(new FieldProblem(field, message));
+        }
 
         void atMost(String field, int value, int max) {
             if (value > max) {

@@ -104,6 +104,24 @@ class RenderCommandTest {
     }
 
     @Test
+    void rendersWithASamplerNamedOnTheCommandLine() throws IOException {
+        Path png = dir.resolve("sobol.png");
+        assertThat(run(scene.toString(), "-o", png.toString(), "--sampler", "sobol", "--samples", "8"))
+                .as(err()).isEqualTo(RenderCommand.OK);
+        assertThat(out()).contains("8 samples/pixel");
+        assertThat(RenderCommand.USAGE).contains("--sampler regular|random|jittered|multijittered|sobol");
+    }
+
+    @Test
+    void reportsTheMeanSamplesPerPixelOfAnAdaptiveRender() throws IOException {
+        Path adaptive = write("adaptive.json", TINY_SCENE.replace("\"render\": { \"samples\": 2,",
+                "\"render\": { \"sampler\": \"multijittered\", \"samples\": 32, \"adaptive\": 0.05,"));
+        assertThat(run(adaptive.toString(), "-o", dir.resolve("a.png").toString())).as(err())
+                .isEqualTo(RenderCommand.OK);
+        assertThat(out()).containsPattern("\\d+\\.\\d samples/pixel on average, at most 32");
+    }
+
+    @Test
     void rendersJpgWhenTheOutputEndsInJpg() throws IOException {
         Path jpg = dir.resolve("out.jpg");
         assertThat(run(scene.toString(), "--output", jpg.toString(), "--quiet")).as(err()).isEqualTo(RenderCommand.OK);

@@ -190,6 +190,34 @@ class RenderApiTest {
     }
 
     @Test
+    void rendersWithEachNewSamplerAndAdaptiveSampling() throws Exception {
+        for (String sampler : List.of("random", "multijittered", "sobol")) {
+            mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(tinyWith(Map.of("render",
+                            Map.of("sampler", sampler, "samples", 16, "maxDepth", 2, "adaptive", 0.05)))))
+                    .andExpect(status().isOk())
+                    .andExpect(content().contentType(MediaType.IMAGE_PNG));
+        }
+    }
+
+    @Test
+    void badAdaptiveThresholdsGive400NamingTheField() throws Exception {
+        for (Object bad : List.of(-0.1, 2, "often")) {
+            mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                            .content(tinyWith(Map.of("render", Map.of("adaptive", bad)))))
+                    .andExpect(status().isBadRequest())
+                    .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                    .andExpect(jsonPath("$.status").value(400))
+                    .andExpect(jsonPath("$.errors.length()").value(1))
+                    .andExpect(jsonPath("$.errors[0].field").value("render.adaptive"));
+        }
+        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                        .content(tinyWith(Map.of("render", Map.of("sampler", "regular", "adaptive", 0.1)))))
+                .andExpect(status().isBadRequest())
+                .andExpect(jsonPath("$.errors[0].field").value("render.adaptive"))
+                .andExpect(jsonPath("$.errors[0].message").value(containsString("regular sampler")));
+    }
+
+    @Test
     void singleProblemIsTheDetail() throws Exception {
         mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content("{\"objects\":[{\"type\":\"cone\"}]}"))

@@ -18,6 +18,8 @@ import studio.engine.math.Vec3;
 import studio.engine.render.RenderSettings;
 import studio.engine.sampler.JitteredSampler;
 import studio.engine.sampler.RegularSampler;
+import studio.engine.sampler.Sampler;
+import studio.engine.sampler.SobolSampler;
 
 /**
  * Defaults, configured limits and the rules that span fields, applied by {@link SceneMapper} after
@@ -71,6 +73,8 @@ class SceneMapperTest {
         assertThat(settings.sampler()).isEqualTo(new JitteredSampler(16));
         assertThat(settings.maxDepth()).isEqualTo(6);
         assertThat(settings.seed()).isZero();
+        assertThat(settings.adaptiveThreshold()).isEqualTo(SceneDefaults.ADAPTIVE).isZero();
+        assertThat(settings.adaptive()).isFalse();
         assertThat(settings.threads()).isZero();
         assertThat(compiled.format()).isEqualTo("png");
         assertThat(compiled.mediaType()).isEqualTo("image/png");
@@ -214,6 +218,42 @@ class SceneMapperTest {
                 SceneLimits.DEFAULTS);
         assertThat(problem.field()).isEqualTo("render.samples");
         assertThat(problem.message()).contains("square number").contains("10");
+    }
+
+    @Test
+    void mapsEverySamplerNameOfTheEngine() {
+        for (String name : Sampler.names()) {
+            Sampler sampler = map("{'render':{'sampler':'" + name + "','samples':16},'objects':[]}").settings().sampler();
+            assertThat(sampler).as(name).isEqualTo(Sampler.of(name, 16));
+        }
+    }
+
+    @Test
+    void samplerPatternOfTheSceneFormatListsExactlyTheEngineSamplers() {
+        assertThat(List.of(RenderDto.SAMPLERS.split("\\|"))).isEqualTo(Sampler.names());
+        for (String name : Sampler.names()) {
+            assertThat(RenderDto.SAMPLERS_MESSAGE).contains("\"" + name + "\"");
+        }
+    }
+
+    @Test
+    void mapsTheAdaptiveThresholdToTheRenderSettings() {
+        RenderSettings settings = map("{'render':{'sampler':'sobol','samples':64,'adaptive':0.05},'objects':[]}")
+                .settings();
+        assertThat(settings.adaptiveThreshold()).isEqualTo(0.05);
+        assertThat(settings.adaptive()).isTrue();
+        assertThat(settings.sampler()).isEqualTo(new SobolSampler(64));
+        assertThat(map("{'render':{'adaptive':0},'objects':[]}").settings().adaptive()).isFalse();
+    }
+
+    @Test
+    void rejectsAdaptiveSamplingWithTheRegularSampler() {
+        FieldProblem problem = onlyProblem("{'render':{'sampler':'regular','samples':16,'adaptive':0.1},'objects':[]}",
+                SceneLimits.DEFAULTS);
+        assertThat(problem.field()).isEqualTo("render.adaptive");
+        assertThat(problem.message()).contains("regular sampler");
+        assertThat(map("{'render':{'sampler':'regular','samples':16,'adaptive':0},'objects':[]}").settings().sampler())
+                .isEqualTo(new RegularSampler(16));
     }
 
     @Test

@@ -263,7 +263,46 @@ class SceneValidationTest {
     @Test
     void rejectsUnknownSampler() {
         assertOnlyProblem("{'render':{'sampler':'halton'},'objects':[]}", "render.sampler",
-                "must be \"regular\" or \"jittered\"");
+                "must be one of \"regular\", \"random\", \"jittered\", \"multijittered\", \"sobol\"");
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"regular", "random", "jittered", "multijittered", "sobol"})
+    void acceptsEverySamplerName(String sampler) {
+        assertThatCode(() -> READER.read(json("{'render':{'sampler':'" + sampler + "'},'objects':[]}")))
+                .doesNotThrowAnyException();
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"0", "0.0", "0.02", "1", "1.0"})
+    void acceptsAdaptiveThresholdsFromZeroToOne(String threshold) {
+        SceneDto scene = READER.read(json("{'render':{'sampler':'sobol','adaptive':" + threshold + "},'objects':[]}"));
+        assertThat(scene.render().adaptive()).isEqualTo(Double.parseDouble(threshold));
+    }
+
+    @Test
+    void rejectsNegativeAdaptiveThreshold() {
+        assertOnlyProblem("{'render':{'adaptive':-0.01},'objects':[]}", "render.adaptive",
+                "must be greater than or equal to 0");
+    }
+
+    @Test
+    void rejectsAdaptiveThresholdAboveOne() {
+        assertOnlyProblem("{'render':{'adaptive':1.5},'objects':[]}", "render.adaptive",
+                "must be less than or equal to 1");
+    }
+
+    @Test
+    void rejectsNonFiniteAdaptiveThreshold() {
+        List<FieldProblem> problems = problems("{'render':{'adaptive':1e400},'objects':[]}");
+        assertThat(problems).extracting(FieldProblem::field).containsOnly("render.adaptive");
+        assertThat(problems).extracting(FieldProblem::message).contains("must be a finite number");
+    }
+
+    @Test
+    void rejectsAdaptiveThresholdThatIsNotANumber() {
+        assertOnlyProblem("{'render':{'adaptive':'high'},'objects':[]}", "render.adaptive", "must be a number");
+        assertOnlyProblem("{'render':{'adaptive':true},'objects':[]}", "render.adaptive", "must be a number");
     }
 
     @Test

@@ -1,0 +1,71 @@
+package studio.engine.sampler;
+
+/**
+ * The first two dimensions of the Sobol sequence (van der Corput in base 2 for x, Sobol's second
+ * dimension for y) with Owen scrambling, seeded per pixel: a randomised (0, 2)-sequence.
+ *
+ * <p>Scrambling follows Burley, "Practical Hash-based Owen Scrambling" (JCGT 9(4), 2020): the
+ * point index is shuffled by a nested uniform scramble and each coordinate gets its own nested
+ * uniform (Owen) scramble, all built on a Laine-Karras style hash (the improved constants of
+ * N. Vegdahl, "Building a Better LK Hash", 2021). The three 32-bit seeds are drawn from the pixel's
+ * random stream, so every call, e.g. every batch of adaptive sampling, gets a fresh, independent
+ * pattern. Whenever N is a power of two the N points are a (0, m, 2)-net: every elementary interval
+ * of area 1/N (1/N x 1, 2/N x 1/2, ..., 1 x 1/N) holds exactly one point, so the pattern is
+ * stratified in every aspect ratio at once. Other N take the first N points of such a net.
+ */
+public record SobolSampler(int samplesPerPixel) implements Sampler {
+
+    public SobolSampler {
+        Strata.requirePositive(samplesPerPixel);
+    }
+
+    @Override
+    public void generate(PixelRandom random, double[] xs, double[] ys) {
+        int indexSeed = random.nextInt(), xSeed = random.nextInt(), ySeed = random.nextInt();
+        for (int i = 0; i < samplesPerPixel; i++) {
+            int index = owenScramble(i, indexSeed);
+            xs[i] = unit(owenScramble(Integer.reverse(index), xSeed));
+            ys[i] = unit(owenScramble(sobolSecond(index), ySeed));
+        }
+    }
+
+    @Override
+    public Sampler withSamplesPerPixel(int n) {
+        return new SobolSampler(n);
+    }
+
+    /** Sobol's second dimension as a 32-bit binary fraction (direction numbers v_k = v_{k-1} ^ v_{k-1} >> 1). */
+    static int sobolSecond(int index) {
+        int result = 0;
+        for (int v = 1 << 31; index != 0; index >>>= 1, v ^= v >>> 1) {
+            if ((index & 1) != 0) {
+                result ^= v;
+            }
+        }
+        return result;
+    }
+
+    /**
+     * A nested uniform scramble of a 32-bit binary fraction: each bit is flipped or not depending on
+     * the seed and on all the bits above it only, which keeps every elementary interval's points in
+     * one elementary interval.
+     */
+    static int owenScramble(int bits, int seed) {
+        return Integer.reverse(lkHash(Integer.reverse(bits), seed));
+    }
+
+    /** A bijection in which each output bit depends only on the same and lower input bits. */
+    private static int lkHash(int x, int seed) {
+        x ^= x * 0x3d20adea;
+        x += seed;
+        x *= (seed >>> 16) | 1;
+        x ^= x * 0x05526c56;
+        x ^= x * 0x53a22864;
+        return x;
+    }
+
+    /** A 32-bit binary fraction as a double in [0, 1). */
+    private static double unit(int bits) {
+        return (bits & 0xffffffffL) * 0x1.0p-32;
+    }
+}
