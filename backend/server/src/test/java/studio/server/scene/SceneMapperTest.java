@@ -17,6 +17,7 @@ import studio.engine.light.PointLight;
 import studio.engine.math.Vec3;
 import studio.engine.render.RenderSettings;
 import studio.engine.sampler.JitteredSampler;
+import studio.engine.sampler.SobolSampler;
 import studio.engine.sampler.RegularSampler;
 import studio.engine.sampler.Sampler;
 import studio.engine.sampler.SobolSampler;
@@ -70,7 +71,7 @@ class SceneMapperTest {
         RenderSettings settings = compiled.settings();
         assertThat(settings.width()).isEqualTo(800);
         assertThat(settings.height()).isEqualTo(600);
-        assertThat(settings.sampler()).isEqualTo(new JitteredSampler(16));
+        assertThat(settings.sampler()).isEqualTo(new SobolSampler(16));
         assertThat(settings.maxDepth()).isEqualTo(6);
         assertThat(settings.seed()).isZero();
         assertThat(settings.adaptiveThreshold()).isEqualTo(SceneDefaults.ADAPTIVE).isZero();

@@ -1,0 +1,193 @@
+package studio.server.bench;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.stream.Stream;
+
+import jakarta.validation.Validation;
+import jakarta.validation.ValidatorFactory;
+import studio.server.render.ImageFiles;
+import studio.server.scene.CompiledScene;
+import studio.server.scene.InvalidSceneException;
+import studio.server.scene.SceneCompiler;
+import studio.server.scene.SceneLimits;
+import studio.server.scene.SceneMapper;
+import studio.server.scene.SceneReader;
+
+/**
+ * {@code studio.jar bench [--out docs/bench] [--width W] [--height H] [--runs N]
+ * [--reference-samples N] [--scenes scenes/bench]}: the speed-against-accuracy benchmark of the
+ * samplers. For each scene file it renders a reference with many jittered samples, measures every
+ * available sampler (and adaptive sampling, when the engine has it) for time and error, and writes
+ * {@code speed-accuracy.csv}, the charts, the reference images and {@code summary.txt} to the output folder.
+ */
+public final class BenchCommand {
+
+    /** Exit codes, as the render command's: 0 done, 1 could not read or write a file, 2 bad arguments or an invalid scene. */
+    static final int OK = 0, IO_ERROR = 1, INVALID = 2;
+
+    static final int DEFAULT_WIDTH = 160, DEFAULT_HEIGHT = 120, DEFAULT_RUNS = 3, DEFAULT_REFERENCE_SAMPLES = 1024;
+
+    static final String USAGE = "usage: java -jar studio.jar bench [--out docs/bench] [--width " + DEFAULT_WIDTH
+            + "] [--height " + DEFAULT_HEIGHT + "] [--runs " + DEFAULT_RUNS + "] [--reference-samples "
+            + DEFAULT_REFERENCE_SAMPLES + "] [--scenes scenes/bench]";
+
+    private BenchCommand() {
+    }
+
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        long start = System.nanoTime();
+        Options options;
+        try {
+            options = Options.parse(args);
+        } catch (IllegalArgumentException e) {
+            err.println("error: " + e.getMessage());
+            err.println(USAGE);
+            return INVALID;
+        }
+        if (options.help) {
+            out.println(USAGE);
+            return OK;
+        }
+        System.setProperty("java.awt.headless", "true");
+
+        Map<String, CompiledScene> scenes = new LinkedHashMap<>();
+        try (ValidatorFactory validation = Validation.buildDefaultValidatorFactory()) {
+            SceneCompiler compiler = new SceneCompiler(new SceneReader(validation.getValidator()),
+                    new SceneMapper(SceneLimits.DEFAULTS));
+            for (Path file : sceneFiles(options.scenes)) {
+                try {
+                    scenes.put(stem(file), compiler.compile(Files.readAllBytes(file), options.overrides(), 0));
+                } catch (InvalidSceneException e) {
+                    err.println("error: invalid scene " + file + ": " + e.getMessage());
+                    return INVALID;
+                }
+            }
+        } catch (IOException e) {
+            err.println("error: cannot read the scenes in " + options.scenes + ": " + e.getMessage());
+            return IO_ERROR;
+        }
+        if (scenes.isEmpty()) {
+            err.println("error: no scene files (*.json) in " + options.scenes);
+            return INVALID;
+        }
+
+        SpeedAccuracyBench bench = new SpeedAccuracyBench(
+                SpeedAccuracyBench.Config.defaults(options.runs, options.referenceSamples), err);
+        err.printf(Locale.ROOT, "bench: %d scenes at %dx%d on %d threads, %d runs per setting, reference %s at %d "
+                        + "samples/pixel; adaptive sampling %s%n", scenes.size(), options.width, options.height,
+                Runtime.getRuntime().availableProcessors(), options.runs, SpeedAccuracyBench.REFERENCE_SAMPLER,
+                options.referenceSamples, EngineFeatures.hasAdaptive() ? "measured" : "not in this engine, skipped");
+        Map<String, List<Measurement>> rowsByScene = new LinkedHashMap<>();
+        List<Measurement> all = new ArrayList<>();
+        try {
+            Files.createDirectories(options.out);
+            for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
+                SpeedAccuracyBench.SceneResult result = bench.run(scene.getKey(), scene.getValue());
+                rowsByScene.put(scene.getKey(), result.rows());
+                all.addAll(result.rows());
+                try (OutputStream image = Files.newOutputStream(options.out.resolve("reference-" + scene.getKey() + ".png"))) {
+                    ImageFiles.write(result.reference(), "png", 1.0, image);
+                }
+            }
+            BenchCsv.write(options.out.resolve("speed-accuracy.csv"), all);
+            BenchCharts.write(options.out, rowsByScene);
+        } catch (IOException e) {
+            err.println("error: cannot write to " + options.out + ": " + e.getMessage());
+            return IO_ERROR;
+        }
+
+        StringBuilder summary = new StringBuilder();
+        summary.append(String.format(Locale.ROOT, "Speed against accuracy, %dx%d, median of %d runs on %d threads; "
+                        + "error against %s at %d samples/pixel, RMSE in linear light, PSNR peak 1.0.%n"
+                        + "slope: least squares of log RMSE against log samples/pixel (4..256; adaptive: all thresholds, "
+                        + "mean samples/pixel).%n"
+                        + "ms to target: time to reach jittered's RMSE at 16 samples/pixel, interpolated log-log.%n%n",
+                options.width, options.height, options.runs, Runtime.getRuntime().availableProcessors(),
+                SpeedAccuracyBench.REFERENCE_SAMPLER, options.referenceSamples));
+        for (Map.Entry<String, List<Measurement>> scene : rowsByScene.entrySet()) {
+            summary.append(BenchSummary.format(scene.getKey(), scene.getValue())).append('\n');
+        }
+        double seconds = (System.nanoTime() - start) / 1e9;
+        summary.append(String.format(Locale.ROOT, "bench took %.1f s%n", seconds));
+        try {
+            Files.writeString(options.out.resolve("summary.txt"), summary.toString());
+        } catch (IOException e) {
+            err.println("error: cannot write to " + options.out + ": " + e.getMessage());
+            return IO_ERROR;
+        }
+        out.print(summary);
+        out.println("wrote " + options.out.resolve("speed-accuracy.csv") + ", the charts and summary.txt");
+        return OK;
+    }
+
+    static List<Path> sceneFiles(Path dir) throws IOException {
+        try (Stream<Path> files = Files.list(dir)) {
+            return files.filter(p -> p.getFileName().toString().endsWith(".json")).sorted().toList();
+        }
+    }
+
+    static String stem(Path file) {
+        String name = file.getFileName().toString();
+        return name.substring(0, name.length() - ".json".length());
+    }
+
+    /** The parsed command line. */
+    static final class Options {
+        Path out = Path.of("docs/bench");
+        Path scenes = Path.of("scenes/bench");
+        int width = DEFAULT_WIDTH, height = DEFAULT_HEIGHT, runs = DEFAULT_RUNS, referenceSamples = DEFAULT_REFERENCE_SAMPLES;
+        boolean help;
+
+        static Options parse(String[] args) {
+            Options o = new Options();
+            for (int i = 0; i < args.length; i++) {
+                String a = args[i];
+                switch (a) {
+                    case "-h", "--help" -> o.help = true;
+                    case "--out" -> o.out = Path.of(value(args, ++i, a));
+                    case "--scenes" -> o.scenes = Path.of(value(args, ++i, a));
+                    case "--width" -> o.width = positive(args, ++i, a);
+                    case "--height" -> o.height = positive(args, ++i, a);
+                    case "--runs" -> o.runs = positive(args, ++i, a);
+                    case "--reference-samples" -> o.referenceSamples = positive(args, ++i, a);
+                    default -> throw new IllegalArgumentException("unknown argument " + a);
+                }
+            }
+            return o;
+        }
+
+        /** The image size as overrides of the scene files' fields, applied before validation. */
+        Map<String, Object> overrides() {
+            return Map.of("image.width", width, "image.height", height);
+        }
+
+        private static String value(String[] args, int i, String option) {
+            if (i >= args.length) {
+                throw new IllegalArgumentException(option + " needs a value");
+            }
+            return args[i];
+        }
+
+        private static int positive(String[] args, int i, String option) {
+            String v = value(args, i, option);
+            try {
+                int n = Integer.parseInt(v);
+                if (n < 1) {
+                    throw new NumberFormatException();
+                }
+                return n;
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException(option + " needs a positive whole number, not '" + v + "'");
+            }
+        }
+    }
+}

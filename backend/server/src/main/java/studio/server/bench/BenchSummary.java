@@ -1,0 +1,112 @@
+package studio.server.bench;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.OptionalDouble;
+import java.util.Set;
+
+/**
+ * The summary of one scene: for each method, how fast its error falls with samples (the
+ * least-squares slope of log RMSE against log samples per pixel, over 4..256 for fixed counts and
+ * over every threshold for adaptive sampling, against the mean samples per pixel), and how long it
+ * takes to reach the error that jittered sampling reaches at 16 samples, also as a ratio to
+ * jittered's own time.
+ */
+final class BenchSummary {
+
+    static final String TARGET_SAMPLER = "jittered";
+    static final int TARGET_SAMPLES = 16;
+    static final int SLOPE_FROM = 4, SLOPE_TO = 256;
+
+    /** The error to reach: jittered's RMSE at 16 samples per pixel. */
+    record Target(double rmse, double millis) {
+    }
+
+    /**
+     * One method's line.
+     *
+     * @param millis     time to reach the target; NaN if it never does
+     * @param upperBound true if even the method's cheapest setting is below the target (millis is that setting's time)
+     * @param ratio      millis over jittered's time to reach the target
+     */
+    record Line(String method, double slope, double millis, boolean upperBound, double ratio) {
+    }
+
+    private BenchSummary() {
+    }
+
+    /** Jittered at 16 samples, or null if it was not measured. */
+    static Target target(List<Measurement> rows) {
+        return rows.stream()
+                .filter(m -> m.method().equals(TARGET_SAMPLER) && m.samples() == TARGET_SAMPLES && Double.isNaN(m.threshold()))
+                .findFirst().map(m -> new Target(m.rmse(), m.medianMillis())).orElse(null);
+    }
+
+    /** A method's measurements in order of increasing mean samples per pixel. */
+    static List<Measurement> ordered(List<Measurement> own) {
+        return own.stream().sorted(Comparator.comparingDouble(Measurement::meanSamplesPerPixel)).toList();
+    }
+
+    static OptionalDouble timeToReach(List<Measurement> own, double targetRmse) {
+        List<Measurement> sorted = ordered(own);
+        return LogLog.timeToReach(sorted.stream().mapToDouble(Measurement::medianMillis).toArray(),
+                sorted.stream().mapToDouble(Measurement::rmse).toArray(), targetRmse);
+    }
+
+    static double slope(List<Measurement> own) {
+        List<Measurement> fitted = ordered(own).stream()
+                .filter(m -> !Double.isNaN(m.threshold()) || (m.samples() >= SLOPE_FROM && m.samples() <= SLOPE_TO))
+                .toList();
+        return LogLog.slope(fitted.stream().mapToDouble(Measurement::meanSamplesPerPixel).toArray(),
+                fitted.stream().mapToDouble(Measurement::rmse).toArray());
+    }
+
+    /** One line per method of one scene's rows, in the order the methods first appear. */
+    static List<Line> lines(List<Measurement> rows) {
+        Target target = target(rows);
+        Set<String> methods = new LinkedHashSet<>();
+        rows.forEach(m -> methods.add(m.method()));
+        double jitteredMillis = Double.NaN;
+        if (target != null) {
+            List<Measurement> jittered = rows.stream().filter(m -> m.method().equals(TARGET_SAMPLER)).toList();
+            jitteredMillis = timeToReach(jittered, target.rmse()).orElse(target.millis());
+        }
+        List<Line> lines = new ArrayList<>();
+        for (String method : methods) {
+            List<Measurement> own = rows.stream().filter(m -> m.method().equals(method)).toList();
+            double millis = Double.NaN;
+            boolean upper = false;
+            if (target != null) {
+                millis = timeToReach(own, target.rmse()).orElse(Double.NaN);
+                upper = !Double.isNaN(millis) && ordered(own).get(0).rmse() <= target.rmse()
+                        && !method.equals(TARGET_SAMPLER);
+            }
+            lines.add(new Line(method, slope(own), millis, upper, millis / jitteredMillis));
+        }
+        return lines;
+    }
+
+    /** The printed table of one scene. */
+    static String format(String scene, List<Measurement> rows) {
+        StringBuilder s = new StringBuilder();
+        Target target = target(rows);
+        if (target == null) {
+            s.append(scene).append(": no jittered measurement at ").append(TARGET_SAMPLES).append(" samples, no target\n");
+        } else {
+            s.append(String.format(Locale.ROOT, "%s: target RMSE %.5f (jittered at %d samples/pixel, %.1f ms)%n",
+                    scene, target.rmse(), TARGET_SAMPLES, target.millis()));
+        }
+        s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s%n", "method", "slope", "ms to target", "vs jittered"));
+        for (Line line : lines(rows)) {
+            String bound = line.upperBound() ? "<= " : "";
+            String millis = Double.isNaN(line.millis()) ? "not reached" : bound + String.format(Locale.ROOT, "%.1f", line.millis());
+            String ratio = Double.isNaN(line.ratio()) ? "-" : bound + String.format(Locale.ROOT, "%.2f", line.ratio());
+            String slope = Double.isNaN(line.slope()) ? "-" : String.format(Locale.ROOT, "%.2f", line.slope());
+            s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s%n", line.method(), slope, millis, ratio));
+        }
+        return s.toString();
+    }
+}

@@ -1,0 +1,187 @@
+package studio.server.bench;
+
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+
+import studio.engine.render.Film;
+import studio.engine.render.RenderResult;
+import studio.engine.render.RenderSettings;
+import studio.engine.render.Renderer;
+import studio.engine.sampler.Sampler;
+import studio.engine.scene.Scene;
+import studio.server.scene.CompiledScene;
+
+/**
+ * Measures one scene: a reference render with many jittered samples, then every available sampler
+ * at each sample count, then (if the engine has it) adaptive sampling at each threshold on top of
+ * the best of those samplers. Every render reuses the compiled scene and its settings with only
+ * the sampler (and threshold) swapped, and runs on all cores.
+ */
+final class SpeedAccuracyBench {
+
+    /** The reference's sampler. */
+    static final String REFERENCE_SAMPLER = "jittered";
+    /** Added to the scene's seed for the reference, so its noise is independent of the measured renders'. */
+    static final long REFERENCE_SEED_OFFSET = 0x5EED_0001L;
+
+    /**
+     * @param runs               timed renders per setting; the median counts (one warm-up render per scene comes first)
+     * @param referenceSamples   samples per pixel of the reference
+     * @param sampleCounts       the fixed counts per pixel to measure
+     * @param thresholds         the adaptive thresholds to measure
+     * @param adaptiveMaxSamples the most samples adaptive sampling may spend on a pixel
+     */
+    record Config(int runs, int referenceSamples, List<Integer> sampleCounts, List<Double> thresholds,
+                  int adaptiveMaxSamples) {
+
+        static Config defaults(int runs, int referenceSamples) {
+            return new Config(runs, referenceSamples, List.of(1, 4, 16, 64, 256),
+                    List.of(0.2, 0.1, 0.05, 0.02, 0.01), 256);
+        }
+    }
+
+    /** One scene's results: its rows and its reference image. */
+    record SceneResult(String scene, List<Measurement> rows, Film reference, double referenceMillis) {
+    }
+
+    private final Config config;
+    private final PrintStream log;
+
+    SpeedAccuracyBench(Config config, PrintStream log) {
+        this.config = config;
+        this.log = log;
+    }
+
+    SceneResult run(String name, CompiledScene compiled) {
+        Scene scene = compiled.scene();
+        RenderSettings base = compiled.settings();
+        boolean adaptive = EngineFeatures.hasAdaptive();
+
+        // Warm-up: lets the JIT compile the hot loop before anything is timed.
+        Renderer.render(scene, settings(base, EngineFeatures.sampler(REFERENCE_SAMPLER, 16).orElseThrow(), Double.NaN,
+                base.seed(), adaptive));
+
+        RenderSettings referenceSettings = settings(base,
+                EngineFeatures.sampler(REFERENCE_SAMPLER, config.referenceSamples()).orElseThrow(), Double.NaN,
+                base.seed() + REFERENCE_SEED_OFFSET, adaptive);
+        long start = System.nanoTime();
+        Film reference = Renderer.render(scene, referenceSettings).film();
+        double referenceMillis = (System.nanoTime() - start) / 1e6;
+        log.printf(Locale.ROOT, "%s: reference, %s at %d samples/pixel, %.0f ms%n", name, REFERENCE_SAMPLER,
+                config.referenceSamples(), referenceMillis);
+
+        List<Measurement> rows = new ArrayList<>();
+        for (String samplerName : EngineFeatures.SAMPLER_NAMES) {
+            for (int n : config.sampleCounts()) {
+                Optional<Sampler> sampler = EngineFeatures.sampler(samplerName, n);
+                if (sampler.isPresent()) {
+                    rows.add(measure(name, Method.fixed(samplerName), n,
+                            settings(base, sampler.get(), Double.NaN, base.seed(), adaptive), scene, reference));
+                }
+            }
+        }
+        if (adaptive) {
+            String best = bestSampler(rows, base);
+            if (best != null) {
+                Sampler sampler = EngineFeatures.sampler(best, config.adaptiveMaxSamples()).orElseThrow();
+                for (double threshold : config.thresholds()) {
+                    rows.add(measure(name, Method.adaptive(best, threshold), config.adaptiveMaxSamples(),
+                            settings(base, sampler, threshold, base.seed(), true), scene, reference));
+                }
+            }
+        }
+        return new SceneResult(name, rows, reference, referenceMillis);
+    }
+
+    /**
+     * The sampler adaptive sampling builds on: the fixed-count sampler that reaches the target error
+     * (jittered's at 16 samples) soonest, among those the engine accepts for adaptive sampling at the
+     * adaptive maximum (not the regular one: every batch would land on the same grid); if none reaches
+     * it, the one with the lowest error at its most samples.
+     */
+    String bestSampler(List<Measurement> rows, RenderSettings base) {
+        BenchSummary.Target target = BenchSummary.target(rows);
+        String best = null;
+        double bestTime = Double.POSITIVE_INFINITY, bestError = Double.POSITIVE_INFINITY;
+        for (String samplerName : EngineFeatures.SAMPLER_NAMES) {
+            List<Measurement> own = rows.stream().filter(m -> m.method().equals(samplerName)).toList();
+            if (own.isEmpty() || !adaptiveAccepts(base, samplerName)) {
+                continue;
+            }
+            double time = target == null ? Double.NaN : BenchSummary.timeToReach(own, target.rmse()).orElse(Double.NaN);
+            double error = own.get(own.size() - 1).rmse();
+            boolean better = !Double.isNaN(time)
+                    ? time < bestTime
+                    : bestTime == Double.POSITIVE_INFINITY && error < bestError;
+            if (better) {
+                best = samplerName;
+                if (!Double.isNaN(time)) {
+                    bestTime = time;
+                }
+                bestError = error;
+            }
+        }
+        return best;
+    }
+
+    /** True if the engine takes this sampler at the adaptive maximum with a threshold. */
+    private boolean adaptiveAccepts(RenderSettings base, String samplerName) {
+        Optional<Sampler> sampler = EngineFeatures.sampler(samplerName, config.adaptiveMaxSamples());
+        if (sampler.isEmpty()) {
+            return false;
+        }
+        try {
+            settings(base, sampler.get(), config.thresholds().get(0), base.seed(), true);
+            return true;
+        } catch (IllegalArgumentException e) {
+            return false;
+        }
+    }
+
+    private Measurement measure(String scene, Method method, int samples, RenderSettings settings, Scene world,
+                                Film reference) {
+        double[] millis = new double[config.runs()];
+        RenderResult first = null;
+        for (int run = 0; run < config.runs(); run++) {
+            long start = System.nanoTime();
+            RenderResult result = Renderer.render(world, settings);
+            millis[run] = (System.nanoTime() - start) / 1e6;
+            if (first == null) {
+                first = result; // the same seed gives the same pixels on every run
+            }
+        }
+        double rmse = ImageError.rmse(first.film(), reference);
+        double meanSpp = (double) EngineFeatures.samplesTaken(first, settings) / (settings.width() * settings.height());
+        Measurement m = new Measurement(scene, method.name(), samples, meanSpp, median(millis), rmse,
+                ImageError.psnr(rmse), method.adaptiveThreshold());
+        log.printf(Locale.ROOT, "%s: %-20s %4d spp (mean %6.1f) %9.1f ms  rmse %.5f  psnr %5.2f dB%n", scene,
+                method.isAdaptive() ? method.name() + " " + method.adaptiveThreshold() : method.name(), samples,
+                meanSpp, m.medianMillis(), rmse, m.psnr());
+        return m;
+    }
+
+    /** The settings with the sampler, the seed and (if the engine has it) the adaptive threshold swapped. */
+    private static RenderSettings settings(RenderSettings base, Sampler sampler, double threshold, long seed,
+                                           boolean engineHasAdaptive) {
+        Map<String, Object> changes = new LinkedHashMap<>();
+        changes.put("sampler", sampler);
+        changes.put("seed", seed);
+        if (engineHasAdaptive) {
+            changes.put(EngineFeatures.ADAPTIVE_THRESHOLD, Double.isNaN(threshold) ? 0.0 : threshold);
+        }
+        return EngineFeatures.with(base, changes);
+    }
+
+    static double median(double[] values) {
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        int n = sorted.length;
+        return n % 2 == 1 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
+    }
+}

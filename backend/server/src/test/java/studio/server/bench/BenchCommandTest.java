@@ -1,0 +1,86 @@
+package studio.server.bench;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import studio.engine.sampler.Sampler;
+
+class BenchCommandTest {
+
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+
+    private int run(String... args) {
+        return BenchCommand.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+    }
+
+    @Test
+    void tinyRunWritesTheCsvTheChartsAndTheSummary(@TempDir Path dir) throws IOException {
+        int code = run("--out", dir.toString(), "--width", "16", "--height", "12", "--runs", "1",
+                "--reference-samples", "16", "--scenes", BenchSceneFiles.dir().toString());
+
+        assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
+        List<String> csv = Files.readAllLines(dir.resolve("speed-accuracy.csv"));
+        assertThat(csv.get(0)).isEqualTo("scene,method,samples,mean_spp,median_ms,rmse,psnr_db,threshold");
+
+        long samplers = EngineFeatures.SAMPLER_NAMES.stream().filter(n -> EngineFeatures.sampler(n, 16).isPresent()).count();
+        int adaptiveRows = EngineFeatures.hasAdaptive() ? 5 : 0;
+        int scenes = BenchSceneFiles.all().size();
+        assertThat(csv).hasSize(1 + scenes * (int) (samplers * 5 + adaptiveRows));
+        assertThat(csv).anySatisfy(line -> assertThat(line).startsWith("edges,jittered,16,16.000,"));
+        assertThat(csv).anySatisfy(line -> assertThat(line).startsWith("stripes,regular,256,256.000,"));
+        for (String line : csv.subList(1, csv.size())) {
+            String[] fields = line.split(",", -1);
+            assertThat(fields).hasSize(8);
+            assertThat(Double.parseDouble(fields[4])).as(line).isPositive();
+            assertThat(Double.parseDouble(fields[5])).as(line).isNotNegative();
+            assertThat(fields[7].isEmpty()).as(line).isEqualTo(!fields[1].startsWith("adaptive"));
+        }
+
+        assertThat(dir.resolve("speed-accuracy.png")).isNotEmptyFile();
+        assertThat(Files.size(dir.resolve("speed-accuracy.png"))).isLessThan(150_000);
+        assertThat(dir.resolve("speed-accuracy-edges.svg")).isNotEmptyFile();
+        assertThat(dir.resolve("speed-accuracy-glass.png")).isNotEmptyFile();
+        assertThat(dir.resolve("reference-stripes.png")).isNotEmptyFile();
+        assertThat(Files.readString(dir.resolve("summary.txt"))).contains("soft-shadows", "target RMSE", "jittered");
+        assertThat(out.toString(StandardCharsets.UTF_8)).contains("ms to target", "vs jittered");
+    }
+
+    @Test
+    void triesEverySamplerTheEngineHas() {
+        assertThat(EngineFeatures.SAMPLER_NAMES).contains("regular", "jittered");
+        assertThat(EngineFeatures.sampler("jittered", 4)).isPresent();
+        assertThat(EngineFeatures.sampler("no-such-sampler", 4)).isEmpty();
+        for (String name : EngineFeatures.SAMPLER_NAMES) {
+            if (EngineFeatures.sampler(name, 4).isPresent()) {
+                assertThat(Sampler.of(name, 4).samplesPerPixel()).isEqualTo(4);
+            }
+        }
+    }
+
+    @Test
+    void refusesBadArguments(@TempDir Path dir) {
+        assertThat(run("--runs", "0")).isEqualTo(BenchCommand.INVALID);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("--runs needs a positive whole number");
+        assertThat(run("--frobnicate")).isEqualTo(BenchCommand.INVALID);
+        assertThat(run("--scenes", dir.toString(), "--out", dir.resolve("out").toString()))
+                .isEqualTo(BenchCommand.INVALID);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("no scene files");
+    }
+
+    @Test
+    void helpPrintsUsage() {
+        assertThat(run("--help")).isEqualTo(BenchCommand.OK);
+        assertThat(out.toString(StandardCharsets.UTF_8)).contains("usage: java -jar studio.jar bench");
+    }
+}

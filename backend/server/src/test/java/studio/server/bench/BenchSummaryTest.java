@@ -1,0 +1,77 @@
+package studio.server.bench;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+class BenchSummaryTest {
+
+    /** A method whose time is proportional to samples and whose error falls as samples^slope. */
+    private static List<Measurement> method(String name, double msPerSample, double error1, double slope) {
+        List<Measurement> rows = new ArrayList<>();
+        for (int n : new int[] {1, 4, 16, 64, 256}) {
+            double rmse = error1 * Math.pow(n, slope);
+            rows.add(new Measurement("s", name, n, n, msPerSample * n, rmse, ImageError.psnr(rmse), Double.NaN));
+        }
+        return rows;
+    }
+
+    @Test
+    void targetIsJitteredAtSixteenSamples() {
+        List<Measurement> rows = method("jittered", 2, 0.1, -0.75);
+        BenchSummary.Target target = BenchSummary.target(rows);
+        assertThat(target.rmse()).isCloseTo(0.1 * Math.pow(16, -0.75), within(1e-15));
+        assertThat(target.millis()).isEqualTo(32);
+    }
+
+    @Test
+    void linesGiveSlopesTimesToTargetAndRatios() {
+        List<Measurement> rows = new ArrayList<>(method("jittered", 2, 0.1, -0.75));
+        rows.addAll(method("random", 2, 0.1, -0.5));
+        rows.addAll(method("sobol", 3, 0.1, -1.0));
+        List<BenchSummary.Line> lines = BenchSummary.lines(rows);
+        assertThat(lines).extracting(BenchSummary.Line::method).containsExactly("jittered", "random", "sobol");
+
+        BenchSummary.Line jittered = lines.get(0), random = lines.get(1), sobol = lines.get(2);
+        assertThat(jittered.slope()).isCloseTo(-0.75, within(1e-12));
+        assertThat(jittered.millis()).isCloseTo(32, within(1e-9));
+        assertThat(jittered.ratio()).isCloseTo(1, within(1e-12));
+
+        // random: 0.1 n^-0.5 = 0.1 * 16^-0.75 at n = 64: 128 ms
+        assertThat(random.slope()).isCloseTo(-0.5, within(1e-12));
+        assertThat(random.millis()).isCloseTo(128, within(1e-9));
+        assertThat(random.ratio()).isCloseTo(4, within(1e-12));
+
+        // sobol: 0.1 / n = 0.1 / 8 at n = 8, between the measured 4 and 16: 24 ms
+        assertThat(sobol.millis()).isCloseTo(24, within(1e-9));
+        assertThat(sobol.ratio()).isCloseTo(0.75, within(1e-12));
+        assertThat(sobol.upperBound()).isFalse();
+    }
+
+    @Test
+    void adaptiveSlopeIsAgainstTheMeanSamplesOverEveryThreshold() {
+        List<Measurement> rows = new ArrayList<>(method("jittered", 2, 0.1, -0.75));
+        double[] meanSpp = {2, 5, 11, 30, 70};
+        for (int i = 0; i < meanSpp.length; i++) {
+            double rmse = 0.05 * Math.pow(meanSpp[i], -1.25);
+            rows.add(new Measurement("s", "adaptive-jittered", 256, meanSpp[i], meanSpp[i], rmse,
+                    ImageError.psnr(rmse), 0.2 / (i + 1)));
+        }
+        BenchSummary.Line adaptive = BenchSummary.lines(rows).get(1);
+        assertThat(adaptive.slope()).isCloseTo(-1.25, within(1e-12));
+        assertThat(BenchSummary.format("s", rows)).contains("adaptive-jittered", "-1.25", "target RMSE");
+    }
+
+    @Test
+    void aMethodNeverReachingTheTargetSaysSo() {
+        List<Measurement> rows = new ArrayList<>(method("jittered", 2, 0.1, -0.75));
+        rows.addAll(method("regular", 2, 0.5, -0.1));
+        BenchSummary.Line regular = BenchSummary.lines(rows).get(1);
+        assertThat(regular.millis()).isNaN();
+        assertThat(BenchSummary.format("s", rows)).contains("not reached");
+    }
+}
