@@ -15,6 +15,7 @@ import java.util.stream.Stream;
 import jakarta.validation.Validation;
 import jakarta.validation.ValidatorFactory;
 import studio.server.render.ImageFiles;
+import studio.server.cli.Args;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
 import studio.server.scene.SceneCompiler;
@@ -153,12 +154,12 @@ public final class BenchCommand {
                 String a = args[i];
                 switch (a) {
                     case "-h", "--help" -> o.help = true;
-                    case "--out" -> o.out = Path.of(value(args, ++i, a));
-                    case "--scenes" -> o.scenes = Path.of(value(args, ++i, a));
-                    case "--width" -> o.width = positive(args, ++i, a);
-                    case "--height" -> o.height = positive(args, ++i, a);
-                    case "--runs" -> o.runs = positive(args, ++i, a);
-                    case "--reference-samples" -> o.referenceSamples = positive(args, ++i, a);
+                    case "--out" -> o.out = Path.of(Args.value(args, ++i, a));
+                    case "--scenes" -> o.scenes = Path.of(Args.value(args, ++i, a));
+                    case "--width" -> o.width = Args.positive(args, ++i, a);
+                    case "--height" -> o.height = Args.positive(args, ++i, a);
+                    case "--runs" -> o.runs = Args.positive(args, ++i, a);
+                    case "--reference-samples" -> o.referenceSamples = Args.positive(args, ++i, a);
                     default -> throw new IllegalArgumentException("unknown argument " + a);
                 }
             }
@@ -170,24 +171,5 @@ public final class BenchCommand {
             return Map.of("image.width", width, "image.height", height);
         }
 
-        private static String value(String[] args, int i, String option) {
-            if (i >= args.length) {
-                throw new IllegalArgumentException(option + " needs a value");
-            }
-            return args[i];
-        }
-
-        private static int positive(String[] args, int i, String option) {
-            String v = value(args, i, option);
-            try {
-                int n = Integer.parseInt(v);
-                if (n < 1) {
-                    throw new NumberFormatException();
-                }
-                return n;
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException(option + " needs a positive whole number, not '" + v + "'");
-            }
-        }
     }
 }

@@ -157,12 +157,12 @@ public final class RenderCommand {
                 switch (a) {
                     case "-h", "--help" -> o.help = true;
                     case "-q", "--quiet" -> o.quiet = true;
-                    case "-o", "--output" -> o.output = Path.of(value(args, ++i, a));
-                    case "--width" -> o.width = positive(args, ++i, a);
-                    case "--height" -> o.height = positive(args, ++i, a);
-                    case "--samples" -> o.samples = positive(args, ++i, a);
-                    case "--sampler" -> o.sampler = value(args, ++i, a);
-                    case "--threads" -> o.threads = positive(args, ++i, a);
+                    case "-o", "--output" -> o.output = Path.of(Args.value(args, ++i, a));
+                    case "--width" -> o.width = Args.positive(args, ++i, a);
+                    case "--height" -> o.height = Args.positive(args, ++i, a);
+                    case "--samples" -> o.samples = Args.positive(args, ++i, a);
+                    case "--sampler" -> o.sampler = Args.value(args, ++i, a);
+                    case "--threads" -> o.threads = Args.positive(args, ++i, a);
                     default -> {
                         if (a.startsWith("-")) {
                             throw new IllegalArgumentException("unknown option " + a);
@@ -201,24 +201,5 @@ public final class RenderCommand {
             return map;
         }
 
-        private static String value(String[] args, int i, String option) {
-            if (i >= args.length) {
-                throw new IllegalArgumentException(option + " needs a value");
-            }
-            return args[i];
-        }
-
-        private static int positive(String[] args, int i, String option) {
-            String v = value(args, i, option);
-            try {
-                int n = Integer.parseInt(v);
-                if (n < 1) {
-                    throw new NumberFormatException();
-                }
-                return n;
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException(option + " needs a positive whole number, not '" + v + "'");
-            }
-        }
     }
 }
