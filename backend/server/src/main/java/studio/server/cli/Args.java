@@ -14,6 +14,16 @@ public final class Args {
         return args[i];
     }
 
+    /** The value after an option as a number (validated later, with the scene, like any other value). */
+    public static double number(String[] args, int i, String option) {
+        String v = value(args, i, option);
+        try {
+            return Double.parseDouble(v);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(option + " needs a number, not '" + v + "'");
+        }
+    }
+
     /** The value after an option as a whole number of at least 1. */
     public static int positive(String[] args, int i, String option) {
         String v = value(args, i, option);

@@ -27,7 +27,7 @@ import studio.server.scene.SceneReader;
 
 /**
  * {@code studio.jar render SCENE.json -o OUT.(png|jpg) [--width W] [--height H] [--samples N]
- * [--sampler NAME] [--threads N] [--quiet]}: renders a scene file through the same validation and
+ * [--sampler NAME] [--adaptive T] [--threads N] [--quiet]}: renders a scene file through the same validation and
  * mapping as the API, without starting the HTTP server.
  */
 public final class RenderCommand {
@@ -36,8 +36,8 @@ public final class RenderCommand {
     static final int OK = 0, IO_ERROR = 1, INVALID = 2;
 
     static final String USAGE = "usage: java -jar studio.jar render SCENE.json [-o OUT.png|OUT.jpg] [--width W] "
-            + "[--height H] [--samples N] [--sampler regular|random|jittered|multijittered|sobol] [--threads N] "
-            + "[--quiet]";
+            + "[--height H] [--samples N] [--sampler regular|random|jittered|multijittered|sobol] [--adaptive T] "
+            + "[--threads N] [--quiet]";
 
     private RenderCommand() {
     }
@@ -147,6 +147,7 @@ public final class RenderCommand {
         Path output;
         Integer width, height, samples;
         String sampler;
+        Double adaptive;
         int threads;
         boolean quiet, help;
 
@@ -162,6 +163,7 @@ public final class RenderCommand {
                     case "--height" -> o.height = Args.positive(args, ++i, a);
                     case "--samples" -> o.samples = Args.positive(args, ++i, a);
                     case "--sampler" -> o.sampler = Args.value(args, ++i, a);
+                    case "--adaptive" -> o.adaptive = Args.number(args, ++i, a);
                     case "--threads" -> o.threads = Args.positive(args, ++i, a);
                     default -> {
                         if (a.startsWith("-")) {
@@ -191,6 +193,9 @@ public final class RenderCommand {
             }
             if (samples != null) {
                 map.put("render.samples", samples);
+            }
+            if (adaptive != null) {
+                map.put("render.adaptive", adaptive);
             }
             if (sampler != null) {
                 map.put("render.sampler", sampler);

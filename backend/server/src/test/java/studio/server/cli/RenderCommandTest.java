@@ -122,6 +122,21 @@ class RenderCommandTest {
     }
 
     @Test
+    void adaptiveOptionTurnsOnAdaptiveSampling() throws IOException {
+        assertThat(run(scene.toString(), "-o", dir.resolve("a.png").toString(), "--sampler", "sobol",
+                "--samples", "32", "--adaptive", "0.05")).as(err()).isEqualTo(RenderCommand.OK);
+        assertThat(out()).containsPattern("\\d+\\.\\d samples/pixel on average, at most 32");
+    }
+
+    @Test
+    void adaptiveOptionOutOfRangeExitsWith2NamingTheField() {
+        assertThat(run(scene.toString(), "-o", dir.resolve("a.png").toString(), "--adaptive", "2"))
+                .isEqualTo(RenderCommand.INVALID);
+        assertThat(errLines()).hasSize(1);
+        assertThat(errLines().get(0)).startsWith("error:").contains("render.adaptive");
+    }
+
+    @Test
     void rendersJpgWhenTheOutputEndsInJpg() throws IOException {
         Path jpg = dir.resolve("out.jpg");
         assertThat(run(scene.toString(), "--output", jpg.toString(), "--quiet")).as(err()).isEqualTo(RenderCommand.OK);
