@@ -14,6 +14,7 @@ import studio.engine.geometry.Ray;
 import studio.engine.math.Rgb;
 import studio.engine.sampler.PixelRandom;
 import studio.engine.sampler.Sampler;
+import studio.engine.sampler.SobolSampler;
 import studio.engine.scene.Scene;
 
 /**
@@ -47,6 +48,17 @@ import studio.engine.scene.Scene;
  * the threshold) stops there; edges, shadow borders, highlights and reflections take more. The
  * pixel's value is the mean of all its samples. The rule uses only the pixel's own samples, so the
  * image is still the same at any thread count.
+ *
+ * <p>With the {@code sobol} sampler, adaptive sampling instead walks one scrambled Sobol sequence per
+ * pixel, doubling: after n = 2^k samples (k &gt;= 3) the means A_c of the first and B_c of the second
+ * n/2 samples are both estimates from a stratified (0, k-1, 2)-net, and the pixel stops when
+ * <pre>
+ *     for every c: max(|A_c - B_c| / 2, R_c) &lt;= t * max(max_c M_c, 1/255)
+ * </pre>
+ * (R_c as above: two halves of a few stratified samples can agree by chance on an edge)
+ * else at N. Independent batches would lose the stratification (their error falls like N^-1/2);
+ * halves of one sequence keep it, so the estimate and the image both improve like a fixed-count
+ * Sobol pattern while flat pixels stop at 8 samples.
  */
 public final class Renderer {
 
@@ -139,6 +151,9 @@ public final class Renderer {
         final Sampler sampler;
         /** Adaptive sampling: a full batch, and the last, partial batch when the maximum is not a multiple. */
         final Sampler batchSampler, remainderSampler;
+        /** Adaptive sampling walks one Sobol sequence per pixel (see progressivePixel). */
+        final boolean progressive;
+        final SobolSampler.Sequence sequence = new SobolSampler.Sequence();
         final PixelRandom random = new PixelRandom();
         final double[] xs, ys;
         final int width, height;
@@ -158,6 +173,7 @@ public final class Renderer {
             sampler = settings.sampler();
             int n = sampler.samplesPerPixel();
             threshold = settings.adaptiveThreshold();
+            progressive = sampler instanceof SobolSampler;
             batchSampler = settings.adaptive() && n >= BATCH ? sampler.withSamplesPerPixel(BATCH) : null;
             remainderSampler = settings.adaptive() && n % BATCH != 0 ? sampler.withSamplesPerPixel(n % BATCH) : null;
             xs = new double[n];
@@ -174,7 +190,8 @@ public final class Renderer {
             for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
                 for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
                     random.reset(x, y, seed);
-                    bad += threshold > 0 ? adaptivePixel(film, x, y) : fixedPixel(film, x, y);
+                    bad += threshold <= 0 ? fixedPixel(film, x, y)
+                            : progressive ? progressivePixel(film, x, y) : adaptivePixel(film, x, y);
                 }
             }
             return bad;
@@ -187,6 +204,50 @@ public final class Renderer {
             long bad = trace(x, y, n);
             samples += n;
             film.set(x, y, sumR / n, sumG / n, sumB / n);
+            return bad;
+        }
+
+        /**
+         * Adaptive sampling along one Sobol sequence: after 2^k samples (k >= 3) the estimate from the
+         * first half is compared with the one from the second half, each a stratified (0, k-1, 2)-net;
+         * half their difference estimates the error of the whole. Stop when it is within the threshold.
+         */
+        private long progressivePixel(Film film, int x, int y) {
+            int max = sampler.samplesPerPixel();
+            sequence.seed(random);
+            resetRange();
+            long bad = 0;
+            int taken = 0, target = Math.min(max, BATCH);
+            double totalR = 0, totalG = 0, totalB = 0, firstR = 0, firstG = 0, firstB = 0;
+            while (true) {
+                sequence.fill(taken, target - taken, xs, ys);
+                bad += trace(x, y, taken, target - taken);
+                totalR += sumR;
+                totalG += sumG;
+                totalB += sumB;
+                int half = taken;
+                taken = target;
+                if (taken >= max) {
+                    break;
+                }
+                if (half * 2 == taken && taken >= 2 * BATCH) {
+                    double dR = Math.abs(firstR - (totalR - firstR)) / half;
+                    double dG = Math.abs(firstG - (totalG - firstG)) / half;
+                    double dB = Math.abs(firstB - (totalB - firstB)) / half;
+                    double mean = Math.max(totalR, Math.max(totalG, totalB)) / taken;
+                    double limit = threshold * Math.max(mean, ERROR_FLOOR);
+                    double step = Math.max(maxR - minR, Math.max(maxG - minG, maxB - minB)) / taken;
+                    if (Math.max(dR, Math.max(dG, dB)) / 2 <= limit && step <= limit) {
+                        break;
+                    }
+                }
+                firstR = totalR;
+                firstG = totalG;
+                firstB = totalB;
+                target = Math.min(max, taken * 2);
+            }
+            samples += taken;
+            film.set(x, y, totalR / taken, totalG / taken, totalB / taken);
             return bad;
         }
 
@@ -241,9 +302,14 @@ public final class Renderer {
 
         /** Traces samples 0 .. count-1 of the buffers; their sum goes to sumR, sumG, sumB. Widens the range. */
         private long trace(int x, int y, int count) {
+            return trace(x, y, 0, count);
+        }
+
+        /** Traces samples first .. first + count - 1 of the pattern in xs, ys; sums into sumR/G/B. */
+        private long trace(int x, int y, int first, int count) {
             long bad = 0;
             double r = 0, g = 0, b = 0;
-            for (int s = 0; s < count; s++) {
+            for (int s = first; s < first + count; s++) {
                 double ndcX = 2 * (x + xs[s]) / width - 1;
                 double ndcY = 1 - 2 * (y + ys[s]) / height;
                 Ray ray = camera.ray(ndcX, ndcY, aspect);

@@ -21,11 +21,35 @@ public record SobolSampler(int samplesPerPixel) implements Sampler {
 
     @Override
     public void generate(PixelRandom random, double[] xs, double[] ys) {
-        int indexSeed = random.nextInt(), xSeed = random.nextInt(), ySeed = random.nextInt();
-        for (int i = 0; i < samplesPerPixel; i++) {
+        fill(random.nextInt(), random.nextInt(), random.nextInt(), 0, samplesPerPixel, xs, ys);
+    }
+
+    /** Points first .. first + count - 1 of the sequence with these seeds, into xs, ys at the same indices. */
+    private static void fill(int indexSeed, int xSeed, int ySeed, int first, int count, double[] xs, double[] ys) {
+        for (int i = first; i < first + count; i++) {
             int index = owenScramble(i, indexSeed);
             xs[i] = unit(owenScramble(Integer.reverse(index), xSeed));
             ys[i] = unit(owenScramble(sobolSecond(index), ySeed));
+        }
+    }
+
+    /**
+     * One pixel's scrambled sequence, produced a run at a time (adaptive sampling takes only the
+     * points it needs). Mutable, one per worker thread.
+     */
+    public static final class Sequence {
+        private int indexSeed, xSeed, ySeed;
+
+        /** Starts a new pixel's sequence: the same three seeds {@link #generate} would draw. */
+        public void seed(PixelRandom random) {
+            indexSeed = random.nextInt();
+            xSeed = random.nextInt();
+            ySeed = random.nextInt();
+        }
+
+        /** Points first .. first + count - 1 of the sequence into xs, ys at the same indices. */
+        public void fill(int first, int count, double[] xs, double[] ys) {
+            SobolSampler.fill(indexSeed, xSeed, ySeed, first, count, xs, ys);
         }
     }
 

@@ -20,7 +20,7 @@ import studio.server.scene.CompiledScene;
 /**
  * Measures one scene: a reference render with many jittered samples, then every available sampler
  * at each sample count, then (if the engine has it) adaptive sampling at each threshold on top of
- * the best of those samplers. Every render reuses the compiled scene and its settings with only
+ * sobol, or else the best of those samplers. Every render reuses the compiled scene and its settings with only
  * the sampler (and threshold) swapped, and runs on all cores.
  */
 final class SpeedAccuracyBench {
@@ -87,7 +87,8 @@ final class SpeedAccuracyBench {
             }
         }
         if (adaptive) {
-            String best = bestSampler(rows, base);
+            // sobol first: its adaptive sampling walks one stratified sequence (see Renderer)
+            String best = adaptiveAccepts(base, "sobol") ? "sobol" : bestSampler(rows, base);
             if (best != null) {
                 Sampler sampler = EngineFeatures.sampler(best, config.adaptiveMaxSamples()).orElseThrow();
                 for (double threshold : config.thresholds()) {
