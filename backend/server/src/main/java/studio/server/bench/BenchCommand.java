@@ -19,9 +19,6 @@ import studio.server.cli.Args;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
 import studio.server.scene.SceneCompiler;
-import studio.server.scene.SceneLimits;
-import studio.server.scene.SceneMapper;
-import studio.server.scene.SceneReader;
 
 /**
  * {@code studio.jar bench [--out docs/bench] [--width W] [--height H] [--runs N]
@@ -62,8 +59,7 @@ public final class BenchCommand {
 
         Map<String, CompiledScene> scenes = new LinkedHashMap<>();
         try (ValidatorFactory validation = Validation.buildDefaultValidatorFactory()) {
-            SceneCompiler compiler = new SceneCompiler(new SceneReader(validation.getValidator()),
-                    new SceneMapper(SceneLimits.DEFAULTS));
+            SceneCompiler compiler = SceneCompiler.standalone(validation);
             for (Path file : sceneFiles(options.scenes)) {
                 try {
                     scenes.put(stem(file), compiler.compile(Files.readAllBytes(file), options.overrides(), 0));

@@ -21,9 +21,6 @@ import studio.server.render.ImageFiles;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
 import studio.server.scene.SceneCompiler;
-import studio.server.scene.SceneLimits;
-import studio.server.scene.SceneMapper;
-import studio.server.scene.SceneReader;
 
 /**
  * {@code studio.jar render SCENE.json -o OUT.(png|jpg) [--width W] [--height H] [--samples N]
@@ -68,8 +65,7 @@ public final class RenderCommand {
 
         CompiledScene compiled;
         try (ValidatorFactory validation = Validation.buildDefaultValidatorFactory()) {
-            SceneCompiler compiler = new SceneCompiler(new SceneReader(validation.getValidator()),
-                    new SceneMapper(SceneLimits.DEFAULTS));
+            SceneCompiler compiler = SceneCompiler.standalone(validation);
             compiled = compiler.compile(json, options.overrides(), options.threads);
         } catch (InvalidSceneException e) {
             err.println("error: invalid scene " + options.scene + ": " + e.getMessage());

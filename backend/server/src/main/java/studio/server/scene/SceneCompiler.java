@@ -2,6 +2,8 @@ package studio.server.scene;
 
 import java.util.Map;
 
+import jakarta.validation.ValidatorFactory;
+
 /** Scene JSON in, an engine scene out: the one path the API and the CLI share. */
 public final class SceneCompiler {
 
@@ -20,6 +22,14 @@ public final class SceneCompiler {
      */
     public CompiledScene compile(byte[] json, Map<String, Object> overrides, int threads) {
         return mapper.map(reader.read(json, overrides), threads);
+    }
+
+    /**
+     * A compiler outside Spring (the CLI, the benchmark, tests) with this server's default limits;
+     * the caller owns the validator factory and closes it.
+     */
+    public static SceneCompiler standalone(ValidatorFactory validation) {
+        return new SceneCompiler(new SceneReader(validation.getValidator()), new SceneMapper(SceneLimits.DEFAULTS));
     }
 
     public CompiledScene compile(byte[] json) {

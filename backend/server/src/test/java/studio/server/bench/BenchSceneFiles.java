@@ -6,6 +6,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
+import studio.server.scene.ExampleSceneFiles;
+
 /** The scenes/bench folder of the repository, for tests (as ExampleSceneFiles is for scenes/). */
 final class BenchSceneFiles {
 
@@ -13,12 +15,11 @@ final class BenchSceneFiles {
     }
 
     static Path dir() {
-        String configured = System.getProperty("studio.benchScenesDir");
-        Path dir = configured != null ? Path.of(configured) : Path.of("../../scenes/bench");
+        Path dir = ExampleSceneFiles.dir().resolve("bench");
         if (!Files.isDirectory(dir)) {
             throw new IllegalStateException("cannot find the bench scenes folder at " + dir.toAbsolutePath());
         }
-        return dir.normalize();
+        return dir;
     }
 
     static List<Path> all() {

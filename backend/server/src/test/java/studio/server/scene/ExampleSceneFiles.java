@@ -13,6 +13,9 @@ import jakarta.validation.ValidatorFactory;
 /** The scenes/ folder of the repository, for tests. */
 public final class ExampleSceneFiles {
 
+    /** One validator factory for every test that compiles scenes (building one is not cheap). */
+    private static final ValidatorFactory VALIDATION = Validation.buildDefaultValidatorFactory();
+
     private ExampleSceneFiles() {
     }
 
@@ -40,7 +43,6 @@ public final class ExampleSceneFiles {
 
     /** A compiler with the default limits, as the CLI builds it. */
     public static SceneCompiler compiler() {
-        ValidatorFactory factory = Validation.buildDefaultValidatorFactory();
-        return new SceneCompiler(new SceneReader(factory.getValidator()), new SceneMapper(SceneLimits.DEFAULTS));
+        return SceneCompiler.standalone(VALIDATION);
     }
 }
