@@ -1,0 +1,160 @@
+package studio.bench;
+
+import studio.engine.material.Material;
+import studio.engine.math.Rgb;
+import studio.engine.math.Vec3;
+import studio.engine.render.RenderSettings;
+
+/**
+ * A resolved scene as POV-Ray 3.7 scene description, matched to our renderer:
+ * <ul>
+ * <li>Coordinates are ours, unchanged; {@code right -x*W/H} makes POV-Ray's camera right-handed,
+ *     {@code angle} is the horizontal field of view worked out from our vertical one.</li>
+ * <li>{@code assumed_gamma 1.0}: colours are written in linear light (as we shade), POV-Ray writes sRGB.</li>
+ * <li>{@code max_trace_level} = maxDepth + 1 (POV-Ray counts the camera ray as level 1),
+ *     {@code adc_bailout} = our minimum path weight.</li>
+ * <li>Point lights: colour times intensity, no fall-off (as ours); with fall-off, POV-Ray's
+ *     2 / (1 + (d/f)^2) with f = {@value #FADE_DISTANCE} and the colour scaled by 1 / (2 f^2),
+ *     which is 1 / (d^2 + f^2): 1/d^2 to within 1e-6 relative beyond 1 mm.</li>
+ * <li>Finishes: {@code ambient} = diffuse x scene ambient (ours: colour x diffuse x ambient),
+ *     {@code diffuse} as ours, the Blinn highlight as {@code specular} with {@code roughness} =
+ *     1 / shininess (POV-Ray's specular is Blinn's half-vector lobe), {@code metallic} tints a
+ *     metal's highlight with its colour, {@code reflection rgb} = colour x reflectivity.</li>
+ * <li>Glass: {@code rgbf <sqrt(colour), 1>}, because POV-Ray filters at every surface crossed and
+ *     we tint once, on the way in; Fresnel reflection with {@code conserve_energy}, {@code interior
+ *     { ior }}. Filtered light passes shadow rays, so glass casts a light, tinted shadow as ours.</li>
+ * <li>Boxes: {@code rotate z, then y, then x}: our rotation matrix is Rx Ry Rz (three.js 'XYZ'),
+ *     which turns a point about z first; POV-Ray's rotate matrices are the same numbers as ours.</li>
+ * </ul>
+ */
+public final class PovrayScene {
+
+    /** The fade distance that turns POV-Ray's fall-off into 1 / d^2 (see the class comment). */
+    static final double FADE_DISTANCE = 1e-3;
+
+    private PovrayScene() {
+    }
+
+    /** The whole scene as SDL text. */
+    public static String of(ResolvedScene scene, String title) {
+        StringBuilder sdl = new StringBuilder(256 + 160 * scene.objects().size());
+        sdl.append("// ").append(title.replaceAll("[\\r\\n]", " ")).append(", exported by studio-bench\n");
+        sdl.append("#version 3.7;\n");
+        sdl.append("global_settings { assumed_gamma 1.0 max_trace_level ").append(scene.maxDepth() + 1)
+                .append(" adc_bailout ").append(Sdl.num(RenderSettings.DEFAULT_MIN_PATH_WEIGHT)).append(" }\n");
+        sdl.append(camera(scene));
+        sdl.append("background { color rgb ").append(Sdl.rgb(scene.background())).append(" }\n");
+        for (ResolvedScene.Light light : scene.lights()) {
+            sdl.append(light(light));
+        }
+        for (ResolvedScene.Shape shape : scene.objects()) {
+            shape(sdl, shape, scene.ambient());
+        }
+        return sdl.toString();
+    }
+
+    /** A right-handed camera: {@code right -x*aspect}, horizontal {@code angle}, {@code sky} = our up. */
+    static String camera(ResolvedScene scene) {
+        ResolvedScene.Camera c = scene.camera();
+        double angle = CameraMath.horizontalFovDegrees(c.fovDegrees(), scene.aspect());
+        return "camera {\n  perspective\n  location " + Sdl.vec(c.position()) + "\n  sky " + Sdl.vec(c.up())
+                + "\n  up y\n  right -x*" + Sdl.num(scene.aspect()) + "\n  angle " + Sdl.num(angle)
+                + "\n  look_at " + Sdl.vec(c.lookAt()) + "\n}\n";
+    }
+
+    static String light(ResolvedScene.Light light) {
+        Rgb power = light.color().times(light.intensity());
+        if (!light.falloff()) {
+            return "light_source { " + Sdl.vec(light.position()) + " color rgb " + Sdl.rgb(power) + " }\n";
+        }
+        double scale = 1 / (2 * FADE_DISTANCE * FADE_DISTANCE);
+        return "light_source { " + Sdl.vec(light.position()) + " color rgb " + Sdl.rgb(power.times(scale))
+                + " fade_distance " + Sdl.num(FADE_DISTANCE) + " fade_power 2 }\n";
+    }
+
+    static void shape(StringBuilder sdl, ResolvedScene.Shape shape, double ambient) {
+        if (shape instanceof ResolvedScene.Sphere s) {
+            sdl.append("sphere { ").append(Sdl.vec(s.center())).append(", ").append(Sdl.num(s.radius()));
+        } else if (shape instanceof ResolvedScene.Box b) {
+            Vec3 half = b.size().times(0.5);
+            Vec3 r = b.rotationDegrees();
+            sdl.append("box { ").append(Sdl.vec(half.negated())).append(", ").append(Sdl.vec(half));
+            if (r.z() != 0) {
+                sdl.append(" rotate z*").append(Sdl.num(r.z()));
+            }
+            if (r.y() != 0) {
+                sdl.append(" rotate y*").append(Sdl.num(r.y()));
+            }
+            if (r.x() != 0) {
+                sdl.append(" rotate x*").append(Sdl.num(r.x()));
+            }
+            sdl.append(" translate ").append(Sdl.vec(b.center()));
+        } else if (shape instanceof ResolvedScene.Plane p) {
+            sdl.append("plane { ").append(Sdl.vec(p.normal())).append(", ").append(Sdl.num(p.normal().dot(p.point())));
+        } else {
+            mesh(sdl, ((ResolvedScene.Mesh) shape).mesh());
+        }
+        sdl.append("\n  ").append(material(shape.material(), ambient)).append(" }\n");
+    }
+
+    /**
+     * A world-space triangle mesh as {@code mesh2 { vertex_vectors normal_vectors face_indices }},
+     * without its closing brace (the material follows).
+     */
+    static void mesh(StringBuilder sdl, MeshData mesh) {
+        int n = mesh.vertexCount();
+        sdl.append("mesh2 {\n  vertex_vectors { ").append(n);
+        appendTriples(sdl, mesh.positions());
+        sdl.append(" }\n  normal_vectors { ").append(n);
+        appendTriples(sdl, mesh.normals());
+        sdl.append(" }\n  face_indices { ").append(mesh.triangleCount());
+        int[] idx = mesh.indices();
+        for (int i = 0; i < idx.length; i += 3) {
+            sdl.append(i % 24 == 0 ? ",\n    <" : ", <").append(idx[i]).append(',').append(idx[i + 1]).append(',')
+                    .append(idx[i + 2]).append('>');
+        }
+        sdl.append(" }");
+    }
+
+    private static void appendTriples(StringBuilder sdl, double[] v) {
+        for (int i = 0; i < v.length; i += 3) {
+            sdl.append(i % 12 == 0 ? ",\n    <" : ", <").append(Sdl.num(v[i])).append(',').append(Sdl.num(v[i + 1]))
+                    .append(',').append(Sdl.num(v[i + 2])).append('>');
+        }
+    }
+
+    /** A texture (and for glass an interior) that shades as our material does. */
+    static String material(Material m, double ambient) {
+        Rgb c = m.color();
+        String roughness = m.shininess() > 0 ? " roughness " + Sdl.num(1 / m.shininess()) : "";
+        return switch (m.kind()) {
+            case FLAT -> "texture { pigment { rgb " + Sdl.rgb(c) + " } finish { ambient 1 diffuse 0 } }";
+            case CHALK -> "texture { pigment { rgb " + Sdl.rgb(c) + " } finish { ambient " + Sdl.num(m.diffuse() * ambient)
+                    + " diffuse " + Sdl.num(m.diffuse()) + " } }";
+            case PLASTIC -> "texture { pigment { rgb " + Sdl.rgb(c) + " } finish { ambient "
+                    + Sdl.num(m.diffuse() * ambient) + " diffuse " + Sdl.num(m.diffuse()) + " specular "
+                    + Sdl.num(m.specular()) + roughness + " } }";
+            case METAL -> "texture { pigment { rgb " + Sdl.rgb(c) + " } finish { ambient "
+                    + Sdl.num(m.diffuse() * ambient) + " diffuse " + Sdl.num(m.diffuse()) + " specular "
+                    + Sdl.num(m.specular()) + roughness + " metallic reflection { rgb "
+                    + Sdl.rgb(c.times(m.reflectivity())) + " } } }";
+            case MIRROR -> "texture { pigment { rgb " + Sdl.rgb(c) + " } finish { ambient 0 diffuse 0 reflection { rgb "
+                    + Sdl.rgb(c.times(m.reflectivity())) + " } } }";
+            case GLASS -> glass(m, roughness);
+        };
+    }
+
+    /**
+     * Glass: filtered pigment (sqrt of the tint, see the class comment), Fresnel reflection with the
+     * interior's index. The highlight is on the outside only ({@code interior_texture} has none), as ours.
+     */
+    private static String glass(Material m, String roughness) {
+        Rgb c = m.color();
+        String pigment = "pigment { rgbf <" + Sdl.num(Math.sqrt(c.r())) + ", " + Sdl.num(Math.sqrt(c.g())) + ", "
+                + Sdl.num(Math.sqrt(c.b())) + ", 1> }";
+        String reflection = "reflection { 0, 1 fresnel on } conserve_energy";
+        return "texture { " + pigment + " finish { ambient 0 diffuse 0 specular " + Sdl.num(m.specular()) + roughness
+                + " " + reflection + " } }\n  interior_texture { " + pigment + " finish { ambient 0 diffuse 0 "
+                + reflection + " } }\n  interior { ior " + Sdl.num(m.ior()) + " }";
+    }
+}

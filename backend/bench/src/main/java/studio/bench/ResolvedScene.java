@@ -1,0 +1,172 @@
+package studio.bench;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import studio.engine.material.Material;
+import studio.engine.material.MaterialDefaults;
+import studio.engine.material.MaterialKind;
+import studio.engine.math.Rgb;
+import studio.engine.math.Vec3;
+import studio.server.scene.CameraDto;
+import studio.server.scene.LightDto;
+import studio.server.scene.MaterialDto;
+import studio.server.scene.ObjectDto;
+import studio.server.scene.RenderDto;
+import studio.server.scene.SceneDefaults;
+import studio.server.scene.SceneDto;
+
+/**
+ * A scene file with every default applied, in the terms the exporters need: positions in world
+ * space, colours in linear light, materials with their resolved coefficients (from the engine's
+ * {@link MaterialDefaults}, as the server's SceneMapper maps them). The image size is the
+ * benchmark's, not the file's.
+ */
+public record ResolvedScene(int width, int height, Camera camera, Rgb background, double ambient, int maxDepth,
+                            List<Light> lights, List<Shape> objects) {
+
+    /** A perspective camera; {@code fovDegrees} is vertical, as in the scene format. */
+    public record Camera(Vec3 position, Vec3 lookAt, Vec3 up, double fovDegrees) {
+    }
+
+    /** A point light: colour (linear) times intensity; divided by the squared distance if {@code falloff}. */
+    public record Light(Vec3 position, Rgb color, double intensity, boolean falloff) {
+    }
+
+    /** A scene object with its material. */
+    public sealed interface Shape {
+        Material material();
+    }
+
+    public record Sphere(Vec3 center, double radius, Material material) implements Shape {
+    }
+
+    /** A box: centre, full edge lengths, Euler angles in degrees (three.js order XYZ). */
+    public record Box(Vec3 center, Vec3 size, Vec3 rotationDegrees, Material material) implements Shape {
+    }
+
+    /** An infinite plane through {@code point}; {@code normal} has unit length. */
+    public record Plane(Vec3 point, Vec3 normal, Material material) implements Shape {
+    }
+
+    /** A triangle mesh already in world space (see {@link MeshData}). */
+    public record Mesh(MeshData mesh, Material material) implements Shape {
+    }
+
+    /** The material of every object but planes in the silhouette variant: flat white. */
+    public static final Material MASK_MATERIAL = MaterialDefaults.of(MaterialKind.FLAT, Rgb.WHITE);
+    /** The material of planes in the silhouette variant: flat black, so they hide what is behind them but
+     *  the silhouettes of the objects on them still show. */
+    public static final Material MASK_PLANE_MATERIAL = MaterialDefaults.of(MaterialKind.FLAT, Rgb.BLACK);
+
+    /** The scene at the given image size, with the scene format's defaults for every field left out. */
+    public static ResolvedScene of(SceneDto dto, int width, int height) {
+        CameraDto c = dto.camera() != null ? dto.camera() : new CameraDto(null, null, null, null);
+        Camera camera = new Camera(vec(or(c.position(), SceneDefaults.CAMERA_POSITION)),
+                vec(or(c.lookAt(), SceneDefaults.CAMERA_LOOK_AT)), vec(or(c.up(), SceneDefaults.CAMERA_UP)),
+                or(c.fov(), SceneDefaults.CAMERA_FOV_DEGREES));
+        RenderDto render = dto.render() != null ? dto.render() : new RenderDto(null, null, null, null);
+
+        List<Light> lights = new ArrayList<>();
+        if (dto.lights() == null) {
+            lights.add(new Light(vec(SceneDefaults.LIGHT_POSITION), color(SceneDefaults.LIGHT_COLOR),
+                    SceneDefaults.LIGHT_INTENSITY, false));
+        } else {
+            for (LightDto light : dto.lights()) {
+                LightDto.Point p = (LightDto.Point) light;
+                lights.add(new Light(vec(or(p.position(), SceneDefaults.LIGHT_POSITION)),
+                        color(or(p.color(), SceneDefaults.LIGHT_COLOR)),
+                        or(p.intensity(), SceneDefaults.LIGHT_INTENSITY), Boolean.TRUE.equals(p.falloff())));
+            }
+        }
+
+        List<Shape> objects = new ArrayList<>();
+        for (ObjectDto o : dto.objects()) {
+            Material m = material(o.material());
+            if (o instanceof ObjectDto.Sphere s) {
+                objects.add(new Sphere(vec(or(s.center(), SceneDefaults.SPHERE_CENTER)),
+                        or(s.radius(), SceneDefaults.SPHERE_RADIUS), m));
+            } else if (o instanceof ObjectDto.Box b) {
+                objects.add(new Box(vec(or(b.center(), SceneDefaults.BOX_CENTER)), vec(or(b.size(), SceneDefaults.BOX_SIZE)),
+                        vec(or(b.rotation(), SceneDefaults.ORIGIN)), m));
+            } else {
+                ObjectDto.Plane p = (ObjectDto.Plane) o;
+                objects.add(new Plane(vec(or(p.point(), SceneDefaults.ORIGIN)),
+                        vec(or(p.normal(), SceneDefaults.PLANE_NORMAL)).normalized(), m));
+            }
+        }
+        return new ResolvedScene(width, height, camera, color(or(dto.background(), SceneDefaults.BACKGROUND)),
+                or(dto.ambient(), SceneDefaults.AMBIENT), or(render.maxDepth(), SceneDefaults.MAX_DEPTH), lights, objects);
+    }
+
+    /**
+     * The silhouette variant: every object flat white but planes flat black, no lights, a black
+     * background. Every renderer draws it as a white-on-black mask of the scene's bounded objects
+     * (a ground plane would otherwise fill the image and hide every silhouette on it).
+     */
+    public ResolvedScene asMask() {
+        List<Shape> white = new ArrayList<>();
+        for (Shape s : objects) {
+            white.add(withMaterial(s, s instanceof Plane ? MASK_PLANE_MATERIAL : MASK_MATERIAL));
+        }
+        return new ResolvedScene(width, height, camera, Rgb.BLACK, ambient, maxDepth, List.of(), white);
+    }
+
+    /** The same shape with another material. */
+    static Shape withMaterial(Shape s, Material m) {
+        if (s instanceof Sphere x) {
+            return new Sphere(x.center(), x.radius(), m);
+        }
+        if (s instanceof Box x) {
+            return new Box(x.center(), x.size(), x.rotationDegrees(), m);
+        }
+        if (s instanceof Plane x) {
+            return new Plane(x.point(), x.normal(), m);
+        }
+        return new Mesh(((Mesh) s).mesh(), m);
+    }
+
+    public double aspect() {
+        return (double) width / height;
+    }
+
+    /** The engine material for a DTO, exactly as the server maps it; a missing material is default chalk. */
+    static Material material(MaterialDto m) {
+        if (m == null) {
+            return MaterialDefaults.of(MaterialKind.CHALK, null);
+        }
+        Rgb color = m.color() != null ? color(m.color()) : null;
+        if (m instanceof MaterialDto.Flat) {
+            return MaterialDefaults.of(MaterialKind.FLAT, color);
+        }
+        if (m instanceof MaterialDto.Chalk c) {
+            return MaterialDefaults.of(MaterialKind.CHALK, color, c.diffuse(), null, null, null, null);
+        }
+        if (m instanceof MaterialDto.Plastic p) {
+            return MaterialDefaults.of(MaterialKind.PLASTIC, color, p.diffuse(), p.specular(), p.shininess(), null, null);
+        }
+        if (m instanceof MaterialDto.Metal x) {
+            return MaterialDefaults.of(MaterialKind.METAL, color, x.diffuse(), x.specular(), x.shininess(),
+                    x.reflectivity(), null);
+        }
+        if (m instanceof MaterialDto.Mirror x) {
+            return MaterialDefaults.of(MaterialKind.MIRROR, color, null, null, null, x.reflectivity(), null);
+        }
+        MaterialDto.Glass g = (MaterialDto.Glass) m;
+        return MaterialDefaults.of(MaterialKind.GLASS, color, null, g.specular(), g.shininess(), null, g.ior());
+    }
+
+    /** "#rrggbb" in linear light. */
+    static Rgb color(String hex) {
+        int rgb = Integer.parseInt(hex.substring(1), 16);
+        return Rgb.fromSrgb8(rgb >> 16 & 0xff, rgb >> 8 & 0xff, rgb & 0xff);
+    }
+
+    private static Vec3 vec(List<Double> v) {
+        return new Vec3(v.get(0), v.get(1), v.get(2));
+    }
+
+    private static <T> T or(T value, T fallback) {
+        return value != null ? value : fallback;
+    }
+}
