@@ -1,5 +1,6 @@
 package studio.engine.geometry;
 
+import studio.engine.accel.Aabb;
 import studio.engine.math.Fp;
 import studio.engine.math.Rotation;
 import studio.engine.math.Vec3;
@@ -15,6 +16,7 @@ public final class Box implements Shape {
 
     private static final double FAR_WIDENING = 1 + 2 * Fp.gamma(3);
     private static final double POINT_ERROR = Fp.gamma(12);
+    private static final double BOUNDS_PADDING = Fp.gamma(16);
 
     private final Vec3 center, size, rotationDegrees;
     private final double cx, cy, cz, hx, hy, hz;
@@ -175,6 +177,15 @@ public final class Box implements Shape {
         }
         double t = tNear > 0 ? tNear : tFar;
         return t > 0 && t < tMax;
+    }
+
+    /** The rotated box's world-space extent: the centre plus or minus |R| times the half size. */
+    @Override
+    public Aabb bounds() {
+        double ex = Math.abs(m00) * hx + Math.abs(m01) * hy + Math.abs(m02) * hz;
+        double ey = Math.abs(m10) * hx + Math.abs(m11) * hy + Math.abs(m12) * hz;
+        double ez = Math.abs(m20) * hx + Math.abs(m21) * hy + Math.abs(m22) * hz;
+        return new Aabb(cx - ex, cy - ey, cz - ez, cx + ex, cy + ey, cz + ez).padded(BOUNDS_PADDING);
     }
 
     private static double clamp(double v, double h) {

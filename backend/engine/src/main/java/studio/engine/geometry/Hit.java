@@ -1,11 +1,14 @@
 package studio.engine.geometry;
 
+import studio.engine.accel.Bvh;
 import studio.engine.math.Vec3;
 
 /**
- * The nearest intersection found so far: distance, point, outward geometric normal (unit length)
- * and a conservative per-component bound on the point's rounding error. Mutable and reused: one
- * per worker thread and recursion depth.
+ * The nearest intersection found so far: distance, point, outward normal (unit length; for a
+ * smooth mesh the interpolated vertex normal, turned to the geometric normal's side) and a
+ * conservative per-component bound on the point's rounding error. Mutable and reused: one per
+ * worker thread and recursion depth. It also carries the BVH traversal stacks, so a closest-hit
+ * query allocates nothing.
  */
 public final class Hit {
 
@@ -16,6 +19,11 @@ public final class Hit {
     public double ex, ey, ez;
     /** Index of the primitive in its scene, in declaration order. */
     public int primitive;
+
+    /** Traversal stack of the scene's BVH over its objects. */
+    public final int[] sceneStack = new int[Bvh.STACK_SIZE];
+    /** Traversal stack of a BVH inside one shape (a mesh's triangles), used while the scene's is in use. */
+    public final int[] shapeStack = new int[Bvh.STACK_SIZE];
 
     void set(double t, double px, double py, double pz, double nx, double ny, double nz,
              double ex, double ey, double ez) {

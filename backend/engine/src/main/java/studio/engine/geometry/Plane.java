@@ -1,5 +1,6 @@
 package studio.engine.geometry;
 
+import studio.engine.accel.Aabb;
 import studio.engine.math.Fp;
 import studio.engine.math.Vec3;
 
@@ -36,6 +37,12 @@ public record Plane(Vec3 point, Vec3 normal) implements Shape {
     @Override
     public boolean occluded(Ray ray, double tMax) {
         return !Double.isNaN(distance(ray, tMax));
+    }
+
+    /** Unbounded: planes are tested beside a BVH, never in it. */
+    @Override
+    public Aabb bounds() {
+        return Aabb.UNBOUNDED;
     }
 
     private double distance(Ray ray, double tMax) {

@@ -1,5 +1,6 @@
 package studio.engine.geometry;
 
+import studio.engine.accel.Aabb;
 import studio.engine.math.Fp;
 import studio.engine.math.Vec3;
 
@@ -11,6 +12,7 @@ import studio.engine.math.Vec3;
 public record Sphere(Vec3 center, double radius) implements Shape {
 
     private static final double REPROJECTED_ERROR = Fp.gamma(6);
+    private static final double BOUNDS_PADDING = Fp.gamma(8);
 
     public Sphere {
         if (!center.isFinite()) {
@@ -41,6 +43,13 @@ public record Sphere(Vec3 center, double radius) implements Shape {
     @Override
     public boolean occluded(Ray ray, double tMax) {
         return !Double.isNaN(nearestRoot(ray, tMax));
+    }
+
+    @Override
+    public Aabb bounds() {
+        double cx = center.x(), cy = center.y(), cz = center.z();
+        return new Aabb(cx - radius, cy - radius, cz - radius, cx + radius, cy + radius, cz + radius)
+                .padded(BOUNDS_PADDING);
     }
 
     /** The smallest root in (0, tMax), or NaN if there is none. */

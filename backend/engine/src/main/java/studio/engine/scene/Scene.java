@@ -22,6 +22,7 @@ public final class Scene {
 
     private final Camera camera;
     private final Shape[] shapes;
+    private final ShapeSet geometry;
     private final Material[] materials;
     private final List<PointLight> lights;
     private final Rgb background;
@@ -41,6 +42,7 @@ public final class Scene {
         }
         this.camera = camera;
         this.shapes = objects.stream().map(SceneObject::shape).toArray(Shape[]::new);
+        this.geometry = ShapeSet.of(shapes);
         this.materials = objects.stream().map(SceneObject::material).toArray(Material[]::new);
         this.lights = List.copyOf(lights);
         this.background = background;
@@ -50,29 +52,16 @@ public final class Scene {
 
     /**
      * The nearest hit with 0 &lt; t &lt; tMax, its primitive index set. Of hits within {@link #TIE}
-     * of each other the first-declared object wins, so coincident surfaces never speckle.
+     * of each other the first-declared object wins, so coincident surfaces never speckle. Larger
+     * scenes search a BVH ({@link ShapeSet}).
      */
     public boolean intersect(Ray ray, double tMax, Hit hit) {
-        boolean found = false;
-        double limit = tMax;
-        for (int i = 0; i < shapes.length; i++) {
-            if (shapes[i].intersect(ray, limit, hit)) {
-                found = true;
-                hit.primitive = i;
-                limit = hit.t * (1 - TIE);
-            }
-        }
-        return found;
+        return geometry.intersect(ray, tMax, hit);
     }
 
     /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */
     public boolean occluded(Ray ray, double tMax) {
-        for (Shape shape : shapes) {
-            if (shape.occluded(ray, tMax)) {
-                return true;
-            }
-        }
-        return false;
+        return geometry.occluded(ray, tMax);
     }
 
     public Camera camera() {

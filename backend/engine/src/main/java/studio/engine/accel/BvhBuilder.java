@@ -1,0 +1,325 @@
+package studio.engine.accel;
+
+import java.util.Arrays;
+
+/**
+ * Builds a {@link Bvh} top-down with the binned surface area heuristic (Wald 2007; pbrt's
+ * BuildRecursive): the centroids of a node's primitives are sorted into up to {@value #BINS} bins
+ * along the axis where the centroids spread most, and the cheapest bin boundary is taken, or a leaf
+ * if that is cheaper and holds at most {@link Bvh#LEAF_MAX} primitives. When the centroids
+ * coincide, or the tree reaches {@value #SAH_DEPTH} levels, it falls back to a median split, which
+ * halves the primitive count each level and so bounds the depth by {@link Bvh#STACK_SIZE}.
+ *
+ * <p>Built for a million primitives in well under a second: primitive arrays only, the boxes
+ * copied once into slot order and partitioned in place, scratch bins reused for every node, and
+ * each child's box and centroid bounds worked out while its parent is split (from the bins and
+ * during the partition), so no node scans its primitives just to bound them.
+ */
+final class BvhBuilder {
+
+    static final int BINS = 16;
+    /** Below this many levels splits follow the SAH; deeper, the median (see the class comment). */
+    static final int SAH_DEPTH = 32;
+    /**
+     * Cost of visiting a node relative to testing one primitive. In this engine a box test and a
+     * watertight triangle test cost about the same; against pbrt's 1/8 it halves the node count
+     * (1M triangles: 0.95M nodes instead of 1.9M) at no measurable loss of ray speed.
+     */
+    private static final double TRAVERSAL_COST = 1;
+    /** Doubles of pending node data: box (6), centroid minima (3) and maxima (3), centroids as min+max. */
+    private static final int INFO = 12;
+
+    /** Primitive boxes in slot order, six doubles per slot; partitioned together with {@link #ids}. */
+    private final double[] box;
+    private final int[] ids;
+    private double[] nodeBounds;
+    private int[] nodeLinks;
+    private int nodeCount;
+    private int maxDepth;
+
+    /** The box and centroid bounds of the two children waiting at each depth (left, right). */
+    private final double[] pending = new double[(Bvh.STACK_SIZE + 2) * 2 * INFO];
+    /** Scratch bins along one axis: count and box. */
+    private final int[] binCount = new int[BINS];
+    private final double[] binBox = new double[6 * BINS];
+    private final double[] rightArea = new double[BINS];
+    private final int[] rightCount = new int[BINS];
+
+    BvhBuilder(double[] primitiveBounds, int count) {
+        if (count <= 0 || primitiveBounds.length < 6L * count) {
+            throw new IllegalArgumentException("a BVH needs at least one primitive box; got " + count);
+        }
+        box = Arrays.copyOf(primitiveBounds, 6 * count);
+        for (double v : box) {
+            if (!Double.isFinite(v)) {
+                throw new IllegalArgumentException("primitive boxes must be finite");
+            }
+        }
+        ids = new int[count];
+        for (int i = 0; i < count; i++) {
+            ids[i] = i;
+        }
+        int capacity = Math.max(1, count / 2);
+        nodeBounds = new double[6 * capacity];
+        nodeLinks = new int[3 * capacity];
+    }
+
+    Bvh build() {
+        long start = System.nanoTime();
+        scanBounds(0, ids.length, slot(1, 0));
+        buildNode(0, ids.length, 1, slot(1, 0));
+        return new Bvh(Arrays.copyOf(nodeBounds, 6 * nodeCount), Arrays.copyOf(nodeLinks, 3 * nodeCount), ids,
+                maxDepth, System.nanoTime() - start);
+    }
+
+    /** Offset in {@link #pending} of the left (0) or right (1) child at a depth. */
+    private static int slot(int depth, int side) {
+        return (2 * depth + side) * INFO;
+    }
+
+    /**
+     * Builds the subtree over slots [start, end) at the given depth (root = 1), whose box and
+     * centroid bounds wait at {@code pending[info ..]}; returns its node index.
+     */
+    private int buildNode(int start, int end, int depth, int info) {
+        int node = nodeCount++;
+        if (nodeCount * 3 > nodeLinks.length) {
+            nodeLinks = Arrays.copyOf(nodeLinks, nodeLinks.length * 2);
+            nodeBounds = Arrays.copyOf(nodeBounds, nodeBounds.length * 2);
+        }
+        maxDepth = Math.max(maxDepth, depth);
+        double[] p = pending;
+        System.arraycopy(p, info, nodeBounds, 6 * node, 6);
+        int n = end - start;
+        if (n == 1) {
+            return leaf(node, start, n);
+        }
+        double ex = p[info + 9] - p[info + 6], ey = p[info + 10] - p[info + 7], ez = p[info + 11] - p[info + 8];
+        int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
+        double extent = axis == 0 ? ex : axis == 1 ? ey : ez;
+        int left = slot(depth + 1, 0), right = slot(depth + 1, 1);
+        int mid = -1;
+        if (depth < SAH_DEPTH && extent > 0) {
+            int bins = Math.min(BINS, n);
+            double cmin = p[info + 6 + axis];
+            double scale = bins * (1 - 1e-9) / extent;
+            if (Double.isFinite(scale)) {
+                double area = halfArea(p, info);
+                int split = findSplit(start, end, axis, cmin, scale, bins, area, n);
+                if (split == 0) {
+                    return leaf(node, start, n);
+                }
+                if (split > 0) {
+                    mid = partition(start, end, axis, cmin, scale, bins, split, left, right);
+                }
+            }
+        }
+        if (mid < 0) {
+            if (n <= Bvh.LEAF_MAX) {
+                return leaf(node, start, n);
+            }
+            mid = (start + end) >>> 1;
+            if (extent > 0) {
+                select(start, end, mid, axis);
+            }
+            scanBounds(start, mid, left);
+            scanBounds(mid, end, right);
+        }
+        buildNode(start, mid, depth + 1, left);
+        int rightChild = buildNode(mid, end, depth + 1, right);
+        nodeLinks[3 * node] = rightChild;
+        nodeLinks[3 * node + 1] = ~axis;
+        nodeLinks[3 * node + 2] = nodeCount;
+        return node;
+    }
+
+    private int leaf(int node, int start, int n) {
+        nodeLinks[3 * node] = start;
+        nodeLinks[3 * node + 1] = n;
+        nodeLinks[3 * node + 2] = nodeCount;
+        return node;
+    }
+
+    /** Writes the box and centroid bounds of slots [start, end) to {@code pending[info ..]}. */
+    private void scanBounds(int start, int end, int info) {
+        double[] p = pending;
+        for (int k = 0; k < 3; k++) {
+            p[info + k] = p[info + 6 + k] = Double.POSITIVE_INFINITY;
+            p[info + 3 + k] = p[info + 9 + k] = Double.NEGATIVE_INFINITY;
+        }
+        for (int s = start; s < end; s++) {
+            int o = 6 * s;
+            for (int k = 0; k < 3; k++) {
+                double lo = box[o + k], hi = box[o + k + 3], c = lo + hi;
+                if (lo < p[info + k]) p[info + k] = lo;
+                if (hi > p[info + 3 + k]) p[info + 3 + k] = hi;
+                if (c < p[info + 6 + k]) p[info + 6 + k] = c;
+                if (c > p[info + 9 + k]) p[info + 9 + k] = c;
+            }
+        }
+    }
+
+    private static double halfArea(double[] b, int o) {
+        double dx = b[o + 3] - b[o], dy = b[o + 4] - b[o + 1], dz = b[o + 5] - b[o + 2];
+        return dx * dy + dy * dz + dz * dx;
+    }
+
+    private static int bin(double centroid, double cmin, double scale, int bins) {
+        int k = (int) ((centroid - cmin) * scale);
+        return k < 0 ? 0 : k >= bins ? bins - 1 : k;
+    }
+
+    /**
+     * Bins the slots' centroids along the axis and returns the cheapest split as the first bin of
+     * the right side (1 .. bins-1); 0 if a leaf is cheaper and small enough; -1 if no boundary
+     * separates the centroids.
+     */
+    private int findSplit(int start, int end, int axis, double cmin, double scale, int bins, double area, int n) {
+        double[] bb = binBox, b = box;
+        Arrays.fill(binCount, 0, bins, 0);
+        for (int k = 0; k < bins; k++) {
+            int q = 6 * k;
+            bb[q] = bb[q + 1] = bb[q + 2] = Double.POSITIVE_INFINITY;
+            bb[q + 3] = bb[q + 4] = bb[q + 5] = Double.NEGATIVE_INFINITY;
+        }
+        for (int s = start; s < end; s++) {
+            int o = 6 * s;
+            int k = bin(b[o + axis] + b[o + axis + 3], cmin, scale, bins);
+            binCount[k]++;
+            int q = 6 * k;
+            bb[q] = Math.min(bb[q], b[o]);
+            bb[q + 1] = Math.min(bb[q + 1], b[o + 1]);
+            bb[q + 2] = Math.min(bb[q + 2], b[o + 2]);
+            bb[q + 3] = Math.max(bb[q + 3], b[o + 3]);
+            bb[q + 4] = Math.max(bb[q + 4], b[o + 4]);
+            bb[q + 5] = Math.max(bb[q + 5], b[o + 5]);
+        }
+        // Sweep from the right: count and area of bins k .. bins-1.
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        int count = 0;
+        for (int k = bins - 1; k > 0; k--) {
+            int q = 6 * k;
+            count += binCount[k];
+            x0 = Math.min(x0, bb[q]); y0 = Math.min(y0, bb[q + 1]); z0 = Math.min(z0, bb[q + 2]);
+            x1 = Math.max(x1, bb[q + 3]); y1 = Math.max(y1, bb[q + 4]); z1 = Math.max(z1, bb[q + 5]);
+            rightCount[k] = count;
+            rightArea[k] = count == 0 ? 0 : (x1 - x0) * (y1 - y0) + (y1 - y0) * (z1 - z0) + (z1 - z0) * (x1 - x0);
+        }
+        x0 = Double.POSITIVE_INFINITY; y0 = x0; z0 = x0; x1 = Double.NEGATIVE_INFINITY; y1 = x1; z1 = x1;
+        count = 0;
+        double bestCost = Double.POSITIVE_INFINITY;
+        int best = -1;
+        for (int k = 1; k < bins; k++) {
+            int q = 6 * (k - 1);
+            count += binCount[k - 1];
+            x0 = Math.min(x0, bb[q]); y0 = Math.min(y0, bb[q + 1]); z0 = Math.min(z0, bb[q + 2]);
+            x1 = Math.max(x1, bb[q + 3]); y1 = Math.max(y1, bb[q + 4]); z1 = Math.max(z1, bb[q + 5]);
+            if (count == 0 || rightCount[k] == 0) {
+                continue;
+            }
+            double leftArea = (x1 - x0) * (y1 - y0) + (y1 - y0) * (z1 - z0) + (z1 - z0) * (x1 - x0);
+            double cost = count * leftArea + rightCount[k] * rightArea[k];
+            if (cost < bestCost) {
+                bestCost = cost;
+                best = k;
+            }
+        }
+        if (best < 0) {
+            return -1;
+        }
+        // Both costs scaled by the node's area: leaf n*area, split TRAVERSAL_COST*area + sum(count*area).
+        if (n <= Bvh.LEAF_MAX && n * area <= TRAVERSAL_COST * area + bestCost) {
+            return 0;
+        }
+        return best;
+    }
+
+    /**
+     * Moves the slots whose centroid bin is below {@code split} to the front, writing each side's
+     * box and centroid bounds to {@code pending[left ..]} and {@code pending[right ..]}; returns the
+     * first slot of the right side.
+     */
+    private int partition(int start, int end, int axis, double cmin, double scale, int bins, int split,
+                          int left, int right) {
+        double[] b = box;
+        final double inf = Double.POSITIVE_INFINITY;
+        // Left and right: box (l*, r*) and centroid bounds (lc*, rc*), kept in locals.
+        double lx0 = inf, ly0 = inf, lz0 = inf, lx1 = -inf, ly1 = -inf, lz1 = -inf;
+        double lcx0 = inf, lcy0 = inf, lcz0 = inf, lcx1 = -inf, lcy1 = -inf, lcz1 = -inf;
+        double rx0 = inf, ry0 = inf, rz0 = inf, rx1 = -inf, ry1 = -inf, rz1 = -inf;
+        double rcx0 = inf, rcy0 = inf, rcz0 = inf, rcx1 = -inf, rcy1 = -inf, rcz1 = -inf;
+        int i = start, j = end - 1;
+        while (i <= j) {
+            int o = 6 * i;
+            double x0 = b[o], y0 = b[o + 1], z0 = b[o + 2], x1 = b[o + 3], y1 = b[o + 4], z1 = b[o + 5];
+            double cx = x0 + x1, cy = y0 + y1, cz = z0 + z1;
+            if (bin(axis == 0 ? cx : axis == 1 ? cy : cz, cmin, scale, bins) < split) {
+                lx0 = Math.min(lx0, x0); ly0 = Math.min(ly0, y0); lz0 = Math.min(lz0, z0);
+                lx1 = Math.max(lx1, x1); ly1 = Math.max(ly1, y1); lz1 = Math.max(lz1, z1);
+                lcx0 = Math.min(lcx0, cx); lcy0 = Math.min(lcy0, cy); lcz0 = Math.min(lcz0, cz);
+                lcx1 = Math.max(lcx1, cx); lcy1 = Math.max(lcy1, cy); lcz1 = Math.max(lcz1, cz);
+                i++;
+            } else {
+                rx0 = Math.min(rx0, x0); ry0 = Math.min(ry0, y0); rz0 = Math.min(rz0, z0);
+                rx1 = Math.max(rx1, x1); ry1 = Math.max(ry1, y1); rz1 = Math.max(rz1, z1);
+                rcx0 = Math.min(rcx0, cx); rcy0 = Math.min(rcy0, cy); rcz0 = Math.min(rcz0, cz);
+                rcx1 = Math.max(rcx1, cx); rcy1 = Math.max(rcy1, cy); rcz1 = Math.max(rcz1, cz);
+                swap(i, j);
+                j--;
+            }
+        }
+        store(left, lx0, ly0, lz0, lx1, ly1, lz1, lcx0, lcy0, lcz0, lcx1, lcy1, lcz1);
+        store(right, rx0, ry0, rz0, rx1, ry1, rz1, rcx0, rcy0, rcz0, rcx1, rcy1, rcz1);
+        return i;
+    }
+
+    private void store(int info, double x0, double y0, double z0, double x1, double y1, double z1,
+                       double cx0, double cy0, double cz0, double cx1, double cy1, double cz1) {
+        double[] p = pending;
+        p[info] = x0; p[info + 1] = y0; p[info + 2] = z0;
+        p[info + 3] = x1; p[info + 4] = y1; p[info + 5] = z1;
+        p[info + 6] = cx0; p[info + 7] = cy0; p[info + 8] = cz0;
+        p[info + 9] = cx1; p[info + 10] = cy1; p[info + 11] = cz1;
+    }
+
+    /** Quickselect: reorders slots [start, end) so slot k holds the k-th smallest centroid on the axis. */
+    private void select(int start, int end, int k, int axis) {
+        int lo = start, hi = end - 1;
+        while (lo < hi) {
+            double pivot = centroid((lo + hi) >>> 1, axis);
+            int i = lo, j = hi;
+            while (i <= j) {
+                while (centroid(i, axis) < pivot) i++;
+                while (centroid(j, axis) > pivot) j--;
+                if (i <= j) {
+                    swap(i, j);
+                    i++;
+                    j--;
+                }
+            }
+            if (k <= j) {
+                hi = j;
+            } else if (k >= i) {
+                lo = i;
+            } else {
+                return;
+            }
+        }
+    }
+
+    private double centroid(int slot, int axis) {
+        return box[6 * slot + axis] + box[6 * slot + axis + 3];
+    }
+
+    private void swap(int i, int j) {
+        int t = ids[i];
+        ids[i] = ids[j];
+        ids[j] = t;
+        int oi = 6 * i, oj = 6 * j;
+        for (int c = 0; c < 6; c++) {
+            double v = box[oi + c];
+            box[oi + c] = box[oj + c];
+            box[oj + c] = v;
+        }
+    }
+}

@@ -1,0 +1,442 @@
+package studio.engine.geometry;
+
+import java.util.Arrays;
+
+import studio.engine.accel.Aabb;
+import studio.engine.accel.Bvh;
+import studio.engine.accel.Slab;
+import studio.engine.math.Fp;
+import studio.engine.math.Rotation;
+import studio.engine.math.Vec3;
+import studio.engine.mesh.MeshData;
+
+/**
+ * A triangle mesh placed in the world: an object-space {@link MeshData} moved to a position,
+ * scaled uniformly and rotated (Euler degrees, order XYZ as three.js, like {@link Box}). The
+ * vertices are transformed once, here, so rays are never transformed; the triangles sit in flat
+ * arrays, ordered as the leaves of the mesh's own {@link Bvh}.
+ *
+ * <p>Rays meet triangles with the watertight test of Woop, Benthin and Wald (JCGT 2013): the axes
+ * are permuted so the ray's largest direction component becomes z, the triangle is sheared so the
+ * ray runs along z, and the three edge functions decide. The permutation and shear are worked out
+ * once per ray; an edge shared by two triangles gives each of them exactly the negated edge
+ * function, and edge functions of zero count as inside for both, so no ray slips through a shared
+ * edge (STABILITY NUM-08). Like pbrt, a hit counts only if t exceeds its own rounding bound.
+ *
+ * <p>The reported normal is the geometric one, oriented by the winding (outward for
+ * counter-clockwise triangles seen from outside, as in OBJ), or with vertex normals their
+ * barycentric interpolation turned to the geometric normal's side. The hit point is the
+ * barycentric combination of the vertices, with pbrt's error bound gamma(7)*sum|b_i*p_i|, so
+ * {@link Rays#spawn} offsets it like any other hit. (It offsets along the interpolated normal; where
+ * vertex normals bend far from the faces a reflected ray can dip under the surface and darken it,
+ * the usual shading-normal terminator.) Zero-area triangles are dropped when the mesh is made.
+ */
+public final class TriangleMesh implements Shape {
+
+    private static final double G2 = Fp.gamma(2), G3 = Fp.gamma(3), G5 = Fp.gamma(5), G7 = Fp.gamma(7);
+
+    private final Vec3 position, rotationDegrees;
+    private final double scale;
+    /** World positions, 3 per vertex. */
+    private final double[] positions;
+    /** World unit normals, 3 per vertex, or null. */
+    private final double[] normals;
+    /** Vertex indices, 3 per triangle, in BVH leaf order. */
+    private final int[] indices;
+    private final double[] nodeBounds;
+    private final int[] nodeLinks;
+    private final int nodeCount;
+    private final Aabb bounds;
+    private final long buildNanos;
+    private final int bvhDepth;
+
+    public TriangleMesh(MeshData mesh, Vec3 position, double scale, Vec3 rotationDegrees) {
+        if (mesh == null) {
+            throw new IllegalArgumentException("a triangle mesh needs mesh data");
+        }
+        if (position == null || !position.isFinite()) {
+            throw new IllegalArgumentException("mesh position must be finite: " + position);
+        }
+        if (!(scale > 0) || !Double.isFinite(scale)) {
+            throw new IllegalArgumentException("mesh scale must be positive and finite: " + scale);
+        }
+        if (rotationDegrees == null || !rotationDegrees.isFinite()) {
+            throw new IllegalArgumentException("mesh rotation must be finite: " + rotationDegrees);
+        }
+        this.position = position;
+        this.scale = scale;
+        this.rotationDegrees = rotationDegrees;
+        Rotation r = Rotation.fromEulerDegrees(rotationDegrees);
+        this.positions = worldPositions(mesh.positions(), r, position, scale);
+        this.normals = mesh.normals() == null ? null : worldNormals(mesh.normals(), r);
+        int[] valid = nonDegenerate(mesh.indices(), positions);
+        int count = valid.length / 3;
+        if (count == 0) {
+            throw new IllegalArgumentException("mesh has no triangle with non-zero area ("
+                    + mesh.triangleCount() + " given)");
+        }
+        double[] boxes = new double[6 * count];
+        for (int t = 0; t < count; t++) {
+            triangleBounds(valid, t, boxes);
+        }
+        Bvh bvh = Bvh.build(boxes, count);
+        int[] order = bvh.primitives();
+        int[] sorted = new int[valid.length];
+        for (int slot = 0; slot < count; slot++) {
+            System.arraycopy(valid, 3 * order[slot], sorted, 3 * slot, 3);
+        }
+        this.indices = sorted;
+        this.nodeBounds = bvh.bounds();
+        this.nodeLinks = bvh.nodes();
+        this.nodeCount = bvh.nodeCount();
+        this.bounds = bvh.rootBounds();
+        this.buildNanos = bvh.buildNanos();
+        this.bvhDepth = bvh.depth();
+    }
+
+    /** The mesh as it is, at the origin, unscaled and unrotated. */
+    public TriangleMesh(MeshData mesh) {
+        this(mesh, Vec3.ZERO, 1, Vec3.ZERO);
+    }
+
+    private static double[] worldPositions(double[] object, Rotation r, Vec3 position, double scale) {
+        double m00 = r.get(0, 0), m01 = r.get(0, 1), m02 = r.get(0, 2);
+        double m10 = r.get(1, 0), m11 = r.get(1, 1), m12 = r.get(1, 2);
+        double m20 = r.get(2, 0), m21 = r.get(2, 1), m22 = r.get(2, 2);
+        double tx = position.x(), ty = position.y(), tz = position.z();
+        double[] world = new double[object.length];
+        for (int i = 0; i < object.length; i += 3) {
+            double x = scale * object[i], y = scale * object[i + 1], z = scale * object[i + 2];
+            world[i] = tx + (m00 * x + m01 * y + m02 * z);
+            world[i + 1] = ty + (m10 * x + m11 * y + m12 * z);
+            world[i + 2] = tz + (m20 * x + m21 * y + m22 * z);
+            if (!Double.isFinite(world[i]) || !Double.isFinite(world[i + 1]) || !Double.isFinite(world[i + 2])) {
+                throw new IllegalArgumentException("vertex " + i / 3 + " is not finite once placed in the world");
+            }
+        }
+        return world;
+    }
+
+    private static double[] worldNormals(double[] object, Rotation r) {
+        double[] world = new double[object.length];
+        for (int i = 0; i < object.length; i += 3) {
+            Vec3 n = r.apply(new Vec3(object[i], object[i + 1], object[i + 2])).normalized();
+            world[i] = n.x();
+            world[i + 1] = n.y();
+            world[i + 2] = n.z();
+        }
+        return world;
+    }
+
+    /** The triangles whose world-space cross product is non-zero, in their given order. */
+    private static int[] nonDegenerate(int[] indices, double[] p) {
+        int[] kept = new int[indices.length];
+        int n = 0;
+        for (int i = 0; i < indices.length; i += 3) {
+            int a = 3 * indices[i], b = 3 * indices[i + 1], c = 3 * indices[i + 2];
+            double ux = p[b] - p[a], uy = p[b + 1] - p[a + 1], uz = p[b + 2] - p[a + 2];
+            double vx = p[c] - p[a], vy = p[c + 1] - p[a + 1], vz = p[c + 2] - p[a + 2];
+            double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+            if ((cx != 0 || cy != 0 || cz != 0) && Double.isFinite(cx) && Double.isFinite(cy) && Double.isFinite(cz)) {
+                kept[n++] = indices[i];
+                kept[n++] = indices[i + 1];
+                kept[n++] = indices[i + 2];
+            }
+        }
+        return n == kept.length ? kept : Arrays.copyOf(kept, n);
+    }
+
+    private void triangleBounds(int[] tris, int t, double[] out) {
+        int a = 3 * tris[3 * t], b = 3 * tris[3 * t + 1], c = 3 * tris[3 * t + 2];
+        for (int k = 0; k < 3; k++) {
+            double pa = positions[a + k], pb = positions[b + k], pc = positions[c + k];
+            out[6 * t + k] = Math.min(pa, Math.min(pb, pc));
+            out[6 * t + 3 + k] = Math.max(pa, Math.max(pb, pc));
+        }
+    }
+
+    @Override
+    public boolean intersect(Ray ray, double tMax, Hit hit) {
+        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
+        // Per ray: the axis permutation (kz = largest |d|, winding kept) and the shear.
+        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
+        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+        int kx = kz == 2 ? 0 : kz + 1;
+        int ky = kx == 2 ? 0 : kx + 1;
+        double dkz = component(kz, dx, dy, dz);
+        if (dkz < 0) {
+            int swap = kx; kx = ky; ky = swap;
+        }
+        double sz = 1 / dkz;
+        double sx = -component(kx, dx, dy, dz) * sz, sy = -component(ky, dx, dy, dz) * sz;
+        double okx = component(kx, ray.ox, ray.oy, ray.oz), oky = component(ky, ray.ox, ray.oy, ray.oz);
+        double okz = component(kz, ray.ox, ray.oy, ray.oz);
+        double ox = ray.ox, oy = ray.oy, oz = ray.oz;
+        double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+        boolean negX = dx < 0, negY = dy < 0, negZ = dz < 0;
+
+        double[] nb = nodeBounds;
+        int[] links = nodeLinks;
+        int[] stack = hit.shapeStack;
+        int sp = 0, node = 0, bestTri = -1;
+        double best = tMax;
+        while (true) {
+            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, best)) {
+                int o = 3 * node;
+                int count = links[o + 1];
+                if (count < 0) {
+                    int axis = ~count;
+                    if (axis == 0 ? negX : axis == 1 ? negY : negZ) {
+                        stack[sp++] = node + 1;
+                        node = links[o];
+                    } else {
+                        stack[sp++] = links[o];
+                        node++;
+                    }
+                    continue;
+                }
+                for (int tri = links[o], end = tri + count; tri < end; tri++) {
+                    double t = distance(tri, okx, oky, okz, kx, ky, kz, sx, sy, sz, best);
+                    if (t == t) {
+                        best = t;
+                        bestTri = tri;
+                    }
+                }
+            }
+            if (sp == 0) {
+                break;
+            }
+            node = stack[--sp];
+        }
+        if (bestTri < 0) {
+            return false;
+        }
+        fill(bestTri, okx, oky, okz, kx, ky, kz, sx, sy, sz, hit);
+        return true;
+    }
+
+    @Override
+    public boolean occluded(Ray ray, double tMax) {
+        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
+        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
+        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+        int kx = kz == 2 ? 0 : kz + 1;
+        int ky = kx == 2 ? 0 : kx + 1;
+        double dkz = component(kz, dx, dy, dz);
+        if (dkz < 0) {
+            int swap = kx; kx = ky; ky = swap;
+        }
+        double sz = 1 / dkz;
+        double sx = -component(kx, dx, dy, dz) * sz, sy = -component(ky, dx, dy, dz) * sz;
+        double okx = component(kx, ray.ox, ray.oy, ray.oz), oky = component(ky, ray.ox, ray.oy, ray.oz);
+        double okz = component(kz, ray.ox, ray.oy, ray.oz);
+        double ox = ray.ox, oy = ray.oy, oz = ray.oz;
+        double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+
+        // Any hit will do, so no order and no stack: a missed node, or a finished leaf, escapes
+        // to the node after its subtree.
+        double[] nb = nodeBounds;
+        int[] links = nodeLinks;
+        int node = 0, end = nodeCount;
+        while (node < end) {
+            int o = 3 * node;
+            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, tMax)) {
+                int count = links[o + 1];
+                if (count < 0) {
+                    node++;
+                    continue;
+                }
+                for (int tri = links[o], last = tri + count; tri < last; tri++) {
+                    double t = distance(tri, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMax);
+                    if (t == t) {
+                        return true;
+                    }
+                }
+            }
+            node = links[o + 2];
+        }
+        return false;
+    }
+
+    /**
+     * The nearest hit by testing every triangle, without the BVH: the reference the BVH is
+     * checked against (tests, STABILITY NUM-06).
+     */
+    boolean intersectEachTriangle(Ray ray, double tMax, Hit hit) {
+        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
+        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
+        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+        int kx = kz == 2 ? 0 : kz + 1;
+        int ky = kx == 2 ? 0 : kx + 1;
+        double dkz = component(kz, dx, dy, dz);
+        if (dkz < 0) {
+            int swap = kx; kx = ky; ky = swap;
+        }
+        double sz = 1 / dkz;
+        double sx = -component(kx, dx, dy, dz) * sz, sy = -component(ky, dx, dy, dz) * sz;
+        double okx = component(kx, ray.ox, ray.oy, ray.oz), oky = component(ky, ray.ox, ray.oy, ray.oz);
+        double okz = component(kz, ray.ox, ray.oy, ray.oz);
+        double best = tMax;
+        int bestTri = -1;
+        for (int tri = 0; tri < indices.length / 3; tri++) {
+            double t = distance(tri, okx, oky, okz, kx, ky, kz, sx, sy, sz, best);
+            if (t == t) {
+                best = t;
+                bestTri = tri;
+            }
+        }
+        if (bestTri < 0) {
+            return false;
+        }
+        fill(bestTri, okx, oky, okz, kx, ky, kz, sx, sy, sz, hit);
+        return true;
+    }
+
+    private static double component(int axis, double x, double y, double z) {
+        return axis == 0 ? x : axis == 1 ? y : z;
+    }
+
+    /**
+     * The watertight test of one triangle against the permuted and sheared ray: its distance if
+     * 0 &lt; t &lt; tMax and t exceeds its rounding bound, else NaN.
+     */
+    private double distance(int tri, double okx, double oky, double okz, int kx, int ky, int kz,
+                            double sx, double sy, double sz, double tMax) {
+        double[] p = positions;
+        int a = 3 * indices[3 * tri], b = 3 * indices[3 * tri + 1], c = 3 * indices[3 * tri + 2];
+        double z0 = p[a + kz] - okz, z1 = p[b + kz] - okz, z2 = p[c + kz] - okz;
+        double x0 = p[a + kx] - okx + sx * z0, y0 = p[a + ky] - oky + sy * z0;
+        double x1 = p[b + kx] - okx + sx * z1, y1 = p[b + ky] - oky + sy * z1;
+        double x2 = p[c + kx] - okx + sx * z2, y2 = p[c + ky] - oky + sy * z2;
+        double e0 = x1 * y2 - y1 * x2, e1 = x2 * y0 - y2 * x0, e2 = x0 * y1 - y0 * x1;
+        if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) {
+            return Double.NaN;
+        }
+        double det = e0 + e1 + e2;
+        if (det == 0) {
+            return Double.NaN;
+        }
+        z0 *= sz;
+        z1 *= sz;
+        z2 *= sz;
+        double tScaled = e0 * z0 + e1 * z1 + e2 * z2;
+        if (det < 0 ? tScaled >= 0 || tScaled < tMax * det : tScaled <= 0 || tScaled > tMax * det) {
+            return Double.NaN;
+        }
+        double invDet = 1 / det;
+        double t = tScaled * invDet;
+        if (!(t > 0 && t < tMax)) {
+            return Double.NaN;
+        }
+        // pbrt-v3 3.9.6: t must exceed the bound on its own rounding error.
+        double maxZ = Math.max(Math.abs(z0), Math.max(Math.abs(z1), Math.abs(z2)));
+        double maxX = Math.max(Math.abs(x0), Math.max(Math.abs(x1), Math.abs(x2)));
+        double maxY = Math.max(Math.abs(y0), Math.max(Math.abs(y1), Math.abs(y2)));
+        double deltaX = G5 * (maxX + maxZ), deltaY = G5 * (maxY + maxZ), deltaZ = G3 * maxZ;
+        double deltaE = 2 * (G2 * maxX * maxY + deltaY * maxX + deltaX * maxY);
+        double maxE = Math.max(Math.abs(e0), Math.max(Math.abs(e1), Math.abs(e2)));
+        double deltaT = 3 * (G3 * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) * Math.abs(invDet);
+        return t > deltaT ? t : Double.NaN;
+    }
+
+    /** Fills the hit record for a triangle {@link #distance} accepted: same arithmetic, so the same t. */
+    private void fill(int tri, double okx, double oky, double okz, int kx, int ky, int kz,
+                      double sx, double sy, double sz, Hit hit) {
+        double[] p = positions;
+        int ia = indices[3 * tri], ib = indices[3 * tri + 1], ic = indices[3 * tri + 2];
+        int a = 3 * ia, b = 3 * ib, c = 3 * ic;
+        double z0 = p[a + kz] - okz, z1 = p[b + kz] - okz, z2 = p[c + kz] - okz;
+        double x0 = p[a + kx] - okx + sx * z0, y0 = p[a + ky] - oky + sy * z0;
+        double x1 = p[b + kx] - okx + sx * z1, y1 = p[b + ky] - oky + sy * z1;
+        double x2 = p[c + kx] - okx + sx * z2, y2 = p[c + ky] - oky + sy * z2;
+        double e0 = x1 * y2 - y1 * x2, e1 = x2 * y0 - y2 * x0, e2 = x0 * y1 - y0 * x1;
+        double invDet = 1 / (e0 + e1 + e2);
+        double t = (e0 * (z0 * sz) + e1 * (z1 * sz) + e2 * (z2 * sz)) * invDet;
+        double b0 = e0 * invDet, b1 = e1 * invDet, b2 = e2 * invDet;
+
+        double px = b0 * p[a] + b1 * p[b] + b2 * p[c];
+        double py = b0 * p[a + 1] + b1 * p[b + 1] + b2 * p[c + 1];
+        double pz = b0 * p[a + 2] + b1 * p[b + 2] + b2 * p[c + 2];
+        double ex = G7 * (Math.abs(b0 * p[a]) + Math.abs(b1 * p[b]) + Math.abs(b2 * p[c]));
+        double ey = G7 * (Math.abs(b0 * p[a + 1]) + Math.abs(b1 * p[b + 1]) + Math.abs(b2 * p[c + 1]));
+        double ez = G7 * (Math.abs(b0 * p[a + 2]) + Math.abs(b1 * p[b + 2]) + Math.abs(b2 * p[c + 2]));
+
+        double ux = p[b] - p[a], uy = p[b + 1] - p[a + 1], uz = p[b + 2] - p[a + 2];
+        double vx = p[c] - p[a], vy = p[c + 1] - p[a + 1], vz = p[c + 2] - p[a + 2];
+        double gx = uy * vz - uz * vy, gy = uz * vx - ux * vz, gz = ux * vy - uy * vx;
+        double gm = Math.max(Math.abs(gx), Math.max(Math.abs(gy), Math.abs(gz)));
+        gx /= gm; gy /= gm; gz /= gm;
+        double gl = Math.sqrt(gx * gx + gy * gy + gz * gz);
+        double nx = gx / gl, ny = gy / gl, nz = gz / gl;
+        if (normals != null) {
+            double[] n = normals;
+            double sxn = b0 * n[a] + b1 * n[b] + b2 * n[c];
+            double syn = b0 * n[a + 1] + b1 * n[b + 1] + b2 * n[c + 1];
+            double szn = b0 * n[a + 2] + b1 * n[b + 2] + b2 * n[c + 2];
+            double sl = Math.sqrt(sxn * sxn + syn * syn + szn * szn);
+            if (sl > 0 && Double.isFinite(sl)) {
+                double flip = sxn * nx + syn * ny + szn * nz < 0 ? -1 / sl : 1 / sl;
+                nx = sxn * flip;
+                ny = syn * flip;
+                nz = szn * flip;
+            }
+        }
+        hit.set(t, px, py, pz, nx, ny, nz, ex, ey, ez);
+    }
+
+    @Override
+    public Aabb bounds() {
+        return bounds;
+    }
+
+    public int triangleCount() {
+        return indices.length / 3;
+    }
+
+    public int vertexCount() {
+        return positions.length / 3;
+    }
+
+    /** World-space vertex positions, 3 per vertex (a copy). */
+    public double[] positions() {
+        return positions.clone();
+    }
+
+    /** Vertex indices, 3 per triangle, counter-clockwise seen from outside (a copy; zero-area triangles dropped). */
+    public int[] indices() {
+        return indices.clone();
+    }
+
+    /** World-space unit vertex normals, 3 per vertex (a copy), or null for a flat-shaded mesh. */
+    public double[] normals() {
+        return normals == null ? null : normals.clone();
+    }
+
+    public Vec3 position() {
+        return position;
+    }
+
+    public double scale() {
+        return scale;
+    }
+
+    public Vec3 rotationDegrees() {
+        return rotationDegrees;
+    }
+
+    /** How long building the triangles' BVH took. */
+    public long buildNanos() {
+        return buildNanos;
+    }
+
+    /** Levels of the triangles' BVH. */
+    public int bvhDepth() {
+        return bvhDepth;
+    }
+
+    @Override
+    public String toString() {
+        return "TriangleMesh[triangles=" + triangleCount() + ", position=" + position + ", scale=" + scale
+                + ", rotationDegrees=" + rotationDegrees + "]";
+    }
+}

@@ -1,0 +1,374 @@
+package studio.engine.mesh;
+
+import java.io.IOException;
+import java.io.Reader;
+import java.io.StringReader;
+import java.io.UncheckedIOException;
+import java.util.Arrays;
+
+/**
+ * Reads Wavefront OBJ text into an object-space {@link MeshData}. Understood: {@code v x y z [w]}
+ * (w and any further values ignored), {@code vn x y z}, {@code f} with corners {@code i},
+ * {@code i/j}, {@code i//k} or {@code i/j/k}, negative (relative) indices, and polygons, which are
+ * fanned into triangles. Texture coordinates ({@code vt}) are checked for nothing and dropped;
+ * {@code o}, {@code g}, {@code s}, {@code usemtl}, {@code mtllib}, comments and every other
+ * statement are ignored.
+ *
+ * <p>Vertex normals are kept only if every face corner names one; a position used with several
+ * normals becomes several vertices. Problems (a non-finite or unparsable number, an index of 0 or
+ * out of range, a face with fewer than 3 corners, a zero normal) throw {@link ObjFormatException}
+ * naming the line.
+ *
+ * <p>Hand-rolled for speed: the text is read in chunks into one char buffer and each line is
+ * tokenised in place, without regular expressions or a String per line or token. Numbers of up
+ * to 19 significant digits are converted exactly by {@link DecimalToDouble} (Clinger's fast path
+ * or Eisel-Lemire); longer ones, and the rare cases it declines, go to {@link Double#parseDouble}.
+ * Every value is the correctly rounded one.
+ */
+public final class ObjReader {
+
+    private final Reader in;
+    /** Buffered text; lines are parsed in place, so only the current chunk is held. */
+    private char[] text = new char[1 << 16];
+    private int length;
+    private boolean endOfInput;
+    private int pos, lineEnd, line;
+    private int tokenStart, tokenEnd;
+
+    private double[] positions = new double[3 * 1024];
+    private int positionCount;
+    private double[] normals = new double[3 * 1024];
+    private int normalCount;
+    /** Per triangle corner: position index and normal index (-1: none). */
+    private int[] cornerPositions = new int[3 * 1024];
+    private int[] cornerNormals = new int[3 * 1024];
+    private int cornerCount;
+    private boolean everyCornerHasNormal = true;
+    /** The current face's corners. */
+    private int[] facePositions = new int[16];
+    private int[] faceNormals = new int[16];
+
+    private ObjReader(Reader in) {
+        this.in = in;
+    }
+
+    public static MeshData parse(String text) {
+        try {
+            return new ObjReader(new StringReader(text)).read();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // a StringReader does not throw
+        }
+    }
+
+    /** Reads the whole of {@code in} (not closed here); a buffered reader is not needed. */
+    public static MeshData read(Reader in) throws IOException {
+        return new ObjReader(in).read();
+    }
+
+    private MeshData read() throws IOException {
+        int lineStart = 0, scan = 0;
+        while (true) {
+            int newline = scan;
+            while (newline < length && text[newline] != '\n') {
+                newline++;
+            }
+            if (newline < length || endOfInput) {
+                if (newline > lineStart || newline < length) {
+                    line++;
+                    pos = lineStart;
+                    lineEnd = newline;
+                    statement();
+                }
+                if (newline >= length) {
+                    break;
+                }
+                lineStart = scan = newline + 1;
+                continue;
+            }
+            // The line runs past the buffered text: keep its start, read more.
+            int kept = length - lineStart;
+            if (kept == text.length) {
+                text = Arrays.copyOf(text, text.length * 2);
+            } else if (lineStart > 0) {
+                System.arraycopy(text, lineStart, text, 0, kept);
+            }
+            length = kept;
+            lineStart = 0;
+            scan = kept;
+            int n = in.read(text, length, text.length - length);
+            if (n < 0) {
+                endOfInput = true;
+            } else {
+                length += n;
+            }
+        }
+        return result();
+    }
+
+    private void statement() {
+        if (!nextToken()) {
+            return;
+        }
+        int n = tokenEnd - tokenStart;
+        char c0 = text[tokenStart];
+        if (n == 1 && c0 == 'v') {
+            vertex();
+        } else if (n == 1 && c0 == 'f') {
+            face();
+        } else if (n == 2 && c0 == 'v' && text[tokenStart + 1] == 'n') {
+            normal();
+        }
+        // vt, o, g, s, usemtl, mtllib and anything else: ignored
+    }
+
+    private void vertex() {
+        if (3 * positionCount + 3 > positions.length) {
+            positions = Arrays.copyOf(positions, positions.length * 2);
+        }
+        for (int k = 0; k < 3; k++) {
+            positions[3 * positionCount + k] = coordinate("vertex");
+        }
+        positionCount++;
+    }
+
+    private void normal() {
+        if (3 * normalCount + 3 > normals.length) {
+            normals = Arrays.copyOf(normals, normals.length * 2);
+        }
+        double x = coordinate("normal"), y = coordinate("normal"), z = coordinate("normal");
+        if (x == 0 && y == 0 && z == 0) {
+            throw new ObjFormatException(line, "normal has zero length");
+        }
+        normals[3 * normalCount] = x;
+        normals[3 * normalCount + 1] = y;
+        normals[3 * normalCount + 2] = z;
+        normalCount++;
+    }
+
+    private double coordinate(String what) {
+        if (!nextToken()) {
+            throw new ObjFormatException(line, what + " needs 3 coordinates");
+        }
+        double v = number(tokenStart, tokenEnd);
+        if (!Double.isFinite(v)) {
+            throw new ObjFormatException(line, what + " coordinate '" + token() + "' is not finite");
+        }
+        return v;
+    }
+
+    private void face() {
+        int corners = 0;
+        while (nextToken()) {
+            if (corners == facePositions.length) {
+                facePositions = Arrays.copyOf(facePositions, corners * 2);
+                faceNormals = Arrays.copyOf(faceNormals, corners * 2);
+            }
+            corner(corners++);
+        }
+        if (corners < 3) {
+            throw new ObjFormatException(line, "face has " + corners + (corners == 1 ? " vertex" : " vertices")
+                    + ", needs at least 3");
+        }
+        int triangles = corners - 2;
+        if (cornerCount + 3 * triangles > cornerPositions.length) {
+            int capacity = Math.max(cornerPositions.length * 2, cornerCount + 3 * triangles);
+            cornerPositions = Arrays.copyOf(cornerPositions, capacity);
+            cornerNormals = Arrays.copyOf(cornerNormals, capacity);
+        }
+        for (int k = 1; k + 1 < corners; k++) { // fan around the first corner
+            addCorner(0);
+            addCorner(k);
+            addCorner(k + 1);
+        }
+    }
+
+    private void addCorner(int k) {
+        cornerPositions[cornerCount] = facePositions[k];
+        cornerNormals[cornerCount] = faceNormals[k];
+        cornerCount++;
+    }
+
+    /** Parses one corner token: v, v/t, v//n or v/t/n. */
+    private void corner(int k) {
+        int end = tokenEnd;
+        int slash1 = indexOf('/', tokenStart, end);
+        int vEnd = slash1 < 0 ? end : slash1;
+        facePositions[k] = resolve(integer(tokenStart, vEnd), positionCount, "vertex");
+        faceNormals[k] = -1;
+        if (slash1 >= 0) {
+            int slash2 = indexOf('/', slash1 + 1, end);
+            int tEnd = slash2 < 0 ? end : slash2;
+            if (tEnd > slash1 + 1) {
+                integer(slash1 + 1, tEnd); // texture index: checked for form, otherwise unused
+            }
+            if (slash2 >= 0) {
+                faceNormals[k] = resolve(integer(slash2 + 1, end), normalCount, "normal");
+            }
+        }
+        if (faceNormals[k] < 0) {
+            everyCornerHasNormal = false;
+        }
+    }
+
+    private int indexOf(char c, int from, int end) {
+        for (int i = from; i < end; i++) {
+            if (text[i] == c) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /** A 1-based or negative (relative) OBJ index as a 0-based index below {@code count}. */
+    private int resolve(int index, int count, String what) {
+        if (index == 0) {
+            throw new ObjFormatException(line, what + " index 0 is not valid (OBJ indices start at 1)");
+        }
+        int resolved = index > 0 ? index - 1 : count + index;
+        if (resolved < 0 || resolved >= count) {
+            String plural = what.equals("vertex") ? "vertices" : what + "s";
+            throw new ObjFormatException(line, what + " index " + index + " is out of range ("
+                    + count + " " + (count == 1 ? what : plural) + " so far)");
+        }
+        return resolved;
+    }
+
+    private int integer(int start, int end) {
+        int i = start;
+        boolean negative = false;
+        if (i < end && (text[i] == '-' || text[i] == '+')) {
+            negative = text[i] == '-';
+            i++;
+        }
+        if (i == end || end - i > 10) {
+            throw new ObjFormatException(line, "'" + token() + "' is not a valid index");
+        }
+        long value = 0;
+        for (; i < end; i++) {
+            char c = text[i];
+            if (c < '0' || c > '9') {
+                throw new ObjFormatException(line, "'" + token() + "' is not a valid index");
+            }
+            value = value * 10 + (c - '0');
+        }
+        if (value > Integer.MAX_VALUE) {
+            throw new ObjFormatException(line, "index in '" + token() + "' is too large");
+        }
+        return negative ? (int) -value : (int) value;
+    }
+
+    /** The number in text[start, end), correctly rounded. */
+    private double number(int start, int end) {
+        int i = start;
+        boolean negative = false;
+        if (i < end && (text[i] == '-' || text[i] == '+')) {
+            negative = text[i] == '-';
+            i++;
+        }
+        long significand = 0; // unsigned, up to 19 digits
+        int significant = 0, exponent = 0, digits = 0;
+        boolean wellFormed = true;
+        for (; i < end && text[i] >= '0' && text[i] <= '9'; i++, digits++) {
+            if (significant > 0 || text[i] != '0') {
+                significand = significand * 10 + (text[i] - '0');
+                significant++;
+            }
+        }
+        if (i < end && text[i] == '.') {
+            for (i++; i < end && text[i] >= '0' && text[i] <= '9'; i++, digits++) {
+                if (significant > 0 || text[i] != '0') {
+                    significand = significand * 10 + (text[i] - '0');
+                    significant++;
+                }
+                exponent--;
+            }
+        }
+        if (digits > 0 && i < end && (text[i] == 'e' || text[i] == 'E')) {
+            i++;
+            boolean expNegative = false;
+            if (i < end && (text[i] == '-' || text[i] == '+')) {
+                expNegative = text[i] == '-';
+                i++;
+            }
+            int e = 0, expDigits = 0;
+            for (; i < end && text[i] >= '0' && text[i] <= '9'; i++, expDigits++) {
+                if (e < 100_000) {
+                    e = e * 10 + (text[i] - '0');
+                }
+            }
+            wellFormed = expDigits > 0;
+            exponent += expNegative ? -e : e;
+        }
+        if (wellFormed && digits > 0 && i == end && significant <= 19) {
+            double v = DecimalToDouble.toDouble(significand, exponent);
+            if (v == v) {
+                return negative ? -v : v;
+            }
+        }
+        try {
+            return Double.parseDouble(token(start, end));
+        } catch (NumberFormatException e) {
+            throw new ObjFormatException(line, "'" + token(start, end) + "' is not a number");
+        }
+    }
+
+    /** Moves to the next whitespace-separated token of the line; a '#' ends the line. */
+    private boolean nextToken() {
+        while (pos < lineEnd && text[pos] <= ' ') {
+            pos++;
+        }
+        if (pos >= lineEnd || text[pos] == '#') {
+            pos = lineEnd;
+            return false;
+        }
+        tokenStart = pos;
+        while (pos < lineEnd && text[pos] > ' ') {
+            pos++;
+        }
+        tokenEnd = pos;
+        return true;
+    }
+
+    private String token() {
+        return token(tokenStart, tokenEnd);
+    }
+
+    private String token(int start, int end) {
+        return new String(text, start, end - start);
+    }
+
+    private MeshData result() {
+        if (!everyCornerHasNormal || cornerCount == 0) {
+            return new MeshData(Arrays.copyOf(positions, 3 * positionCount),
+                    Arrays.copyOf(cornerPositions, cornerCount), null);
+        }
+        if (normalCount == positionCount && Arrays.equals(cornerPositions, 0, cornerCount, cornerNormals, 0, cornerCount)) {
+            // f v//v ...: normal i belongs to vertex i, as OBJ writers usually arrange it
+            return new MeshData(Arrays.copyOf(positions, 3 * positionCount), Arrays.copyOf(cornerPositions, cornerCount),
+                    Arrays.copyOf(normals, 3 * normalCount));
+        }
+        // Otherwise vertices are (position, normal) pairs, numbered in order of first use.
+        LongIntMap pairs = new LongIntMap(positionCount);
+        double[] outPositions = new double[3 * positionCount];
+        double[] outNormals = new double[3 * positionCount];
+        int[] indices = new int[cornerCount];
+        int vertices = 0;
+        for (int c = 0; c < cornerCount; c++) {
+            int p = cornerPositions[c], n = cornerNormals[c];
+            long key = ((long) p << 32) | n;
+            int v = pairs.get(key);
+            if (v < 0) {
+                v = vertices++;
+                pairs.putNew(key, v);
+                if (3 * v + 3 > outPositions.length) {
+                    outPositions = Arrays.copyOf(outPositions, outPositions.length * 2);
+                    outNormals = Arrays.copyOf(outNormals, outNormals.length * 2);
+                }
+                System.arraycopy(positions, 3 * p, outPositions, 3 * v, 3);
+                System.arraycopy(normals, 3 * n, outNormals, 3 * v, 3);
+            }
+            indices[c] = v;
+        }
+        return new MeshData(Arrays.copyOf(outPositions, 3 * vertices), indices, Arrays.copyOf(outNormals, 3 * vertices));
+    }
+}

@@ -1,0 +1,231 @@
+package studio.engine.scene;
+
+import studio.engine.accel.Aabb;
+import studio.engine.accel.Bvh;
+import studio.engine.accel.Slab;
+import studio.engine.geometry.Hit;
+import studio.engine.geometry.Ray;
+import studio.engine.geometry.Shape;
+
+/**
+ * A scene's shapes in declaration order, searched for the nearest hit under the tie rule: of hits
+ * within {@link Scene#TIE} of each other the first-declared shape wins, so coincident surfaces
+ * never speckle (STABILITY NUM-12).
+ *
+ * <p>Up to {@value #LINEAR_MAX} shapes are tested one after the other; larger scenes put their
+ * bounded shapes (spheres, boxes, meshes) into a {@link Bvh} and test unbounded planes beside it.
+ * The threshold is measured ({@code ShapeSetTiming} in the tests: a floor plane with spheres and
+ * boxes, primary plus shadow ray): with the objects small in the frame the BVH is faster from 2
+ * objects on, since its box test is cheaper than a sphere or box test; with the objects filling
+ * the frame the linear loop is faster up to 4 objects and the BVH from 5.
+ *
+ * <p>A BVH meets shapes out of declaration order, so it cannot simply shrink tMax as the linear
+ * loop does. Instead, shape i is asked for hits before {@code best*(1 - TIE)} if it was declared
+ * after the current best, and before {@code best*(1 + TIE)} if declared before it, and every hit it
+ * then reports wins. For hits that form separate clusters (every pair within TIE inside one, and
+ * clusters further apart than that) the lowest index of the nearest cluster wins in any visiting
+ * order, as in the linear loop; only chains of near-ties spread over more than TIE can resolve
+ * differently.
+ */
+public final class ShapeSet {
+
+    /** Scenes with at most this many shapes use the linear loop. */
+    public static final int LINEAR_MAX = 4;
+
+    private final Shape[] shapes;
+    /** Indices of the unbounded shapes, ascending; null in linear mode. */
+    private final int[] unbounded;
+    /** The BVH over the bounded shapes (leaf slots hold shape indices), or null. */
+    private final double[] nodeBounds;
+    private final int[] nodeLinks;
+    private final int[] leafShapes;
+    private final int nodeCount;
+
+    private ShapeSet(Shape[] shapes, boolean useBvh) {
+        this.shapes = shapes.clone();
+        int boundedCount = 0;
+        for (Shape s : shapes) {
+            if (s.bounds().isBounded()) {
+                boundedCount++;
+            }
+        }
+        if (!useBvh || boundedCount == 0) {
+            unbounded = null;
+            nodeBounds = null;
+            nodeLinks = null;
+            leafShapes = null;
+            nodeCount = 0;
+            return;
+        }
+        int[] boundedIndex = new int[boundedCount];
+        int[] unboundedIndex = new int[shapes.length - boundedCount];
+        double[] boxes = new double[6 * boundedCount];
+        int b = 0, u = 0;
+        for (int i = 0; i < shapes.length; i++) {
+            Aabb box = shapes[i].bounds();
+            if (box.isBounded()) {
+                box.copyTo(boxes, 6 * b);
+                boundedIndex[b++] = i;
+            } else {
+                unboundedIndex[u++] = i;
+            }
+        }
+        Bvh bvh = Bvh.build(boxes, boundedCount);
+        int[] order = bvh.primitives();
+        leafShapes = new int[boundedCount];
+        for (int slot = 0; slot < boundedCount; slot++) {
+            leafShapes[slot] = boundedIndex[order[slot]];
+        }
+        unbounded = unboundedIndex;
+        nodeBounds = bvh.bounds();
+        nodeLinks = bvh.nodes();
+        nodeCount = bvh.nodeCount();
+    }
+
+    /** The shapes, searched linearly or through a BVH depending on their number. */
+    public static ShapeSet of(Shape... shapes) {
+        return new ShapeSet(shapes, shapes.length > LINEAR_MAX);
+    }
+
+    /** Always the linear loop (the reference in tests and timings). */
+    public static ShapeSet linear(Shape... shapes) {
+        return new ShapeSet(shapes, false);
+    }
+
+    /** Always a BVH over the bounded shapes, if there are any. */
+    public static ShapeSet bvh(Shape... shapes) {
+        return new ShapeSet(shapes, true);
+    }
+
+    public boolean usesBvh() {
+        return nodeBounds != null;
+    }
+
+    public int size() {
+        return shapes.length;
+    }
+
+    /** The nearest hit with 0 &lt; t &lt; tMax under the tie rule; sets {@code hit.primitive} to the shape's index. */
+    public boolean intersect(Ray ray, double tMax, Hit hit) {
+        return nodeBounds == null ? intersectLinear(ray, tMax, hit) : intersectBvh(ray, tMax, hit);
+    }
+
+    /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */
+    public boolean occluded(Ray ray, double tMax) {
+        return nodeBounds == null ? occludedLinear(ray, tMax) : occludedBvh(ray, tMax);
+    }
+
+    private boolean intersectLinear(Ray ray, double tMax, Hit hit) {
+        boolean found = false;
+        double limit = tMax;
+        for (int i = 0; i < shapes.length; i++) {
+            if (shapes[i].intersect(ray, limit, hit)) {
+                found = true;
+                hit.primitive = i;
+                limit = hit.t * (1 - Scene.TIE);
+            }
+        }
+        return found;
+    }
+
+    private boolean occludedLinear(Ray ray, double tMax) {
+        for (Shape shape : shapes) {
+            if (shape.occluded(ray, tMax)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private boolean intersectBvh(Ray ray, double tMax, Hit hit) {
+        // best = t of the current winner, winner = its index (MAX_VALUE: none yet).
+        double best = tMax;
+        int winner = Integer.MAX_VALUE;
+        for (int i : unbounded) {
+            if (shapes[i].intersect(ray, limit(i, winner, best, tMax), hit)) {
+                best = hit.t;
+                winner = i;
+            }
+        }
+        double ox = ray.ox, oy = ray.oy, oz = ray.oz;
+        double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
+        boolean negX = ray.dx < 0, negY = ray.dy < 0, negZ = ray.dz < 0;
+        double[] nb = nodeBounds;
+        int[] links = nodeLinks;
+        int[] stack = hit.sceneStack;
+        int sp = 0, node = 0;
+        while (true) {
+            // Any shape may still win a tie up to best*(1+TIE), so nodes are culled only beyond that.
+            double cull = winner == Integer.MAX_VALUE ? tMax : Math.min(tMax, best * (1 + Scene.TIE));
+            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, cull)) {
+                int o = 3 * node;
+                int count = links[o + 1];
+                if (count < 0) {
+                    int axis = ~count;
+                    if (axis == 0 ? negX : axis == 1 ? negY : negZ) {
+                        stack[sp++] = node + 1;
+                        node = links[o];
+                    } else {
+                        stack[sp++] = links[o];
+                        node++;
+                    }
+                    continue;
+                }
+                for (int slot = links[o], end = slot + count; slot < end; slot++) {
+                    int i = leafShapes[slot];
+                    if (shapes[i].intersect(ray, limit(i, winner, best, tMax), hit)) {
+                        best = hit.t;
+                        winner = i;
+                    }
+                }
+            }
+            if (sp == 0) {
+                break;
+            }
+            node = stack[--sp];
+        }
+        if (winner == Integer.MAX_VALUE) {
+            return false;
+        }
+        hit.primitive = winner;
+        return true;
+    }
+
+    /** Hits shape i must come before to win against the current winner (see the class comment). */
+    private static double limit(int i, int winner, double best, double tMax) {
+        if (winner == Integer.MAX_VALUE) {
+            return tMax;
+        }
+        return i < winner ? Math.min(tMax, best * (1 + Scene.TIE)) : best * (1 - Scene.TIE);
+    }
+
+    private boolean occludedBvh(Ray ray, double tMax) {
+        for (int i : unbounded) {
+            if (shapes[i].occluded(ray, tMax)) {
+                return true;
+            }
+        }
+        double ox = ray.ox, oy = ray.oy, oz = ray.oz;
+        double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
+        double[] nb = nodeBounds;
+        int[] links = nodeLinks;
+        int node = 0, end = nodeCount;
+        while (node < end) {
+            int o = 3 * node;
+            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, tMax)) {
+                int count = links[o + 1];
+                if (count < 0) {
+                    node++;
+                    continue;
+                }
+                for (int slot = links[o], last = slot + count; slot < last; slot++) {
+                    if (shapes[leafShapes[slot]].occluded(ray, tMax)) {
+                        return true;
+                    }
+                }
+            }
+            node = links[o + 2];
+        }
+        return false;
+    }
+}

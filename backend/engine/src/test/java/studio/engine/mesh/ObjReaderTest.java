@@ -1,0 +1,241 @@
+package studio.engine.mesh;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.StringReader;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+/** Wavefront OBJ: the statement and index forms read, and the problems reported with their line. */
+class ObjReaderTest {
+
+    private static final String SQUARE = """
+            # a unit square in z=0
+            v 0 0 0
+            v 1 0 0
+            v 1 1 0
+            v 0 1 0
+            """;
+
+    @Test
+    void readsVerticesAndTriangles() {
+        MeshData mesh = ObjReader.parse(SQUARE + "f 1 2 3\nf 1 3 4\n");
+
+        assertArrayEquals(new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, mesh.positions());
+        assertArrayEquals(new int[] {0, 1, 2, 0, 2, 3}, mesh.indices());
+        assertNull(mesh.normals());
+    }
+
+    @Test
+    void readsEveryCornerFormAndRelativeIndices() {
+        String text = SQUARE + """
+                vt 0 0
+                vt 1 0
+                vt 1 1
+                f 1/1 2/2 3/3
+                f -4 -2 -1
+                f 1/1/1 2/2/1 3/3/1
+                """.replace("f 1/1/1 2/2/1 3/3/1", "f 1/1 3/3 4/1");
+
+        MeshData mesh = ObjReader.parse(text);
+
+        assertArrayEquals(new int[] {0, 1, 2, 0, 2, 3, 0, 2, 3}, mesh.indices());
+    }
+
+    @Test
+    void polygonsAreFannedAroundTheirFirstCorner() {
+        String text = SQUARE + "v 0.5 1.5 0\nf 1 2 3 5 4\n";
+
+        MeshData mesh = ObjReader.parse(text);
+
+        assertArrayEquals(new int[] {0, 1, 2, 0, 2, 4, 0, 4, 3}, mesh.indices());
+    }
+
+    @Test
+    void ignoresCommentsBlankLinesGroupsMaterialsAndUnknownStatementsAndAcceptsCrlfAndW() {
+        String text = "mtllib scene.mtl\r\no thing\r\n\r\n   \r\ng part\r\ns 1\r\nusemtl red\r\n"
+                + "v 0 0 0 1.0\r\nv 1 0 0 # trailing comment\r\nv 0 1 0\r\ncstype bspline\r\nf 1 2 3\r\n";
+
+        MeshData mesh = ObjReader.parse(text);
+
+        assertEquals(3, mesh.vertexCount());
+        assertArrayEquals(new int[] {0, 1, 2}, mesh.indices());
+    }
+
+    @Test
+    void normalsAreKeptPerVertexAndAPositionWithTwoNormalsBecomesTwoVertices() {
+        String text = SQUARE + """
+                vn 0 0 1
+                vn 0 0 2
+                f 1//1 2//1 3//1
+                f 1//2 3//2 4//2
+                """;
+
+        MeshData mesh = ObjReader.parse(text);
+
+        // Vertices: (1,n1) (2,n1) (3,n1) (1,n2) (3,n2) (4,n2)
+        assertEquals(6, mesh.vertexCount());
+        assertArrayEquals(new int[] {0, 1, 2, 3, 4, 5}, mesh.indices());
+        assertArrayEquals(new double[] {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 2, 0, 0, 2, 0, 0, 2}, mesh.normals());
+        assertArrayEquals(new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0}, mesh.positions());
+    }
+
+    @Test
+    void normalsAreDroppedWhenSomeCornerHasNone() {
+        MeshData mesh = ObjReader.parse(SQUARE + "vn 0 0 1\nf 1//1 2//1 3//1\nf 1 3 4\n");
+
+        assertNull(mesh.normals());
+        assertEquals(4, mesh.vertexCount());
+    }
+
+    @Test
+    void numbersAreReadExactlyInEveryNotation() {
+        MeshData mesh = ObjReader.parse("v 0.1 -2.5e-3 +7\nv 1E2 123456789012345678 .5\nv -0 1e-320 0.30000000000000004\n");
+
+        assertArrayEquals(new double[] {0.1, -2.5e-3, 7, 100, 123456789012345678.0, 0.5, -0.0, 1e-320, 0.30000000000000004},
+                mesh.positions());
+        assertEquals(Double.doubleToRawLongBits(-0.0), Double.doubleToRawLongBits(mesh.positions()[6]));
+    }
+
+    @Test
+    void randomDoublesSurviveWritingAndReadingBitForBit() {
+        Random random = new Random(3);
+        double[] positions = new double[3000];
+        for (int i = 0; i < positions.length; i++) {
+            positions[i] = switch (i % 3) {
+                case 0 -> random.nextGaussian();
+                case 1 -> (random.nextDouble() - 0.5) * Math.pow(10, random.nextInt(40) - 20);
+                default -> random.nextInt(2000) / 8.0;
+            };
+        }
+        int[] indices = new int[999];
+        for (int i = 0; i < indices.length; i++) {
+            indices[i] = random.nextInt(1000);
+        }
+        MeshData mesh = new MeshData(positions, indices, null);
+
+        MeshData back = ObjReader.parse(ObjWriter.toString(mesh));
+
+        assertArrayEquals(positions, back.positions());
+        assertArrayEquals(indices, back.indices());
+    }
+
+    @Test
+    void writtenMeshWithNormalsReadsBackTheSame() throws IOException {
+        MeshData sphere = MeshShapes.icosphere(2);
+
+        MeshData back = ObjReader.read(new StringReader(ObjWriter.toString(sphere)));
+
+        assertArrayEquals(sphere.positions(), back.positions());
+        assertArrayEquals(sphere.indices(), back.indices());
+        assertArrayEquals(sphere.normals(), back.normals());
+    }
+
+    @Test
+    void roundedOutputHasTheRequestedDecimalsAndReadsBackWithinHalfAUnit() throws IOException {
+        double[] positions = {0.000123, -1.5, 2, 1234.5678915, -0.0000004, 1e30, 0.1, 0.7, -9.9999999};
+        MeshData mesh = new MeshData(positions, new int[] {0, 1, 2}, null);
+        StringBuilder text = new StringBuilder();
+
+        ObjWriter.write(mesh, text, 6);
+
+        assertTrue(text.toString().startsWith("v 0.000123 -1.5 2\nv 1234.567892 0 1.0E30\nv 0.1 0.7 -10\n"), text.toString());
+        MeshData back = ObjReader.parse(text.toString());
+        for (int i = 0; i < positions.length; i++) {
+            assertEquals(positions[i], back.positions()[i], 0.5e-6 * (1 + 1e-9) * Math.max(1, Math.abs(positions[i]) * 1e-9));
+        }
+    }
+
+    @Test
+    void readerLargerThanOneBufferIsReadWhole() throws IOException {
+        MeshData knot = MeshShapes.torusKnot(2, 3, 120, 40); // about 1 MB of text
+
+        MeshData back = ObjReader.read(new StringReader(ObjWriter.toString(knot)));
+
+        assertEquals(knot.triangleCount(), back.triangleCount());
+        assertArrayEquals(knot.positions(), back.positions());
+    }
+
+    @Test
+    void aLineLongerThanTheReadBufferIsReadWhole() throws IOException {
+        int corners = 30_000; // about 170 kB on one line
+        StringBuilder text = new StringBuilder();
+        for (int i = 0; i < corners; i++) {
+            double angle = 2 * Math.PI * i / corners;
+            text.append("v ").append(Math.cos(angle)).append(' ').append(Math.sin(angle)).append(" 0\n");
+        }
+        text.append("f");
+        for (int i = 1; i <= corners; i++) {
+            text.append(' ').append(i);
+        }
+
+        MeshData mesh = ObjReader.read(new StringReader(text.toString()));
+
+        assertEquals(corners - 2, mesh.triangleCount());
+        assertEquals(corners, mesh.indices()[mesh.indices().length - 1] + 1);
+    }
+
+    @Test
+    void nonFiniteCoordinateIsReportedWithItsLine() {
+        ObjFormatException nan = assertThrows(ObjFormatException.class, () -> ObjReader.parse(SQUARE + "v 1 NaN 0\n"));
+        ObjFormatException huge = assertThrows(ObjFormatException.class, () -> ObjReader.parse("v 1e999 0 0\n"));
+        ObjFormatException garbage = assertThrows(ObjFormatException.class, () -> ObjReader.parse("\nv 1 2 x3\n"));
+
+        assertEquals(6, nan.line());
+        assertTrue(nan.getMessage().startsWith("OBJ line 6: ") && nan.getMessage().contains("not finite"), nan.getMessage());
+        assertEquals(1, huge.line());
+        assertEquals(2, garbage.line());
+        assertTrue(garbage.getMessage().contains("'x3' is not a number"), garbage.getMessage());
+    }
+
+    @Test
+    void vertexWithTooFewCoordinatesAndZeroNormalAreReported() {
+        ObjFormatException shortVertex = assertThrows(ObjFormatException.class, () -> ObjReader.parse("v 1 2\n"));
+        ObjFormatException zeroNormal = assertThrows(ObjFormatException.class, () -> ObjReader.parse("vn 0 0 0\n"));
+
+        assertTrue(shortVertex.getMessage().contains("line 1") && shortVertex.getMessage().contains("3 coordinates"));
+        assertTrue(zeroNormal.getMessage().contains("zero length"), zeroNormal.getMessage());
+    }
+
+    @Test
+    void indexOutOfRangeZeroOrNotANumberIsReportedWithItsLine() {
+        ObjFormatException high = assertThrows(ObjFormatException.class, () -> ObjReader.parse(SQUARE + "f 1 2 5\n"));
+        ObjFormatException relative = assertThrows(ObjFormatException.class, () -> ObjReader.parse(SQUARE + "f -5 1 2\n"));
+        ObjFormatException zero = assertThrows(ObjFormatException.class, () -> ObjReader.parse(SQUARE + "f 0 1 2\n"));
+        ObjFormatException normal = assertThrows(ObjFormatException.class, () -> ObjReader.parse(SQUARE + "f 1//1 2//1 3//1\n"));
+        ObjFormatException word = assertThrows(ObjFormatException.class, () -> ObjReader.parse(SQUARE + "f 1 2 three\n"));
+        ObjFormatException later = assertThrows(ObjFormatException.class, () -> ObjReader.parse("v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n"));
+
+        assertEquals(6, high.line());
+        assertTrue(high.getMessage().contains("vertex index 5 is out of range (4 vertices so far)"), high.getMessage());
+        assertTrue(relative.getMessage().contains("vertex index -5 is out of range"), relative.getMessage());
+        assertTrue(zero.getMessage().contains("index 0 is not valid"), zero.getMessage());
+        assertTrue(normal.getMessage().contains("normal index 1 is out of range (0 normals so far)"), normal.getMessage());
+        assertTrue(word.getMessage().contains("'three' is not a valid index"), word.getMessage());
+        assertEquals(2, later.line());
+    }
+
+    @Test
+    void faceWithFewerThanThreeVerticesIsReportedWithItsLine() {
+        ObjFormatException two = assertThrows(ObjFormatException.class, () -> ObjReader.parse(SQUARE + "f 1 2 3\nf 1 2\n"));
+        ObjFormatException none = assertThrows(ObjFormatException.class, () -> ObjReader.parse("f\n"));
+
+        assertEquals(7, two.line());
+        assertTrue(two.getMessage().contains("face has 2 vertices, needs at least 3"), two.getMessage());
+        assertTrue(none.getMessage().contains("face has 0 vertices"), none.getMessage());
+    }
+
+    @Test
+    void emptyTextIsAnEmptyMesh() {
+        MeshData mesh = ObjReader.parse("# nothing\n");
+
+        assertEquals(0, mesh.vertexCount());
+        assertEquals(0, mesh.triangleCount());
+    }
+}
