@@ -102,13 +102,13 @@ describe('Inspector', () => {
     await user.type(width, '320{Enter}');
     expect(store().scene.image).toMatchObject({ width: 320 });
     await user.selectOptions(screen.getByLabelText('Sampler'), 'regular');
-    expect(store().scene.render?.sampler).toBe('regular');
+    expect(store().scene.render).toMatchObject({ sampler: 'regular', adaptive: 0 });
     await user.selectOptions(screen.getByLabelText('Sampler'), 'sobol');
     expect(store().scene.render?.sampler).toBe('sobol');
     const adaptive = screen.getByLabelText('Adaptive threshold');
     await user.clear(adaptive);
-    await user.type(adaptive, '0.05{Enter}');
-    expect(store().scene.render).toMatchObject({ sampler: 'sobol', adaptive: 0.05 });
+    await user.type(adaptive, '0.1{Enter}');
+    expect(store().scene.render).toMatchObject({ sampler: 'sobol', adaptive: 0.1 });
   });
 
   it('selects from the outline', async () => {

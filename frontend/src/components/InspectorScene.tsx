@@ -57,7 +57,10 @@ export function InspectorScene() {
           path="render.sampler"
           value={r.render.sampler}
           options={SAMPLER_OPTIONS}
-          onCommit={(sampler) => s.setRender({ sampler: sampler as SamplerName })}
+          onCommit={(sampler) =>
+            // the regular grid cannot sample adaptively: switching to it turns adaptive sampling off
+            s.setRender(sampler === 'regular' ? { sampler, adaptive: 0 } : { sampler: sampler as SamplerName })
+          }
         />
         <NumberField label="Samples per pixel" path="render.samples" value={r.render.samples} integer min={1} step={1} hint="More samples: smoother edges, slower. With adaptive sampling: the most a pixel takes" onCommit={(samples) => s.setRender({ samples })} />
         <NumberField
@@ -67,7 +70,7 @@ export function InspectorScene() {
           min={0}
           max={1}
           step={0.01}
-          hint="0: off. Otherwise a pixel stops taking samples (at least 8) once its estimated relative error is below this, e.g. 0.02; not with the regular sampler"
+          hint="0: off. Otherwise a pixel stops taking samples (at least 4 with sobol, 8 with the others) once its estimated relative error is below this; 0.05 by default, smaller is smoother and slower; not with the regular sampler"
           onCommit={(adaptive) => s.setRender({ adaptive })}
         />
         <NumberField label="Max depth" path="render.maxDepth" value={r.render.maxDepth} integer min={0} step={1} hint="Reflection/refraction bounces" onCommit={(maxDepth) => s.setRender({ maxDepth })} />

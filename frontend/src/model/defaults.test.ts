@@ -12,7 +12,7 @@ describe('resolveScene', () => {
     expect(r.camera).toEqual({ position: [0, 2, 8], lookAt: [0, 0, 0], up: [0, 1, 0], fov: 50 });
     expect(r.background).toBe('#20232a');
     expect(r.ambient).toBe(0.08);
-    expect(r.render).toEqual({ sampler: 'sobol', samples: 16, maxDepth: 6, seed: 0, adaptive: 0 });
+    expect(r.render).toEqual({ sampler: 'sobol', samples: 16, maxDepth: 6, seed: 0, adaptive: 0.05 });
     expect(r.lights).toEqual([{ type: 'point', position: [5, 8, 5], color: '#ffffff', intensity: 1, falloff: false }]);
     expect(r.objects[0]).toEqual({ type: 'sphere', center: [0, 1, 0], radius: 1, material: { type: 'chalk', color: '#cccccc', diffuse: 0.9 } });
     expect(r.objects[1]).toMatchObject({ type: 'plane', point: [0, 0, 0], normal: [0, 1, 0] });

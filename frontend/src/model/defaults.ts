@@ -29,7 +29,7 @@ export const SCENE_DEFAULTS: Omit<ResolvedScene, 'lights' | 'objects'> = {
   camera: { position: [0, 2, 8], lookAt: [0, 0, 0], up: [0, 1, 0], fov: 50 },
   background: '#20232a',
   ambient: 0.08,
-  render: { sampler: 'sobol', samples: 16, maxDepth: 6, seed: 0, adaptive: 0 },
+  render: { sampler: 'sobol', samples: 16, maxDepth: 6, seed: 0, adaptive: 0.05 },
 };
 
 /** A light's defaults; also the one light a scene without a `lights` field has. */

@@ -50,18 +50,29 @@ import studio.engine.scene.Scene;
  * image is still the same at any thread count.
  *
  * <p>With the {@code sobol} sampler, adaptive sampling instead walks one scrambled Sobol sequence per
- * pixel, doubling: after n = 2^k samples (k &gt;= 3) the means A_c of the first and B_c of the second
- * n/2 samples are both estimates from a stratified (0, k-1, 2)-net, and the pixel stops when
+ * pixel, in two passes over each tile. First every pixel takes {@value #BASE} samples, and so does a
+ * one-pixel ring around the tile (the ring's samples are the same its own tiles take). A pixel then
+ * stops at {@value #BASE} if all 36 base samples of its 3 x 3 neighbourhood agree: per channel c,
+ * (largest - smallest of them) / {@value #BASE} &lt;= t * max(max_c M_c, 1/255), with M_c the pixel's
+ * mean. Looking at the neighbours finds the thin edges, shadow slivers and specks that the pixel's
+ * own four samples miss but a neighbour's catch. Otherwise the pixel walks on along its sequence,
+ * doubling: after n = 2^k samples the means A_c of the first and B_c of the second n/2 samples are
+ * both estimates from a stratified (0, k-1, 2)-net, and the pixel stops when
  * <pre>
  *     for every c: max(|A_c - B_c| / 2, R_c) &lt;= t * max(max_c M_c, 1/255)
  * </pre>
  * (R_c as above: two halves of a few stratified samples can agree by chance on an edge)
  * else at N. Independent batches would lose the stratification (their error falls like N^-1/2);
  * halves of one sequence keep it, so the estimate and the image both improve like a fixed-count
- * Sobol pattern while flat pixels stop at 8 samples.
+ * Sobol pattern. Every decision reads only samples seeded by pixel, so the image is the same at any
+ * thread count.
  */
 public final class Renderer {
 
+    /** Adaptive sampling with sobol: the samples every pixel takes before it is judged. */
+    public static final int BASE = 4;
+    /** A tile with its one-pixel ring. */
+    private static final int RING_TILE = RenderSettings.TILE_SIZE + 2;
     /** Adaptive sampling: samples per batch. */
     public static final int BATCH = 4;
     /** Adaptive sampling: a pixel takes at least this many batches (if the maximum allows). */
@@ -151,9 +162,12 @@ public final class Renderer {
         final Sampler sampler;
         /** Adaptive sampling: a full batch, and the last, partial batch when the maximum is not a multiple. */
         final Sampler batchSampler, remainderSampler;
-        /** Adaptive sampling walks one Sobol sequence per pixel (see progressivePixel). */
+        /** Adaptive sampling walks one Sobol sequence per pixel (see progressiveTile). */
         final boolean progressive;
         final SobolSampler.Sequence sequence = new SobolSampler.Sequence();
+        /** Progressive adaptive sampling: each base pixel's mean and per-channel range, over a tile and its ring. */
+        final double[] baseMean = new double[3 * RING_TILE * RING_TILE];
+        final double[] baseMin = new double[3 * RING_TILE * RING_TILE], baseMax = new double[3 * RING_TILE * RING_TILE];
         final PixelRandom random = new PixelRandom();
         final double[] xs, ys;
         final int width, height;
@@ -186,12 +200,14 @@ public final class Renderer {
 
         /** Renders one tile into the film; returns how many samples came out non-finite. */
         long render(Film film, TileRect tile) {
+            if (threshold > 0 && progressive) {
+                return progressiveTile(film, tile);
+            }
             long bad = 0;
             for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
                 for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
                     random.reset(x, y, seed);
-                    bad += threshold <= 0 ? fixedPixel(film, x, y)
-                            : progressive ? progressivePixel(film, x, y) : adaptivePixel(film, x, y);
+                    bad += threshold <= 0 ? fixedPixel(film, x, y) : adaptivePixel(film, x, y);
                 }
             }
             return bad;
@@ -208,29 +224,98 @@ public final class Renderer {
         }
 
         /**
-         * Adaptive sampling along one Sobol sequence: after 2^k samples (k >= 3) the estimate from the
-         * first half is compared with the one from the second half, each a stratified (0, k-1, 2)-net;
-         * half their difference estimates the error of the whole. Stop when it is within the threshold.
+         * Adaptive sampling along one Sobol sequence, in two passes over the tile. First every pixel of
+         * the tile and of a one-pixel ring around it takes {@value #BASE} samples (a ring pixel's are
+         * the same samples its own tile takes, so tiles need not wait for each other). Then each
+         * pixel of the tile stops there if all base samples of its 3 x 3 neighbourhood agree, else it
+         * walks on along its sequence, doubling, and after 2^k samples compares the estimate from the
+         * first half with the one from the second half, each a stratified (0, k-1, 2)-net: half their
+         * difference estimates the error of the whole.
          */
-        private long progressivePixel(Film film, int x, int y) {
+        private long progressiveTile(Film film, TileRect tile) {
             int max = sampler.samplesPerPixel();
-            sequence.seed(random);
-            resetRange();
+            int x0 = Math.max(0, tile.x() - 1), y0 = Math.max(0, tile.y() - 1);
+            int x1 = Math.min(width, tile.x() + tile.width() + 1), y1 = Math.min(height, tile.y() + tile.height() + 1);
+            int stride = x1 - x0;
+            int base = Math.min(max, BASE);
             long bad = 0;
-            int taken = 0, target = Math.min(max, BATCH);
-            double totalR = 0, totalG = 0, totalB = 0, firstR = 0, firstG = 0, firstB = 0;
-            while (true) {
+            for (int y = y0; y < y1; y++) {
+                for (int x = x0; x < x1; x++) {
+                    random.reset(x, y, seed);
+                    sequence.seed(random);
+                    sequence.fill(0, base, xs, ys);
+                    resetRange();
+                    long badHere = trace(x, y, 0, base);
+                    if (tile.contains(x, y)) {
+                        bad += badHere;
+                    }
+                    int i = (y - y0) * stride + x - x0;
+                    baseMean[3 * i] = sumR / base;
+                    baseMean[3 * i + 1] = sumG / base;
+                    baseMean[3 * i + 2] = sumB / base;
+                    baseMin[3 * i] = minR; baseMin[3 * i + 1] = minG; baseMin[3 * i + 2] = minB;
+                    baseMax[3 * i] = maxR; baseMax[3 * i + 1] = maxG; baseMax[3 * i + 2] = maxB;
+                }
+            }
+            for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
+                for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
+                    int i = (y - y0) * stride + x - x0;
+                    double r = baseMean[3 * i], g = baseMean[3 * i + 1], b = baseMean[3 * i + 2];
+                    double limit = threshold * Math.max(Math.max(r, Math.max(g, b)), ERROR_FLOOR);
+                    if (base >= max || neighbourhoodStep(i, stride, x - x0, y - y0, x1 - x0, y1 - y0, base) <= limit) {
+                        samples += base;
+                        film.set(x, y, r, g, b);
+                    } else {
+                        bad += refinePixel(film, x, y, i, base);
+                    }
+                }
+            }
+            return bad;
+        }
+
+        /**
+         * The step one base sample makes in a mean, across pixel i's 3 x 3 neighbourhood: the range of
+         * all their base samples in the channel where it is widest, over {@code base}.
+         */
+        private double neighbourhoodStep(int i, int stride, int cx, int cy, int w, int h, int base) {
+            double widest = 0;
+            for (int c = 0; c < 3; c++) {
+                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+                for (int ny = Math.max(0, cy - 1); ny <= Math.min(h - 1, cy + 1); ny++) {
+                    for (int nx = Math.max(0, cx - 1); nx <= Math.min(w - 1, cx + 1); nx++) {
+                        int j = i + (ny - cy) * stride + (nx - cx);
+                        lo = Math.min(lo, baseMin[3 * j + c]);
+                        hi = Math.max(hi, baseMax[3 * j + c]);
+                    }
+                }
+                widest = Math.max(widest, hi - lo);
+            }
+            return widest / base;
+        }
+
+        /**
+         * Walks on along pixel i's sequence from its {@code base} samples, doubling, until the halves
+         * agree (see {@link Renderer}) or the maximum is reached.
+         */
+        private long refinePixel(Film film, int x, int y, int i, int base) {
+            int max = sampler.samplesPerPixel();
+            random.reset(x, y, seed);
+            sequence.seed(random);
+            minR = baseMin[3 * i]; minG = baseMin[3 * i + 1]; minB = baseMin[3 * i + 2];
+            maxR = baseMax[3 * i]; maxG = baseMax[3 * i + 1]; maxB = baseMax[3 * i + 2];
+            double totalR = baseMean[3 * i] * base, totalG = baseMean[3 * i + 1] * base, totalB = baseMean[3 * i + 2] * base;
+            long bad = 0;
+            int taken = base;
+            while (taken < max) {
+                double firstR = totalR, firstG = totalG, firstB = totalB;
+                int half = taken, target = Math.min(max, taken * 2);
                 sequence.fill(taken, target - taken, xs, ys);
                 bad += trace(x, y, taken, target - taken);
                 totalR += sumR;
                 totalG += sumG;
                 totalB += sumB;
-                int half = taken;
                 taken = target;
-                if (taken >= max) {
-                    break;
-                }
-                if (half * 2 == taken && taken >= 2 * BATCH) {
+                if (taken < max && half * 2 == taken) {
                     double dR = Math.abs(firstR - (totalR - firstR)) / half;
                     double dG = Math.abs(firstG - (totalG - firstG)) / half;
                     double dB = Math.abs(firstB - (totalB - firstB)) / half;
@@ -241,10 +326,6 @@ public final class Renderer {
                         break;
                     }
                 }
-                firstR = totalR;
-                firstG = totalG;
-                firstB = totalB;
-                target = Math.min(max, taken * 2);
             }
             samples += taken;
             film.set(x, y, totalR / taken, totalG / taken, totalB / taken);

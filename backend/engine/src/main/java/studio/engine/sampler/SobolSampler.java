@@ -26,10 +26,11 @@ public record SobolSampler(int samplesPerPixel) implements Sampler {
 
     /** Points first .. first + count - 1 of the sequence with these seeds, into xs, ys at the same indices. */
     private static void fill(int indexSeed, int xSeed, int ySeed, int first, int count, double[] xs, double[] ys) {
+        // owenScramble(b, s) = reverse(lkHash(reverse(b), s)); the reversals that cancel are left out.
         for (int i = first; i < first + count; i++) {
             int index = owenScramble(i, indexSeed);
-            xs[i] = unit(owenScramble(Integer.reverse(index), xSeed));
-            ys[i] = unit(owenScramble(sobolSecond(index), ySeed));
+            xs[i] = unit(Integer.reverse(lkHash(index, xSeed)));
+            ys[i] = unit(Integer.reverse(lkHash(sobolSecondReversed(index), ySeed)));
         }
     }
 
@@ -56,6 +57,26 @@ public record SobolSampler(int samplesPerPixel) implements Sampler {
     @Override
     public Sampler withSamplesPerPixel(int n) {
         return new SobolSampler(n);
+    }
+
+    /**
+     * {@code Integer.reverse(sobolSecond(index))}, from four tables: the dimension is linear over
+     * GF(2) in the index's bits, so each byte of the index contributes a fixed term.
+     */
+    static int sobolSecondReversed(int index) {
+        return SECOND_REVERSED[index & 0xff] ^ SECOND_REVERSED[256 | (index >>> 8) & 0xff]
+                ^ SECOND_REVERSED[512 | (index >>> 16) & 0xff] ^ SECOND_REVERSED[768 | index >>> 24];
+    }
+
+    /** Entry 256 k + b: the reversed second dimension of the index b << 8k. */
+    private static final int[] SECOND_REVERSED = new int[1024];
+
+    static {
+        for (int k = 0; k < 4; k++) {
+            for (int b = 0; b < 256; b++) {
+                SECOND_REVERSED[256 * k + b] = Integer.reverse(sobolSecond(b << (8 * k)));
+            }
+        }
     }
 
     /** Sobol's second dimension as a 32-bit binary fraction (direction numbers v_k = v_{k-1} ^ v_{k-1} >> 1). */

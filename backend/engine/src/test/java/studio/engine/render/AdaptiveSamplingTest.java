@@ -34,6 +34,11 @@ class AdaptiveSamplingTest {
     private static final Vec3 UP = new Vec3(0, 1, 0);
     private static final int MIN = Renderer.MIN_BATCHES * Renderer.BATCH;
 
+    /** The fewest samples a pixel takes: the base samples with sobol, two batches with the others. */
+    private static int minimum(String sampler) {
+        return sampler.equals("sobol") ? Renderer.BASE : MIN;
+    }
+
     /** A white, unlit sphere of radius 1 at the origin on a black background, lit by nothing. */
     private static Scene flatSphere(Camera camera) {
         return new Scene(camera, List.of(new SceneObject(new Sphere(Vec3.ZERO, 1),
@@ -80,7 +85,7 @@ class AdaptiveSamplingTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"random", "jittered", "multijittered", "sobol"})
-    void flatPixelsStopAfterTwoBatches(String sampler) {
+    void flatPixelsStopAtTheMinimum(String sampler) {
         // the camera sees only the inside of the flat sphere, or only the background: every sample is the same
         Scene inside = flatSphere(new Camera(new Vec3(0, 0, 5), Vec3.ZERO, UP, 10));
         Scene outside = flatSphere(new Camera(new Vec3(0, 0, 5), new Vec3(0, 0, 10), UP, 10));
@@ -88,9 +93,9 @@ class AdaptiveSamplingTest {
         RenderResult a = Renderer.render(inside, settings(24, 16, Sampler.of(sampler, 64), 0.01, 2));
         RenderResult b = Renderer.render(outside, settings(24, 16, Sampler.of(sampler, 64), 0.01, 2));
 
-        assertEquals(MIN * 24 * 16, a.samplesTaken());
-        assertEquals(MIN, a.meanSamplesPerPixel(), 0.0);
-        assertEquals(MIN * 24 * 16, b.samplesTaken());
+        assertEquals(minimum(sampler) * 24 * 16, a.samplesTaken());
+        assertEquals(minimum(sampler), a.meanSamplesPerPixel(), 0.0);
+        assertEquals(minimum(sampler) * 24 * 16, b.samplesTaken());
         assertEquals(1.0, a.film().get(5, 5, 1), 0.0);
         assertEquals(0.0, b.film().get(5, 5, 1), 0.0);
     }
@@ -104,7 +109,7 @@ class AdaptiveSamplingTest {
 
         long atEdge = samplesOfOnePixel(edge, sampler, 256, 0.02);
 
-        assertEquals(MIN, samplesOfOnePixel(centre, sampler, 256, 0.02));
+        assertEquals(minimum(sampler), samplesOfOnePixel(centre, sampler, 256, 0.02));
         assertTrue(atEdge > 4 * MIN, sampler + ": samples at the edge " + atEdge);
         assertTrue(atEdge <= 256);
     }
@@ -155,7 +160,23 @@ class AdaptiveSamplingTest {
             }
         }
         double mean = single.meanSamplesPerPixel();
-        assertTrue(mean > MIN && mean < 64, "mean samples per pixel " + mean);
+        assertTrue(mean > Renderer.BASE && mean < 64, "mean samples per pixel " + mean);
+    }
+
+    @Test
+    void sobolRefinesAFlatPixelWhoseNeighbourDiffers() {
+        // a flat white box filling x < 0 seen head on: the edge lies exactly between columns 3 and 4 of 8,
+        // so every pixel's own samples agree, but columns 3 and 4 each have a neighbour of the other colour
+        Scene halfWhite = new Scene(new Camera(new Vec3(0, 0, 10), Vec3.ZERO, UP, 20),
+                List.of(new SceneObject(new Box(new Vec3(-50, 0, 0), new Vec3(100, 100, 1)),
+                        MaterialDefaults.of(MaterialKind.FLAT, Rgb.WHITE))), List.of(), Rgb.BLACK, 0);
+
+        RenderResult result = Renderer.render(halfWhite, settings(8, 4, Sampler.of("sobol", 64), 0.05, 1));
+
+        // the refined pixels' halves then agree and their samples have no range: they stop at 2 x BASE
+        assertEquals(Renderer.BASE * 6 * 4 + 2 * Renderer.BASE * 2 * 4, result.samplesTaken());
+        assertEquals(1.0, result.film().get(3, 1, 0), 0.0);
+        assertEquals(0.0, result.film().get(4, 1, 0), 0.0);
     }
 
     @Test

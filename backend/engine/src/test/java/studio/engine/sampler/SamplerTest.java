@@ -266,6 +266,16 @@ class SamplerTest {
     }
 
     @Test
+    void sobolSecondFromTablesEqualsTheBitLoop() {
+        java.util.SplittableRandom random = new java.util.SplittableRandom(7);
+        for (int k = 0; k < 100_000; k++) {
+            int index = k < 1000 ? k : random.nextInt();
+            assertEquals(Integer.reverse(SobolSampler.sobolSecond(index)), SobolSampler.sobolSecondReversed(index),
+                    "index " + index);
+        }
+    }
+
+    @Test
     void sobolSamplerIsAZeroMTwoNetForEveryPowerOfTwo() {
         PixelRandom random = new PixelRandom();
         for (int m = 0; m <= 8; m++) {

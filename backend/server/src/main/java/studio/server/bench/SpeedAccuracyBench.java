@@ -42,7 +42,7 @@ final class SpeedAccuracyBench {
 
         static Config defaults(int runs, int referenceSamples) {
             return new Config(runs, referenceSamples, List.of(1, 4, 16, 64, 256),
-                    List.of(0.2, 0.1, 0.05, 0.02, 0.01), 256);
+                    List.of(0.5, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01), 256);
         }
     }
 
@@ -63,9 +63,15 @@ final class SpeedAccuracyBench {
         RenderSettings base = compiled.settings();
         boolean adaptive = EngineFeatures.hasAdaptive();
 
-        // Warm-up: lets the JIT compile the hot loop before anything is timed.
-        Renderer.render(scene, settings(base, EngineFeatures.sampler(REFERENCE_SAMPLER, 16).orElseThrow(), Double.NaN,
-                base.seed(), adaptive));
+        // Warm-up: lets the JIT compile the hot loops (fixed and adaptive) before anything is timed.
+        for (int i = 0; i < 3; i++) {
+            Renderer.render(scene, settings(base, EngineFeatures.sampler(REFERENCE_SAMPLER, 16).orElseThrow(),
+                    Double.NaN, base.seed(), adaptive));
+            if (adaptive && adaptiveAccepts(base, "sobol")) {
+                Renderer.render(scene, settings(base, EngineFeatures.sampler("sobol", 64).orElseThrow(), 0.1,
+                        base.seed(), true));
+            }
+        }
 
         RenderSettings referenceSettings = settings(base,
                 EngineFeatures.sampler(REFERENCE_SAMPLER, config.referenceSamples()).orElseThrow(), Double.NaN,

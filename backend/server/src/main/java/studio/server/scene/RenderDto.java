@@ -8,7 +8,7 @@ import jakarta.validation.constraints.PositiveOrZero;
 /**
  * How to sample: sampler name, samples per pixel (with adaptive sampling: the most a pixel takes),
  * recursion depth, the noise seed, and the adaptive-sampling threshold (a relative error in [0, 1];
- * absent or 0: off).
+ * 0: off; absent: {@link SceneDefaults#ADAPTIVE} with the sobol sampler, off with the others).
  */
 public record RenderDto(
         @Pattern(regexp = RenderDto.SAMPLERS, message = RenderDto.SAMPLERS_MESSAGE) String sampler,
@@ -22,7 +22,7 @@ public record RenderDto(
     static final String SAMPLERS_MESSAGE =
             "must be one of \"regular\", \"random\", \"jittered\", \"multijittered\", \"sobol\"";
 
-    /** Without adaptive sampling. */
+    /** Without a threshold: the default applies. */
     public RenderDto(String sampler, Integer samples, Integer maxDepth, Long seed) {
         this(sampler, samples, maxDepth, seed, null);
     }

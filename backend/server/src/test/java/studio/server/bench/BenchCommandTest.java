@@ -34,7 +34,7 @@ class BenchCommandTest {
         assertThat(csv.get(0)).isEqualTo("scene,method,samples,mean_spp,median_ms,rmse,psnr_db,threshold");
 
         long samplers = EngineFeatures.SAMPLER_NAMES.stream().filter(n -> EngineFeatures.sampler(n, 16).isPresent()).count();
-        int adaptiveRows = EngineFeatures.hasAdaptive() ? 5 : 0;
+        int adaptiveRows = EngineFeatures.hasAdaptive() ? 7 : 0;
         int scenes = BenchSceneFiles.all().size();
         assertThat(csv).hasSize(1 + scenes * (int) (samplers * 5 + adaptiveRows));
         assertThat(csv).anySatisfy(line -> assertThat(line).startsWith("edges,jittered,16,16.000,"));

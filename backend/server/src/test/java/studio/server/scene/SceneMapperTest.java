@@ -74,8 +74,8 @@ class SceneMapperTest {
         assertThat(settings.sampler()).isEqualTo(new SobolSampler(16));
         assertThat(settings.maxDepth()).isEqualTo(6);
         assertThat(settings.seed()).isZero();
-        assertThat(settings.adaptiveThreshold()).isEqualTo(SceneDefaults.ADAPTIVE).isZero();
-        assertThat(settings.adaptive()).isFalse();
+        assertThat(settings.adaptiveThreshold()).isEqualTo(SceneDefaults.ADAPTIVE).isEqualTo(0.05);
+        assertThat(settings.adaptive()).isTrue();
         assertThat(settings.threads()).isZero();
         assertThat(compiled.format()).isEqualTo("png");
         assertThat(compiled.mediaType()).isEqualTo("image/png");
@@ -255,6 +255,18 @@ class SceneMapperTest {
         assertThat(problem.message()).contains("regular sampler");
         assertThat(map("{'render':{'sampler':'regular','samples':16,'adaptive':0},'objects':[]}").settings().sampler())
                 .isEqualTo(new RegularSampler(16));
+    }
+
+    @Test
+    void adaptiveSamplingIsOnByDefaultWithSobolOnly() {
+        assertThat(map("{'render':{'sampler':'sobol'},'objects':[]}").settings().adaptiveThreshold())
+                .isEqualTo(SceneDefaults.ADAPTIVE);
+        assertThat(map("{'render':{'sampler':'jittered'},'objects':[]}").settings().adaptive()).isFalse();
+        assertThat(map("{'render':{'sampler':'jittered','adaptive':0.1},'objects':[]}").settings().adaptiveThreshold())
+                .isEqualTo(0.1);
+        RenderSettings regular = map("{'render':{'sampler':'regular','samples':16},'objects':[]}").settings();
+        assertThat(regular.adaptive()).isFalse();
+        assertThat(regular.sampler()).isEqualTo(new RegularSampler(16));
     }
 
     @Test
