@@ -71,7 +71,9 @@ public final class Renderer {
 
     /** Adaptive sampling with sobol: the samples every pixel takes before it is judged. */
     public static final int BASE = 4;
-    /** A tile with its one-pixel ring. */
+    /** Fewer tiles than this per thread get smaller tiles (see {@link #tileSize}). */
+    static final int TILES_PER_THREAD = 16;
+    /** The largest tile with its one-pixel ring. */
     private static final int RING_TILE = RenderSettings.TILE_SIZE + 2;
     /** Adaptive sampling: samples per batch. */
     public static final int BATCH = 4;
@@ -96,7 +98,8 @@ public final class Renderer {
                                      BooleanSupplier cancelled) {
         long start = System.nanoTime();
         Film film = new Film(settings.width(), settings.height());
-        List<TileRect> tiles = tiles(settings.width(), settings.height(), RenderSettings.TILE_SIZE);
+        List<TileRect> tiles = tiles(settings.width(), settings.height(),
+                tileSize(settings.width(), settings.height(), settings.effectiveThreads()));
         AtomicInteger done = new AtomicInteger();
         LongAdder rays = new LongAdder();
         LongAdder samples = new LongAdder();
@@ -142,6 +145,17 @@ public final class Renderer {
             throw new RenderCancelledException();
         }
         return new RenderResult(film, rays.sum(), nonFinite.sum(), System.nanoTime() - start, samples.sum());
+    }
+
+    /**
+     * {@link RenderSettings#TILE_SIZE}, or half of it when that would leave fewer than
+     * {@value #TILES_PER_THREAD} tiles per thread: with few tiles, the one that holds most of the work
+     * (the edges, under adaptive sampling) would finish alone while the other threads wait.
+     */
+    static int tileSize(int width, int height, int threads) {
+        int size = RenderSettings.TILE_SIZE;
+        long tiles = (long) ((width + size - 1) / size) * ((height + size - 1) / size);
+        return tiles < (long) TILES_PER_THREAD * threads ? size / 2 : size;
     }
 
     /** The image cut into tiles of at most size x size, row by row from the top left. */

@@ -30,7 +30,9 @@ import studio.engine.scene.SceneObject;
 class RendererTest {
 
     /** 100 x 70 cuts into 4 x 3 tiles of 32, the last column and row partial. */
-    private static final int WIDTH = 100, HEIGHT = 70, TILES = 12;
+    private static final int WIDTH = 100, HEIGHT = 70;
+    /** 12 tiles of 32 would be fewer than 16 per thread, so the tiles are 16 pixels: 7 x 5. */
+    private static final int TILES = 35;
     private static final Scene SCENE = new Scene(
             new Camera(new Vec3(0, 2, 6), new Vec3(0, 0.5, 0), new Vec3(0, 1, 0), 50),
             List.of(new SceneObject(new Plane(Vec3.ZERO, new Vec3(0, 1, 0)),
@@ -106,6 +108,15 @@ class RendererTest {
     }
 
     @Test
+    void smallImagesGetSmallerTilesSoThatEveryThreadHasEnoughOfThem() {
+        assertEquals(RenderSettings.TILE_SIZE, Renderer.tileSize(800, 600, 2));
+        assertEquals(RenderSettings.TILE_SIZE, Renderer.tileSize(256, 256, 2));
+        assertEquals(RenderSettings.TILE_SIZE / 2, Renderer.tileSize(160, 120, 2));
+        assertEquals(RenderSettings.TILE_SIZE / 2, Renderer.tileSize(800, 600, 32));
+        assertEquals(RenderSettings.TILE_SIZE / 2, Renderer.tileSize(1, 1, 1));
+    }
+
+    @Test
     void progressReportsEveryTileOnceWithDoneCountingOneToTotal() {
         List<Report> reports = Collections.synchronizedList(new ArrayList<>());
         RenderListener listener = (film, tile, done, total) -> reports.add(new Report(tile, done, total,
@@ -144,7 +155,7 @@ class RendererTest {
     void tilesCoverTheImageRowByRowWithPartialTilesAtTheEdges() {
         List<TileRect> tiles = Renderer.tiles(WIDTH, HEIGHT, 32);
 
-        assertEquals(TILES, tiles.size());
+        assertEquals(12, tiles.size());
         assertEquals(new TileRect(0, 0, 32, 32), tiles.get(0));
         assertEquals(new TileRect(96, 0, 4, 32), tiles.get(3));
         assertEquals(new TileRect(96, 64, 4, 6), tiles.get(11));
