@@ -18,6 +18,7 @@ import studio.server.render.ImageFiles;
 import studio.server.cli.Args;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
+import studio.server.scene.MeshFiles;
 import studio.server.scene.SceneCompiler;
 
 /**
@@ -62,7 +63,8 @@ public final class BenchCommand {
             SceneCompiler compiler = SceneCompiler.standalone(validation);
             for (Path file : sceneFiles(options.scenes)) {
                 try {
-                    scenes.put(stem(file), compiler.compile(Files.readAllBytes(file), options.overrides(), 0));
+                    scenes.put(stem(file), compiler.compile(Files.readAllBytes(file), options.overrides(), 0,
+                            MeshFiles.in(file.toAbsolutePath().getParent())));
                 } catch (InvalidSceneException e) {
                     err.println("error: invalid scene " + file + ": " + e.getMessage());
                     return INVALID;

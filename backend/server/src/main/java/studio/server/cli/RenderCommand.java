@@ -20,6 +20,7 @@ import studio.engine.render.Renderer;
 import studio.server.render.ImageFiles;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
+import studio.server.scene.MeshFiles;
 import studio.server.scene.SceneCompiler;
 
 /**
@@ -66,7 +67,8 @@ public final class RenderCommand {
         CompiledScene compiled;
         try (ValidatorFactory validation = Validation.buildDefaultValidatorFactory()) {
             SceneCompiler compiler = SceneCompiler.standalone(validation);
-            compiled = compiler.compile(json, options.overrides(), options.threads);
+            compiled = compiler.compile(json, options.overrides(), options.threads,
+                    MeshFiles.in(options.scene.toAbsolutePath().getParent()));
         } catch (InvalidSceneException e) {
             err.println("error: invalid scene " + options.scene + ": " + e.getMessage());
             return INVALID;

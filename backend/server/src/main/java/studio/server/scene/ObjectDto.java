@@ -14,7 +14,8 @@ import jakarta.validation.constraints.Positive;
 @JsonSubTypes({
         @JsonSubTypes.Type(value = ObjectDto.Sphere.class, name = "sphere"),
         @JsonSubTypes.Type(value = ObjectDto.Box.class, name = "box"),
-        @JsonSubTypes.Type(value = ObjectDto.Plane.class, name = "plane")})
+        @JsonSubTypes.Type(value = ObjectDto.Plane.class, name = "plane"),
+        @JsonSubTypes.Type(value = ObjectDto.Mesh.class, name = "mesh")})
 public sealed interface ObjectDto {
 
     MaterialDto material();
@@ -37,6 +38,21 @@ public sealed interface ObjectDto {
     record Plane(
             @Vector List<@NotNull(message = "must be a number") @Finite Double> point,
             @Vector @NonZeroVector List<@NotNull(message = "must be a number") @Finite Double> normal,
+            @Valid MaterialDto material) implements ObjectDto {
+    }
+
+    /**
+     * A triangle mesh from Wavefront OBJ (positions, triangles or polygons, optional vertex normals
+     * for smooth shading): either the OBJ text itself in {@code obj}, or a {@code file} name (see
+     * {@link MeshFiles}). Placed by a uniform scale, then the rotation (degrees, order XYZ as three.js),
+     * then moved to {@code position}.
+     */
+    record Mesh(
+            String obj,
+            String file,
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
+            @Positive @Finite Double scale,
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
             @Valid MaterialDto material) implements ObjectDto {
     }
 }

@@ -9,10 +9,18 @@ public final class SceneCompiler {
 
     private final SceneReader reader;
     private final SceneMapper mapper;
+    private final MeshFiles meshFiles;
 
-    public SceneCompiler(SceneReader reader, SceneMapper mapper) {
+    /** @param meshFiles where meshes' {@code file} names are read from, unless a call says otherwise */
+    public SceneCompiler(SceneReader reader, SceneMapper mapper, MeshFiles meshFiles) {
         this.reader = reader;
         this.mapper = mapper;
+        this.meshFiles = meshFiles;
+    }
+
+    /** Inline meshes only. */
+    public SceneCompiler(SceneReader reader, SceneMapper mapper) {
+        this(reader, mapper, MeshFiles.none());
     }
 
     /**
@@ -21,7 +29,12 @@ public final class SceneCompiler {
      * @throws InvalidSceneException listing every problem, before anything is rendered
      */
     public CompiledScene compile(byte[] json, Map<String, Object> overrides, int threads) {
-        return mapper.map(reader.read(json, overrides), threads);
+        return compile(json, overrides, threads, meshFiles);
+    }
+
+    /** As above, reading meshes' files from {@code files} (e.g. the scene file's folder). */
+    public CompiledScene compile(byte[] json, Map<String, Object> overrides, int threads, MeshFiles files) {
+        return mapper.map(reader.read(json, overrides), threads, files);
     }
 
     /**
@@ -29,7 +42,13 @@ public final class SceneCompiler {
      * the caller owns the validator factory and closes it.
      */
     public static SceneCompiler standalone(ValidatorFactory validation) {
-        return new SceneCompiler(new SceneReader(validation.getValidator()), new SceneMapper(SceneLimits.DEFAULTS));
+        return standalone(validation, MeshFiles.none());
+    }
+
+    /** As {@link #standalone(ValidatorFactory)}, reading meshes' files from {@code meshFiles}. */
+    public static SceneCompiler standalone(ValidatorFactory validation, MeshFiles meshFiles) {
+        return new SceneCompiler(new SceneReader(validation.getValidator()), new SceneMapper(SceneLimits.DEFAULTS),
+                meshFiles);
     }
 
     public CompiledScene compile(byte[] json) {

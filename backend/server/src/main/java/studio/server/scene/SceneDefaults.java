@@ -19,6 +19,7 @@ public final class SceneDefaults {
     public static final double CAMERA_FOV_DEGREES = 50;
     public static final String BACKGROUND = "#20232a";
     public static final double AMBIENT = 0.08;
+    public static final double MESH_SCALE = 1.0;
     public static final String SAMPLER = "sobol";
     public static final int SAMPLES = 16;
     public static final int MAX_DEPTH = 6;

@@ -8,12 +8,15 @@ import studio.engine.geometry.Box;
 import studio.engine.geometry.Plane;
 import studio.engine.geometry.Shape;
 import studio.engine.geometry.Sphere;
+import studio.engine.geometry.TriangleMesh;
 import studio.engine.light.PointLight;
 import studio.engine.material.Material;
 import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
+import studio.engine.mesh.MeshData;
+import studio.engine.mesh.ObjReader;
 import studio.engine.render.RenderSettings;
 import studio.engine.sampler.RegularSampler;
 import studio.engine.sampler.Sampler;
@@ -34,11 +37,17 @@ public final class SceneMapper {
         this.limits = limits;
     }
 
+    /** As {@link #map(SceneDto, int, MeshFiles)}, with no mesh files (inline meshes only). */
+    public CompiledScene map(SceneDto dto, int threads) {
+        return map(dto, threads, MeshFiles.none());
+    }
+
     /**
-     * @param threads worker threads for the render (0: all cores); not part of the scene format
+     * @param threads    worker threads for the render (0: all cores); not part of the scene format
+     * @param meshFiles  where a mesh's {@code file} is read from
      * @throws InvalidSceneException listing every problem found
      */
-    public CompiledScene map(SceneDto dto, int threads) {
+    public CompiledScene map(SceneDto dto, int threads, MeshFiles meshFiles) {
         Problems problems = new Problems();
         ImageDto image = dto.image() != null ? dto.image() : new ImageDto(null, null, null, null);
         int width = or(image.width(), SceneDefaults.WIDTH);
@@ -63,10 +72,24 @@ public final class SceneMapper {
         List<ObjectDto> objectDtos = dto.objects();
         problems.atMost("objects", objectDtos.size(), limits.maxObjects(), "objects");
         List<SceneObject> objects = new ArrayList<>();
+        int triangles = 0;
         for (int i = 0; i < objectDtos.size() && i < limits.maxObjects(); i++) {
             ObjectDto o = objectDtos.get(i);
             String path = "objects[" + i + "]";
-            Shape shape = problems.attempt(path, () -> shape(o));
+            Shape shape;
+            if (o instanceof ObjectDto.Mesh mesh) {
+                MeshData data = meshData(mesh, path, meshFiles, limits.maxTriangles() - triangles, problems);
+                if (data == null) {
+                    shape = null;
+                } else {
+                    triangles += data.triangleCount();
+                    shape = problems.attempt(path, () -> new TriangleMesh(data,
+                            vec(or(mesh.position(), SceneDefaults.ORIGIN)), or(mesh.scale(), SceneDefaults.MESH_SCALE),
+                            vec(or(mesh.rotation(), SceneDefaults.ORIGIN))));
+                }
+            } else {
+                shape = problems.attempt(path, () -> shape(o));
+            }
             Material material = problems.attempt(path + ".material", () -> material(o.material()));
             if (shape != null && material != null) {
                 objects.add(new SceneObject(shape, material));
@@ -114,6 +137,44 @@ public final class SceneMapper {
         return new Camera(position, lookAt, up, or(c.fov(), SceneDefaults.CAMERA_FOV_DEGREES));
     }
 
+    /**
+     * The mesh's OBJ data, from its inline text or its file; null (and a problem) if there is none,
+     * it does not parse, or it has more than {@code triangleBudget} triangles.
+     */
+    private static MeshData meshData(ObjectDto.Mesh mesh, String path, MeshFiles files, int triangleBudget,
+                                     Problems problems) {
+        String field;
+        String text;
+        if ((mesh.obj() == null) == (mesh.file() == null)) {
+            problems.add(path, mesh.obj() == null ? "a mesh needs its OBJ text in \"obj\" or a \"file\" name"
+                    : "give the mesh either \"obj\" or \"file\", not both");
+            return null;
+        }
+        if (mesh.obj() != null) {
+            field = path + ".obj";
+            text = mesh.obj();
+        } else {
+            field = path + ".file";
+            text = problems.attempt(field, () -> files.read(mesh.file()));
+            if (text == null) {
+                return null;
+            }
+        }
+        MeshData data;
+        try {
+            data = ObjReader.parse(text);
+        } catch (IllegalArgumentException e) {
+            problems.add(field, "is not a usable OBJ mesh: " + e.getMessage());
+            return null;
+        }
+        if (data.triangleCount() > triangleBudget) {
+            problems.add(field, "has " + data.triangleCount() + " triangles; this server's limit is "
+                    + (triangleBudget < 0 ? 0 : triangleBudget) + " more (all meshes together)");
+            return null;
+        }
+        return data;
+    }
+
     private static Shape shape(ObjectDto o) {
         if (o instanceof ObjectDto.Sphere s) {
             return new Sphere(vec(or(s.center(), SceneDefaults.SPHERE_CENTER)), or(s.radius(), SceneDefaults.SPHERE_RADIUS));
@@ -121,6 +182,9 @@ public final class SceneMapper {
         if (o instanceof ObjectDto.Box b) {
             return new Box(vec(or(b.center(), SceneDefaults.BOX_CENTER)), vec(or(b.size(), SceneDefaults.BOX_SIZE)),
                     vec(or(b.rotation(), SceneDefaults.ORIGIN)));
+        }
+        if (o instanceof ObjectDto.Mesh) {
+            throw new IllegalStateException("meshes are mapped by meshData");
         }
         ObjectDto.Plane p = (ObjectDto.Plane) o;
         return new Plane(vec(or(p.point(), SceneDefaults.ORIGIN)), vec(or(p.normal(), SceneDefaults.PLANE_NORMAL)));

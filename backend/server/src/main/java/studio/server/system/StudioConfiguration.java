@@ -9,6 +9,7 @@ import jakarta.validation.Validator;
 import studio.server.job.JobService;
 import studio.server.render.RenderService;
 import studio.server.scene.ExampleScenes;
+import studio.server.scene.MeshFiles;
 import studio.server.scene.SceneCompiler;
 import studio.server.scene.SceneLimits;
 import studio.server.scene.SceneMapper;
@@ -26,7 +27,7 @@ class StudioConfiguration {
 
     @Bean
     SceneCompiler sceneCompiler(Validator validator, SceneLimits limits) {
-        return new SceneCompiler(new SceneReader(validator), new SceneMapper(limits));
+        return new SceneCompiler(new SceneReader(validator), new SceneMapper(limits), MeshFiles.bundled());
     }
 
     @Bean

@@ -26,11 +26,12 @@ public record StudioProperties(Limits limits, Jobs jobs, @DefaultValue("2") int 
     /** Limits on one scene and one request. */
     public record Limits(@DefaultValue("4096") int maxWidth, @DefaultValue("4096") int maxHeight,
                          @DefaultValue("1024") int maxSamples, @DefaultValue("16") int maxDepth,
-                         @DefaultValue("10000") int maxObjects, @DefaultValue("100") int maxLights,
-                         @DefaultValue("2097152") long maxBodyBytes) {
+                         @DefaultValue("100000") int maxObjects, @DefaultValue("100") int maxLights,
+                         @DefaultValue("2000000") int maxTriangles, @DefaultValue("33554432") long maxBodyBytes) {
 
         public SceneLimits toSceneLimits() {
-            return new SceneLimits(maxWidth, maxHeight, maxSamples, maxDepth, maxObjects, maxLights, maxBodyBytes);
+            return new SceneLimits(maxWidth, maxHeight, maxSamples, maxDepth, maxObjects, maxLights, maxTriangles,
+                    maxBodyBytes);
         }
     }
 
@@ -48,7 +49,7 @@ public record StudioProperties(Limits limits, Jobs jobs, @DefaultValue("2") int 
         if (limits == null) {
             SceneLimits d = SceneLimits.DEFAULTS;
             limits = new Limits(d.maxWidth(), d.maxHeight(), d.maxSamples(), d.maxDepth(), d.maxObjects(),
-                    d.maxLights(), d.maxBodyBytes());
+                    d.maxLights(), d.maxTriangles(), d.maxBodyBytes());
         }
     }
 }

@@ -41,8 +41,8 @@ public final class ExampleSceneFiles {
         return name.substring(0, name.length() - ".json".length());
     }
 
-    /** A compiler with the default limits, as the CLI builds it. */
+    /** A compiler with the default limits, as the CLI builds it, reading meshes from the scenes folder. */
     public static SceneCompiler compiler() {
-        return SceneCompiler.standalone(VALIDATION);
+        return SceneCompiler.standalone(VALIDATION, MeshFiles.in(dir()));
     }
 }

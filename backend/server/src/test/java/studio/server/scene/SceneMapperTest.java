@@ -33,7 +33,7 @@ class SceneMapperTest {
     private static final SceneReader READER = new SceneReader(VALIDATION.getValidator());
 
     /** Small limits, so each can be crossed by a few characters of JSON. */
-    private static final SceneLimits SMALL = new SceneLimits(64, 48, 9, 3, 2, 1, 10_000);
+    private static final SceneLimits SMALL = new SceneLimits(64, 48, 9, 3, 2, 1, 100, 10_000);
 
     /** Render settings within {@link #SMALL}, for tests that cross another limit. */
     private static final String SMALL_RENDER = "'render':{'samples':1,'maxDepth':1},";

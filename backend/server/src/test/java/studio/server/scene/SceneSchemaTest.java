@@ -45,7 +45,8 @@ class SceneSchemaTest {
     void objectsMaterialsAndLightsAreDiscriminatedByType() {
         Map<String, Object> defs = (Map<String, Object>) SceneSchema.of(SceneLimits.DEFAULTS).get("$defs");
         assertEquals(List.of(Map.of("$ref", "#/$defs/SphereObject"), Map.of("$ref", "#/$defs/BoxObject"),
-                Map.of("$ref", "#/$defs/PlaneObject")), ((Map<String, Object>) defs.get("Object")).get("oneOf"));
+                Map.of("$ref", "#/$defs/PlaneObject"), Map.of("$ref", "#/$defs/MeshObject")),
+                ((Map<String, Object>) defs.get("Object")).get("oneOf"));
         assertEquals(6, ((List<?>) ((Map<String, Object>) defs.get("Material")).get("oneOf")).size());
         Map<String, Object> glass = (Map<String, Object>) defs.get("GlassMaterial");
         Map<String, Object> properties = (Map<String, Object>) glass.get("properties");
@@ -57,7 +58,7 @@ class SceneSchemaTest {
     @Test
     @SuppressWarnings("unchecked")
     void limitsAndRulesBecomeBounds() {
-        SceneLimits limits = new SceneLimits(640, 480, 64, 4, 50, 3, 1024);
+        SceneLimits limits = new SceneLimits(640, 480, 64, 4, 50, 3, 5000, 1024);
         Map<String, Object> schema = SceneSchema.of(limits);
         Map<String, Object> defs = (Map<String, Object>) schema.get("$defs");
         Map<String, Object> image = (Map<String, Object>) ((Map<String, Object>) defs.get("Image")).get("properties");
