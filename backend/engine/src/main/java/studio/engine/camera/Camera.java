@@ -14,7 +14,7 @@ public final class Camera {
     private static final double PARALLEL = 1e-9;
 
     private final Vec3 position;
-    private final double ux, uy, uz, vx, vy, vz, wx, wy, wz;
+    private final double px, py, pz, ux, uy, uz, vx, vy, vz, wx, wy, wz;
     private final double tanHalfFov;
 
     public Camera(Vec3 position, Vec3 lookAt, Vec3 up, double fovDegrees) {
@@ -41,6 +41,7 @@ public final class Camera {
         Vec3 u = side.normalized();
         Vec3 v = w.cross(u);
         this.position = position;
+        px = position.x(); py = position.y(); pz = position.z();
         ux = u.x(); uy = u.y(); uz = u.z();
         vx = v.x(); vy = v.y(); vz = v.z();
         wx = w.x(); wy = w.y(); wz = w.z();
@@ -53,10 +54,15 @@ public final class Camera {
      * {@code aspect} is width / height. The direction has unit length.
      */
     public Ray ray(double ndcX, double ndcY, double aspect) {
+        return ray(ndcX, ndcY, aspect, new Ray());
+    }
+
+    /** {@link #ray(double, double, double)} into {@code out} (the hot loop reuses one); returns out. */
+    public Ray ray(double ndcX, double ndcY, double aspect, Ray out) {
         double x = ndcX * tanHalfFov * aspect, y = ndcY * tanHalfFov;
         double dx = x * ux + y * vx - wx, dy = x * uy + y * vy - wy, dz = x * uz + y * vz - wz;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        return new Ray(position.x(), position.y(), position.z(), dx / len, dy / len, dz / len);
+        return out.set(px, py, pz, dx / len, dy / len, dz / len);
     }
 
     public Vec3 position() {

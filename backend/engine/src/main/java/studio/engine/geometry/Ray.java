@@ -2,15 +2,29 @@ package studio.engine.geometry;
 
 import studio.engine.math.Vec3;
 
-/** A ray o + t*d. The direction need not be unit length; intersection tests accept any non-zero d. */
+/**
+ * A ray o + t*d. The direction need not be unit length; intersection tests accept any non-zero d.
+ * Mutable so that the hot loop can reuse one per thread and recursion depth ({@link #set}); shapes
+ * only read it.
+ */
 public final class Ray {
 
-    public final double ox, oy, oz;
-    public final double dx, dy, dz;
+    public double ox, oy, oz;
+    public double dx, dy, dz;
 
     public Ray(double ox, double oy, double oz, double dx, double dy, double dz) {
+        set(ox, oy, oz, dx, dy, dz);
+    }
+
+    /** A ray to be filled by {@link #set}. */
+    public Ray() {
+    }
+
+    /** Makes this the ray o + t*d; returns this. */
+    public Ray set(double ox, double oy, double oz, double dx, double dy, double dz) {
         this.ox = ox; this.oy = oy; this.oz = oz;
         this.dx = dx; this.dy = dy; this.dz = dz;
+        return this;
     }
 
     public Ray(Vec3 origin, Vec3 direction) {

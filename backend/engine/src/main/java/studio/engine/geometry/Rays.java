@@ -13,6 +13,16 @@ public final class Rays {
 
     /** A ray leaving the hit point in direction (dx, dy, dz). */
     public static Ray spawn(Hit hit, double dx, double dy, double dz) {
+        return spawn(hit, dx, dy, dz, new Ray());
+    }
+
+    /** A unit-direction ray from the hit point towards a target point (shadow rays). */
+    public static Ray spawnTowards(Hit hit, double tx, double ty, double tz) {
+        return spawnTowards(hit, tx, ty, tz, new Ray());
+    }
+
+    /** {@link #spawn(Hit, double, double, double)} into {@code out} (the hot loop reuses its rays); returns out. */
+    public static Ray spawn(Hit hit, double dx, double dy, double dz, Ray out) {
         double offset = Math.abs(hit.nx) * hit.ex + Math.abs(hit.ny) * hit.ey + Math.abs(hit.nz) * hit.ez;
         if (hit.nx * dx + hit.ny * dy + hit.nz * dz < 0) {
             offset = -offset;
@@ -20,14 +30,14 @@ public final class Rays {
         double ox = step(hit.px, offset * hit.nx);
         double oy = step(hit.py, offset * hit.ny);
         double oz = step(hit.pz, offset * hit.nz);
-        return new Ray(ox, oy, oz, dx, dy, dz);
+        return out.set(ox, oy, oz, dx, dy, dz);
     }
 
-    /** A unit-direction ray from the hit point towards a target point (shadow rays). */
-    public static Ray spawnTowards(Hit hit, double tx, double ty, double tz) {
+    /** {@link #spawnTowards(Hit, double, double, double)} into {@code out}; returns out. */
+    public static Ray spawnTowards(Hit hit, double tx, double ty, double tz, Ray out) {
         double dx = tx - hit.px, dy = ty - hit.py, dz = tz - hit.pz;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        return spawn(hit, dx / len, dy / len, dz / len);
+        return spawn(hit, dx / len, dy / len, dz / len, out);
     }
 
     private static double step(double p, double delta) {

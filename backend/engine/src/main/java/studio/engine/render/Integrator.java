@@ -1,5 +1,7 @@
 package studio.engine.render;
 
+import java.util.List;
+
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Rays;
@@ -8,6 +10,7 @@ import studio.engine.material.Fresnel;
 import studio.engine.material.Material;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
+import studio.engine.math.Vec3;
 import studio.engine.scene.Scene;
 
 /**
@@ -21,7 +24,8 @@ import studio.engine.scene.Scene;
  * traces from the eye cannot find the bent path to a point light, and a black shadow under clear
  * glass looks more wrong than a light one.
  *
- * <p>One instance per worker thread: it owns its hit records and counts its rays.
+ * <p>One instance per worker thread: it owns its hit records, rays and radiance slots (one of each
+ * per recursion depth, so tracing allocates nothing) and counts its rays.
  */
 final class Integrator {
 
@@ -33,8 +37,14 @@ final class Integrator {
     private final Scene scene;
     private final int maxDepth;
     private final double minPathWeight;
+    /** Per recursion depth: the hit, the ray a surface at that depth spawns, and the radiance found. */
     private final Hit[] hits;
+    private final Ray[] childRays;
+    private final double[] radiance;
     private final Hit shadowHit = new Hit();
+    private final Ray shadowRay = new Ray();
+    /** The direct light found by {@link #direct}, and the transmittance by {@link #shadowTransmittance}. */
+    private double directR, directG, directB, throughR, throughG, throughB;
     long rays;
 
     Integrator(Scene scene, int maxDepth, double minPathWeight) {
@@ -42,21 +52,49 @@ final class Integrator {
         this.maxDepth = maxDepth;
         this.minPathWeight = minPathWeight;
         this.hits = new Hit[maxDepth + 1];
+        this.childRays = new Ray[maxDepth + 1];
         for (int i = 0; i < hits.length; i++) {
             hits[i] = new Hit();
+            childRays[i] = new Ray();
         }
+        this.radiance = new double[3 * (maxDepth + 2)];
     }
 
-    /** Radiance arriving along the ray; {@code weight} is the path's throughput so far (1 for a camera ray). */
-    Rgb trace(Ray ray, int depth, double weight) {
+    /** Radiance arriving along a camera ray, as a colour (a convenience that allocates; the render loop uses {@link #trace}). */
+    Rgb radiance(Ray ray) {
+        trace(ray, 0, 1.0);
+        return new Rgb(r(), g(), b());
+    }
+
+    /** The red, green and blue radiance found by the last {@link #trace} at depth 0. */
+    double r() {
+        return radiance[0];
+    }
+
+    double g() {
+        return radiance[1];
+    }
+
+    double b() {
+        return radiance[2];
+    }
+
+    /**
+     * Radiance arriving along the ray, into radiance[3 depth ..]; {@code weight} is the path's
+     * throughput so far (1 for a camera ray). Allocates nothing: rays and hits are reused per depth.
+     */
+    void trace(Ray ray, int depth, double weight) {
         rays++;
+        int out = 3 * depth;
         Hit hit = hits[depth];
         if (!scene.intersect(ray, Double.POSITIVE_INFINITY, hit)) {
-            return scene.background();
+            set(out, scene.background());
+            return;
         }
         Material m = scene.material(hit.primitive);
         if (m.kind() == MaterialKind.FLAT) {
-            return m.color();
+            set(out, m.color());
+            return;
         }
         double dLen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
         double dx = ray.dx / dLen, dy = ray.dy / dLen, dz = ray.dz / dLen;
@@ -65,41 +103,61 @@ final class Integrator {
         // The shading normal faces the viewer.
         double sx = front ? hit.nx : -hit.nx, sy = front ? hit.ny : -hit.ny, sz = front ? hit.nz : -hit.nz;
 
-        Rgb result = direct(m, hit, sx, sy, sz, -dx, -dy, -dz, front);
-        if (depth >= maxDepth) {
-            return result;
-        }
-        double cosView = -(sx * dx + sy * dy + sz * dz);
-        if (m.kind() == MaterialKind.GLASS) {
-            return result.plus(glass(m, hit, dx, dy, dz, front, depth, weight));
-        }
-        if (m.reflectivity() > 0) {
-            Rgb tint = m.color().times(m.reflectivity());
-            double w = weight * tint.max();
-            if (w > minPathWeight) {
-                double rx = dx + 2 * cosView * sx, ry = dy + 2 * cosView * sy, rz = dz + 2 * cosView * sz;
-                result = result.plus(tint.times(trace(Rays.spawn(hit, rx, ry, rz), depth + 1, w)));
+        direct(m, hit, sx, sy, sz, -dx, -dy, -dz, front);
+        double r = directR, g = directG, b = directB;
+        if (depth < maxDepth) {
+            double cosView = -(sx * dx + sy * dy + sz * dz);
+            if (m.kind() == MaterialKind.GLASS) {
+                glass(m, hit, dx, dy, dz, front, depth, weight);
+                int child = out + 3;
+                r += radiance[child];
+                g += radiance[child + 1];
+                b += radiance[child + 2];
+            } else if (m.reflectivity() > 0) {
+                Rgb color = m.color();
+                double k = m.reflectivity();
+                double w = weight * color.max() * k;
+                if (w > minPathWeight) {
+                    double rx = dx + 2 * cosView * sx, ry = dy + 2 * cosView * sy, rz = dz + 2 * cosView * sz;
+                    trace(Rays.spawn(hit, rx, ry, rz, childRays[depth]), depth + 1, w);
+                    int child = out + 3;
+                    r += color.r() * k * radiance[child];
+                    g += color.g() * k * radiance[child + 1];
+                    b += color.b() * k * radiance[child + 2];
+                }
             }
         }
-        return result;
+        radiance[out] = r;
+        radiance[out + 1] = g;
+        radiance[out + 2] = b;
     }
 
-    /** Ambient, diffuse and highlight from every light the point sees. */
-    private Rgb direct(Material m, Hit hit, double nx, double ny, double nz, double vx, double vy, double vz,
-                       boolean front) {
+    private void set(int out, Rgb c) {
+        radiance[out] = c.r();
+        radiance[out + 1] = c.g();
+        radiance[out + 2] = c.b();
+    }
+
+    /** Ambient, diffuse and highlight from every light the point sees, into directR/G/B. */
+    private void direct(Material m, Hit hit, double nx, double ny, double nz, double vx, double vy, double vz,
+                        boolean front) {
         double kd = m.diffuse(), ks = m.specular();
         if (m.kind() == MaterialKind.GLASS && !front) {
             ks = 0;
         }
         if (kd == 0 && ks == 0) {
-            return Rgb.BLACK;
+            directR = directG = directB = 0;
+            return;
         }
-        Rgb albedo = m.color().times(kd);
-        double r = albedo.r() * scene.ambient(), g = albedo.g() * scene.ambient(), b = albedo.b() * scene.ambient();
-        Rgb specTint = m.specularTint().times(ks);
-        for (PointLight light : scene.lights()) {
-            double lx = light.position().x() - hit.px, ly = light.position().y() - hit.py,
-                    lz = light.position().z() - hit.pz;
+        Rgb color = m.color(), specular = m.specularTint();
+        double ar = color.r() * kd, ag = color.g() * kd, ab = color.b() * kd;
+        double sr = specular.r() * ks, sg = specular.g() * ks, sb = specular.b() * ks;
+        double r = ar * scene.ambient(), g = ag * scene.ambient(), b = ab * scene.ambient();
+        List<PointLight> lights = scene.lights();
+        for (int i = 0; i < lights.size(); i++) {
+            PointLight light = lights.get(i);
+            Vec3 at = light.position();
+            double lx = at.x() - hit.px, ly = at.y() - hit.py, lz = at.z() - hit.pz;
             double dist = Math.sqrt(lx * lx + ly * ly + lz * lz);
             double pLen = Math.abs(hit.px) + Math.abs(hit.py) + Math.abs(hit.pz);
             if (!(dist > 1e-12 * (1 + pLen))) {
@@ -110,19 +168,24 @@ final class Integrator {
             if (cos <= 0) {
                 continue;
             }
-            Rgb e = light.power();
-            if (light.falloff()) {
-                e = e.times(1 / (dist * dist));
-            }
-            Rgb through = shadowTransmittance(hit, light);
-            if (through.isBlack()) {
+            if (!shadowTransmittance(hit, at)) {
                 continue;
             }
-            e = e.times(through);
+            Rgb lc = light.color();
+            double er = lc.r() * light.intensity(), eg = lc.g() * light.intensity(), eb = lc.b() * light.intensity();
+            if (light.falloff()) {
+                double inverseSquare = 1 / (dist * dist);
+                er *= inverseSquare;
+                eg *= inverseSquare;
+                eb *= inverseSquare;
+            }
+            er *= throughR;
+            eg *= throughG;
+            eb *= throughB;
             if (kd > 0) {
-                r += albedo.r() * e.r() * cos;
-                g += albedo.g() * e.g() * cos;
-                b += albedo.b() * e.b() * cos;
+                r += ar * er * cos;
+                g += ag * eg * cos;
+                b += ab * eb * cos;
             }
             if (ks > 0) {
                 double hx = lx + vx, hy = ly + vy, hz = lz + vz;
@@ -130,32 +193,41 @@ final class Integrator {
                 double cosH = hLen > 0 ? (nx * hx + ny * hy + nz * hz) / hLen : 0;
                 if (cosH > 0) {
                     double s = Math.pow(cosH, m.shininess());
-                    r += specTint.r() * e.r() * s;
-                    g += specTint.g() * e.g() * s;
-                    b += specTint.b() * e.b() * s;
+                    r += sr * er * s;
+                    g += sg * eg * s;
+                    b += sb * eb * s;
                 }
             }
         }
-        return new Rgb(r, g, b);
+        directR = r;
+        directG = g;
+        directB = b;
     }
 
-    /** What fraction of a light reaches the hit point: 0 behind anything opaque, less through glass. */
-    private Rgb shadowTransmittance(Hit from, PointLight light) {
-        double tx = light.position().x(), ty = light.position().y(), tz = light.position().z();
-        Ray ray = Rays.spawnTowards(from, tx, ty, tz);
+    /**
+     * What fraction of a light reaches the hit point, into throughR/G/B: 0 behind anything opaque,
+     * less through glass. Returns false when nothing arrives.
+     */
+    private boolean shadowTransmittance(Hit from, Vec3 light) {
+        double tx = light.x(), ty = light.y(), tz = light.z();
+        Ray ray = Rays.spawnTowards(from, tx, ty, tz, shadowRay);
         double dist = distance(ray, tx, ty, tz);
         rays++;
+        throughR = throughG = throughB = 1;
         if (!scene.hasGlass()) {
-            return scene.occluded(ray, dist * SHADOW_END) ? Rgb.BLACK : Rgb.WHITE;
+            return !scene.occluded(ray, dist * SHADOW_END);
         }
         double r = 1, g = 1, b = 1;
         for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {
             if (!scene.intersect(ray, dist * SHADOW_END, shadowHit)) {
-                return new Rgb(r, g, b);
+                throughR = r;
+                throughG = g;
+                throughB = b;
+                return true;
             }
             Material m = scene.material(shadowHit.primitive);
             if (m.kind() != MaterialKind.GLASS) {
-                return Rgb.BLACK;
+                return false;
             }
             double cos = shadowHit.nx * ray.dx + shadowHit.ny * ray.dy + shadowHit.nz * ray.dz;
             boolean entering = cos < 0;
@@ -170,13 +242,13 @@ final class Integrator {
                 b *= m.color().b();
             }
             if (Math.max(r, Math.max(g, b)) <= minPathWeight) {
-                return Rgb.BLACK;
+                return false;
             }
-            ray = Rays.spawnTowards(shadowHit, tx, ty, tz);
+            ray = Rays.spawnTowards(shadowHit, tx, ty, tz, shadowRay);
             dist = distance(ray, tx, ty, tz);
             rays++;
         }
-        return Rgb.BLACK;
+        return false;
     }
 
     private static double distance(Ray ray, double tx, double ty, double tz) {
@@ -184,8 +256,8 @@ final class Integrator {
         return Math.sqrt(x * x + y * y + z * z);
     }
 
-    /** Fresnel-weighted reflection plus refraction (or total internal reflection). */
-    private Rgb glass(Material m, Hit hit, double dx, double dy, double dz, boolean front, int depth, double weight) {
+    /** Fresnel-weighted reflection plus refraction (or total internal reflection), into radiance[3 (depth + 1) ..]. */
+    private void glass(Material m, Hit hit, double dx, double dy, double dz, boolean front, int depth, double weight) {
         // n points against the incoming ray, into the medium the ray comes from.
         double nx = front ? hit.nx : -hit.nx, ny = front ? hit.ny : -hit.ny, nz = front ? hit.nz : -hit.nz;
         double etaI = front ? 1 : m.ior(), etaT = front ? m.ior() : 1;
@@ -194,11 +266,15 @@ final class Integrator {
         double k = 1 - eta * eta * (1 - cosI * cosI);
         double reflectance = k <= 0 ? 1 : Fresnel.reflectance(cosI, etaI, etaT);
 
-        Rgb result = Rgb.BLACK;
+        int child = 3 * (depth + 1);
+        double r = 0, g = 0, b = 0;
         double wr = weight * reflectance;
         if (wr > minPathWeight) {
             double rx = dx + 2 * cosI * nx, ry = dy + 2 * cosI * ny, rz = dz + 2 * cosI * nz;
-            result = trace(Rays.spawn(hit, rx, ry, rz), depth + 1, wr).times(reflectance);
+            trace(Rays.spawn(hit, rx, ry, rz, childRays[depth]), depth + 1, wr);
+            r = radiance[child] * reflectance;
+            g = radiance[child + 1] * reflectance;
+            b = radiance[child + 2] * reflectance;
         }
         if (k > 0) {
             Rgb tint = front ? m.color() : Rgb.WHITE;
@@ -207,10 +283,14 @@ final class Integrator {
             if (wt > minPathWeight) {
                 double c = eta * cosI - Math.sqrt(k);
                 double tx = eta * dx + c * nx, ty = eta * dy + c * ny, tz = eta * dz + c * nz;
-                Rgb through = trace(Rays.spawn(hit, tx, ty, tz), depth + 1, wt);
-                result = result.plus(through.times(tint).times(transmittance));
+                trace(Rays.spawn(hit, tx, ty, tz, childRays[depth]), depth + 1, wt);
+                r += radiance[child] * tint.r() * transmittance;
+                g += radiance[child + 1] * tint.g() * transmittance;
+                b += radiance[child + 2] * tint.b() * transmittance;
             }
         }
-        return result;
+        radiance[child] = r;
+        radiance[child + 1] = g;
+        radiance[child + 2] = b;
     }
 }

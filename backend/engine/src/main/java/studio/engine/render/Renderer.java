@@ -11,7 +11,6 @@ import java.util.function.BooleanSupplier;
 
 import studio.engine.camera.Camera;
 import studio.engine.geometry.Ray;
-import studio.engine.math.Rgb;
 import studio.engine.sampler.PixelRandom;
 import studio.engine.sampler.Sampler;
 import studio.engine.sampler.SobolSampler;
@@ -179,6 +178,7 @@ public final class Renderer {
         /** Adaptive sampling walks one Sobol sequence per pixel (see progressiveTile). */
         final boolean progressive;
         final SobolSampler.Sequence sequence = new SobolSampler.Sequence();
+        final Ray cameraRay = new Ray();
         /** Progressive adaptive sampling: each base pixel's mean and per-channel range, over a tile and its ring. */
         final double[] baseMean = new double[3 * RING_TILE * RING_TILE];
         final double[] baseMin = new double[3 * RING_TILE * RING_TILE], baseMax = new double[3 * RING_TILE * RING_TILE];
@@ -407,20 +407,21 @@ public final class Renderer {
             for (int s = first; s < first + count; s++) {
                 double ndcX = 2 * (x + xs[s]) / width - 1;
                 double ndcY = 1 - 2 * (y + ys[s]) / height;
-                Ray ray = camera.ray(ndcX, ndcY, aspect);
+                Ray ray = camera.ray(ndcX, ndcY, aspect, cameraRay);
                 // Each sample starts with throughput 1: culling by the sample's share of the pixel
                 // (1/N) would drop every weak reflection at high sample counts, a bias, not noise.
-                Rgb c = integrator.trace(ray, 0, 1.0);
-                if (Double.isFinite(c.r()) && Double.isFinite(c.g()) && Double.isFinite(c.b())) {
-                    r += c.r();
-                    g += c.g();
-                    b += c.b();
-                    minR = Math.min(minR, c.r());
-                    minG = Math.min(minG, c.g());
-                    minB = Math.min(minB, c.b());
-                    maxR = Math.max(maxR, c.r());
-                    maxG = Math.max(maxG, c.g());
-                    maxB = Math.max(maxB, c.b());
+                integrator.trace(ray, 0, 1.0);
+                double cr = integrator.r(), cg = integrator.g(), cb = integrator.b();
+                if (Double.isFinite(cr) && Double.isFinite(cg) && Double.isFinite(cb)) {
+                    r += cr;
+                    g += cg;
+                    b += cb;
+                    minR = Math.min(minR, cr);
+                    minG = Math.min(minG, cg);
+                    minB = Math.min(minB, cb);
+                    maxR = Math.max(maxR, cr);
+                    maxG = Math.max(maxG, cg);
+                    maxB = Math.max(maxB, cb);
                 } else {
                     bad++;
                 }

@@ -134,6 +134,6 @@ class GlassOpticsTest {
     private static Rgb trace(List<SceneObject> objects, Ray ray) {
         Scene scene = new Scene(new Camera(new Vec3(0, 1, 5), Vec3.ZERO, UP, 45), objects,
                 List.<PointLight>of(), Rgb.BLACK, 0.1);
-        return new Integrator(scene, 3, 0).trace(ray, 0, 1);
+        return new Integrator(scene, 3, 0).radiance(ray);
     }
 }

@@ -254,7 +254,7 @@ class ShadingTest {
     private static Rgb trace(List<SceneObject> objects, List<PointLight> lights, Ray ray, int maxDepth) {
         Camera camera = new Camera(new Vec3(0, 1, 5), Vec3.ZERO, UP, 45);
         Scene scene = new Scene(camera, objects, lights, BACKGROUND, AMBIENT);
-        return new Integrator(scene, maxDepth, 0).trace(ray, 0, 1);
+        return new Integrator(scene, maxDepth, 0).radiance(ray);
     }
 
     private static SceneObject object(Shape shape, Material material) {

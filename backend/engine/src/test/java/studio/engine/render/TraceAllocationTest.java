@@ -1,0 +1,93 @@
+package studio.engine.render;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.lang.management.ManagementFactory;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+import studio.engine.camera.Camera;
+import studio.engine.geometry.Box;
+import studio.engine.geometry.Plane;
+import studio.engine.geometry.Ray;
+import studio.engine.geometry.Sphere;
+import studio.engine.light.PointLight;
+import studio.engine.material.MaterialDefaults;
+import studio.engine.material.MaterialKind;
+import studio.engine.math.Rgb;
+import studio.engine.math.Vec3;
+import studio.engine.scene.Scene;
+import studio.engine.scene.SceneObject;
+
+/**
+ * Allocation guard for the whole hot loop: camera ray, intersection, shading with shadow rays through
+ * glass, mirror and glass recursion. 10^5 camera samples after warm-up allocate (almost) nothing:
+ * rays, hits and radiance live in per-thread, per-depth slots. (Before this guard, each sample
+ * allocated a ray per bounce and shadow ray and a colour per shading step.)
+ */
+class TraceAllocationTest {
+
+    private static final int SAMPLES = 100_000;
+    /** Slack for the measuring itself. */
+    private static final long MAX_BYTES = 4096;
+
+    /** Every material, glass and mirror facing each other, two lights (one with fall-off), 40 objects (a BVH). */
+    private static Scene scene() {
+        Random random = new Random(3);
+        List<SceneObject> objects = new ArrayList<>();
+        objects.add(new SceneObject(new Plane(Vec3.ZERO, new Vec3(0, 1, 0)),
+                MaterialDefaults.of(MaterialKind.CHALK, new Rgb(0.7, 0.7, 0.7))));
+        MaterialKind[] kinds = MaterialKind.values();
+        for (int i = 0; i < 40; i++) {
+            Vec3 c = new Vec3(random.nextDouble() * 8 - 4, random.nextDouble() * 2 + 0.3, random.nextDouble() * 8 - 4);
+            MaterialKind kind = kinds[i % kinds.length];
+            objects.add(new SceneObject(i % 2 == 0 ? new Sphere(c, 0.3 + random.nextDouble() * 0.4)
+                    : new Box(c, new Vec3(0.6, 0.5, 0.4), new Vec3(10 * i, 20, 5)),
+                    MaterialDefaults.of(kind, new Rgb(0.9, 0.6, 0.3))));
+        }
+        return new Scene(new Camera(new Vec3(0, 3, 9), new Vec3(0, 1, 0), new Vec3(0, 1, 0), 50), objects,
+                List.of(new PointLight(new Vec3(3, 6, 2), Rgb.WHITE, 1, false),
+                        new PointLight(new Vec3(-4, 3, 4), new Rgb(0.3, 0.4, 1), 30, true)),
+                new Rgb(0.2, 0.3, 0.5), 0.1);
+    }
+
+    @Test
+    void tracingCameraSamplesAllocatesNothing() {
+        Scene scene = scene();
+        Integrator integrator = new Integrator(scene, 8, RenderSettings.DEFAULT_MIN_PATH_WEIGHT);
+        Ray ray = new Ray();
+        double[] sink = new double[1];
+        Random random = new Random(5);
+        double[] xs = new double[SAMPLES], ys = new double[SAMPLES];
+        for (int i = 0; i < SAMPLES; i++) {
+            xs[i] = random.nextDouble() * 2 - 1;
+            ys[i] = random.nextDouble() * 2 - 1;
+        }
+        traceAll(scene, integrator, ray, xs, ys, sink); // warm-up: lets the JIT compile the loop
+        traceAll(scene, integrator, ray, xs, ys, sink);
+
+        com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long thread = Thread.currentThread().getId();
+        long before = threads.getThreadAllocatedBytes(thread);
+        long rays = integrator.rays;
+        traceAll(scene, integrator, ray, xs, ys, sink);
+        long bytes = threads.getThreadAllocatedBytes(thread) - before;
+        rays = integrator.rays - rays;
+
+        assertTrue(rays > 2L * SAMPLES, "the scene should make secondary and shadow rays: " + rays);
+        assertTrue(bytes < MAX_BYTES, "allocated " + bytes + " bytes for " + SAMPLES + " samples (" + rays + " rays)");
+        assertTrue(Double.isFinite(sink[0]));
+    }
+
+    private static void traceAll(Scene scene, Integrator integrator, Ray ray, double[] xs, double[] ys, double[] sink) {
+        double sum = 0;
+        for (int i = 0; i < xs.length; i++) {
+            integrator.trace(scene.camera().ray(xs[i], ys[i], 4.0 / 3, ray), 0, 1.0);
+            sum += integrator.r() + integrator.g() + integrator.b();
+        }
+        sink[0] += sum;
+    }
+}
