@@ -22,8 +22,47 @@ public final class Srgb {
         return linear <= 0.0031308 ? 12.92 * linear : 1.055 * Math.pow(linear, 1 / 2.4) - 0.055;
     }
 
-    /** Linear light to an 8-bit sRGB code value. */
+    /** Linear light to an 8-bit sRGB code value: exactly {@code round(fromLinear(linear) * 255)}, by table. */
     public static int toByte(double linear) {
+        if (!(linear > 0)) {
+            return 0;
+        }
+        // binary search: the number of code boundaries at or below the value
+        int lo = 0, hi = 255;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (linear >= BOUNDARY[mid]) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
+    }
+
+    /** The code value by the formula (pow per call); {@link #toByte} is the same, faster. */
+    static int toByteByFormula(double linear) {
         return (int) Math.round(fromLinear(linear) * 255);
+    }
+
+    /**
+     * BOUNDARY[c] is the smallest double whose code is at least c + 1 (the formula is monotone:
+     * Math.pow is semi-monotonic), found once by bisection over the ordered bit patterns.
+     */
+    private static final double[] BOUNDARY = new double[255];
+
+    static {
+        for (int c = 1; c <= 255; c++) {
+            long lo = 0, hi = Double.doubleToRawLongBits(1.0); // code(lo) < c <= code(hi)
+            while (hi - lo > 1) {
+                long mid = (lo + hi) >>> 1;
+                if (toByteByFormula(Double.longBitsToDouble(mid)) >= c) {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            BOUNDARY[c - 1] = Double.longBitsToDouble(hi);
+        }
     }
 }
