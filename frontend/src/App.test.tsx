@@ -4,6 +4,7 @@ import { beforeEach, describe, expect, it, vi } from 'vitest';
 import type { FetchFn } from './api/client';
 import { App } from './App';
 import { STARTER_SCENE } from './model/starterScene';
+import { gridObj } from './test/meshes';
 import { useSceneStore } from './store/sceneStore';
 
 const store = () => useSceneStore.getState();
@@ -194,5 +195,50 @@ describe('App', () => {
     await user.click(within(list).getByRole('button', { name: 'objects[1].radius' }));
     expect(store().selection).toEqual({ kind: 'object', index: 1 });
     expect(screen.getByLabelText('Radius')).toHaveAccessibleDescription('must be greater than 0');
+  });
+
+  it('adds a mesh from an OBJ file: inline at the origin, about 2 m across, selected, one undo step', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    expect(screen.getByRole('button', { name: 'Add mesh' })).toBeInTheDocument();
+    await user.upload(screen.getByTestId('add-mesh'), new File(['v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4\n'], 'bad.obj'));
+    expect(await screen.findByRole('alert')).toHaveTextContent('Cannot add bad.obj: it is not a usable OBJ mesh (line 4: index 4 out of range (3 vertices so far))');
+    const obj = gridObj(10, 0.5); // 0.5 m square: scaled by 4
+    await user.upload(screen.getByTestId('add-mesh'), new File([obj], 'grid.obj'));
+    const index = STARTER_SCENE.objects.length;
+    await waitFor(() => expect(store().scene.objects[index]).toEqual({ type: 'mesh', obj, position: [0, 0, 0], scale: 4, rotation: [0, 0, 0], material: { type: 'plastic', color: '#4f8fd6' } }));
+    expect(screen.queryByRole('alert')).toBeNull();
+    expect(store().selection).toEqual({ kind: 'object', index });
+    expect(store().past).toHaveLength(1);
+    expect(screen.getByRole('heading', { name: `Mesh ${index + 1}` })).toBeInTheDocument();
+    expect(screen.getByTestId('mesh-source')).toHaveTextContent('inline OBJ, 200 triangles');
+    expect(within(screen.getByTestId('side-view')).getByTestId(`object-${index}`)).toHaveAttribute('data-selected', 'true');
+    await user.click(screen.getByRole('button', { name: 'Undo' }));
+    expect(store().scene).toEqual(STARTER_SCENE);
+  });
+
+  it('loads an example’s mesh file from the server once, and explains one it does not have', async () => {
+    const user = userEvent.setup();
+    const meshScene = {
+      name: 'mesh',
+      objects: [
+        { type: 'mesh', file: 'meshes/torus-knot.obj', scale: 0.5 },
+        { type: 'mesh', file: 'meshes/missing.obj' },
+      ],
+    };
+    const fetchFn = mockServer({
+      'GET /api/scenes/mesh': () => Response.json(meshScene),
+      'GET /api/meshes?file=meshes%2Ftorus-knot.obj': () => new Response(gridObj(40, 1, 60), { headers: { 'Content-Type': 'text/plain' } }),
+      'GET /api/meshes?file=meshes%2Fmissing.obj': () =>
+        Response.json({ status: 404, title: 'Not Found', detail: "no mesh 'meshes/missing.obj' ships with this server" }, { status: 404, headers: { 'Content-Type': 'application/problem+json' } }),
+    });
+    await renderApp(fetchFn);
+    act(() => store().loadScene(meshScene as never));
+    const outline = screen.getByRole('navigation', { name: 'Scene contents' });
+    expect(await within(outline).findByRole('button', { name: /Mesh 1 \(4,800 triangles\)/ })).toBeInTheDocument();
+    await user.click(await within(outline).findByRole('button', { name: /Mesh 2 \(OBJ error\)/ }));
+    expect(screen.getByRole('alert')).toHaveTextContent("Cannot read the OBJ: meshes/missing.obj: Not Found: no mesh 'meshes/missing.obj' ships with this server");
+    act(() => store().moveObject(0, [1, 2, 3]));
+    expect(fetchFn.mock.calls.filter(([url]) => url.startsWith('/api/meshes'))).toHaveLength(2);
   });
 });

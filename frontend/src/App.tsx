@@ -7,6 +7,7 @@ import { ProblemList } from './components/ProblemList';
 import { RenderPanel } from './render/RenderPanel';
 import { Toolbar } from './components/Toolbar';
 import { useEditorShortcuts } from './hooks/useEditorShortcuts';
+import { useMeshFiles } from './hooks/useMeshes';
 import { useSceneStore } from './store/sceneStore';
 import { SideView } from './views/SideView';
 import { TopView } from './views/TopView';
@@ -32,6 +33,7 @@ export function App({ fetchFn }: AppProps) {
   const [tab, setTab] = useState<CentreTab>('preview');
   const scene = useSceneStore((s) => s.scene);
   useEditorShortcuts();
+  useMeshFiles(fetchFn);
 
   const tabButton = (id: CentreTab, label: string) => (
     <button type="button" role="tab" id={`tab-${id}`} aria-selected={tab === id} aria-controls={`panel-${id}`} onClick={() => setTab(id)}>

@@ -1,6 +1,7 @@
 import { describe, expect, it, vi } from 'vitest';
 import {
   ApiError,
+  fetchMeshFile,
   fetchScene,
   fetchSceneList,
   filenameFromDisposition,
@@ -159,5 +160,23 @@ describe('scene examples', () => {
     const error = await rejectionOf(fetchScene('nope', missing));
     expect(error.title).toBe('Not Found');
     expect(error.detail).toBe('No scene nope');
+  });
+});
+
+const OBJ = 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n';
+
+describe('fetchMeshFile', () => {
+  it('asks for the file by its encoded name and returns the OBJ text', async () => {
+    const fetchFn = vi.fn<FetchFn>(async () => new Response(OBJ, { headers: { 'Content-Type': 'text/plain' } }));
+    expect(await fetchMeshFile('meshes/torus knot.obj', fetchFn)).toBe(OBJ);
+    expect(fetchFn).toHaveBeenCalledWith('/api/meshes?file=meshes%2Ftorus%20knot.obj', expect.objectContaining({ headers: expect.objectContaining({ Accept: expect.stringContaining('text/plain') }) }));
+  });
+
+  it('turns a problem body into an ApiError', async () => {
+    const fetchFn = vi.fn<FetchFn>(async () =>
+      Response.json({ status: 404, title: 'Not Found', detail: 'no such mesh' }, { status: 404, headers: { 'Content-Type': 'application/problem+json' } }),
+    );
+    const error = await rejectionOf(fetchMeshFile('x.obj', fetchFn));
+    expect(error).toMatchObject({ status: 404, title: 'Not Found', detail: 'no such mesh' });
   });
 });

@@ -75,6 +75,17 @@ export async function fetchScene(name: string, fetchFn: FetchFn = defaultFetch):
   return response.json();
 }
 
+/**
+ * The OBJ text of a mesh that ships with the server's example scenes (`GET /api/meshes?file=…`);
+ * rejects with an ApiError (a problem body's detail when the server sent one, e.g. 404 for an
+ * unknown file).
+ */
+export async function fetchMeshFile(file: string, fetchFn: FetchFn = defaultFetch, signal?: AbortSignal): Promise<string> {
+  const url = `/api/meshes?file=${encodeURIComponent(file)}`;
+  const response = await send(fetchFn, url, { headers: { Accept: `text/plain, ${PROBLEM_JSON}` }, signal });
+  return response.text();
+}
+
 /** Renders a scene given as JSON text; resolves with the image or rejects with an ApiError. */
 export async function renderScene(
   sceneJson: string,

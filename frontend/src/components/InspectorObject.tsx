@@ -3,6 +3,7 @@ import * as edits from '../model/edits';
 import type { Material, Vec3 } from '../model/types';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { InspectorMaterial } from './InspectorMaterial';
+import { InspectorMesh } from './InspectorMesh';
 import { NumberField } from './fields/NumberField';
 import { VectorField } from './fields/VectorField';
 import { OBJECT_HINTS, objectName } from './labels';
@@ -62,6 +63,7 @@ export function InspectorObject({ index }: InspectorObjectProps) {
           {vector('rotation', 'Rotation', r.rotation, 'Degrees about x, y, z, applied in order XYZ (as three.js)', undefined, 5)}
         </>
       )}
+      {r.type === 'mesh' && <InspectorMesh index={index} mesh={r} />}
       {r.type === 'plane' && (
         <>
           {vector('point', 'Point', r.point, 'Any point on the plane (metres)')}

@@ -5,6 +5,7 @@ import { sceneFileName, sceneFileText } from '../model/files';
 import type { ObjectType } from '../model/types';
 import { describeErrors, validateScene } from '../model/validate';
 import { useSceneStore } from '../store/sceneStore';
+import { AddMeshButton } from './AddMeshButton';
 import { ExamplesMenu } from './ExamplesMenu';
 import { OpenSceneButton } from './OpenSceneButton';
 import { OBJECT_HINTS, OBJECT_LABELS } from './labels';
@@ -84,6 +85,7 @@ export function Toolbar({ fetchFn, onMessage }: ToolbarProps) {
             + {OBJECT_LABELS[kind]}
           </button>
         ))}
+        <AddMeshButton onMessage={onMessage} />
         <button type="button" data-testid="add-light" aria-label="Add light" title="Add a white point light" onClick={s.addLight}>
           + Light
         </button>

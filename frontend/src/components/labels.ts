@@ -1,12 +1,14 @@
 /** Display names and tooltips shared by the inspector, the outline, the toolbar and the views. */
+import type { MeshState } from '../model/meshCache';
 import type { MaterialType, ObjectType } from '../model/types';
 
-export const OBJECT_LABELS: Record<ObjectType, string> = { sphere: 'Sphere', box: 'Box', plane: 'Plane' };
+export const OBJECT_LABELS: Record<ObjectType, string> = { sphere: 'Sphere', box: 'Box', plane: 'Plane', mesh: 'Mesh' };
 
 export const OBJECT_HINTS: Record<ObjectType, string> = {
   sphere: 'A sphere: centre and radius',
   box: 'A box: centre, full edge lengths and rotation in degrees (x, y, z applied in order XYZ)',
   plane: 'An infinite plane through a point, facing its normal (e.g. a floor)',
+  mesh: 'A triangle mesh from a Wavefront OBJ file: position, uniform scale and rotation in degrees (x, y, z applied in order XYZ)',
 };
 
 export const MATERIAL_LABELS: Record<MaterialType, string> = {
@@ -39,4 +41,15 @@ export const OVERRIDE_FIELDS: Record<string, { label: string; min: number; max: 
 /** "Sphere 2 · mirror" style name of an object. */
 export function objectName(type: ObjectType, index: number): string {
   return `${OBJECT_LABELS[type]} ${index + 1}`;
+}
+
+/** "4,800 triangles", "1 triangle". */
+export function triangleCountLabel(count: number): string {
+  return `${count.toLocaleString('en-US')} ${count === 1 ? 'triangle' : 'triangles'}`;
+}
+
+/** A mesh's name with what is known of its triangles: "Mesh 3 (4,800 triangles)", "Mesh 3 (loading…)". */
+export function meshName(index: number, state: MeshState): string {
+  const detail = state.status === 'ready' ? triangleCountLabel(state.mesh.triangleCount) : state.status === 'loading' ? 'loading…' : 'OBJ error';
+  return `${objectName('mesh', index)} (${detail})`;
 }

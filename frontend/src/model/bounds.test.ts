@@ -1,7 +1,10 @@
 import { describe, expect, it } from 'vitest';
 import { fitViews, scenePoints } from './bounds';
 import { worldToSvg } from './projection';
+import { TETRAHEDRON_OBJ } from '../test/meshes';
+import { MeshCache } from './meshCache';
 import { STARTER_SCENE } from './starterScene';
+import type { Scene } from './types';
 
 describe('fitViews', () => {
   it('shows every point of the scene in both views, with the same zoom and x centre', () => {
@@ -25,5 +28,13 @@ describe('fitViews', () => {
     const xs = points.map((p) => p[0]);
     expect(Math.max(...xs)).toBe(7);
     expect(Math.min(...xs)).toBeCloseTo(-5 - Math.SQRT2);
+  });
+
+  it('includes the corners of a mesh’s bounds, or its position while its triangles are unknown', () => {
+    const scene: Scene = { lights: [], camera: { position: [0, 0, 1], lookAt: [0, 0, 0] }, objects: [{ type: 'mesh', obj: TETRAHEDRON_OBJ, position: [10, 0, 0], scale: 3 }] };
+    const cache = new MeshCache();
+    const xs = scenePoints(scene, (m) => cache.get(m)).map((p) => p[0]);
+    expect(Math.max(...xs)).toBe(13);
+    expect(Math.max(...scenePoints(scene).map((p) => p[0]))).toBe(10);
   });
 });

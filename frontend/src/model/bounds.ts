@@ -1,16 +1,28 @@
 /** What a plan view should show to see the whole scene, and the zoom that fits it. */
 import { resolveScene } from './defaults';
+import { NO_MESHES, type MeshLookup } from './meshCache';
+import { meshBounds } from './obj';
 import { VIEW_AXES, type Vec2, type ViewKind } from './projection';
 import { rotateXYZ } from './vec';
 import type { Scene, Vec3 } from './types';
 
-/** Points that outline the scene: sphere and box extremes, plane points, lights, camera and target. */
-export function scenePoints(scene: Scene): Vec3[] {
+/**
+ * Points that outline the scene: sphere and box extremes, plane points, the corners of meshes'
+ * bounds (or their positions while their triangles are not known), lights, camera and target.
+ */
+export function scenePoints(scene: Scene, meshes: MeshLookup = NO_MESHES): Vec3[] {
   const r = resolveScene(scene);
   const points: Vec3[] = [r.camera.position, r.camera.lookAt, ...r.lights.map((l) => l.position)];
   for (const o of r.objects) {
     if (o.type === 'plane') points.push(o.point);
-    else if (o.type === 'sphere') {
+    else if (o.type === 'mesh') {
+      const state = meshes(o);
+      if (state.status !== 'ready') points.push(o.position);
+      else {
+        const { min, max } = meshBounds(o, state.mesh);
+        for (const x of [min[0], max[0]]) for (const y of [min[1], max[1]]) for (const z of [min[2], max[2]]) points.push([x, y, z]);
+      }
+    } else if (o.type === 'sphere') {
       for (const s of [-1, 1]) for (let k = 0; k < 3; k++) {
         const p: Vec3 = [...o.center];
         p[k] += s * o.radius;

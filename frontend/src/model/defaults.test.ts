@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { exampleScenes } from '../test/scenes';
-import { blankScene, imageAspect, MATERIAL_DEFAULTS, newObject, resolveMaterial, resolveScene } from './defaults';
+import { blankScene, imageAspect, MATERIAL_DEFAULTS, newMesh, newObject, resolveMaterial, resolveScene, SAMPLE_MESH_OBJ } from './defaults';
+import { parseObj } from './obj';
 import { STARTER_SCENE } from './starterScene';
 import type { Scene } from './types';
 
@@ -55,5 +56,15 @@ describe('resolveScene', () => {
   it('starts from a copy of scenes/still-life.json', () => {
     const stillLife = exampleScenes().find(([f]) => f === 'still-life.json')?.[1];
     expect(STARTER_SCENE).toEqual(stillLife);
+  });
+
+  it('resolves a mesh: origin, scale 1, no rotation, its source kept as it is', () => {
+    const r = resolveScene({ objects: [{ type: 'mesh', file: 'meshes/torus-knot.obj' }, { type: 'mesh', obj: 'v 0 0 0\n', scale: 3 }] });
+    expect(r.objects[0]).toEqual({ type: 'mesh', file: 'meshes/torus-knot.obj', position: [0, 0, 0], scale: 1, rotation: [0, 0, 0], material: { type: 'chalk', color: '#cccccc', diffuse: 0.9 } });
+    expect(r.objects[1]).toMatchObject({ obj: 'v 0 0 0\n', scale: 3 });
+    expect(r.objects[1]).not.toHaveProperty('file');
+    expect(newObject('mesh')).toMatchObject({ type: 'mesh', obj: SAMPLE_MESH_OBJ, position: [0, 0, 0], scale: 1, rotation: [0, 0, 0] });
+    expect(parseObj(SAMPLE_MESH_OBJ).triangleCount).toBe(8);
+    expect(newMesh('v 0 0 0\n', 2.5)).toEqual({ type: 'mesh', obj: 'v 0 0 0\n', position: [0, 0, 0], scale: 2.5, rotation: [0, 0, 0], material: { type: 'plastic', color: '#4f8fd6' } });
   });
 });

@@ -6,6 +6,8 @@
 import type {
   Material,
   MaterialOf,
+  MeshObject,
+  MeshSourceField,
   MaterialType,
   ObjectOf,
   ObjectType,
@@ -41,12 +43,21 @@ export const LIGHT_DEFAULTS: ResolvedLight = {
   falloff: false,
 };
 
-/** The geometry defaults of each object kind. */
-export const OBJECT_DEFAULTS: { [T in ObjectType]: Required<Omit<ObjectOf<T>, 'material'>> } = {
+/** The geometry defaults of each object kind (a mesh's `obj` or `file` has none: one is required). */
+export const OBJECT_DEFAULTS: { [T in ObjectType]: Required<Omit<ObjectOf<T>, 'material' | MeshSourceField>> } = {
   sphere: { type: 'sphere', center: [0, 1, 0], radius: 1 },
   box: { type: 'box', center: [0, 0.5, 0], size: [1, 1, 1], rotation: [0, 0, 0] },
   plane: { type: 'plane', point: [0, 0, 0], normal: [0, 1, 0] },
+  mesh: { type: 'mesh', position: [0, 0, 0], scale: 1, rotation: [0, 0, 0] },
 };
+
+/** The OBJ of a mesh added without a file: a regular octahedron with its corners 1 m from its centre. */
+export const SAMPLE_MESH_OBJ = [
+  '# octahedron',
+  'v 1 0 0', 'v -1 0 0', 'v 0 1 0', 'v 0 -1 0', 'v 0 0 1', 'v 0 0 -1',
+  'f 1 3 5', 'f 2 5 3', 'f 1 5 4', 'f 1 6 3', 'f 2 4 5', 'f 2 3 6', 'f 1 4 6', 'f 2 6 4',
+  '',
+].join('\n');
 
 /** A missing material is grey chalk. */
 export const DEFAULT_MATERIAL_TYPE: MaterialType = 'chalk';
@@ -110,11 +121,18 @@ export function imageAspect(scene: Scene): number {
   return width / height;
 }
 
-/** A new object of a kind as the toolbar adds it: its defaults written out, grey chalk. */
+/** A new object of a kind as the toolbar adds it: its defaults written out (a mesh: the sample octahedron). */
 export function newObject(kind: ObjectType): SceneObject {
+  if (kind === 'mesh') return newMesh(SAMPLE_MESH_OBJ, 1);
   const object = cloneVectors({ ...OBJECT_DEFAULTS[kind] }) as SceneObject;
   const material: Material = kind === 'plane' ? { type: 'chalk', color: '#c8c0b0' } : { type: 'plastic', color: '#4f8fd6' };
   return { ...object, material };
+}
+
+/** A new mesh of inline OBJ text at the origin, with the given uniform scale. */
+export function newMesh(obj: string, scale: number): MeshObject {
+  const { position, rotation } = OBJECT_DEFAULTS.mesh;
+  return { type: 'mesh', obj, position: copy(position), scale, rotation: copy(rotation), material: { type: 'plastic', color: '#4f8fd6' } };
 }
 
 /** A new light, written out in full. */

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { changeMaterialType, duplicateObject, moveTarget, nudgeTarget, positionOf } from './edits';
+import { addMesh, changeMaterialType, duplicateObject, moveTarget, nudgeTarget, positionOf, setMeshObj } from './edits';
 import type { Scene } from './types';
 
 const SCENE: Scene = {
@@ -30,5 +30,17 @@ describe('edits', () => {
   it('changes a material kind keeping only what the new kind takes', () => {
     expect(changeMaterialType({ type: 'metal', color: '#111111', reflectivity: 0.2, shininess: 9, diffuse: 0.1 }, 'mirror')).toEqual({ type: 'mirror', color: '#111111', reflectivity: 0.2 });
     expect(changeMaterialType(undefined, 'glass')).toEqual({ type: 'glass' });
+  });
+
+  it('moves, duplicates and re-sources a mesh by its position, changing nothing else', () => {
+    const scene: Scene = { objects: [{ type: 'mesh', obj: 'v 0 0 0\n', scale: 2, rotation: [0, 30, 0], material: { type: 'mirror' } }] };
+    expect(positionOf(scene, { kind: 'object', index: 0 })).toEqual([0, 0, 0]);
+    const moved = moveTarget(scene, { kind: 'object', index: 0 }, [1, 2, 3]);
+    expect(moved.objects[0]).toEqual({ ...scene.objects[0], position: [1, 2, 3] });
+    expect(duplicateObject(moved, 0).objects[1]).toEqual({ ...moved.objects[0], position: [1.5, 2, 3.5] });
+    const fromFile: Scene = { objects: [{ type: 'mesh', file: 'meshes/a.obj', scale: 2 }] };
+    expect(setMeshObj(fromFile, 0, 'v 1 1 1\n').objects[0]).toEqual({ type: 'mesh', obj: 'v 1 1 1\n', scale: 2 });
+    expect(setMeshObj(SCENE, 0, 'v 1 1 1\n')).toBe(SCENE); // not a mesh
+    expect(addMesh(SCENE, 'v 0 0 0\n', 4).objects[3]).toMatchObject({ type: 'mesh', obj: 'v 0 0 0\n', scale: 4, position: [0, 0, 0] });
   });
 });

@@ -3,7 +3,8 @@
  * The store wraps each in a named action that pushes one history entry; drags use the same
  * functions for their transient preview.
  */
-import { newLight, newObject, resolveObject, sceneLights, SCENE_DEFAULTS } from './defaults';
+import { newLight, newMesh, newObject, resolveObject, sceneLights, SCENE_DEFAULTS } from './defaults';
+import { objectAnchor } from './projection';
 import type { DragTarget } from './selection';
 import {
   MATERIAL_FIELDS,
@@ -25,6 +26,20 @@ export const DUPLICATE_OFFSET: Vec3 = [0.5, 0, 0.5];
 
 export function addObject(scene: Scene, kind: ObjectType): Scene {
   return { ...scene, objects: [...scene.objects, newObject(kind)] };
+}
+
+/** Adds a mesh of inline OBJ text at the origin with the given uniform scale. */
+export function addMesh(scene: Scene, obj: string, scale: number): Scene {
+  return { ...scene, objects: [...scene.objects, newMesh(obj, scale)] };
+}
+
+/** Gives a mesh new inline OBJ text, dropping its `file` (a mesh has exactly one of the two). */
+export function setMeshObj(scene: Scene, index: number, obj: string): Scene {
+  const object = scene.objects[index];
+  if (object?.type !== 'mesh') return scene;
+  const { file: _file, ...rest } = object;
+  const objects = scene.objects.map((o, i) => (i === index ? { ...rest, obj } : o));
+  return { ...scene, objects };
 }
 
 export function addLight(scene: Scene): Scene {
@@ -50,11 +65,10 @@ export function duplicateObject(scene: Scene, index: number): Scene {
   if (copy.type === 'plane' && resolved.type === 'plane') {
     // A plane moved sideways is the same plane: move it half a metre along its normal.
     copy.point = add(resolved.point, scale(normalize(resolved.normal), 0.5));
-  } else if (copy.type !== 'plane' && resolved.type !== 'plane') {
-    copy.center = add(resolved.center, DUPLICATE_OFFSET);
   }
+  const moved = copy.type === 'plane' ? copy : ({ ...copy, [anchorField(copy.type)]: add(objectAnchor(resolved), DUPLICATE_OFFSET) } as SceneObject);
   const objects = [...scene.objects];
-  objects.splice(index + 1, 0, copy);
+  objects.splice(index + 1, 0, moved);
   return { ...scene, objects };
 }
 
@@ -76,11 +90,16 @@ export function setObjectField<K extends string>(scene: Scene, index: number, fi
   return { ...scene, objects };
 }
 
-/** Moves an object: a sphere's or box's centre, a plane's point. */
+/** The field that says where an object is: a sphere's or box's centre, a plane's point, a mesh's position. */
+export function anchorField(type: ObjectType): 'center' | 'point' | 'position' {
+  return type === 'plane' ? 'point' : type === 'mesh' ? 'position' : 'center';
+}
+
+/** Moves an object: a sphere's or box's centre, a plane's point, a mesh's position (nothing else changes). */
 export function moveObject(scene: Scene, index: number, to: Vec3): Scene {
   const object = scene.objects[index];
   if (!object) return scene;
-  return setObjectField(scene, index, object.type === 'plane' ? 'point' : 'center', [...to]);
+  return setObjectField(scene, index, anchorField(object.type), [...to]);
 }
 
 export function setMaterial(scene: Scene, index: number, material: Material): Scene {
@@ -125,8 +144,7 @@ export function positionOf(scene: Scene, target: DragTarget): Vec3 | null {
     case 'object': {
       const object = scene.objects[target.index];
       if (!object) return null;
-      const r = resolveObject(object);
-      return r.type === 'plane' ? r.point : r.center;
+      return objectAnchor(resolveObject(object));
     }
     case 'light': {
       const light = sceneLights(scene)[target.index];

@@ -13,4 +13,12 @@ describe('formatScene', () => {
     const scene = { name: 'a, b [c]', lights: [], objects: [{ center: [-1.5, 0, 1e-7], material: { color: '#ff0000' } }] };
     expect(JSON.parse(formatScene(scene))).toEqual(scene);
   });
+
+  it('copies strings as they are, brackets and commas included, however long', () => {
+    const obj = '# [ 1,2 ] {x}\nv 0 0 0\n'.repeat(20000) + 'f 1 1 1\n';
+    const scene = { name: '[a,b]', objects: [{ type: 'mesh', obj, position: [0, 1, 0] }] };
+    const text = formatScene(scene);
+    expect(JSON.parse(text)).toEqual(scene);
+    expect(text).toContain('"position": [0, 1, 0]');
+  });
 });

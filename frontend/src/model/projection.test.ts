@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import {
+  boundsToSvgRect,
   boxFootprint,
   cameraCone,
   convexHull,
@@ -139,5 +140,14 @@ describe('tidy drag positions', () => {
     expect(pixelStep(400)).toBe(0.001);
     expect(pixelStep(2)).toBe(0.1);
     expect(snapToGrid('top', [0.1 + 0.2, 0, 0.7], 0.1)).toEqual([0.3, 0, 0.7]);
+  });
+
+  it('maps a world box onto the same rectangle in x in both views, the side view flipped', () => {
+    const t: ViewTransform = { zoom: 40, pan: [1, 2], width: 480, height: 320 };
+    const bounds = { min: [-1, 0.5, 2] as Vec3, max: [3, 2.5, 5] as Vec3 };
+    const top = boundsToSvgRect('top', t, bounds);
+    const side = boundsToSvgRect('side', t, bounds);
+    expect(top).toEqual({ x: 240 + (-1 - 1) * 40, y: 160 + (2 - 2) * 40, width: 160, height: 120 });
+    expect(side).toEqual({ x: top.x, y: 160 - (2.5 - 2) * 40, width: 160, height: 80 });
   });
 });

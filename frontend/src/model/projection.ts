@@ -204,7 +204,19 @@ export function viewDepth(kind: ViewKind, p: Vec3): number {
   return kind === 'top' ? p[1] : p[2];
 }
 
-/** A resolved object's reference point: centre, or a plane's point. */
+/** A resolved object's reference point: centre, a plane's point, a mesh's position. */
 export function objectAnchor(object: ResolvedObject): Vec3 {
-  return object.type === 'plane' ? object.point : object.center;
+  if (object.type === 'plane') return object.point;
+  if (object.type === 'mesh') return object.position;
+  return object.center;
+}
+
+/**
+ * The rectangle a world-space box covers in a view, in SVG pixels (`x`, `y` its top-left corner),
+ * whichever way the view's vertical axis runs.
+ */
+export function boundsToSvgRect(kind: ViewKind, t: ViewTransform, bounds: { min: Vec3; max: Vec3 }) {
+  const a = worldToSvg(kind, t, bounds.min);
+  const b = worldToSvg(kind, t, bounds.max);
+  return { x: Math.min(a[0], b[0]), y: Math.min(a[1], b[1]), width: Math.abs(b[0] - a[0]), height: Math.abs(b[1] - a[1]) };
 }

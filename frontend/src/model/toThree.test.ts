@@ -1,7 +1,10 @@
 import { BoxGeometry, Euler, Mesh, Quaternion, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { cameraFrame } from './projection';
-import { letterbox, LIGHT_SCALE, makeRenderCamera, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
+import { letterbox, LIGHT_SCALE, makeRenderCamera, meshGeometry, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
+import { MeshCache, type MeshLookup } from './meshCache';
+import { parseObj } from './obj';
+import { TETRAHEDRON_OBJ } from '../test/meshes';
 import type { Scene, Vec3 } from './types';
 import { rotateXYZ } from './vec';
 
@@ -147,5 +150,74 @@ describe('sceneToThree', () => {
   it('letterboxes to the image aspect', () => {
     expect(letterbox(800, 800, 2)).toEqual({ width: 800, height: 400, left: 0, top: 200 });
     expect(letterbox(800, 300, 2)).toEqual({ width: 600, height: 300, left: 100, top: 0 });
+  });
+});
+
+describe('meshes in the preview', () => {
+  const cache = new MeshCache();
+  const lookup: MeshLookup = (mesh) => cache.get(mesh);
+  const scene: Scene = {
+    objects: [
+      { type: 'sphere', material: { type: 'plastic', color: '#123456', shininess: 30 } },
+      { type: 'mesh', obj: TETRAHEDRON_OBJ, position: [1, 2, 3], scale: 2, rotation: [10, 20, 30], material: { type: 'plastic', color: '#123456', shininess: 30 } },
+      { type: 'mesh', file: 'meshes/not-yet.obj' },
+      { type: 'box' },
+    ],
+  };
+
+  it('maps a mesh onto its parsed triangles, placed and coloured as the other objects', () => {
+    const d = sceneToThree(scene, { kind: 'object', index: 1 }, lookup);
+    // The file mesh is still loading: left out; the others keep their scene index.
+    expect(d.meshes.map((m) => [m.index, m.geometry])).toEqual([[0, 'sphere'], [1, 'mesh'], [3, 'box']]);
+    const m = d.meshes[1];
+    expect(m.mesh).toBe((cache.get(scene.objects[1] as never) as { mesh: unknown }).mesh);
+    expect(m).toMatchObject({ position: [1, 2, 3], scale: [2, 2, 2], selected: true });
+    expect(m.rotation.map((a) => (a * 180) / Math.PI)).toEqual([10, 20, 30].map((a) => expect.closeTo(a, 9)));
+    expect(m.material).toEqual(d.meshes[0].material);
+    expect(sceneToThree(scene).meshes.map((x) => x.geometry)).toEqual(['sphere', 'box']); // no lookup: no meshes
+  });
+
+  it('puts every vertex where the scene format says: position + R(rotation) · (scale · v)', () => {
+    const d = sceneToThree(scene, null, lookup).meshes[1];
+    const object = new Mesh(meshGeometry(d.mesh!));
+    object.position.set(...d.position);
+    object.rotation.set(...d.rotation, 'XYZ');
+    object.scale.set(...d.scale);
+    object.updateMatrixWorld();
+    const position = object.geometry.getAttribute('position');
+    for (let i = 0; i < position.count; i++) {
+      const world = new Vector3().fromBufferAttribute(position, i).applyMatrix4(object.matrixWorld);
+      const local: Vec3 = [position.getX(i), position.getY(i), position.getZ(i)];
+      const expected = rotateXYZ([2 * local[0], 2 * local[1], 2 * local[2]], [10, 20, 30]).map((c, k) => c + [1, 2, 3][k]);
+      expect(world.toArray().map((c, k) => Math.abs(c - expected[k])).every((e) => e < 1e-6)).toBe(true);
+    }
+  });
+
+  it('makes the scene extent reach a far-away mesh', () => {
+    const far: Scene = { lights: [], objects: [{ type: 'mesh', obj: TETRAHEDRON_OBJ, position: [0, 0, -500], scale: 10 }] };
+    expect(sceneToThree(far, null, lookup).extent).toBeGreaterThan(2 * 500);
+  });
+
+  it('shades flat without OBJ normals: each triangle its own corners and face normal', () => {
+    const parsed = parseObj(TETRAHEDRON_OBJ);
+    const g = meshGeometry(parsed);
+    expect(g.index).toBeNull();
+    const position = g.getAttribute('position');
+    const normal = g.getAttribute('normal');
+    expect(position.count).toBe(3 * parsed.triangleCount);
+    for (let t = 0; t < parsed.triangleCount; t++) {
+      const [a, b, c] = [0, 1, 2].map((k) => new Vector3().fromBufferAttribute(position, 3 * t + k));
+      const face = new Vector3().crossVectors(b.clone().sub(a), c.clone().sub(a)).normalize();
+      for (let k = 0; k < 3; k++) expect(new Vector3().fromBufferAttribute(normal, 3 * t + k).distanceTo(face)).toBeLessThan(1e-6);
+    }
+    // The slanted face of the tetrahedron points away from the origin, along (1, 1, 1).
+    expect(new Vector3().fromBufferAttribute(normal, 9).toArray().map((x) => x * Math.sqrt(3))).toEqual([1, 1, 1].map((x) => expect.closeTo(x, 5)));
+  });
+
+  it('shades smoothly with the OBJ’s normals, kept as they are', () => {
+    const parsed = parseObj('v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 0.6 0 0.8\nvn 0 0.6 0.8\nf 1//1 2//2 3//3\n');
+    const g = meshGeometry(parsed);
+    expect(Array.from(g.index!.array)).toEqual([0, 1, 2]);
+    expect(Array.from(g.getAttribute('normal').array)).toEqual(Array.from(parsed.normals!));
   });
 });

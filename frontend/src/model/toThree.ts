@@ -3,8 +3,10 @@
  * objects, no React), plus the one helper that builds the render camera as a three.js
  * PerspectiveCamera. The preview component turns descriptors into meshes.
  */
-import { PerspectiveCamera, Vector3 } from 'three';
+import { BufferAttribute, BufferGeometry, PerspectiveCamera, Vector3 } from 'three';
 import { resolveScene } from './defaults';
+import { NO_MESHES, type MeshLookup } from './meshCache';
+import { meshBounds, type ParsedObj } from './obj';
 import type { Selection } from './selection';
 import type { ResolvedMaterial, ResolvedObject, Scene, Vec3 } from './types';
 import { cross, dot, length, normalize, sub } from './vec';
@@ -26,11 +28,16 @@ export type MaterialDescriptor =
 export interface MeshDescriptor {
   /** Index of the scene object. */
   index: number;
-  /** Shared unit geometry: sphere radius 1, box edge 1, plane 1x1 in its x-y plane (normal +z). */
-  geometry: 'sphere' | 'box' | 'plane';
+  /**
+   * Shared unit geometry: sphere radius 1, box edge 1, plane 1x1 in its x-y plane (normal +z); or
+   * 'mesh': the triangles in `mesh`, in the OBJ's own coordinates (see {@link meshGeometry}).
+   */
+  geometry: 'sphere' | 'box' | 'plane' | 'mesh';
+  /** The parsed OBJ of a 'mesh' (the same object for as long as the mesh's OBJ is unchanged). */
+  mesh?: ParsedObj;
   position: Vec3;
   scale: Vec3;
-  /** Euler angles in radians, order XYZ (boxes); planes use `quaternion` instead. */
+  /** Euler angles in radians, order XYZ (boxes, meshes); planes use `quaternion` instead. */
   rotation: Vec3;
   /** [x, y, z, w]; identity except for planes. */
   quaternion: [number, number, number, number];
@@ -106,7 +113,7 @@ export function quaternionFromZ(normal: Vec3): [number, number, number, number] 
   return q.map((c) => c / l) as [number, number, number, number];
 }
 
-function meshOf(o: ResolvedObject, index: number, selected: boolean, camera: Vec3, extent: number): MeshDescriptor {
+function meshOf(o: ResolvedObject, index: number, selected: boolean, camera: Vec3, extent: number, meshes: MeshLookup): MeshDescriptor | null {
   const base = { index, selected, material: materialToThree(o.material), rotation: [0, 0, 0] as Vec3, quaternion: [0, 0, 0, 1] as [number, number, number, number] };
   switch (o.type) {
     case 'sphere':
@@ -121,13 +128,43 @@ function meshOf(o: ResolvedObject, index: number, selected: boolean, camera: Vec
       const size = extent * 4;
       return { ...base, geometry: 'plane', position: near, scale: [size, size, 1], quaternion: quaternionFromZ(o.normal) };
     }
+    case 'mesh': {
+      // Drawn once its triangles are known; nothing while loading or broken (the inspector says why).
+      const state = meshes(o);
+      if (state.status !== 'ready') return null;
+      const s = o.scale;
+      return { ...base, geometry: 'mesh', mesh: state.mesh, position: o.position, scale: [s, s, s], rotation: o.rotation.map(toRadians) as Vec3 };
+    }
   }
+}
+
+/**
+ * A three.js geometry of a parsed OBJ, in its own coordinates. With the OBJ's vertex normals it is
+ * indexed and smooth, as the renderer shades it; without, every triangle gets its own three corners
+ * and its face normal (flat, as the renderer shades a mesh without normals). The caller owns it and
+ * disposes it.
+ */
+export function meshGeometry(parsed: ParsedObj): BufferGeometry {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(parsed.positions, 3));
+  geometry.setIndex(new BufferAttribute(parsed.indices, 1));
+  if (parsed.normals) {
+    geometry.setAttribute('normal', new BufferAttribute(parsed.normals, 3));
+    return geometry;
+  }
+  const flat = geometry.toNonIndexed();
+  geometry.dispose();
+  flat.computeVertexNormals();
+  return flat;
 }
 
 const toRadians = (d: number) => (d * Math.PI) / 180;
 
-/** The whole preview scene, with the selected object or light marked. */
-export function sceneToThree(scene: Scene, selection: Selection = null): ThreeSceneDescriptor {
+/**
+ * The whole preview scene, with the selected object or light marked. Meshes are drawn with the
+ * triangles `meshes` knows (none by default); a mesh still loading or broken is left out.
+ */
+export function sceneToThree(scene: Scene, selection: Selection = null, meshes: MeshLookup = NO_MESHES): ThreeSceneDescriptor {
   const r = resolveScene(scene);
   const cam = r.camera;
   const targetDistance = Math.max(length(sub(cam.lookAt, cam.position)), 1e-9);
@@ -135,6 +172,14 @@ export function sceneToThree(scene: Scene, selection: Selection = null): ThreeSc
   for (const o of r.objects) {
     if (o.type === 'sphere') reach = Math.max(reach, length(sub(o.center, cam.position)) + o.radius);
     if (o.type === 'box') reach = Math.max(reach, length(sub(o.center, cam.position)) + length(o.size));
+    if (o.type === 'mesh') {
+      const state = meshes(o);
+      if (state.status === 'ready') {
+        const { min, max } = meshBounds(o, state.mesh);
+        const centre: Vec3 = [(min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2];
+        reach = Math.max(reach, length(sub(centre, cam.position)) + length(sub(max, min)) / 2);
+      } else reach = Math.max(reach, length(sub(o.position, cam.position)));
+    }
   }
   for (const l of r.lights) reach = Math.max(reach, length(sub(l.position, cam.position)));
   const extent = reach * 2;
@@ -150,7 +195,7 @@ export function sceneToThree(scene: Scene, selection: Selection = null): ThreeSc
       near: targetDistance / 1000,
       far: extent * 4,
     },
-    meshes: r.objects.map((o, i) => meshOf(o, i, selection?.kind === 'object' && selection.index === i, cam.position, extent)),
+    meshes: r.objects.flatMap((o, i) => meshOf(o, i, selection?.kind === 'object' && selection.index === i, cam.position, extent, meshes) ?? []),
     lights: r.lights.map((l, i) => ({
       index: i,
       position: l.position,

@@ -94,7 +94,27 @@ export interface Plane {
   material?: Material;
 }
 
-export type SceneObject = Sphere | Box | Plane;
+/**
+ * A triangle mesh from Wavefront OBJ: exactly one of `obj` (the OBJ text itself) and `file` (a
+ * name the CLI reads beside the scene file; the server knows only the meshes shipped with its
+ * examples). Each OBJ vertex v is placed at `position + R(rotation) · (scale · v)`: a uniform
+ * scale, then the rotation in degrees (three.js order XYZ), then the move, as a three.js Object3D.
+ */
+export interface MeshObject {
+  type: 'mesh';
+  obj?: string;
+  file?: string;
+  position?: Vec3;
+  /** Uniform scale, greater than 0. */
+  scale?: number;
+  rotation?: Vec3;
+  material?: Material;
+}
+
+/** The fields naming where a mesh's triangles come from (no defaults: exactly one is given). */
+export type MeshSourceField = 'obj' | 'file';
+
+export type SceneObject = Sphere | Box | Plane | MeshObject;
 export type ObjectType = SceneObject['type'];
 export type ObjectOf<T extends ObjectType> = Extract<SceneObject, { type: T }>;
 
@@ -162,8 +182,11 @@ type Complete<T> = { [K in keyof T]-?: Exclude<T[K], undefined> };
 
 export type ResolvedMaterial = { [T in MaterialType]: Complete<MaterialOf<T>> }[MaterialType];
 export type ResolvedObject = {
-  [T in ObjectType]: Complete<Omit<ObjectOf<T>, 'material'>> & { material: ResolvedMaterial };
+  [T in ObjectType]: Complete<Omit<ObjectOf<T>, 'material' | MeshSourceField>> &
+    Pick<ObjectOf<T>, Extract<keyof ObjectOf<T>, MeshSourceField>> & { material: ResolvedMaterial };
 }[ObjectType];
+/** A resolved object of one kind, e.g. `ResolvedObjectOf<'mesh'>`. */
+export type ResolvedObjectOf<T extends ObjectType> = Extract<ResolvedObject, { type: T }>;
 export type ResolvedLight = Complete<PointLight>;
 
 /** A scene with every default filled in (for display; files keep what the user wrote). */
@@ -193,6 +216,7 @@ export const OBJECT_FIELDS = {
   sphere: fieldsOf<Sphere>()(['type', 'center', 'radius', 'material']),
   box: fieldsOf<Box>()(['type', 'center', 'size', 'rotation', 'material']),
   plane: fieldsOf<Plane>()(['type', 'point', 'normal', 'material']),
+  mesh: fieldsOf<MeshObject>()(['type', 'obj', 'file', 'position', 'scale', 'rotation', 'material']),
 } as const;
 
 export const MATERIAL_FIELDS = {

@@ -41,4 +41,29 @@ describe('validateScene', () => {
     expect(bad.ok).toBe(false);
     if (!bad.ok) expect(describeErrors(bad.errors)).toMatch(/not valid JSON/);
   });
+
+  it('checks a mesh as the server does: exactly one of obj and file, a scale above 0, vectors of three numbers', () => {
+    const ok = validateScene({ objects: [{ type: 'mesh', obj: 'v 0 0 0\n', position: [0, 1, 0], scale: 0.5, rotation: [0, 90, 0] }, { type: 'mesh', file: 'meshes/torus-knot.obj' }] });
+    expect(ok.ok).toBe(true);
+    const result = validateScene({
+      objects: [
+        { type: 'sphere' },
+        { type: 'mesh' },
+        { type: 'mesh', obj: 'v 0 0 0\n', file: 'a.obj' },
+        { type: 'mesh', obj: 'v 0 0 0\n', scale: 0 },
+        { type: 'mesh', file: 'a.obj', scale: -1, position: [0, 1], rotation: [0, 0, 'x'], center: [0, 0, 0] },
+        { type: 'mesh', obj: 42 },
+      ],
+    });
+    expect(result.ok ? [] : result.errors).toEqual([
+      { path: 'objects[1]', message: 'a mesh needs its OBJ text in "obj" or a "file" name' },
+      { path: 'objects[2]', message: 'give the mesh either "obj" or "file", not both' },
+      { path: 'objects[3].scale', message: 'must be a finite number greater than 0' },
+      { path: 'objects[4].scale', message: 'must be a finite number greater than 0' },
+      { path: 'objects[4].position', message: 'must be a list of three numbers [x, y, z]' },
+      { path: 'objects[4].rotation[2]', message: 'must be a finite number' },
+      { path: 'objects[4].center', message: expect.stringMatching(/^is not a known field/) },
+      { path: 'objects[5].obj', message: 'must be a string' },
+    ]);
+  });
 });

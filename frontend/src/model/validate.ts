@@ -1,7 +1,9 @@
 /**
  * Checks that an unknown JSON value has the shape of a scene before the editor loads it:
  * known fields only, `type` of every polymorphic element known, vectors of three finite
- * numbers, colours `#rrggbb`, numbers as numbers. Value ranges are the server's business.
+ * numbers, colours `#rrggbb`, numbers as numbers. Value ranges are the server's business, but
+ * for a mesh, whose triangles the editor reads itself: exactly one of `obj` and `file`, and a
+ * `scale` greater than 0 (as the server's rules).
  */
 import { FORMAT_VERSION } from './defaults';
 import {
@@ -99,13 +101,38 @@ const list =
     else v.forEach((x, i) => item(x, `${path}[${i}]`, errors));
   };
 
+const positive: Check = (v, path, errors) => {
+  if (typeof v !== 'number' || !Number.isFinite(v) || v <= 0) errors.push({ path, message: 'must be a finite number greater than 0' });
+};
+
+/** A mesh names its triangles by exactly one of `obj` and `file` (the message goes on the object, as the server's). */
+const meshSource: Check = (v, path, errors) => {
+  if (!isRecord(v)) return;
+  const hasObj = v.obj !== undefined;
+  if (hasObj === (v.file !== undefined)) {
+    errors.push({ path, message: hasObj ? 'give the mesh either "obj" or "file", not both' : 'a mesh needs its OBJ text in "obj" or a "file" name' });
+  }
+};
+
+/** Runs every check on the same value. */
+const all =
+  (...checks: Check[]): Check =>
+  (v, path, errors) =>
+    checks.forEach((check) => check(v, path, errors));
+
 const type: Check = () => {};
 const materialChecks = { type, color, diffuse: number, specular: number, shininess: number, reflectivity: number, ior: number };
 const material = byType(
   Object.fromEntries(Object.entries(MATERIAL_FIELDS).map(([k, f]) => [k, record(f, materialChecks)])),
 );
-const objectChecks = { type, center: vector, radius: number, size: vector, rotation: vector, point: vector, normal: vector, material };
-const object = byType(Object.fromEntries(Object.entries(OBJECT_FIELDS).map(([k, f]) => [k, record(f, objectChecks)])));
+const objectChecks = {
+  type, center: vector, radius: number, size: vector, rotation: vector, point: vector, normal: vector, material,
+  obj: string, file: string, position: vector, scale: positive,
+};
+const object = byType({
+  ...Object.fromEntries(Object.entries(OBJECT_FIELDS).map(([k, f]) => [k, record(f, objectChecks)])),
+  mesh: all(record(OBJECT_FIELDS.mesh, objectChecks), meshSource),
+});
 const light = byType({ point: record(LIGHT_FIELDS.point, { type, position: vector, color, intensity: number, falloff: boolean }) });
 
 const scene = record(SCENE_FIELDS, {

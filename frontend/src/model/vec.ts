@@ -37,3 +37,31 @@ export function rotateXYZ(v: Vec3, degrees: Vec3): Vec3 {
   y = y2;
   return [x, y, z];
 }
+
+/** A 3x3 matrix, row-major: `m[3 * row + column]`. */
+export type Mat3 = [number, number, number, number, number, number, number, number, number];
+
+/**
+ * The matrix of {@link rotateXYZ}: Rx · Ry · Rz for Euler angles in degrees (three.js
+ * `Matrix4.makeRotationFromEuler`, order 'XYZ'). Worked out once for many points (meshes).
+ */
+export function rotationMatrixXYZ(degrees: Vec3): Mat3 {
+  const [ax, ay, az] = degrees.map((d) => (d * Math.PI) / 180);
+  const [a, b] = [Math.cos(ax), Math.sin(ax)];
+  const [c, d] = [Math.cos(ay), Math.sin(ay)];
+  const [e, f] = [Math.cos(az), Math.sin(az)];
+  return [
+    c * e, -c * f, d,
+    a * f + b * e * d, a * e - b * f * d, -b * c,
+    b * f - a * e * d, b * e + a * f * d, a * c,
+  ];
+}
+
+/** `m · v`. */
+export function applyMat3(m: Mat3, v: Vec3): Vec3 {
+  return [
+    m[0] * v[0] + m[1] * v[1] + m[2] * v[2],
+    m[3] * v[0] + m[4] * v[1] + m[5] * v[2],
+    m[6] * v[0] + m[7] * v[1] + m[8] * v[2],
+  ];
+}

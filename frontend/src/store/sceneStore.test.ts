@@ -1,5 +1,8 @@
 import { describe, expect, it } from 'vitest';
+import { formatScene } from '../model/formatScene';
 import { STARTER_SCENE } from '../model/starterScene';
+import { parseScene } from '../model/validate';
+import { gridObj, TETRAHEDRON_OBJ } from '../test/meshes';
 import type { Scene } from '../model/types';
 import { loadSavedScene, STORAGE_KEY } from './persistence';
 import { persistSceneStore, resetSceneStore, useSceneStore, type SceneState } from './sceneStore';
@@ -20,6 +23,8 @@ const ACTIONS: [string, (s: SceneState) => void, SceneState['selection']?][] = [
   ['addObject(sphere)', (s) => s.addObject('sphere')],
   ['addObject(box)', (s) => s.addObject('box')],
   ['addObject(plane)', (s) => s.addObject('plane')],
+  ['addObject(mesh)', (s) => s.addObject('mesh')],
+  ['addMesh', (s) => s.addMesh(TETRAHEDRON_OBJ, 2)],
   ['addLight', (s) => s.addLight()],
   ['duplicateSelected (object)', (s) => s.duplicateSelected(), { kind: 'object', index: 1 }],
   ['duplicateSelected (light)', (s) => s.duplicateSelected(), { kind: 'light', index: 0 }],
@@ -150,5 +155,60 @@ describe('sceneStore', () => {
     resetSceneStore();
     expect(store().scene.name).toBe('still-life');
     expect(store().past).toEqual([]);
+  });
+
+  describe('meshes', () => {
+    const MESH_SCENE: Scene = {
+      name: 'meshes',
+      objects: [
+        { type: 'sphere' },
+        { type: 'mesh', obj: TETRAHEDRON_OBJ, position: [1, 0, 2], scale: 2, rotation: [0, 45, 0], material: { type: 'metal' } },
+        { type: 'mesh', file: 'meshes/torus-knot.obj' },
+      ],
+    };
+
+    it('adds a mesh as one undo step, selected, its OBJ inline at the origin', () => {
+      store().addMesh(TETRAHEDRON_OBJ, 2);
+      const index = STARTER_SCENE.objects.length;
+      expect(store().scene.objects[index]).toMatchObject({ type: 'mesh', obj: TETRAHEDRON_OBJ, position: [0, 0, 0], scale: 2, rotation: [0, 0, 0] });
+      expect(store().selection).toEqual({ kind: 'object', index });
+      expect(store().past).toHaveLength(1);
+      store().undo();
+      expect(store().scene).toEqual(STARTER_SCENE);
+    });
+
+    it('moves a mesh by its position only, a drag being one undo step', () => {
+      resetSceneStore(MESH_SCENE);
+      store().moveObject(1, [3, 1, -2]);
+      expect(store().scene.objects[1]).toEqual({ ...MESH_SCENE.objects[1], position: [3, 1, -2] });
+      expect((store().scene.objects[1] as { obj?: string }).obj).toBe(TETRAHEDRON_OBJ);
+      for (let i = 1; i <= 10; i++) store().dragTo({ kind: 'object', index: 2 }, [i, 0, 0]);
+      store().commitPreview();
+      expect(store().scene.objects[2]).toEqual({ type: 'mesh', file: 'meshes/torus-knot.obj', position: [10, 0, 0] });
+      expect(store().past).toHaveLength(2);
+    });
+
+    it('replaces a file mesh by inline OBJ as one undo step, keeping its placement', () => {
+      resetSceneStore(MESH_SCENE);
+      store().setMeshObj(2, TETRAHEDRON_OBJ);
+      expect(store().scene.objects[2]).toEqual({ type: 'mesh', obj: TETRAHEDRON_OBJ });
+      expect(store().past).toHaveLength(1);
+      store().undo();
+      expect(store().scene.objects[2]).toEqual(MESH_SCENE.objects[2]);
+    });
+
+    it('keeps a large inline OBJ unchanged through localStorage and the JSON text', () => {
+      const obj = gridObj(60); // 7 200 triangles, some 150 kB
+      const scene: Scene = { ...MESH_SCENE, objects: [...MESH_SCENE.objects, { type: 'mesh', obj, scale: 0.5 }] };
+      const stop = persistSceneStore();
+      store().loadScene(scene);
+      stop();
+      expect(loadSavedScene()).toEqual(scene);
+      const parsed = parseScene(formatScene(store().scene));
+      expect(parsed.ok && parsed.scene).toEqual(scene);
+      if (parsed.ok) store().setScene(parsed.scene);
+      expect(store().past).toHaveLength(1); // the same scene again is no new step
+      expect((store().scene.objects[3] as { obj: string }).obj).toBe(obj);
+    });
   });
 });

@@ -5,6 +5,7 @@
  */
 import { create } from 'zustand';
 import { blankScene, sceneLights } from '../model/defaults';
+import { sameJson } from '../model/sameJson';
 import * as edits from '../model/edits';
 import type { DragTarget, Selection } from '../model/selection';
 import { STARTER_SCENE } from '../model/starterScene';
@@ -59,6 +60,10 @@ export interface SceneState {
   setRender(patch: Partial<RenderSettings>): void;
   setCamera(patch: Partial<CameraSettings>): void;
   addObject(kind: ObjectType): void;
+  /** Adds a mesh of inline OBJ text at the origin with a uniform scale, selected (one history entry). */
+  addMesh(obj: string, scale: number): void;
+  /** Replaces a mesh's triangles by inline OBJ text (its `file`, if any, goes). */
+  setMeshObj(index: number, obj: string): void;
   addLight(): void;
   duplicateSelected(): void;
   deleteSelected(): void;
@@ -105,7 +110,7 @@ function keepValid(scene: Scene, selection: Selection): Selection {
   return selection;
 }
 
-const sameScene = (a: Scene, b: Scene) => a === b || JSON.stringify(a) === JSON.stringify(b);
+const sameScene = (a: Scene, b: Scene) => sameJson(a, b);
 
 export const useSceneStore = create<SceneState>()((set, get) => {
   /** The single write path: one edit, one history entry (none if nothing changed). */
@@ -143,6 +148,8 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     setRender: (patch) => commit((s) => edits.setRender(s, patch)),
     setCamera: (patch) => commit((s) => edits.setCamera(s, patch)),
     addObject: (kind) => commit((s) => edits.addObject(s, kind), (n) => ({ kind: 'object', index: n.objects.length - 1 })),
+    addMesh: (obj, scale) => commit((s) => edits.addMesh(s, obj, scale), (n) => ({ kind: 'object', index: n.objects.length - 1 })),
+    setMeshObj: (index, obj) => commit((s) => edits.setMeshObj(s, index, obj)),
     addLight: () => commit((s) => edits.addLight(s), (n) => ({ kind: 'light', index: sceneLights(n).length - 1 })),
     duplicateSelected: () => {
       const sel = get().selection;

@@ -1,7 +1,9 @@
 import { resolveObject } from '../model/defaults';
+import type { MeshState } from '../model/meshCache';
 import { boxFootprint, planeToSvg, worldToSvg, type ViewKind, type ViewTransform } from '../model/projection';
 import type { SceneObject } from '../model/types';
-import { MATERIAL_LABELS, objectName } from '../components/labels';
+import { MATERIAL_LABELS, meshName, objectName } from '../components/labels';
+import { MeshGlyph } from './MeshGlyph';
 import { PlaneGlyph } from './PlaneGlyph';
 
 /** Props of {@link ObjectGlyph}. */
@@ -13,16 +15,19 @@ export interface ObjectGlyphProps {
   selected: boolean;
   /** Id of the SVG hatch pattern used for planes seen face-on. */
   hatchId: string;
+  /** For a mesh: what is known of its triangles (loading when not given). */
+  meshState?: MeshState;
 }
 
 /**
  * One object as seen in a plan view: a sphere as a circle, a box as the outline of its rotated
- * footprint (with a tick on its own +x face), a plane edge-on or as a hatched hint. The group
+ * footprint (with a tick on its own +x face), a plane edge-on or as a hatched hint, a mesh as its
+ * labelled bounding rectangle (see {@link MeshGlyph}). The group
  * carries `data-testid="object-N"`, `data-kind`, `data-selected` and `data-target` (for dragging).
  */
-export function ObjectGlyph({ kind, t, object, index, selected, hatchId }: ObjectGlyphProps) {
+export function ObjectGlyph({ kind, t, object, index, selected, hatchId, meshState = { status: 'loading' } }: ObjectGlyphProps) {
   const r = resolveObject(object);
-  const name = objectName(r.type, index);
+  const name = r.type === 'mesh' ? meshName(index, meshState) : objectName(r.type, index);
   const common = {
     'data-testid': `object-${index}`,
     'data-kind': r.type,
@@ -41,6 +46,14 @@ export function ObjectGlyph({ kind, t, object, index, selected, hatchId }: Objec
       <g {...common}>
         {title}
         <PlaneGlyph kind={kind} t={t} point={r.point} normal={r.normal} color={fill} hatchId={hatchId} />
+      </g>
+    );
+  }
+  if (r.type === 'mesh') {
+    return (
+      <g {...common}>
+        {title}
+        <MeshGlyph kind={kind} t={t} mesh={r} state={meshState} label={objectName('mesh', index)} color={fill} />
       </g>
     );
   }

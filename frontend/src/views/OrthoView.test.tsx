@@ -1,9 +1,11 @@
-import { act, createEvent, fireEvent, render as rtlRender, screen, within } from '@testing-library/react';
+import { act, createEvent, fireEvent, render as rtlRender, screen, waitFor, within } from '@testing-library/react';
 import type { ReactElement } from 'react';
 import { describe, expect, it } from 'vitest';
 import { worldToSvg, type ViewTransform } from '../model/projection';
 import type { Scene } from '../model/types';
 import { DEFAULT_VIEWS, resetSceneStore, useSceneStore } from '../store/sceneStore';
+import { meshCache } from '../hooks/useMeshes';
+import { gridObj, TETRAHEDRON_OBJ } from '../test/meshes';
 import { SideView } from './SideView';
 import { TopView } from './TopView';
 
@@ -163,5 +165,87 @@ describe('keyboard in the views', () => {
     fireEvent.keyDown(within(screen.getByTestId('side-view')).getByTestId('light-0'), { key: 'ArrowUp' });
     expect(store().scene.lights?.[0].position).toEqual([2, 5.5, -1]);
     expect(store().past).toHaveLength(3);
+  });
+});
+
+describe('meshes in the views', () => {
+  // The tetrahedron scaled by 2 and turned 90° about z: its corners (2,0,0), (0,2,0), (0,0,2) go to
+  // (0,2,0), (-2,0,0), (0,0,2); moved to (1, 0.5, -1) its bounds are x -1..1, y 0.5..2.5, z -1..1.
+  const MESH_SCENE: Scene = {
+    ...SCENE,
+    objects: [
+      { type: 'sphere', center: [3, 1, 0], radius: 0.5 },
+      { type: 'mesh', obj: TETRAHEDRON_OBJ, position: [1, 0.5, -1], scale: 2, rotation: [0, 0, 90], material: { type: 'plastic', color: '#336699' } },
+      { type: 'mesh', file: 'meshes/torus-knot.obj', position: [-2, 1, 0] },
+    ],
+  };
+
+  /** The rectangle of a mesh glyph, as numbers. */
+  const rectOf = (view: HTMLElement, index: number) => {
+    const rect = within(view).getByTestId(`object-${index}`).querySelector('rect.mesh-outline')!;
+    return ['x', 'y', 'width', 'height'].map((a) => Number(rect.getAttribute(a)));
+  };
+
+  it('draw a mesh as the dashed rectangle its world bounds cover, labelled, in both views', () => {
+    resetSceneStore(MESH_SCENE);
+    render(<><TopView /><SideView /></>);
+    const topView = screen.getByTestId('top-view');
+    const sideView = screen.getByTestId('side-view');
+    // Top: x -1..1 to the right, z -1..1 down the screen.
+    const [tx0, ty0] = worldToSvg('top', top(), [-1, 0, -1]);
+    const [tx1, ty1] = worldToSvg('top', top(), [1, 0, 1]);
+    expect(rectOf(topView, 1)).toEqual([tx0, ty0, tx1 - tx0, ty1 - ty0].map((v) => expect.closeTo(v, 6)));
+    // Side: x -1..1, y 0.5..2.5 up the screen (so the top edge is at y = 2.5).
+    const [sx0, sy0] = worldToSvg('side', side(), [-1, 2.5, 0]);
+    const [sx1, sy1] = worldToSvg('side', side(), [1, 0.5, 0]);
+    expect(rectOf(sideView, 1)).toEqual([sx0, sy0, sx1 - sx0, sy1 - sy0].map((v) => expect.closeTo(v, 6)));
+    expect(sx0).toBeCloseTo(tx0); // the two views agree on x
+    const glyph = within(topView).getByTestId('object-1');
+    expect(glyph).toHaveAttribute('data-kind', 'mesh');
+    expect(glyph).toHaveAccessibleName('Mesh 2 (4 triangles)');
+    expect(glyph.querySelector('text')).toHaveTextContent('Mesh 2');
+    expect(glyph.querySelector('rect')).toHaveAttribute('fill', '#336699');
+  });
+
+  it('show a mesh whose file is still loading as a small labelled square at its position', () => {
+    resetSceneStore(MESH_SCENE);
+    render(<TopView />);
+    const glyph = within(screen.getByTestId('top-view')).getByTestId('object-2');
+    const [x, y, w, h] = rectOf(screen.getByTestId('top-view'), 2);
+    const [px, py] = worldToSvg('top', top(), [-2, 1, 0]);
+    expect([x + w / 2, y + h / 2]).toEqual([expect.closeTo(px, 6), expect.closeTo(py, 6)]);
+    expect(w).toBeCloseTo(0.5 * 40);
+    expect(glyph.querySelector('text')).toHaveTextContent('Mesh 3 (loading…)');
+  });
+
+  it('select and drag a mesh by its rectangle: only its position moves, one undo step', () => {
+    resetSceneStore(MESH_SCENE);
+    render(<><TopView /><SideView /></>);
+    const svg = screen.getByTestId('top-view');
+    const rect = within(svg).getByTestId('object-1').querySelector('rect')!;
+    // Press inside the rectangle, away from the position dot.
+    drag(rect, svg, worldToSvg('top', top(), [0, 0, 0]), [40, 80]);
+    expect(store().selection).toEqual({ kind: 'object', index: 1 });
+    expect(store().scene.objects[1]).toEqual({ ...MESH_SCENE.objects[1], position: [2, 0.5, 1] });
+    expect(store().past).toHaveLength(1);
+    const [tx0] = worldToSvg('top', top(), [0, 0, 0]);
+    expect(rectOf(svg, 1)[0]).toBeCloseTo(tx0);
+    expect(rectOf(screen.getByTestId('side-view'), 1)[0]).toBeCloseTo(tx0);
+  });
+
+  it('zoom out to a mesh file that arrives after the scene was fitted, unless the view was moved', async () => {
+    const scene: Scene = { ...MESH_SCENE, objects: [{ type: 'mesh', file: 'meshes/wide.obj' }, { type: 'mesh', file: 'meshes/later.obj' }] };
+    rtlRender(<TopView />);
+    act(() => store().loadScene(scene));
+    const fitted = store().views.top.zoom;
+    act(() => meshCache.ensure('meshes/wide.obj', async () => gridObj(2, 30)));
+    await waitFor(() => expect(store().views.top.zoom).toBeLessThan(fitted / 3));
+    const [x] = worldToSvg('top', { ...store().views.top, width: 480, height: 320 }, [30, 0, 30]);
+    expect(x).toBeLessThan(480);
+    // Once the user zooms or pans, an arriving mesh leaves the view alone.
+    act(() => store().setView('top', { zoom: 40, pan: [0, 0] }));
+    act(() => meshCache.ensure('meshes/later.obj', async () => gridObj(2, 90)));
+    await waitFor(() => expect(within(screen.getByTestId('top-view')).getByTestId('object-1')).toHaveAccessibleName('Mesh 2 (8 triangles)'));
+    expect(store().views.top).toEqual({ zoom: 40, pan: [0, 0] });
   });
 });

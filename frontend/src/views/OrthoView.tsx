@@ -1,12 +1,13 @@
-import { useEffect, useMemo, useRef } from 'react';
-import { fitViews, scenePoints } from '../model/bounds';
+import { useMemo, useRef } from 'react';
 import { imageAspect, resolveLight, resolveObject, resolveScene, sceneLights } from '../model/defaults';
 import { objectAnchor, viewDepth, type ViewKind, type ViewTransform } from '../model/projection';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { useElementSize } from '../hooks/useElementSize';
+import { useMeshLookup } from '../hooks/useMeshes';
 import { CameraGlyph } from './CameraGlyph';
 import { LightGlyph } from './LightGlyph';
 import { ObjectGlyph } from './ObjectGlyph';
+import { useFitView } from './useFitView';
 import { useViewPointer } from './useViewPointer';
 import { ViewGrid } from './ViewGrid';
 
@@ -32,18 +33,11 @@ export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
   const selection = useSceneStore((s) => s.selection);
   const view = useSceneStore((s) => s.views[kind]);
   const gridSize = useSceneStore((s) => s.gridSize);
+  const meshes = useMeshLookup();
   const t: ViewTransform = { ...view, width: size.width, height: size.height };
   const handlers = useViewPointer(kind, svg, t);
 
-  // Zoom to the whole scene when one arrives (and once the view has its real size).
-  const fitRequest = useSceneStore((s) => s.fitRequest);
-  const fitted = useRef({ request: 0, measured: false });
-  useEffect(() => {
-    if (fitted.current.request === fitRequest && (fitted.current.measured || !size.measured)) return;
-    fitted.current = { request: fitRequest, measured: size.measured };
-    const state = useSceneStore.getState();
-    state.setView(kind, fitViews(scenePoints(state.scene), size.width, size.height)[kind]);
-  }, [fitRequest, size, kind]);
+  useFitView(kind, size);
 
   const objects = useMemo(
     () =>
@@ -81,7 +75,16 @@ export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
           </defs>
           <ViewGrid kind={kind} t={t} step={gridSize} />
           {objects.map(({ object, index }) => (
-            <ObjectGlyph key={index} kind={kind} t={t} object={object} index={index} selected={selection?.kind === 'object' && selection.index === index} hatchId={`plane-hatch-${kind}`} />
+            <ObjectGlyph
+              key={index}
+              kind={kind}
+              t={t}
+              object={object}
+              index={index}
+              selected={selection?.kind === 'object' && selection.index === index}
+              hatchId={`plane-hatch-${kind}`}
+              meshState={object.type === 'mesh' ? meshes(object) : undefined}
+            />
           ))}
           <CameraGlyph kind={kind} t={t} camera={camera} aspect={imageAspect(scene)} selected={cameraSelected} />
           {sceneLights(scene).map((light, index) => {

@@ -1,4 +1,5 @@
 import { useEffect, useRef, useState } from 'react';
+import { meshCache } from '../hooks/useMeshes';
 import { sceneToThree } from '../model/toThree';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { PreviewEngine, type PreviewMode } from './previewEngine';
@@ -29,18 +30,21 @@ export function Preview3D() {
     element.appendChild(preview.canvas);
     const push = () => {
       const state = useSceneStore.getState();
-      preview.update(sceneToThree(selectDisplayScene(state), state.selection));
+      preview.update(sceneToThree(selectDisplayScene(state), state.selection, (mesh) => meshCache.get(mesh)));
     };
     push();
     const unsubscribe = useSceneStore.subscribe((state, old) => {
       if (state.scene !== old.scene || state.preview !== old.preview || state.selection !== old.selection) push();
     });
+    // A mesh file that finishes loading appears without waiting for the next edit.
+    const unsubscribeMeshes = meshCache.subscribe(push);
     const measure = () => preview.resize(element.clientWidth, element.clientHeight);
     measure();
     const observer = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver(measure);
     observer?.observe(element);
     return () => {
       unsubscribe();
+      unsubscribeMeshes();
       observer?.disconnect();
       preview.dispose();
       engine.current = null;

@@ -23,6 +23,7 @@ import {
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
 import { applyRenderCamera, letterbox, type ThreeSceneDescriptor } from '../model/toThree';
+import { MeshGeometryCache } from './previewGeometries';
 import { MaterialCache } from './previewMaterials';
 
 export type PreviewMode = 'camera' | 'orbit';
@@ -38,6 +39,7 @@ export class PreviewEngine {
   private readonly orbitCamera = new PerspectiveCamera(50, 1, 0.01, 1e4);
   private readonly controls: OrbitControls;
   private readonly materials = new MaterialCache();
+  private readonly meshGeometries = new MeshGeometryCache();
   private readonly geometries = { sphere: new SphereGeometry(1, 48, 32), box: new BoxGeometry(1, 1, 1), plane: new PlaneGeometry(1, 1), marker: new SphereGeometry(1, 16, 12) };
   private readonly disposables: { dispose(): void }[] = [];
   private mode: PreviewMode = 'camera';
@@ -70,7 +72,9 @@ export class PreviewEngine {
     this.scene.background = new Color(d.background);
     this.content.add(new AmbientLight(0xffffff, d.ambient));
     for (const m of d.meshes) {
-      const mesh = new Mesh(this.geometries[m.geometry], this.materials.get(m.material, m.geometry === 'plane'));
+      const geometry = m.geometry === 'mesh' ? this.meshGeometries.get(m.mesh!) : this.geometries[m.geometry];
+      // Planes and meshes (which may be open) are seen from both sides.
+      const mesh = new Mesh(geometry, this.materials.get(m.material, m.geometry === 'plane' || m.geometry === 'mesh'));
       mesh.position.set(...m.position);
       mesh.scale.set(...m.scale);
       if (m.geometry === 'plane') mesh.quaternion.set(...m.quaternion);
@@ -79,6 +83,7 @@ export class PreviewEngine {
       if (m.selected && m.geometry !== 'plane') this.addHelper(new BoxHelper(mesh, SELECTED));
     }
     this.materials.sweep();
+    this.meshGeometries.sweep();
     for (const l of d.lights) {
       const light = new PointLight(l.color, l.intensity, 0, l.decay);
       light.position.set(...l.position);
@@ -132,6 +137,7 @@ export class PreviewEngine {
     for (const item of this.disposables.splice(0)) item.dispose();
     this.controls.dispose();
     this.materials.dispose();
+    this.meshGeometries.dispose();
     Object.values(this.geometries).forEach((g) => g.dispose());
     this.scene.environment?.dispose();
     this.renderer.dispose();
