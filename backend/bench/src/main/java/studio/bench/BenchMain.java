@@ -3,19 +3,37 @@ package studio.bench;
 import java.util.Arrays;
 
 /**
- * {@code java -jar studio-bench.jar peers [...]}: the peer benchmark ({@link PeersCommand}).
- * Sunflow's side runs as its own process through {@link SunflowRender}.
+ * {@code java -jar studio-bench.jar peers|jmh|scaling [...]}: the peer benchmark ({@link PeersCommand}),
+ * the JMH micro-benchmarks in {@code studio.bench.jmh} (the arguments go to JMH's own command line,
+ * {@code org.openjdk.jmh.Main}) and render time against scene size ({@link ScalingCommand}).
+ * Sunflow's side of the peer benchmark runs as its own process through {@link SunflowRender}.
  */
 public final class BenchMain {
+
+    static final String USAGE = """
+            usage: java -jar studio-bench.jar peers [--help]      ours against POV-Ray and Sunflow
+                   java -jar studio-bench.jar jmh [JMH options]   micro-benchmarks (-h: JMH's options, -l: the list)
+                   java -jar studio-bench.jar scaling [--help]    render time against object count""";
 
     private BenchMain() {
     }
 
-    public static void main(String[] args) {
-        if (args.length > 0 && args[0].equals("peers")) {
-            System.exit(PeersCommand.run(Arrays.copyOfRange(args, 1, args.length), System.out, System.err));
+    public static void main(String[] args) throws Exception {
+        String command = args.length > 0 ? args[0] : "";
+        String[] rest = args.length > 0 ? Arrays.copyOfRange(args, 1, args.length) : args;
+        switch (command) {
+            case "peers" -> System.exit(PeersCommand.run(rest, System.out, System.err));
+            case "scaling" -> System.exit(ScalingCommand.run(rest, System.out, System.err));
+            // JMH exits by itself on errors; it forks the benchmarks with this JVM's class path, which is
+            // this jar and, through its manifest, lib/
+            case "jmh" -> {
+                org.openjdk.jmh.Main.main(rest);
+                System.exit(0);
+            }
+            default -> {
+                System.err.println(USAGE);
+                System.exit(2);
+            }
         }
-        System.err.println("usage: java -jar studio-bench.jar peers [--help]");
-        System.exit(2);
     }
 }

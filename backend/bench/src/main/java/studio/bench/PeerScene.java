@@ -7,6 +7,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import studio.server.scene.MeshFiles;
+import studio.server.scene.ObjectDto;
 import studio.server.scene.SceneDto;
 import studio.server.scene.SceneReader;
 import tools.jackson.databind.JsonNode;
@@ -23,13 +25,18 @@ record PeerScene(String name, Path dir, ResolvedScene scene, Path ourJson, Path 
 
     /**
      * Reads {@code json} (validated as the server reads it) and writes every renderer's files into
-     * {@code dir}.
+     * {@code dir}. Mesh files named in the scene are read from {@code meshFolder} (the scene file's
+     * folder) and copied into {@code dir} unless they are there already, for our CLI reads them
+     * beside the scene file.
+     *
+     * @throws IllegalArgumentException if a mesh cannot be read
      */
     static PeerScene write(String name, byte[] json, SceneReader reader, Path dir, Renderers renderers,
-                           List<Integer> samples) throws IOException {
+                           List<Integer> samples, Path meshFolder) throws IOException {
         Files.createDirectories(dir);
         SceneDto dto = reader.read(json);
-        ResolvedScene scene = ResolvedScene.of(dto, renderers.width(), renderers.height());
+        ResolvedScene scene = ResolvedScene.of(dto, renderers.width(), renderers.height(), MeshFiles.in(meshFolder));
+        copyMeshFiles(dto, meshFolder, dir);
         ResolvedScene mask = scene.asMask();
 
         Path ourJson = Files.write(dir.resolve("scene.json"), json);
@@ -45,6 +52,20 @@ record PeerScene(String name, Path dir, ResolvedScene scene, Path ourJson, Path 
         Path sunflowMask = dir.resolve("mask.sfs");
         SunflowScene.of(mask, 0, renderers.threads()).write(sunflowMask);
         return new PeerScene(name, dir, scene, ourJson, ourMaskJson, pov, povMask, sunflow, sunflowMask);
+    }
+
+    /** Copies each mesh file the scene names from {@code from} to the same name under {@code to}. */
+    static void copyMeshFiles(SceneDto dto, Path from, Path to) throws IOException {
+        if (Files.isSameFile(from, to)) {
+            return;
+        }
+        for (ObjectDto o : dto.objects()) {
+            if (o instanceof ObjectDto.Mesh mesh && mesh.file() != null) {
+                Path target = to.resolve(mesh.file());
+                Files.createDirectories(target.getParent());
+                Files.copy(from.resolve(mesh.file()), target, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            }
+        }
     }
 
     /**

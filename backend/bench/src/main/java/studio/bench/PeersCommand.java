@@ -3,6 +3,7 @@ package studio.bench;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.net.URISyntaxException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -21,7 +22,7 @@ import studio.server.scene.InvalidSceneException;
 import studio.server.scene.SceneReader;
 
 /**
- * {@code studio-bench.jar peers [--runs 5] [--scenes still-life,spheres-10k,glass] [--samples 1,16]
+ * {@code studio-bench.jar peers [--runs 5] [--scenes still-life,spheres-10k,mesh-100k,glass] [--samples 1,16]
  * [--out docs/bench] [--work DIR] [--threads 2] [--studio-jar ...] [--povray ...] [--sunflow-jar ...]}:
  * ours, POV-Ray 3.7 and Sunflow on the same scenes, side by side. For each scene it first renders a
  * silhouette mask with each (1 sample per pixel through the pixel centre) and compares ours with
@@ -45,13 +46,31 @@ public final class PeersCommand {
     private PeersCommand() {
     }
 
-    /** Benchmark scene name to scene file (in --scenes-dir); the spheres scene is generated. */
+    /** Benchmark scene name to scene file (in --scenes-dir); null: generated ({@link #generated}). */
     private static Map<String, String> scenes() {
         Map<String, String> m = new LinkedHashMap<>();
         m.put("still-life", "still-life.json");
         m.put("spheres-10k", null);
+        m.put("mesh-100k", null);
         m.put("glass", "glass-pattern.json");
         return m;
+    }
+
+    /**
+     * A generated scene's file: {@code spheres-10k} ({@link SpheresScene}) or {@code mesh-100k}
+     * ({@link MeshScene}, whose OBJ file it writes into {@code dir}, beside where the scene file goes).
+     */
+    static byte[] generated(String name, Path dir) throws IOException {
+        String json = switch (name) {
+            case "spheres-10k" -> SpheresScene.json(100);
+            case "mesh-100k" -> {
+                Files.createDirectories(dir);
+                MeshScene.writeObj(MeshScene.mesh(), dir.resolve(MeshScene.OBJ_FILE));
+                yield MeshScene.json(MeshScene.OBJ_FILE);
+            }
+            default -> throw new IllegalArgumentException("no generated scene '" + name + "'");
+        };
+        return json.getBytes(StandardCharsets.UTF_8);
     }
 
     public static int run(String[] args, PrintStream out, PrintStream err) {
@@ -98,12 +117,13 @@ public final class PeersCommand {
             int turn = 0;
             for (String name : o.scenes) {
                 String file = SCENE_FILES.get(name);
-                byte[] json = file == null ? SpheresScene.json(100).getBytes(java.nio.charset.StandardCharsets.UTF_8)
-                        : Files.readAllBytes(o.scenesDir.resolve(file));
+                Path dir = o.work.resolve(name);
+                byte[] json = file == null ? generated(name, dir) : Files.readAllBytes(o.scenesDir.resolve(file));
+                Path meshFolder = file == null ? dir : o.scenesDir.resolve(file).toAbsolutePath().getParent();
                 PeerScene scene;
                 try {
-                    scene = PeerScene.write(name, json, reader, o.work.resolve(name), renderers, o.samples);
-                } catch (InvalidSceneException e) {
+                    scene = PeerScene.write(name, json, reader, dir, renderers, o.samples, meshFolder);
+                } catch (InvalidSceneException | IllegalArgumentException e) {
                     err.println("error: invalid scene " + name + ": " + e.getMessage());
                     return INVALID;
                 }

@@ -3,6 +3,7 @@ package studio.bench;
 import studio.engine.material.Material;
 import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
+import studio.engine.mesh.MeshData;
 import studio.engine.render.RenderSettings;
 
 /**
@@ -25,6 +26,8 @@ import studio.engine.render.RenderSettings;
  *     { ior }}. Filtered light passes shadow rays, so glass casts a light, tinted shadow as ours.</li>
  * <li>Boxes: {@code rotate z, then y, then x}: our rotation matrix is Rx Ry Rz (three.js 'XYZ'),
  *     which turns a point about z first; POV-Ray's rotate matrices are the same numbers as ours.</li>
+ * <li>Meshes: {@code mesh2} in object space, then {@code scale s}, the box's rotations and
+ *     {@code translate}: the engine's placement (scale, rotate XYZ, move).</li>
  * </ul>
  */
 public final class PovrayScene {
@@ -77,37 +80,53 @@ public final class PovrayScene {
             sdl.append("sphere { ").append(Sdl.vec(s.center())).append(", ").append(Sdl.num(s.radius()));
         } else if (shape instanceof ResolvedScene.Box b) {
             Vec3 half = b.size().times(0.5);
-            Vec3 r = b.rotationDegrees();
             sdl.append("box { ").append(Sdl.vec(half.negated())).append(", ").append(Sdl.vec(half));
-            if (r.z() != 0) {
-                sdl.append(" rotate z*").append(Sdl.num(r.z()));
-            }
-            if (r.y() != 0) {
-                sdl.append(" rotate y*").append(Sdl.num(r.y()));
-            }
-            if (r.x() != 0) {
-                sdl.append(" rotate x*").append(Sdl.num(r.x()));
-            }
+            rotate(sdl, b.rotationDegrees());
             sdl.append(" translate ").append(Sdl.vec(b.center()));
         } else if (shape instanceof ResolvedScene.Plane p) {
             sdl.append("plane { ").append(Sdl.vec(p.normal())).append(", ").append(Sdl.num(p.normal().dot(p.point())));
         } else {
-            mesh(sdl, ((ResolvedScene.Mesh) shape).mesh());
+            ResolvedScene.Mesh m = (ResolvedScene.Mesh) shape;
+            mesh(sdl, m.mesh());
+            sdl.append("\n  scale ").append(Sdl.num(m.scale()));
+            rotate(sdl, m.rotationDegrees());
+            sdl.append(" translate ").append(Sdl.vec(m.position()));
         }
         sdl.append("\n  ").append(material(shape.material(), ambient)).append(" }\n");
     }
 
     /**
-     * A world-space triangle mesh as {@code mesh2 { vertex_vectors normal_vectors face_indices }},
-     * without its closing brace (the material follows).
+     * Our rotation (Euler degrees, Rx Ry Rz) as POV-Ray rotations: about z first, then y, then x
+     * (see {@code RotationOrderTest}); zero angles are left out.
+     */
+    static void rotate(StringBuilder sdl, Vec3 degrees) {
+        if (degrees.z() != 0) {
+            sdl.append(" rotate z*").append(Sdl.num(degrees.z()));
+        }
+        if (degrees.y() != 0) {
+            sdl.append(" rotate y*").append(Sdl.num(degrees.y()));
+        }
+        if (degrees.x() != 0) {
+            sdl.append(" rotate x*").append(Sdl.num(degrees.x()));
+        }
+    }
+
+    /**
+     * An object-space triangle mesh as {@code mesh2 { vertex_vectors [normal_vectors] face_indices }},
+     * without its transform and closing brace (they follow). A vertex's normal has the vertex's
+     * index, so the face indices serve both.
      */
     static void mesh(StringBuilder sdl, MeshData mesh) {
         int n = mesh.vertexCount();
         sdl.append("mesh2 {\n  vertex_vectors { ").append(n);
         appendTriples(sdl, mesh.positions());
-        sdl.append(" }\n  normal_vectors { ").append(n);
-        appendTriples(sdl, mesh.normals());
-        sdl.append(" }\n  face_indices { ").append(mesh.triangleCount());
+        sdl.append(" }");
+        if (mesh.hasNormals()) {
+            sdl.append("\n  normal_vectors { ").append(n);
+            appendTriples(sdl, mesh.normals());
+            sdl.append(" }");
+        }
+        sdl.append("\n  face_indices { ").append(mesh.triangleCount());
         int[] idx = mesh.indices();
         for (int i = 0; i < idx.length; i += 3) {
             sdl.append(i % 24 == 0 ? ",\n    <" : ", <").append(idx[i]).append(',').append(idx[i + 1]).append(',')

@@ -8,9 +8,12 @@ import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
+import studio.engine.mesh.MeshData;
+import studio.engine.mesh.ObjReader;
 import studio.server.scene.CameraDto;
 import studio.server.scene.LightDto;
 import studio.server.scene.MaterialDto;
+import studio.server.scene.MeshFiles;
 import studio.server.scene.ObjectDto;
 import studio.server.scene.RenderDto;
 import studio.server.scene.SceneDefaults;
@@ -49,8 +52,13 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
     public record Plane(Vec3 point, Vec3 normal, Material material) implements Shape {
     }
 
-    /** A triangle mesh already in world space (see {@link MeshData}). */
-    public record Mesh(MeshData mesh, Material material) implements Shape {
+    /**
+     * A triangle mesh in object space (the engine's {@link MeshData}, as read from the scene's OBJ),
+     * placed as the engine's TriangleMesh places it: scaled uniformly, then rotated (Euler degrees,
+     * three.js order XYZ, as a box), then moved to {@code position}.
+     */
+    public record Mesh(MeshData mesh, Vec3 position, double scale, Vec3 rotationDegrees, Material material)
+            implements Shape {
     }
 
     /** The material of every object but planes in the silhouette variant: flat white. */
@@ -59,8 +67,18 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
      *  the silhouettes of the objects on them still show. */
     public static final Material MASK_PLANE_MATERIAL = MaterialDefaults.of(MaterialKind.FLAT, Rgb.BLACK);
 
-    /** The scene at the given image size, with the scene format's defaults for every field left out. */
+    /** As {@link #of(SceneDto, int, int, MeshFiles)} for a scene whose meshes are all inline. */
     public static ResolvedScene of(SceneDto dto, int width, int height) {
+        return of(dto, width, height, MeshFiles.none());
+    }
+
+    /**
+     * The scene at the given image size, with the scene format's defaults for every field left out;
+     * a mesh's {@code file} is read from {@code meshFiles}.
+     *
+     * @throws IllegalArgumentException if a mesh has no OBJ text, or it cannot be read or parsed
+     */
+    public static ResolvedScene of(SceneDto dto, int width, int height, MeshFiles meshFiles) {
         CameraDto c = dto.camera() != null ? dto.camera() : new CameraDto(null, null, null, null);
         Camera camera = new Camera(vec(or(c.position(), SceneDefaults.CAMERA_POSITION)),
                 vec(or(c.lookAt(), SceneDefaults.CAMERA_LOOK_AT)), vec(or(c.up(), SceneDefaults.CAMERA_UP)),
@@ -89,6 +107,13 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
             } else if (o instanceof ObjectDto.Box b) {
                 objects.add(new Box(vec(or(b.center(), SceneDefaults.BOX_CENTER)), vec(or(b.size(), SceneDefaults.BOX_SIZE)),
                         vec(or(b.rotation(), SceneDefaults.ORIGIN)), m));
+            } else if (o instanceof ObjectDto.Mesh x) {
+                if ((x.obj() == null) == (x.file() == null)) {
+                    throw new IllegalArgumentException("a mesh needs either its OBJ text in \"obj\" or a \"file\"");
+                }
+                MeshData data = ObjReader.parse(x.obj() != null ? x.obj() : meshFiles.read(x.file()));
+                objects.add(new Mesh(data, vec(or(x.position(), SceneDefaults.ORIGIN)),
+                        or(x.scale(), SceneDefaults.MESH_SCALE), vec(or(x.rotation(), SceneDefaults.ORIGIN)), m));
             } else {
                 ObjectDto.Plane p = (ObjectDto.Plane) o;
                 objects.add(new Plane(vec(or(p.point(), SceneDefaults.ORIGIN)),
@@ -123,7 +148,8 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
         if (s instanceof Plane x) {
             return new Plane(x.point(), x.normal(), m);
         }
-        return new Mesh(((Mesh) s).mesh(), m);
+        Mesh x = (Mesh) s;
+        return new Mesh(x.mesh(), x.position(), x.scale(), x.rotationDegrees(), m);
     }
 
     public double aspect() {

@@ -7,6 +7,7 @@ import studio.engine.material.Material;
 import studio.engine.math.Rgb;
 import studio.engine.math.Rotation;
 import studio.engine.math.Vec3;
+import studio.engine.mesh.MeshData;
 
 /**
  * A resolved scene as calls of Sunflow's API ({@link SunflowScript}): the same geometry, camera and
@@ -93,7 +94,8 @@ public final class SunflowScene {
                         .geometry(name + ".geometry", "plane").strings("shaders", shader)
                         .instance(name, name + ".geometry");
             } else {
-                mesh(s, name, ((ResolvedScene.Mesh) shape).mesh(), shader);
+                ResolvedScene.Mesh mesh = (ResolvedScene.Mesh) shape;
+                mesh(s, name, mesh.mesh(), shader, transform(mesh.position(), mesh.rotationDegrees(), mesh.scale()));
             }
         }
         return s;
@@ -126,21 +128,37 @@ public final class SunflowScene {
 
     /** Translation times our rotation matrix (Rx Ry Rz), row-major; the box's size is in its points. */
     static double[] boxTransform(ResolvedScene.Box box) {
-        Rotation r = Rotation.fromEulerDegrees(box.rotationDegrees());
-        Vec3 c = box.center();
+        return transform(box.center(), box.rotationDegrees(), 1);
+    }
+
+    /**
+     * The engine's placement of a box or mesh as a row-major instance transform: translation times
+     * our rotation matrix (Rx Ry Rz) times a uniform scale, so a point is scaled, then rotated
+     * (about z first), then moved.
+     */
+    static double[] transform(Vec3 translation, Vec3 rotationDegrees, double scale) {
+        Rotation r = Rotation.fromEulerDegrees(rotationDegrees);
+        Vec3 c = translation;
         return new double[] {
-                r.get(0, 0), r.get(0, 1), r.get(0, 2), c.x(),
-                r.get(1, 0), r.get(1, 1), r.get(1, 2), c.y(),
-                r.get(2, 0), r.get(2, 1), r.get(2, 2), c.z(),
+                scale * r.get(0, 0), scale * r.get(0, 1), scale * r.get(0, 2), c.x(),
+                scale * r.get(1, 0), scale * r.get(1, 1), scale * r.get(1, 2), c.y(),
+                scale * r.get(2, 0), scale * r.get(2, 1), scale * r.get(2, 2), c.z(),
                 0, 0, 0, 1};
     }
 
-    /** A world-space triangle mesh: Sunflow's "triangle_mesh" with per-vertex normals. */
-    static void mesh(SunflowScript s, String name, MeshData mesh, String shader) {
-        s.floats("points", "point", "vertex", mesh.positions())
-                .floats("normals", "vector", "vertex", mesh.normals())
-                .ints("triangles", mesh.indices())
-                .geometry(name + ".geometry", "triangle_mesh").strings("shaders", shader)
+    /**
+     * An object-space triangle mesh: Sunflow's "triangle_mesh" (with per-vertex normals if it has
+     * them), instanced with {@code transform}. Sunflow turns normals by the instance's
+     * inverse transpose, which for a uniform scale is the rotation.
+     */
+    static void mesh(SunflowScript s, String name, MeshData mesh, String shader, double[] transform) {
+        s.floats("points", "point", "vertex", mesh.positions());
+        if (mesh.hasNormals()) {
+            s.floats("normals", "vector", "vertex", mesh.normals());
+        }
+        s.ints("triangles", mesh.indices())
+                .geometry(name + ".geometry", "triangle_mesh")
+                .matrix("transform", transform).strings("shaders", shader)
                 .instance(name, name + ".geometry");
     }
 

@@ -1,15 +1,23 @@
 package studio.bench;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
+import jakarta.validation.Validation;
+import jakarta.validation.ValidatorFactory;
 import studio.server.scene.LightDto;
 import studio.server.scene.MaterialDto;
 import studio.server.scene.ObjectDto;
 import studio.server.scene.SceneDto;
+import studio.server.scene.SceneReader;
 
 class PeerSceneTest {
 
@@ -42,5 +50,27 @@ class PeerSceneTest {
         assertEquals(ResolvedScene.MASK_PLANE_MATERIAL, mask.objects().get(1).material());
         assertEquals(0, mask.lights().size());
         assertEquals(studio.engine.math.Rgb.BLACK, mask.background());
+    }
+
+    /** A scene file from elsewhere whose mesh is a file: the file is copied beside our copy of the scene. */
+    @Test
+    void meshFilesAreReadFromTheScenesFolderAndCopiedBesideOurCopy(@TempDir Path tmp) throws Exception {
+        Path scenes = Files.createDirectories(tmp.resolve("scenes/meshes"));
+        Files.writeString(scenes.resolve("tri.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        String json = """
+                { "objects": [ { "type": "mesh", "file": "meshes/tri.obj", "scale": 2 } ] }
+                """;
+        Path work = tmp.resolve("work/tri");
+        Renderers renderers = new Renderers(Path.of("java"), Path.of("studio.jar"), Path.of("povray"),
+                Path.of("sunflow.jar"), tmp, 80, 60, 1);
+        PeerScene scene;
+        try (ValidatorFactory validation = Validation.buildDefaultValidatorFactory()) {
+            scene = PeerScene.write("tri", json.getBytes(StandardCharsets.UTF_8),
+                    new SceneReader(validation.getValidator()), work, renderers, List.of(1), tmp.resolve("scenes"));
+        }
+        assertEquals(Files.readString(scenes.resolve("tri.obj")), Files.readString(work.resolve("meshes/tri.obj")));
+        assertTrue(Files.readString(scene.pov()).contains("face_indices { 1,\n    <0,1,2> }\n  scale 2 translate <0, 0, 0>"));
+        assertTrue(Files.readString(scene.sunflow().get(1)).contains("geometry object0.geometry triangle_mesh"));
+        assertEquals(1, ((ResolvedScene.Mesh) scene.scene().objects().get(0)).mesh().triangleCount());
     }
 }

@@ -9,6 +9,8 @@ import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
 
+import studio.engine.mesh.MeshData;
+
 class PovraySceneTest {
 
     static final String STILL_LIFE_LIKE = """
@@ -104,14 +106,29 @@ class PovraySceneTest {
 
     @Test
     void meshIsAMesh2WithAsManyVerticesNormalsAndFacesAsGiven() {
-        MeshData mesh = new MeshData(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0},
-                new double[] {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, new int[] {0, 1, 2, 2, 1, 3});
+        MeshData mesh = new MeshData(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, new int[] {0, 1, 2, 2, 1, 3},
+                new double[] {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
         StringBuilder sdl = new StringBuilder();
         PovrayScene.mesh(sdl, mesh);
         String text = sdl.toString();
         assertTrue(text.startsWith("mesh2 {\n  vertex_vectors { 4,\n    <0,0,0>, <1,0,0>, <0,1,0>, <1,1,0> }"), text);
         assertTrue(text.contains("normal_vectors { 4,\n    <0,0,1>, <0,0,1>, <0,0,1>, <0,0,1> }"), text);
         assertTrue(text.endsWith("face_indices { 2,\n    <0,1,2>, <2,1,3> }"), text);
+
+        StringBuilder flat = new StringBuilder();
+        PovrayScene.mesh(flat, new MeshData(mesh.positions(), mesh.indices(), null));
+        assertFalse(flat.toString().contains("normal_vectors"), flat.toString());
+    }
+
+    @Test
+    void meshIsScaledThenRotatedAsABoxThenMoved() {
+        String json = """
+                { "objects": [ { "type": "mesh", "obj": "v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\n",
+                                 "position": [1, 2, 3], "scale": 0.5, "rotation": [10, 20, 30] } ] }
+                """;
+        String sdl = PovrayScene.of(ResolvedScene.of(TestRenders.read(json), 80, 60), "t");
+        assertTrue(sdl.contains("face_indices { 1,\n    <0,1,2> }\n  scale 0.5 rotate z*30 rotate y*20 rotate x*10 "
+                + "translate <1, 2, 3>\n  texture"), sdl);
     }
 
     @Test

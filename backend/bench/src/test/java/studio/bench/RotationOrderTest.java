@@ -11,8 +11,11 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import studio.engine.geometry.TriangleMesh;
 import studio.engine.math.Rotation;
 import studio.engine.math.Vec3;
+import studio.engine.mesh.MeshData;
+import studio.engine.mesh.MeshShapes;
 
 /**
  * Boxes are rotated as ours are by both peers. Ours is R = Rx Ry Rz (three.js order 'XYZ'), which turns
@@ -68,6 +71,31 @@ class RotationOrderTest {
         Vec3 actual = new Vec3(m[0] * p.x() + m[1] * p.y() + m[2] * p.z() + m[3],
                 m[4] * p.x() + m[5] * p.y() + m[6] * p.z() + m[7], m[8] * p.x() + m[9] * p.y() + m[10] * p.z() + m[11]);
         assertEquals(0, expected.minus(actual).length(), 1e-12);
+    }
+
+    /**
+     * A mesh is placed as the engine places it (scale, then rotate Rx Ry Rz, then move): Sunflow's
+     * instance matrix and POV-Ray's {@code scale s rotate z rotate y rotate x translate p} both give
+     * TriangleMesh's world-space vertices.
+     */
+    @Test
+    void meshTransformsAreTheEnginesPlacement() {
+        MeshData data = MeshShapes.torusKnot(2, 3, 24, 6);
+        Vec3 position = new Vec3(1, -2, 0.5), rotation = new Vec3(30, 45, 60);
+        double scale = 0.7;
+        double[] world = new TriangleMesh(data, position, scale, rotation).positions();
+        double[] m = SunflowScene.transform(position, rotation, scale);
+        double[] p = data.positions();
+        for (int i = 0; i < p.length; i += 3) {
+            Vec3 engine = new Vec3(world[i], world[i + 1], world[i + 2]);
+            Vec3 sunflow = new Vec3(m[0] * p[i] + m[1] * p[i + 1] + m[2] * p[i + 2] + m[3],
+                    m[4] * p[i] + m[5] * p[i + 1] + m[6] * p[i + 2] + m[7],
+                    m[8] * p[i] + m[9] * p[i + 1] + m[10] * p[i + 2] + m[11]);
+            Vec3 povray = povrayRotate(povrayRotate(povrayRotate(new Vec3(p[i], p[i + 1], p[i + 2]).times(scale), 'z',
+                    rotation.z()), 'y', rotation.y()), 'x', rotation.x()).plus(position);
+            assertEquals(0, engine.minus(sunflow).length(), 1e-12, "vertex " + i / 3);
+            assertEquals(0, engine.minus(povray).length(), 1e-12, "vertex " + i / 3);
+        }
     }
 
     @Test

@@ -19,6 +19,7 @@ import jakarta.validation.ValidatorFactory;
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.Renderer;
 import studio.server.scene.CompiledScene;
+import studio.server.scene.MeshFiles;
 import studio.server.scene.SceneDto;
 import studio.server.scene.SceneLimits;
 import studio.server.scene.SceneMapper;
@@ -40,11 +41,16 @@ final class TestRenders {
 
     /** Ours at one sample per pixel through the pixel centres, whatever the scene's render settings. */
     static BufferedImage ours(String json, int width, int height) {
+        return ours(json, width, height, MeshFiles.none());
+    }
+
+    /** As {@link #ours(String, int, int)}, mesh files read from {@code meshFiles} (as the CLI: beside the scene). */
+    static BufferedImage ours(String json, int width, int height, MeshFiles meshFiles) {
         try (ValidatorFactory validation = Validation.buildDefaultValidatorFactory()) {
             SceneDto dto = new SceneReader(validation.getValidator()).read(json.getBytes(StandardCharsets.UTF_8),
                     Map.of("image.width", width, "image.height", height, "render.samples", 1,
                             "render.sampler", "regular"));
-            CompiledScene compiled = new SceneMapper(SceneLimits.DEFAULTS).map(dto, 1);
+            CompiledScene compiled = new SceneMapper(SceneLimits.DEFAULTS).map(dto, 1, meshFiles);
             return ImageEncoder.toImage(Renderer.render(compiled.scene(), compiled.settings()).film());
         }
     }
