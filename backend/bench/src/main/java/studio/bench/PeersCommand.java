@@ -40,7 +40,7 @@ public final class PeersCommand {
 
     static final String USAGE = "usage: java -jar studio-bench.jar peers [--runs 5] [--scenes "
             + String.join(",", SCENE_FILES.keySet()) + "] [--samples 1,16] [--out docs/bench] [--work DIR] "
-            + "[--threads 2] [--scenes-dir scenes] [--studio-jar backend/server/target/studio.jar] "
+            + "[--threads 2] [--scenes-dir scenes] [--studio-jar backend/server/target/studio.jar] [--launcher bin/studio|none] "
             + "[--povray /usr/bin/povray] [--sunflow-jar /usr/share/java/sunflow.jar] [--java PATH]";
 
     private PeersCommand() {
@@ -97,7 +97,7 @@ public final class PeersCommand {
         Renderers renderers;
         try {
             renderers = new Renderers(o.java, o.studioJar, o.povray, o.sunflowJar, benchClasses(), WIDTH, HEIGHT,
-                    o.threads);
+                    o.threads, o.launcher);
         } catch (URISyntaxException e) {
             err.println("error: cannot find this module's classes: " + e.getMessage());
             return IO_ERROR;
@@ -217,6 +217,8 @@ public final class PeersCommand {
         Path work = Path.of(System.getProperty("java.io.tmpdir"), "studio-peers");
         Path scenesDir = Path.of("scenes");
         Path studioJar = Path.of("backend/server/target/studio.jar");
+        /** Runs ours through bin/studio (with its class-data-sharing archive) when that exists; --launcher none: java -jar. */
+        Path launcher = Files.isExecutable(Path.of("bin/studio")) ? Path.of("bin/studio") : null;
         Path povray = Path.of("/usr/bin/povray");
         Path sunflowJar = Path.of("/usr/share/java/sunflow.jar");
         Path java = ProcessHandle.current().info().command().map(Path::of).orElse(Path.of("java"));
@@ -237,6 +239,10 @@ public final class PeersCommand {
                     case "--work" -> o.work = Path.of(Args.value(args, ++i, a));
                     case "--scenes-dir" -> o.scenesDir = Path.of(Args.value(args, ++i, a));
                     case "--studio-jar" -> o.studioJar = Path.of(Args.value(args, ++i, a));
+                    case "--launcher" -> {
+                        String value = Args.value(args, ++i, a);
+                        o.launcher = value.equals("none") ? null : Path.of(value);
+                    }
                     case "--povray" -> o.povray = Path.of(Args.value(args, ++i, a));
                     case "--sunflow-jar" -> o.sunflowJar = Path.of(Args.value(args, ++i, a));
                     case "--java" -> o.java = Path.of(Args.value(args, ++i, a));

@@ -13,7 +13,13 @@ import java.util.List;
  * @param benchClasses where {@link SunflowRender} is (this module's jar or classes folder)
  */
 record Renderers(Path java, Path studioJar, Path povray, Path sunflowJar, Path benchClasses, int width, int height,
-                 int threads) {
+                 int threads, Path launcher) {
+
+    /** Ours as {@code java -jar studio.jar}, without the launcher. */
+    Renderers(Path java, Path studioJar, Path povray, Path sunflowJar, Path benchClasses, int width, int height,
+              int threads) {
+        this(java, studioJar, povray, sunflowJar, benchClasses, width, height, threads, null);
+    }
 
     enum Peer {
         OURS("ours"), POVRAY("povray"), SUNFLOW("sunflow");
@@ -30,9 +36,11 @@ record Renderers(Path java, Path studioJar, Path povray, Path sunflowJar, Path b
      * as the peers do); more use the scene's own sampler.
      */
     List<String> ours(Path sceneJson, Path out, int samples) {
-        List<String> cmd = new ArrayList<>(List.of(java.toString(), "-jar", studioJar.toString(), "render",
-                sceneJson.toString(), "-o", out.toString(), "--width", Integer.toString(width), "--height",
-                Integer.toString(height), "--samples", Integer.toString(samples)));
+        // bin/studio runs the same jar with a class-data-sharing archive (made on its first run)
+        List<String> cmd = new ArrayList<>(launcher != null ? List.of(launcher.toString())
+                : List.of(java.toString(), "-jar", studioJar.toString()));
+        cmd.addAll(List.of("render", sceneJson.toString(), "-o", out.toString(), "--width", Integer.toString(width),
+                "--height", Integer.toString(height), "--samples", Integer.toString(samples)));
         if (samples == 1) {
             cmd.addAll(List.of("--sampler", "regular"));
         }
