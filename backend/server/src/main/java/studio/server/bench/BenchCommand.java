@@ -33,7 +33,7 @@ public final class BenchCommand {
     /** Exit codes, as the render command's: 0 done, 1 could not read or write a file, 2 bad arguments or an invalid scene. */
     static final int OK = 0, IO_ERROR = 1, INVALID = 2;
 
-    static final int DEFAULT_WIDTH = 160, DEFAULT_HEIGHT = 120, DEFAULT_RUNS = 5, DEFAULT_REFERENCE_SAMPLES = 1024;
+    static final int DEFAULT_WIDTH = 320, DEFAULT_HEIGHT = 240, DEFAULT_RUNS = 5, DEFAULT_REFERENCE_SAMPLES = 1024;
 
     static final String USAGE = "usage: java -jar studio.jar bench [--out docs/bench] [--width " + DEFAULT_WIDTH
             + "] [--height " + DEFAULT_HEIGHT + "] [--runs " + DEFAULT_RUNS + "] [--reference-samples "
