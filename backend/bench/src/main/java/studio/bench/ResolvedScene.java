@@ -12,12 +12,12 @@ import studio.engine.mesh.MeshData;
 import studio.engine.mesh.ObjReader;
 import studio.server.scene.CameraDto;
 import studio.server.scene.LightDto;
-import studio.server.scene.MaterialDto;
 import studio.server.scene.MeshFiles;
 import studio.server.scene.ObjectDto;
 import studio.server.scene.RenderDto;
 import studio.server.scene.SceneDefaults;
 import studio.server.scene.SceneDto;
+import studio.server.scene.SceneMapper;
 
 /**
  * A scene file with every default applied, in the terms the exporters need: positions in world
@@ -87,20 +87,20 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
 
         List<Light> lights = new ArrayList<>();
         if (dto.lights() == null) {
-            lights.add(new Light(vec(SceneDefaults.LIGHT_POSITION), color(SceneDefaults.LIGHT_COLOR),
+            lights.add(new Light(vec(SceneDefaults.LIGHT_POSITION), SceneMapper.color(SceneDefaults.LIGHT_COLOR),
                     SceneDefaults.LIGHT_INTENSITY, false));
         } else {
             for (LightDto light : dto.lights()) {
                 LightDto.Point p = (LightDto.Point) light;
                 lights.add(new Light(vec(or(p.position(), SceneDefaults.LIGHT_POSITION)),
-                        color(or(p.color(), SceneDefaults.LIGHT_COLOR)),
+                        SceneMapper.color(or(p.color(), SceneDefaults.LIGHT_COLOR)),
                         or(p.intensity(), SceneDefaults.LIGHT_INTENSITY), Boolean.TRUE.equals(p.falloff())));
             }
         }
 
         List<Shape> objects = new ArrayList<>();
         for (ObjectDto o : dto.objects()) {
-            Material m = material(o.material());
+            Material m = SceneMapper.material(o.material());
             if (o instanceof ObjectDto.Sphere s) {
                 objects.add(new Sphere(vec(or(s.center(), SceneDefaults.SPHERE_CENTER)),
                         or(s.radius(), SceneDefaults.SPHERE_RADIUS), m));
@@ -120,7 +120,7 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
                         vec(or(p.normal(), SceneDefaults.PLANE_NORMAL)).normalized(), m));
             }
         }
-        return new ResolvedScene(width, height, camera, color(or(dto.background(), SceneDefaults.BACKGROUND)),
+        return new ResolvedScene(width, height, camera, SceneMapper.color(or(dto.background(), SceneDefaults.BACKGROUND)),
                 or(dto.ambient(), SceneDefaults.AMBIENT), or(render.maxDepth(), SceneDefaults.MAX_DEPTH), lights, objects);
     }
 
@@ -154,38 +154,6 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
 
     public double aspect() {
         return (double) width / height;
-    }
-
-    /** The engine material for a DTO, exactly as the server maps it; a missing material is default chalk. */
-    static Material material(MaterialDto m) {
-        if (m == null) {
-            return MaterialDefaults.of(MaterialKind.CHALK, null);
-        }
-        Rgb color = m.color() != null ? color(m.color()) : null;
-        if (m instanceof MaterialDto.Flat) {
-            return MaterialDefaults.of(MaterialKind.FLAT, color);
-        }
-        if (m instanceof MaterialDto.Chalk c) {
-            return MaterialDefaults.of(MaterialKind.CHALK, color, c.diffuse(), null, null, null, null);
-        }
-        if (m instanceof MaterialDto.Plastic p) {
-            return MaterialDefaults.of(MaterialKind.PLASTIC, color, p.diffuse(), p.specular(), p.shininess(), null, null);
-        }
-        if (m instanceof MaterialDto.Metal x) {
-            return MaterialDefaults.of(MaterialKind.METAL, color, x.diffuse(), x.specular(), x.shininess(),
-                    x.reflectivity(), null);
-        }
-        if (m instanceof MaterialDto.Mirror x) {
-            return MaterialDefaults.of(MaterialKind.MIRROR, color, null, null, null, x.reflectivity(), null);
-        }
-        MaterialDto.Glass g = (MaterialDto.Glass) m;
-        return MaterialDefaults.of(MaterialKind.GLASS, color, null, g.specular(), g.shininess(), null, g.ior());
-    }
-
-    /** "#rrggbb" in linear light. */
-    static Rgb color(String hex) {
-        int rgb = Integer.parseInt(hex.substring(1), 16);
-        return Rgb.fromSrgb8(rgb >> 16 & 0xff, rgb >> 8 & 0xff, rgb & 0xff);
     }
 
     private static Vec3 vec(List<Double> v) {

@@ -57,7 +57,7 @@ final class Integrator {
             hits[i] = new Hit();
             childRays[i] = new Ray();
         }
-        this.radiance = new double[3 * (maxDepth + 2)];
+        this.radiance = new double[3 * (maxDepth + 1)];
     }
 
     /** Radiance arriving along a camera ray, as a colour (a convenience that allocates; the render loop uses {@link #trace}). */

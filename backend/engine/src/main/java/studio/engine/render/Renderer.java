@@ -179,8 +179,8 @@ public final class Renderer {
         final boolean progressive;
         final SobolSampler.Sequence sequence = new SobolSampler.Sequence();
         final Ray cameraRay = new Ray();
-        /** Progressive adaptive sampling: each base pixel's mean and per-channel range, over a tile and its ring. */
-        final double[] baseMean = new double[3 * RING_TILE * RING_TILE];
+        /** Progressive adaptive sampling: each base pixel's sum and per-channel range, over a tile and its ring. */
+        final double[] baseSum = new double[3 * RING_TILE * RING_TILE];
         final double[] baseMin = new double[3 * RING_TILE * RING_TILE], baseMax = new double[3 * RING_TILE * RING_TILE];
         final PixelRandom random = new PixelRandom();
         final double[] xs, ys;
@@ -264,9 +264,9 @@ public final class Renderer {
                         bad += badHere;
                     }
                     int i = (y - y0) * stride + x - x0;
-                    baseMean[3 * i] = sumR / base;
-                    baseMean[3 * i + 1] = sumG / base;
-                    baseMean[3 * i + 2] = sumB / base;
+                    baseSum[3 * i] = sumR;
+                    baseSum[3 * i + 1] = sumG;
+                    baseSum[3 * i + 2] = sumB;
                     baseMin[3 * i] = minR; baseMin[3 * i + 1] = minG; baseMin[3 * i + 2] = minB;
                     baseMax[3 * i] = maxR; baseMax[3 * i + 1] = maxG; baseMax[3 * i + 2] = maxB;
                 }
@@ -274,7 +274,7 @@ public final class Renderer {
             for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
                 for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
                     int i = (y - y0) * stride + x - x0;
-                    double r = baseMean[3 * i], g = baseMean[3 * i + 1], b = baseMean[3 * i + 2];
+                    double r = baseSum[3 * i] / base, g = baseSum[3 * i + 1] / base, b = baseSum[3 * i + 2] / base;
                     double limit = threshold * Math.max(Math.max(r, Math.max(g, b)), ERROR_FLOOR);
                     if (base >= max || neighbourhoodStep(i, stride, x - x0, y - y0, x1 - x0, y1 - y0, base) <= limit) {
                         samples += base;
@@ -317,7 +317,7 @@ public final class Renderer {
             sequence.seed(random);
             minR = baseMin[3 * i]; minG = baseMin[3 * i + 1]; minB = baseMin[3 * i + 2];
             maxR = baseMax[3 * i]; maxG = baseMax[3 * i + 1]; maxB = baseMax[3 * i + 2];
-            double totalR = baseMean[3 * i] * base, totalG = baseMean[3 * i + 1] * base, totalB = baseMean[3 * i + 2] * base;
+            double totalR = baseSum[3 * i], totalG = baseSum[3 * i + 1], totalB = baseSum[3 * i + 2];
             long bad = 0;
             int taken = base;
             while (taken < max) {

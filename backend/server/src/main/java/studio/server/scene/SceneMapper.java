@@ -190,8 +190,8 @@ public final class SceneMapper {
         return new Plane(vec(or(p.point(), SceneDefaults.ORIGIN)), vec(or(p.normal(), SceneDefaults.PLANE_NORMAL)));
     }
 
-    /** The engine material for a DTO; a missing material is default chalk. */
-    static Material material(MaterialDto m) {
+    /** The engine material for a DTO; a missing material is default chalk. (The peer benchmark uses it too.) */
+    public static Material material(MaterialDto m) {
         if (m == null) {
             return MaterialDefaults.of(MaterialKind.CHALK, null);
         }
@@ -217,7 +217,7 @@ public final class SceneMapper {
     }
 
     /** "#rrggbb" (already validated) in linear light. */
-    static Rgb color(String hex) {
+    public static Rgb color(String hex) {
         int rgb = Integer.parseInt(hex.substring(1), 16);
         return Rgb.fromSrgb8(rgb >> 16 & 0xff, rgb >> 8 & 0xff, rgb & 0xff);
     }
