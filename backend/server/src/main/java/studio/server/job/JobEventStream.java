@@ -7,7 +7,9 @@ import org.springframework.web.servlet.mvc.method.annotation.SseEmitter;
 
 /**
  * One client's server-sent event stream of a job: {@code status}, {@code tile} and finally
- * {@code end}, then the stream closes. A write that fails (the client went away) unsubscribes it.
+ * {@code end}, then the stream closes. When the client goes away (the container reports an async
+ * error, or the next write fails) the stream is dropped, and the job is cancelled if nobody else
+ * watches it (see {@link JobService#disconnected}).
  */
 final class JobEventStream implements JobListener {
 
@@ -23,7 +25,7 @@ final class JobEventStream implements JobListener {
         this.service = service;
         emitter.onCompletion(this::close);
         emitter.onTimeout(this::close);
-        emitter.onError(e -> close());
+        emitter.onError(e -> disconnected());
     }
 
     SseEmitter emitter() {
@@ -57,10 +59,14 @@ final class JobEventStream implements JobListener {
             emitter.send(event);
             return true;
         } catch (IOException | IllegalStateException e) {
-            close();
+            disconnected();
             emitter.completeWithError(e);
             return false;
         }
+    }
+
+    private void disconnected() {
+        service.disconnected(jobId, this);
     }
 
     private void close() {

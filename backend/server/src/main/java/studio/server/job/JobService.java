@@ -14,21 +14,36 @@ import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
+import studio.server.render.RenderBudget;
 import studio.server.scene.CompiledScene;
+import studio.server.system.MemoryBudget;
 
 /**
- * Runs render jobs on a bounded executor (a few at once, a short queue, then 429), keeps them
- * for a while after they finish, and cancels work nobody is waiting for any more.
+ * Runs render jobs on a bounded executor (a few at once, a short queue, then 429), each within the
+ * {@link RenderBudget} (its memory is reserved when it is accepted, so a queued job cannot fail for
+ * lack of it later), keeps them for a while after they finish, and cancels work nobody is waiting
+ * for any more: a job whose last event stream broke, or that nobody has asked about for a while.
  */
 public final class JobService implements AutoCloseable {
 
     private final JobSettings settings;
+    private final RenderBudget budget;
+    private final java.time.Duration shutdownGrace;
     private final ThreadPoolExecutor executor;
     private final ScheduledExecutorService janitor;
     private final Map<String, RenderJob> jobs = new ConcurrentHashMap<>();
 
     public JobService(JobSettings settings) {
+        this(settings, RenderBudget.unlimited(), java.time.Duration.ofSeconds(5));
+    }
+
+    /**
+     * @param shutdownGrace on shutdown, how long running jobs may go on before they are cancelled
+     */
+    public JobService(JobSettings settings, RenderBudget budget, java.time.Duration shutdownGrace) {
         this.settings = settings;
+        this.budget = budget;
+        this.shutdownGrace = shutdownGrace;
         AtomicInteger threads = new AtomicInteger();
         this.executor = new ThreadPoolExecutor(settings.concurrent(), settings.concurrent(), 0, TimeUnit.SECONDS,
                 new ArrayBlockingQueue<>(settings.queue()),
@@ -48,18 +63,27 @@ public final class JobService implements AutoCloseable {
     /**
      * Queues a validated scene.
      *
-     * @throws JobQueueFullException when every slot and queue place is taken
+     * @throws JobQueueFullException when every slot and queue place, or the memory the render needs, is taken
+     * @throws studio.server.scene.InvalidSceneException when the render could never fit the memory budget
      */
     public JobStatus submit(CompiledScene scene) {
         CompiledScene withThreads = new CompiledScene(scene.scene(),
                 scene.settings().withThreads(settings.renderThreads()), scene.format(), scene.quality(),
                 scene.fileStem());
-        RenderJob job = new RenderJob(UUID.randomUUID().toString().replace("-", ""), withThreads);
+        if (executor.isShutdown()) {
+            throw new JobQueueFullException(retryAfterSeconds(), "the server is shutting down");
+        }
+        MemoryBudget.Reservation memory = budget.reserve(withThreads);
+        if (memory == null) {
+            throw new JobQueueFullException(retryAfterSeconds(), "the server's render memory is taken by other jobs");
+        }
+        RenderJob job = new RenderJob(UUID.randomUUID().toString().replace("-", ""), withThreads, budget, memory);
         jobs.put(job.id(), job);
         try {
             executor.execute(job);
         } catch (RejectedExecutionException e) {
             jobs.remove(job.id());
+            job.release();
             throw new JobQueueFullException(retryAfterSeconds());
         }
         return job.status();
@@ -107,6 +131,18 @@ public final class JobService implements AutoCloseable {
         }
     }
 
+    /**
+     * A listener's connection broke (its client went away): it is dropped, and if it was the job's
+     * last listener, the job is cancelled at its next tile, as nobody is left to see the result.
+     * A client that wants a job to go on without watching it polls its status instead.
+     */
+    void disconnected(String id, JobListener listener) {
+        RenderJob job = jobs.get(id);
+        if (job != null && job.unsubscribeLast(listener)) {
+            cancel(id);
+        }
+    }
+
     private RenderJob job(String id) {
         RenderJob job = jobs.get(id);
         if (job == null) {
@@ -128,7 +164,7 @@ public final class JobService implements AutoCloseable {
             JobState state = job.state();
             if (state.isFinal()) {
                 if (now - job.finishedNanos() > settings.keepFinished().toNanos()) {
-                    jobs.remove(job.id());
+                    drop(job);
                 } else {
                     finished.add(job);
                 }
@@ -144,9 +180,14 @@ public final class JobService implements AutoCloseable {
         if (finished.size() > settings.maxFinished()) {
             finished.sort(Comparator.comparingLong(RenderJob::finishedNanos));
             for (RenderJob job : finished.subList(0, finished.size() - settings.maxFinished())) {
-                jobs.remove(job.id());
+                drop(job);
             }
         }
+    }
+
+    private void drop(RenderJob job) {
+        jobs.remove(job.id());
+        job.release();
     }
 
     /** Jobs known right now, finished ones included (for tests and metrics). */
@@ -154,25 +195,39 @@ public final class JobService implements AutoCloseable {
         return jobs.size();
     }
 
-    /** Cancels everything and stops the workers, waiting up to {@code graceMillis} for running renders. */
+    /**
+     * Stops taking jobs, cancels the queued ones, lets the running ones finish for up to
+     * {@code graceMillis}, then cancels them too (they stop at their next tile) and waits for that.
+     * Every job ends DONE or CANCELLED; nothing is left half done.
+     */
     public void shutdown(long graceMillis) {
         janitor.shutdownNow();
         executor.shutdown();
         for (RenderJob job : jobs.values()) {
-            if (!job.state().isFinal()) {
-                job.cancel();
+            if (job.state() == JobState.QUEUED) {
+                job.cancel("cancelled: the server is shutting down");
             }
         }
         try {
-            executor.awaitTermination(graceMillis, TimeUnit.MILLISECONDS);
+            if (!executor.awaitTermination(graceMillis, TimeUnit.MILLISECONDS)) {
+                for (RenderJob job : jobs.values()) {
+                    if (!job.state().isFinal()) {
+                        job.cancel("cancelled: the server shut down before the render finished");
+                    }
+                }
+                executor.awaitTermination(SHUTDOWN_CANCEL_WAIT_MILLIS, TimeUnit.MILLISECONDS);
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
         executor.shutdownNow();
     }
 
+    /** After cancelling, how long shutdown waits for the renders to reach their next tile. */
+    static final long SHUTDOWN_CANCEL_WAIT_MILLIS = 5_000;
+
     @Override
     public void close() {
-        shutdown(5_000);
+        shutdown(shutdownGrace.toMillis());
     }
 }

@@ -14,10 +14,12 @@ import studio.engine.image.ImageEncoder;
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
 import studio.engine.render.RenderResult;
-import studio.engine.render.Renderer;
 import studio.engine.render.TileRect;
 import studio.server.render.ImageFiles;
+import studio.server.render.RenderBudget;
+import studio.server.render.RenderTimeExceededException;
 import studio.server.scene.CompiledScene;
+import studio.server.system.MemoryBudget;
 
 /**
  * One render job: its scene, state, progress, the tiles finished so far (for clients that
@@ -28,6 +30,9 @@ final class RenderJob implements Runnable {
 
     private final String id;
     private final CompiledScene scene;
+    private final RenderBudget budget;
+    /** The render's memory while it is queued or running; then the image's, until the job is dropped. */
+    private MemoryBudget.Reservation memory;
     private final AtomicBoolean cancelRequested = new AtomicBoolean();
     private final List<TileEvent> tiles = new ArrayList<>();
     private final List<JobListener> listeners = new ArrayList<>();
@@ -38,13 +43,21 @@ final class RenderJob implements Runnable {
     private long startNanos, endNanos;
     private Double raysPerSecond;
     private String error;
+    /** Why a cancel was asked for, if it was. */
+    private String cancelReason = "cancelled";
     private byte[] image;
     /** When someone last asked about this job (status, events, image); see {@link JobService}. */
     private volatile long lastSeenNanos = System.nanoTime();
 
-    RenderJob(String id, CompiledScene scene) {
+    RenderJob(String id, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory) {
         this.id = id;
         this.scene = scene;
+        this.budget = budget;
+        this.memory = memory;
+    }
+
+    RenderJob(String id, CompiledScene scene) {
+        this(id, scene, RenderBudget.unlimited(), MemoryBudget.unlimited().tryReserve(0));
     }
 
     String id() {
@@ -62,7 +75,7 @@ final class RenderJob implements Runnable {
                 return;
             }
             if (cancelRequested.get()) {
-                finish(JobState.CANCELLED, "cancelled before it started");
+                finish(JobState.CANCELLED, cancelReason + " before it started");
                 return;
             }
             state = JobState.RUNNING;
@@ -70,8 +83,7 @@ final class RenderJob implements Runnable {
             broadcastStatus();
         }
         try {
-            RenderResult result = Renderer.render(scene.scene(), scene.settings(), this::tileFinished,
-                    cancelRequested::get);
+            RenderResult result = budget.render(scene, this::tileFinished, cancelRequested::get);
             byte[] bytes = ImageFiles.encode(result.film(), scene.format(), scene.quality());
             synchronized (this) {
                 image = bytes;
@@ -80,7 +92,11 @@ final class RenderJob implements Runnable {
             }
         } catch (RenderCancelledException e) {
             synchronized (this) {
-                finish(JobState.CANCELLED, "cancelled");
+                finish(JobState.CANCELLED, cancelReason);
+            }
+        } catch (RenderTimeExceededException e) {
+            synchronized (this) {
+                finish(JobState.FAILED, e.getMessage());
             }
         } catch (RuntimeException | OutOfMemoryError e) {
             synchronized (this) {
@@ -103,9 +119,16 @@ final class RenderJob implements Runnable {
 
     /** Asks the job to stop; a queued job is cancelled at once, a running one after its current tiles. */
     synchronized JobStatus cancel() {
-        cancelRequested.set(true);
+        return cancel("cancelled");
+    }
+
+    /** As {@link #cancel()}, with the reason the job's status will give. */
+    synchronized JobStatus cancel(String reason) {
+        if (!cancelRequested.getAndSet(true)) {
+            cancelReason = reason;
+        }
         if (state == JobState.QUEUED) {
-            finish(JobState.CANCELLED, "cancelled before it started");
+            finish(JobState.CANCELLED, cancelReason + " before it started");
         }
         return status();
     }
@@ -122,6 +145,12 @@ final class RenderJob implements Runnable {
         error = message;
         endNanos = System.nanoTime();
         tiles.clear();
+        // the render's memory is free now; the image, already made, is counted until the job is dropped
+        MemoryBudget.Reservation rendering = memory;
+        memory = image != null ? budget.memory().forceReserve(image.length) : null;
+        if (rendering != null) {
+            rendering.close();
+        }
         JobStatus status = status();
         for (JobListener listener : List.copyOf(listeners)) {
             listener.end(status);
@@ -147,6 +176,20 @@ final class RenderJob implements Runnable {
     synchronized void unsubscribe(JobListener listener) {
         listeners.remove(listener);
         touch();
+    }
+
+    /** Removes the listener; true if it was the last one of an unfinished job. */
+    synchronized boolean unsubscribeLast(JobListener listener) {
+        boolean removed = listeners.remove(listener);
+        return removed && listeners.isEmpty() && !state.isFinal();
+    }
+
+    /** Gives back the memory the job holds (it is being dropped, or was never started). */
+    synchronized void release() {
+        if (memory != null) {
+            memory.close();
+            memory = null;
+        }
     }
 
     synchronized void heartbeat() {

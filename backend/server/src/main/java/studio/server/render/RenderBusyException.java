@@ -1,9 +1,13 @@
 package studio.server.render;
 
-/** Every render slot is taken; the client should retry later. */
+/** Every render slot, or the memory a render needs, is taken; the client should retry later. */
 public final class RenderBusyException extends RuntimeException {
 
     public RenderBusyException() {
-        super("the server is busy rendering other scenes; try again shortly");
+        this("the server is busy rendering other scenes; try again shortly");
+    }
+
+    public RenderBusyException(String message) {
+        super(message);
     }
 }

@@ -1,5 +1,7 @@
 package studio.server.render;
 
+import java.util.concurrent.CompletionException;
+
 import org.springframework.http.ContentDisposition;
 import org.springframework.http.HttpHeaders;
 import org.springframework.http.MediaType;
@@ -7,8 +9,15 @@ import org.springframework.http.ResponseEntity;
 import org.springframework.web.bind.annotation.PostMapping;
 import org.springframework.web.bind.annotation.RequestBody;
 import org.springframework.web.bind.annotation.RestController;
+import org.springframework.web.context.request.async.DeferredResult;
 
-/** POST /api/render: a scene in, the image out. */
+import jakarta.servlet.http.HttpServletRequest;
+
+/**
+ * POST /api/render: a scene in, the image out. The render runs on the render service's threads
+ * while the request waits asynchronously; a client that disconnects cancels its render at the next
+ * tile ({@link ClientProbe} notices it, or the container reports an async error).
+ */
 @RestController
 class RenderController {
 
@@ -19,8 +28,38 @@ class RenderController {
     }
 
     @PostMapping("/api/render")
-    ResponseEntity<byte[]> render(@RequestBody(required = false) byte[] scene) {
-        RenderedImage image = renderService.render(scene != null ? scene : new byte[0]);
+    DeferredResult<ResponseEntity<byte[]>> render(@RequestBody(required = false) byte[] scene,
+                                                  HttpServletRequest request) {
+        ClientProbe client = ClientProbe.of(request);
+        RenderService.Ticket ticket;
+        try {
+            ticket = renderService.start(scene != null ? scene : new byte[0], client);
+        } catch (RuntimeException e) {
+            client.close();
+            throw e;
+        }
+        DeferredResult<ResponseEntity<byte[]>> response = new DeferredResult<>(renderService.responseTimeoutMillis());
+        response.onError(error -> {
+            client.close();
+            ticket.cancel();
+        });
+        response.onTimeout(() -> {
+            client.close();
+            ticket.cancel();
+        });
+        response.onCompletion(client::close);
+        ticket.result().whenComplete((image, error) -> {
+            if (error == null) {
+                response.setResult(ok(image));
+            } else {
+                response.setErrorResult(error instanceof CompletionException wrapped && wrapped.getCause() != null
+                        ? wrapped.getCause() : error);
+            }
+        });
+        return response;
+    }
+
+    static ResponseEntity<byte[]> ok(RenderedImage image) {
         return ResponseEntity.ok()
                 .contentType(MediaType.parseMediaType(image.mediaType()))
                 .header(HttpHeaders.CONTENT_DISPOSITION,

@@ -1,42 +1,214 @@
 package studio.server.render;
 
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.Semaphore;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 
+import studio.engine.render.RenderCancelledException;
+import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
-import studio.engine.render.Renderer;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.SceneCompiler;
+import studio.server.system.MemoryBudget;
 
-/** Renders scenes for the synchronous API, at most a configured number at once. */
-public final class RenderService {
+/**
+ * Renders scenes for the synchronous API: at most a configured number at once, each within the
+ * {@link RenderBudget}, on the service's own render threads, so that the HTTP thread is free and a
+ * client that goes away can cancel its render ({@link Ticket#cancel()}).
+ */
+public final class RenderService implements AutoCloseable {
 
     private final SceneCompiler compiler;
     private final Semaphore slots;
     private final int threads;
+    private final RenderBudget budget;
+    private final ExecutorService executor;
+    private final Set<Ticket> running = ConcurrentHashMap.newKeySet();
+    private final AtomicLong cancelledCount = new AtomicLong();
+    private volatile boolean closed;
 
     /**
      * @param concurrentRenders renders allowed at once; more are refused ({@link RenderBusyException})
      * @param threads           worker threads per render, 0 for all cores
      */
-    public RenderService(SceneCompiler compiler, int concurrentRenders, int threads) {
+    public RenderService(SceneCompiler compiler, int concurrentRenders, int threads, RenderBudget budget) {
         this.compiler = compiler;
         this.slots = new Semaphore(concurrentRenders);
         this.threads = threads;
+        this.budget = budget;
+        AtomicInteger count = new AtomicInteger();
+        this.executor = Executors.newFixedThreadPool(concurrentRenders, r -> {
+            Thread t = new Thread(r, "render-" + count.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
     }
 
-    /** Validates, renders and encodes a scene given as JSON. */
-    public RenderedImage render(byte[] sceneJson) {
-        CompiledScene compiled = compiler.compile(sceneJson, java.util.Map.of(), threads);
+    public RenderService(SceneCompiler compiler, int concurrentRenders, int threads) {
+        this(compiler, concurrentRenders, threads, RenderBudget.unlimited());
+    }
+
+    /**
+     * Validates the scene and starts its render.
+     *
+     * @throws studio.server.scene.InvalidSceneException if the scene is invalid or could never fit the memory budget
+     * @throws RenderBusyException if every slot, or the memory the render needs, is taken right now
+     */
+    public Ticket start(byte[] sceneJson) {
+        return start(sceneJson, ClientProbe.NONE);
+    }
+
+    /**
+     * As {@link #start(byte[])}; the render also stops when {@code client} finds its client gone.
+     */
+    public Ticket start(byte[] sceneJson, ClientProbe client) {
+        CompiledScene compiled = compiler.compile(sceneJson, Map.of(), threads);
+        if (closed) {
+            throw new RenderBusyException("the server is shutting down; try again shortly");
+        }
         if (!slots.tryAcquire()) {
             throw new RenderBusyException();
         }
+        MemoryBudget.Reservation memory;
         try {
-            RenderResult result = Renderer.render(compiled.scene(), compiled.settings());
-            byte[] bytes = ImageFiles.encode(result.film(), compiled.format(), compiled.quality());
-            return new RenderedImage(bytes, compiled.mediaType(), compiled.fileName(), compiled.settings().width(),
-                    compiled.settings().height(), result.elapsedMillis(), result.raysPerSecond());
-        } finally {
+            memory = budget.reserve(compiled);
+        } catch (RuntimeException e) {
             slots.release();
+            throw e;
+        }
+        if (memory == null) {
+            slots.release();
+            throw new RenderBusyException("the server's render memory is taken by other renders right now; try again "
+                    + "shortly");
+        }
+        Ticket ticket = new Ticket(compiled, memory, client);
+        running.add(ticket);
+        try {
+            executor.execute(ticket::run);
+        } catch (RejectedExecutionException e) {
+            ticket.finish();
+            throw new RenderBusyException("the server is shutting down; try again shortly");
+        }
+        return ticket;
+    }
+
+    /** Validates, renders and encodes a scene, waiting for the image. */
+    public RenderedImage render(byte[] sceneJson) {
+        try {
+            return start(sceneJson).result().join();
+        } catch (java.util.concurrent.CompletionException e) {
+            if (e.getCause() instanceof RuntimeException runtime) {
+                throw runtime;
+            }
+            if (e.getCause() instanceof Error error) {
+                throw error;
+            }
+            throw e;
+        }
+    }
+
+    /** Renders running or about to run. */
+    public int active() {
+        return running.size();
+    }
+
+    /** Renders stopped because their client went away (or the server stopped), since the start. */
+    public long cancelled() {
+        return cancelledCount.get();
+    }
+
+    /** How long a client may have to wait: the time budget, with a minute for queueing and encoding. */
+    public long responseTimeoutMillis() {
+        return budget.maxTime().toMillis() + 60_000;
+    }
+
+    /** Cancels every running render and stops the render threads, waiting up to {@code graceMillis} for them. */
+    public void shutdown(long graceMillis) {
+        closed = true;
+        executor.shutdown();
+        for (Ticket ticket : running) {
+            ticket.cancel();
+        }
+        try {
+            executor.awaitTermination(graceMillis, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        executor.shutdownNow();
+    }
+
+    @Override
+    public void close() {
+        shutdown(5_000);
+    }
+
+    /** One synchronous render: its result when it ends, and a way to stop it. */
+    public final class Ticket {
+        private final CompiledScene scene;
+        private final MemoryBudget.Reservation memory;
+        private final ClientProbe client;
+        private final AtomicBoolean cancelRequested = new AtomicBoolean();
+        private final CompletableFuture<RenderedImage> result = new CompletableFuture<>();
+        private final AtomicBoolean finished = new AtomicBoolean();
+
+        private Ticket(CompiledScene scene, MemoryBudget.Reservation memory, ClientProbe client) {
+            this.scene = scene;
+            this.memory = memory;
+            this.client = client;
+        }
+
+        /** The image, or the failure: {@link RenderTimeExceededException}, {@link RenderCancelledException}, ... */
+        public CompletableFuture<RenderedImage> result() {
+            return result;
+        }
+
+        /** Stops the render at its next tile (a no-op once it has ended). */
+        public void cancel() {
+            cancelRequested.set(true);
+        }
+
+        /** Asked between tiles: a cancel, or a client that went away. */
+        private boolean stopRequested() {
+            if (!cancelRequested.get() && client.gone()) {
+                cancelRequested.set(true);
+            }
+            return cancelRequested.get();
+        }
+
+        private void run() {
+            try {
+                if (cancelRequested.get()) {
+                    throw new RenderCancelledException();
+                }
+                RenderResult rendered = budget.render(scene, RenderListener.NONE, this::stopRequested);
+                byte[] bytes = ImageFiles.encode(rendered.film(), scene.format(), scene.quality());
+                result.complete(new RenderedImage(bytes, scene.mediaType(), scene.fileName(), scene.settings().width(),
+                        scene.settings().height(), rendered.elapsedMillis(), rendered.raysPerSecond()));
+            } catch (RenderCancelledException e) {
+                cancelledCount.incrementAndGet();
+                result.completeExceptionally(e);
+            } catch (RuntimeException | Error e) {
+                result.completeExceptionally(e);
+            } finally {
+                finish();
+            }
+        }
+
+        private void finish() {
+            if (finished.compareAndSet(false, true)) {
+                running.remove(this);
+                memory.close();
+                slots.release();
+            }
         }
     }
 }

@@ -61,6 +61,14 @@ public final class SceneMapper {
         String samplerName = or(render.sampler(), SceneDefaults.SAMPLER);
         problems.atMost("render.samples", samples, limits.maxSamples());
         problems.atMost("render.maxDepth", maxDepth, limits.maxDepth());
+        long pixelSamples = (long) width * height * samples;
+        if (pixelSamples > limits.maxPixelSamples() && width <= limits.maxWidth() && height <= limits.maxHeight()
+                && samples <= limits.maxSamples()) {
+            problems.add("render.samples", String.format(java.util.Locale.ROOT, "%d x %d pixels x %d samples = %,d "
+                    + "samples, more than this server's render budget of %,d samples per render "
+                    + "(studio.limits.max-pixel-samples); lower render.samples or the image size", width, height,
+                    samples, pixelSamples, limits.maxPixelSamples()));
+        }
         Sampler sampler = problems.attempt("render.samples", () -> Sampler.of(samplerName, samples));
         // adaptive sampling is the default with sobol, the method that wins the speed-against-accuracy chart
         double adaptive = or(render.adaptive(), sampler instanceof SobolSampler ? SceneDefaults.ADAPTIVE : 0.0);

@@ -14,10 +14,12 @@ import org.springframework.web.bind.annotation.ExceptionHandler;
 import org.springframework.web.bind.annotation.RestControllerAdvice;
 import org.springframework.web.servlet.mvc.method.annotation.ResponseEntityExceptionHandler;
 
+import studio.engine.render.RenderCancelledException;
 import studio.server.job.JobNotDoneException;
 import studio.server.job.JobNotFoundException;
 import studio.server.job.JobQueueFullException;
 import studio.server.render.RenderBusyException;
+import studio.server.render.RenderTimeExceededException;
 import studio.server.scene.FieldProblem;
 import studio.server.scene.InvalidSceneException;
 
@@ -70,6 +72,21 @@ class ProblemAdvice extends ResponseEntityExceptionHandler {
     @ExceptionHandler(RenderBusyException.class)
     ResponseEntity<ProblemDetail> busy(RenderBusyException e) {
         ProblemDetail problem = ProblemDetail.forStatusAndDetail(HttpStatus.SERVICE_UNAVAILABLE, e.getMessage());
+        return ResponseEntity.status(HttpStatus.SERVICE_UNAVAILABLE).header(HttpHeaders.RETRY_AFTER, "5").body(problem);
+    }
+
+    @ExceptionHandler(RenderTimeExceededException.class)
+    ResponseEntity<ProblemDetail> renderTooLong(RenderTimeExceededException e) {
+        ProblemDetail problem = ProblemDetail.forStatusAndDetail(HttpStatus.UNPROCESSABLE_CONTENT, e.getMessage());
+        problem.setTitle("Render time budget exceeded");
+        return ResponseEntity.status(HttpStatus.UNPROCESSABLE_CONTENT).body(problem);
+    }
+
+    /** Only a client that is still there sees this: its render was stopped because the server is stopping. */
+    @ExceptionHandler(RenderCancelledException.class)
+    ResponseEntity<ProblemDetail> renderCancelled(RenderCancelledException e) {
+        ProblemDetail problem = ProblemDetail.forStatusAndDetail(HttpStatus.SERVICE_UNAVAILABLE,
+                "the render was cancelled before it finished (the server is shutting down); try again shortly");
         return ResponseEntity.status(HttpStatus.SERVICE_UNAVAILABLE).header(HttpHeaders.RETRY_AFTER, "5").body(problem);
     }
 

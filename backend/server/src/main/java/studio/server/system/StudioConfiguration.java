@@ -7,6 +7,7 @@ import org.springframework.context.annotation.Configuration;
 
 import jakarta.validation.Validator;
 import studio.server.job.JobService;
+import studio.server.render.RenderBudget;
 import studio.server.render.RenderService;
 import studio.server.scene.ExampleScenes;
 import studio.server.scene.MeshFiles;
@@ -31,13 +32,23 @@ class StudioConfiguration {
     }
 
     @Bean
-    RenderService renderService(SceneCompiler compiler, StudioProperties properties) {
-        return new RenderService(compiler, properties.concurrentRenders(), properties.renderThreads());
+    MemoryBudget memoryBudget(StudioProperties properties) {
+        return properties.memoryBudget();
+    }
+
+    @Bean
+    RenderBudget renderBudget(StudioProperties properties, MemoryBudget memory) {
+        return new RenderBudget(properties.limits().maxRenderTime(), memory);
     }
 
     @Bean(destroyMethod = "close")
-    JobService jobService(StudioProperties properties) {
-        return new JobService(properties.jobSettings());
+    RenderService renderService(SceneCompiler compiler, StudioProperties properties, RenderBudget budget) {
+        return new RenderService(compiler, properties.concurrentRenders(), properties.renderThreads(), budget);
+    }
+
+    @Bean(destroyMethod = "close")
+    JobService jobService(StudioProperties properties, RenderBudget budget) {
+        return new JobService(properties.jobSettings(), budget, properties.jobs().shutdownGrace());
     }
 
     @Bean
@@ -50,6 +61,16 @@ class StudioConfiguration {
         FilterRegistrationBean<BodySizeLimitFilter> registration =
                 new FilterRegistrationBean<>(new BodySizeLimitFilter(properties.limits().maxBodyBytes()));
         registration.addUrlPatterns("/api/*");
+        registration.setOrder(1);
+        return registration;
+    }
+
+    @Bean
+    FilterRegistrationBean<IntakeMemoryFilter> intakeMemoryFilter(StudioProperties properties, MemoryBudget memory) {
+        FilterRegistrationBean<IntakeMemoryFilter> registration =
+                new FilterRegistrationBean<>(new IntakeMemoryFilter(memory, properties.limits().maxBodyBytes()));
+        registration.addUrlPatterns("/api/*");
+        registration.setOrder(2);
         return registration;
     }
 }

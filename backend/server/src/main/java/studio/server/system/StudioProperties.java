@@ -1,7 +1,10 @@
 package studio.server.system;
 
+import java.time.Duration;
+
 import org.springframework.boot.context.properties.ConfigurationProperties;
 import org.springframework.boot.context.properties.bind.DefaultValue;
+import org.springframework.util.unit.DataSize;
 
 import studio.server.job.JobSettings;
 import studio.server.scene.SceneLimits;
@@ -12,27 +15,38 @@ import studio.server.scene.SceneLimits;
  *
  * @param concurrentRenders synchronous renders at once; more get 503 with Retry-After
  * @param renderThreads     worker threads per render, 0 for all cores
+ * @param renderMemory      the heap that renders and request bodies may hold at once ({@link MemoryBudget});
+ *                          0 for half of the maximum heap
  */
 @ConfigurationProperties("studio")
 public record StudioProperties(Limits limits, Jobs jobs, @DefaultValue("2") int concurrentRenders,
-                               @DefaultValue("0") int renderThreads) {
+                               @DefaultValue("0") int renderThreads, @DefaultValue("0B") DataSize renderMemory) {
 
-    /** Render jobs: how many run at once, how many wait, how long results are kept. */
+    /**
+     * Render jobs: how many run at once, how many wait, how long results are kept, and on shutdown
+     * how long running jobs may go on before they are cancelled.
+     */
     public record Jobs(@DefaultValue("1") int concurrent, @DefaultValue("8") int queue,
-                       @DefaultValue("15m") java.time.Duration keepFinished, @DefaultValue("50") int maxFinished,
-                       @DefaultValue("2m") java.time.Duration abandonAfter) {
+                       @DefaultValue("15m") Duration keepFinished, @DefaultValue("50") int maxFinished,
+                       @DefaultValue("2m") Duration abandonAfter, @DefaultValue("20s") Duration shutdownGrace) {
     }
 
-    /** Limits on one scene and one request. */
+    /** Limits on one scene, one request and one render. */
     public record Limits(@DefaultValue("4096") int maxWidth, @DefaultValue("4096") int maxHeight,
                          @DefaultValue("1024") int maxSamples, @DefaultValue("16") int maxDepth,
                          @DefaultValue("100000") int maxObjects, @DefaultValue("100") int maxLights,
-                         @DefaultValue("2000000") int maxTriangles, @DefaultValue("33554432") long maxBodyBytes) {
+                         @DefaultValue("2000000") int maxTriangles, @DefaultValue("33554432") long maxBodyBytes,
+                         @DefaultValue("268435456") long maxPixelSamples, @DefaultValue("5m") Duration maxRenderTime) {
 
         public SceneLimits toSceneLimits() {
             return new SceneLimits(maxWidth, maxHeight, maxSamples, maxDepth, maxObjects, maxLights, maxTriangles,
-                    maxBodyBytes);
+                    maxBodyBytes, maxPixelSamples);
         }
+    }
+
+    /** The memory budget: {@link #renderMemory}, or half of the maximum heap when that is 0. */
+    public MemoryBudget memoryBudget() {
+        return renderMemory.toBytes() > 0 ? new MemoryBudget(renderMemory.toBytes()) : MemoryBudget.ofHeapShare(0.5);
     }
 
     /** The job settings, with this service's threads per render. */
@@ -44,12 +58,16 @@ public record StudioProperties(Limits limits, Jobs jobs, @DefaultValue("2") int 
     public StudioProperties {
         if (jobs == null) {
             JobSettings d = JobSettings.DEFAULTS;
-            jobs = new Jobs(d.concurrent(), d.queue(), d.keepFinished(), d.maxFinished(), d.abandonAfter());
+            jobs = new Jobs(d.concurrent(), d.queue(), d.keepFinished(), d.maxFinished(), d.abandonAfter(),
+                    Duration.ofSeconds(20));
         }
         if (limits == null) {
             SceneLimits d = SceneLimits.DEFAULTS;
             limits = new Limits(d.maxWidth(), d.maxHeight(), d.maxSamples(), d.maxDepth(), d.maxObjects(),
-                    d.maxLights(), d.maxTriangles(), d.maxBodyBytes());
+                    d.maxLights(), d.maxTriangles(), d.maxBodyBytes(), d.maxPixelSamples(), Duration.ofMinutes(5));
+        }
+        if (renderMemory == null) {
+            renderMemory = DataSize.ofBytes(0);
         }
     }
 }

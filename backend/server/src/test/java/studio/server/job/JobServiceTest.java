@@ -15,8 +15,11 @@ import java.util.function.BooleanSupplier;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
+import studio.server.render.RenderBudget;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.ExampleSceneFiles;
+import studio.server.scene.InvalidSceneException;
+import studio.server.system.MemoryBudget;
 
 class JobServiceTest {
 
@@ -193,6 +196,94 @@ class JobServiceTest {
         assertThrows(JobNotFoundException.class, () -> jobs.status("nope"));
         assertThrows(JobNotFoundException.class, () -> jobs.cancel("nope"));
         assertThrows(JobNotFoundException.class, () -> jobs.image("nope"));
+    }
+
+    // --- memory, disconnects, shutdown ---------------------------------------------------------
+
+    private JobService service(JobSettings settings, MemoryBudget memory, Duration grace) {
+        service = new JobService(settings, new RenderBudget(Duration.ofMinutes(5), memory), grace);
+        return service;
+    }
+
+    @Test
+    void jobHoldsItsRenderMemoryUntilItEndsThenOnlyItsImage() throws Exception {
+        MemoryBudget memory = new MemoryBudget(1L << 30);
+        JobService jobs = service(settings(1, 4), memory, Duration.ofSeconds(5));
+        JobStatus started = jobs.submit(compile(SMALL));
+        assertTrue(memory.reserved() > 64 * 48 * 40, "reserved " + memory.reserved());
+        await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
+        assertEquals(jobs.image(started.id()).bytes().length, memory.reserved());
+    }
+
+    @Test
+    void jobThatDoesNotFitTheFreeMemoryIsRefusedWithARetryDelay() {
+        // LARGE needs about 1024 x 768 x 40 bytes = 30 MiB; two do not fit in 48 MiB
+        MemoryBudget memory = new MemoryBudget(48L << 20);
+        JobService jobs = service(settings(1, 4), memory, Duration.ofSeconds(5));
+        JobStatus running = jobs.submit(compile(LARGE));
+        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(compile(LARGE)));
+        assertTrue(full.getMessage().contains("memory"), full.getMessage());
+        assertTrue(full.retryAfterSeconds() >= 1);
+        jobs.cancel(running.id());
+    }
+
+    @Test
+    void jobThatCouldNeverFitIsInvalid() {
+        JobService jobs = service(settings(1, 4), new MemoryBudget(8L << 20), Duration.ofSeconds(5));
+        InvalidSceneException invalid = assertThrows(InvalidSceneException.class, () -> jobs.submit(compile(LARGE)));
+        assertEquals("image", invalid.problems().get(0).field());
+    }
+
+    @Test
+    void droppedJobGivesItsMemoryBack() throws Exception {
+        MemoryBudget memory = new MemoryBudget(1L << 30);
+        JobService jobs = service(new JobSettings(1, 4, Duration.ZERO, 50, Duration.ofMinutes(10), 2), memory,
+                Duration.ofSeconds(5));
+        JobStatus started = jobs.submit(compile(SMALL));
+        await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
+        Thread.sleep(2);
+        jobs.sweep();
+        assertEquals(0, memory.reserved());
+    }
+
+    @Test
+    void lastWatcherDisconnectingCancelsTheJob() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus started = jobs.submit(compile(LARGE));
+        Recorder first = new Recorder(), second = new Recorder();
+        jobs.subscribe(started.id(), first);
+        jobs.subscribe(started.id(), second);
+        jobs.disconnected(started.id(), first);
+        assertTrue(!jobs.status(started.id()).state().isFinal(), "another client still watches");
+        jobs.disconnected(started.id(), second);
+        await("cancelled", () -> jobs.status(started.id()).state() == JobState.CANCELLED);
+    }
+
+    @Test
+    void shutdownLetsARunningJobFinishWithinTheGrace() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus started = jobs.submit(compile(scene(256, 192, 4)));
+        await("running", () -> jobs.status(started.id()).state() == JobState.RUNNING);
+        jobs.shutdown(30_000);
+        assertEquals(JobState.DONE, jobs.status(started.id()).state());
+        assertThrows(JobQueueFullException.class, () -> jobs.submit(compile(SMALL)));
+    }
+
+    @Test
+    void shutdownCancelsQueuedJobsAtOnceAndRunningOnesAfterTheGrace() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus running = jobs.submit(compile(LARGE));
+        JobStatus queued = jobs.submit(compile(SMALL));
+        await("running", () -> jobs.status(running.id()).progress() > 0);
+        long start = System.nanoTime();
+        jobs.shutdown(300);
+        long millis = (System.nanoTime() - start) / 1_000_000;
+        assertEquals(JobState.CANCELLED, jobs.status(queued.id()).state());
+        JobStatus stopped = jobs.status(running.id());
+        assertEquals(JobState.CANCELLED, stopped.state());
+        assertTrue(stopped.error().contains("shut down"), stopped.error());
+        assertTrue(millis < 300 + JobService.SHUTDOWN_CANCEL_WAIT_MILLIS, "shutdown took " + millis + " ms");
+        assertThrows(JobNotDoneException.class, () -> jobs.image(running.id()));
     }
 
     /** Records events as "status:running", "tile:x,y", "end:done". */

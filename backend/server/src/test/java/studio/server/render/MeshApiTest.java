@@ -24,6 +24,7 @@ import org.springframework.boot.webmvc.test.autoconfigure.AutoConfigureMockMvc;
 import org.springframework.http.MediaType;
 import org.springframework.test.web.servlet.MockMvc;
 
+import studio.server.AsyncMvc;
 import studio.server.scene.ExampleSceneFiles;
 import tools.jackson.databind.json.JsonMapper;
 
@@ -73,7 +74,7 @@ class MeshApiTest {
 
     @Test
     void rendersTheMeshExampleWhoseFileShipsWithTheServer() throws Exception {
-        byte[] png = mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(meshExample(null)))
+        byte[] png = AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(meshExample(null)))
                 .andExpect(status().isOk())
                 .andReturn().getResponse().getContentAsByteArray();
         assertThat(ImageIO.read(new ByteArrayInputStream(png)).getWidth()).isEqualTo(32);
@@ -82,20 +83,20 @@ class MeshApiTest {
     @Test
     void rendersAnInlineMesh() throws Exception {
         String tetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content(meshExample(Map.of("type", "mesh", "obj", tetrahedron, "scale", 2))))
                 .andExpect(status().isOk());
     }
 
     @Test
     void badObjIsA400NamingTheFieldAndTheLine() throws Exception {
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content(meshExample(Map.of("type", "mesh", "obj", "v 0 0 0\nv 1 0 0\nv 0 1 nan\nf 1 2 3\n"))))
                 .andExpect(status().isBadRequest())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
                 .andExpect(jsonPath("$.errors[0].field").value("objects[0].obj"))
                 .andExpect(jsonPath("$.errors[0].message").value(containsString("line 3")));
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content(meshExample(Map.of("type", "mesh", "file", "../../etc/passwd.obj"))))
                 .andExpect(status().isBadRequest())
                 .andExpect(jsonPath("$.errors[0].field").value("objects[0].file"));

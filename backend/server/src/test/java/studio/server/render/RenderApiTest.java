@@ -39,6 +39,7 @@ import org.springframework.http.MediaType;
 import org.springframework.test.web.servlet.MockMvc;
 import org.springframework.test.web.servlet.MvcResult;
 
+import studio.server.AsyncMvc;
 import studio.server.scene.ExampleSceneFiles;
 import tools.jackson.databind.json.JsonMapper;
 
@@ -80,7 +81,7 @@ class RenderApiTest {
     int port;
 
     private MvcResult render(String scene) throws Exception {
-        return mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(scene)).andReturn();
+        return AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(scene)).andReturn();
     }
 
     /** The tiny scene with some top-level fields replaced. */
@@ -98,7 +99,7 @@ class RenderApiTest {
     }
 
     private void assertRendersTinyScene() throws Exception {
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(TINY_SCENE))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(TINY_SCENE))
                 .andExpect(status().isOk())
                 .andExpect(content().contentType(MediaType.IMAGE_PNG));
     }
@@ -107,7 +108,7 @@ class RenderApiTest {
 
     @Test
     void rendersPngOfTheScenesSizeAsAttachment() throws Exception {
-        MvcResult result = mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(TINY_SCENE))
+        MvcResult result = AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(TINY_SCENE))
                 .andExpect(status().isOk())
                 .andExpect(content().contentType(MediaType.IMAGE_PNG))
                 .andExpect(header().string(HttpHeaders.CONTENT_DISPOSITION, "attachment; filename=\"tiny.png\""))
@@ -124,7 +125,7 @@ class RenderApiTest {
 
     @Test
     void rendersJpegWhenTheSceneAsksForJpg() throws Exception {
-        MvcResult result = mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+        MvcResult result = AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content(tinyWith(Map.of("image", Map.of("width", 20, "height", 10, "format", "jpg")))))
                 .andExpect(status().isOk())
                 .andExpect(content().contentType(MediaType.IMAGE_JPEG))
@@ -138,7 +139,7 @@ class RenderApiTest {
 
     @Test
     void namesTheFileRenderWhenTheSceneHasNoName() throws Exception {
-        mvc.perform(post("/api/render").content("{\"image\":{\"width\":4,\"height\":4},\"render\":{\"samples\":1},"
+        AsyncMvc.perform(mvc, post("/api/render").content("{\"image\":{\"width\":4,\"height\":4},\"render\":{\"samples\":1},"
                         + "\"objects\":[]}"))
                 .andExpect(status().isOk())
                 .andExpect(header().string(HttpHeaders.CONTENT_DISPOSITION, "attachment; filename=\"render.png\""));
@@ -147,7 +148,7 @@ class RenderApiTest {
     @Test
     void sanitisesTheNameInContentDisposition() throws Exception {
         String evil = "../../etc/passwd\"\r\nX-Evil: 1";
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(tinyWith(Map.of("name", evil))))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(tinyWith(Map.of("name", evil))))
                 .andExpect(status().isOk())
                 .andExpect(header().string(HttpHeaders.CONTENT_DISPOSITION,
                         "attachment; filename=\"etc-passwd-X-Evil-1.png\""))
@@ -176,7 +177,7 @@ class RenderApiTest {
                 {"image": {"width": 0}, "background": "red",
                  "objects": [{"type": "sphere", "radius": -1}, {"type": "box", "size": [1, 0, 1]}]}
                 """;
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(scene))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(scene))
                 .andExpect(status().isBadRequest())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
                 .andExpect(jsonPath("$.status").value(400))
@@ -192,7 +193,7 @@ class RenderApiTest {
     @Test
     void rendersWithEachNewSamplerAndAdaptiveSampling() throws Exception {
         for (String sampler : List.of("random", "multijittered", "sobol")) {
-            mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(tinyWith(Map.of("render",
+            AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(tinyWith(Map.of("render",
                             Map.of("sampler", sampler, "samples", 16, "maxDepth", 2, "adaptive", 0.05)))))
                     .andExpect(status().isOk())
                     .andExpect(content().contentType(MediaType.IMAGE_PNG));
@@ -202,7 +203,7 @@ class RenderApiTest {
     @Test
     void badAdaptiveThresholdsGive400NamingTheField() throws Exception {
         for (Object bad : List.of(-0.1, 2, "often")) {
-            mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+            AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                             .content(tinyWith(Map.of("render", Map.of("adaptive", bad)))))
                     .andExpect(status().isBadRequest())
                     .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
@@ -210,7 +211,7 @@ class RenderApiTest {
                     .andExpect(jsonPath("$.errors.length()").value(1))
                     .andExpect(jsonPath("$.errors[0].field").value("render.adaptive"));
         }
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content(tinyWith(Map.of("render", Map.of("sampler", "regular", "adaptive", 0.1)))))
                 .andExpect(status().isBadRequest())
                 .andExpect(jsonPath("$.errors[0].field").value("render.adaptive"))
@@ -219,7 +220,7 @@ class RenderApiTest {
 
     @Test
     void singleProblemIsTheDetail() throws Exception {
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content("{\"objects\":[{\"type\":\"cone\"}]}"))
                 .andExpect(status().isBadRequest())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
@@ -230,7 +231,7 @@ class RenderApiTest {
 
     @Test
     void unknownFieldGives400NamingIt() throws Exception {
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content("{\"objects\":[{\"type\":\"sphere\",\"material\":{\"type\":\"chalk\",\"colour\":\"#ffffff\"}}]}"))
                 .andExpect(status().isBadRequest())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
@@ -240,7 +241,7 @@ class RenderApiTest {
 
     @Test
     void limitOverrunGives400NamingTheField() throws Exception {
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content(tinyWith(Map.of("image", Map.of("width", 5000, "height", 10)))))
                 .andExpect(status().isBadRequest())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
@@ -250,7 +251,7 @@ class RenderApiTest {
 
     @Test
     void malformedJsonGives400WithLineAndColumn() throws Exception {
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\": [\n{,"))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\": [\n{,"))
                 .andExpect(status().isBadRequest())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
                 .andExpect(jsonPath("$.status").value(400))
@@ -260,7 +261,7 @@ class RenderApiTest {
 
     @Test
     void emptyBodyGives400() throws Exception {
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON))
                 .andExpect(status().isBadRequest())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
                 .andExpect(jsonPath("$.errors[0].message").value(containsString("empty")));
@@ -268,9 +269,9 @@ class RenderApiTest {
 
     @Test
     void serviceStillRendersAfterBadRequests() throws Exception {
-        mvc.perform(post("/api/render").content("[1, 2"))
+        AsyncMvc.perform(mvc, post("/api/render").content("[1, 2"))
                 .andExpect(status().isBadRequest());
-        mvc.perform(post("/api/render").content("{\"objects\":[{\"type\":\"sphere\",\"radius\":0}]}"))
+        AsyncMvc.perform(mvc, post("/api/render").content("{\"objects\":[{\"type\":\"sphere\",\"radius\":0}]}"))
                 .andExpect(status().isBadRequest());
         assertRendersTinyScene();
     }
@@ -293,7 +294,7 @@ class RenderApiTest {
 
     @Test
     void bodyOverLimitGives413Problem() throws Exception {
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(sceneOfSize(MAX_BODY_BYTES + 1)))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(sceneOfSize(MAX_BODY_BYTES + 1)))
                 .andExpect(status().isContentTooLarge())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
                 .andExpect(jsonPath("$.status").value(413))
@@ -303,7 +304,7 @@ class RenderApiTest {
 
     @Test
     void bodyAtLimitIsRead() throws Exception {
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(
                         tinyWith(Map.of()) + " ".repeat(MAX_BODY_BYTES - tinyWith(Map.of()).length())))
                 .andExpect(status().isOk());
     }

@@ -3,7 +3,9 @@ package studio.server.render;
 import static org.hamcrest.Matchers.containsString;
 import static org.hamcrest.Matchers.not;
 import static org.mockito.ArgumentMatchers.any;
+import static org.mockito.ArgumentMatchers.eq;
 import static org.mockito.BDDMockito.given;
+import static org.mockito.Mockito.mock;
 import static org.mockito.Mockito.never;
 import static org.mockito.Mockito.verify;
 import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.post;
@@ -12,13 +14,20 @@ import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.
 import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.jsonPath;
 import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.status;
 
+import java.time.Duration;
+import java.util.concurrent.CompletableFuture;
+
 import org.junit.jupiter.api.Test;
 import org.springframework.beans.factory.annotation.Autowired;
 import org.springframework.boot.webmvc.test.autoconfigure.WebMvcTest;
 import org.springframework.http.HttpHeaders;
 import org.springframework.http.MediaType;
 import org.springframework.test.context.bean.override.mockito.MockitoBean;
+import org.springframework.mock.web.MockAsyncContext;
 import org.springframework.test.web.servlet.MockMvc;
+import org.springframework.test.web.servlet.MvcResult;
+
+import studio.server.AsyncMvc;
 
 /** The render endpoint's mapping of service outcomes onto HTTP, with the service mocked. */
 @WebMvcTest(RenderController.class)
@@ -32,8 +41,8 @@ class RenderControllerTest {
 
     @Test
     void busyServerGives503WithRetryAfter() throws Exception {
-        given(renderService.render(any())).willThrow(new RenderBusyException());
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\":[]}"))
+        given(renderService.start(any(), any())).willThrow(new RenderBusyException());
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\":[]}"))
                 .andExpect(status().isServiceUnavailable())
                 .andExpect(header().string(HttpHeaders.RETRY_AFTER, "5"))
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
@@ -43,8 +52,8 @@ class RenderControllerTest {
 
     @Test
     void unexpectedFailureGives500ProblemWithoutInternals() throws Exception {
-        given(renderService.render(any())).willThrow(new IllegalStateException("secret internal state"));
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\":[]}"))
+        given(renderService.start(any(), any())).willThrow(new IllegalStateException("secret internal state"));
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\":[]}"))
                 .andExpect(status().isInternalServerError())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
                 .andExpect(jsonPath("$.status").value(500))
@@ -54,9 +63,10 @@ class RenderControllerTest {
     @Test
     void passesTheBodyAndMapsTheImage() throws Exception {
         byte[] body = "{\"objects\":[]}".getBytes();
-        given(renderService.render(body)).willReturn(
-                new RenderedImage(new byte[] {1, 2, 3}, "image/jpeg", "scene.jpg", 3, 2, 42, 1234.4));
-        mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON).content(body))
+        RenderService.Ticket ticket = ticket(CompletableFuture.completedFuture(
+                new RenderedImage(new byte[] {1, 2, 3}, "image/jpeg", "scene.jpg", 3, 2, 42, 1234.4)));
+        given(renderService.start(eq(body), any())).willReturn(ticket);
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(body))
                 .andExpect(status().isOk())
                 .andExpect(content().contentType(MediaType.IMAGE_JPEG))
                 .andExpect(content().bytes(new byte[] {1, 2, 3}))
@@ -71,6 +81,41 @@ class RenderControllerTest {
         mvc.perform(post("/api/renders").content("{\"objects\":[]}"))
                 .andExpect(status().isNotFound())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON));
-        verify(renderService, never()).render(any());
+        verify(renderService, never()).start(any(), any());
+    }
+
+    @Test
+    void renderOverItsTimeBudgetGives422SayingSo() throws Exception {
+        RenderService.Ticket ticket = ticket(
+                CompletableFuture.failedFuture(new RenderTimeExceededException(Duration.ofMinutes(5))));
+        given(renderService.start(any(), any())).willReturn(ticket);
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\":[]}"))
+                .andExpect(status().isUnprocessableContent())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.title").value("Render time budget exceeded"))
+                .andExpect(jsonPath("$.detail").value(containsString("5 min")))
+                .andExpect(jsonPath("$.detail").value(containsString("studio.limits.max-render-time")));
+    }
+
+    @Test
+    void clientThatGoesAwayCancelsItsRender() throws Exception {
+        CompletableFuture<RenderedImage> never = new CompletableFuture<>();
+        RenderService.Ticket ticket = ticket(never);
+        given(renderService.start(any(), any())).willReturn(ticket);
+        MvcResult result = mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                .content("{\"objects\":[]}")).andReturn();
+        // what the container does when the connection drops during an async request
+        var listeners = ((MockAsyncContext) result.getRequest().getAsyncContext()).getListeners();
+        for (var listener : listeners) {
+            listener.onError(new jakarta.servlet.AsyncEvent(result.getRequest().getAsyncContext(),
+                    new java.io.IOException("connection reset")));
+        }
+        verify(ticket).cancel();
+    }
+
+    private static RenderService.Ticket ticket(CompletableFuture<RenderedImage> result) {
+        RenderService.Ticket ticket = mock(RenderService.Ticket.class);
+        given(ticket.result()).willReturn(result);
+        return ticket;
     }
 }

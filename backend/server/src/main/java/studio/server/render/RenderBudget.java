@@ -1,0 +1,92 @@
+package studio.server.render;
+
+import java.time.Duration;
+import java.util.function.BooleanSupplier;
+
+import studio.engine.render.RenderCancelledException;
+import studio.engine.render.RenderListener;
+import studio.engine.render.RenderResult;
+import studio.engine.render.Renderer;
+import studio.server.scene.CompiledScene;
+import studio.server.scene.InvalidSceneException;
+import studio.server.system.MemoryBudget;
+
+/**
+ * What one render may use: at most {@code maxTime} of wall time (checked between tiles, as
+ * cancellation is) and its share of the service's {@link MemoryBudget}.
+ */
+public final class RenderBudget {
+
+    private final Duration maxTime;
+    private final MemoryBudget memory;
+
+    public RenderBudget(Duration maxTime, MemoryBudget memory) {
+        if (maxTime.isNegative() || maxTime.isZero()) {
+            throw new IllegalArgumentException("the time budget per render must be positive: " + maxTime);
+        }
+        this.maxTime = maxTime;
+        this.memory = memory;
+    }
+
+    /** No time limit to speak of, and no memory limit (tests, the command line). */
+    public static RenderBudget unlimited() {
+        return new RenderBudget(Duration.ofDays(365), MemoryBudget.unlimited());
+    }
+
+    public Duration maxTime() {
+        return maxTime;
+    }
+
+    public MemoryBudget memory() {
+        return memory;
+    }
+
+    /**
+     * Reserves the render's memory.
+     *
+     * @return the reservation, or null if the memory is taken by other work right now
+     * @throws InvalidSceneException if the render could never fit into the budget
+     */
+    public MemoryBudget.Reservation reserve(CompiledScene scene) {
+        long bytes = RenderMemory.estimate(scene);
+        if (bytes > memory.capacity()) {
+            throw new InvalidSceneException("image", "this scene needs about " + RenderMemory.mebibytes(bytes)
+                    + " MiB to render (" + scene.settings().width() + "x" + scene.settings().height()
+                    + " pixels and its objects), more than this server's render memory of "
+                    + RenderMemory.mebibytes(memory.capacity()) + " MiB (studio.render-memory); make the image "
+                    + "or the meshes smaller");
+        }
+        return memory.tryReserve(bytes);
+    }
+
+    /**
+     * Renders within the time budget.
+     *
+     * @throws RenderCancelledException    if {@code cancelled} turned true first
+     * @throws RenderTimeExceededException if the budget ran out first
+     */
+    public RenderResult render(CompiledScene scene, RenderListener listener, BooleanSupplier cancelled) {
+        long deadline = System.nanoTime() + maxTime.toNanos();
+        try {
+            return Renderer.render(scene.scene(), scene.settings(), listener,
+                    () -> cancelled.getAsBoolean() || System.nanoTime() - deadline > 0);
+        } catch (RenderCancelledException e) {
+            if (!cancelled.getAsBoolean() && System.nanoTime() - deadline > 0) {
+                throw new RenderTimeExceededException(maxTime);
+            }
+            throw e;
+        }
+    }
+
+    /** 90 s, 5 min, 1 h 30 min: a duration as a person writes it. */
+    static String describe(Duration d) {
+        long seconds = d.toSeconds();
+        if (seconds < 120) {
+            return d.toMillis() % 1000 == 0 ? seconds + " s" : d.toMillis() + " ms";
+        }
+        if (seconds < 7200) {
+            return seconds % 60 == 0 ? seconds / 60 + " min" : seconds / 60 + " min " + seconds % 60 + " s";
+        }
+        return seconds / 3600 + " h" + (seconds % 3600 / 60 != 0 ? " " + seconds % 3600 / 60 + " min" : "");
+    }
+}

@@ -1,0 +1,46 @@
+package studio.server.render;
+
+import studio.engine.geometry.TriangleMesh;
+import studio.engine.scene.Scene;
+import studio.server.scene.CompiledScene;
+
+/**
+ * How much heap a render holds, estimated before it starts (see {@link studio.server.system.MemoryBudget}).
+ * The figures are upper bounds of what the engine and the encoders allocate:
+ * <ul>
+ * <li>per pixel {@value #BYTES_PER_PIXEL}: the film (three doubles, 24), the 8-bit image (4), the
+ *     encoded file with its growing buffer (up to 8) and a job's tile previews until it ends (4);</li>
+ * <li>per triangle {@value #BYTES_PER_TRIANGLE}: positions, normals and indices, the mesh's BVH and
+ *     the build's temporary boxes (about 160 measured on a million-triangle mesh);</li>
+ * <li>per object {@value #BYTES_PER_OBJECT}: the shape, its material and its place in the scene's BVH;</li>
+ * <li>{@value #FIXED_BYTES} for the workers' buffers and the rest.</li>
+ * </ul>
+ */
+public final class RenderMemory {
+
+    static final long BYTES_PER_PIXEL = 40;
+    static final long BYTES_PER_TRIANGLE = 200;
+    static final long BYTES_PER_OBJECT = 400;
+    static final long FIXED_BYTES = 4L << 20;
+
+    private RenderMemory() {
+    }
+
+    public static long estimate(CompiledScene compiled) {
+        Scene scene = compiled.scene();
+        long triangles = 0;
+        for (int i = 0; i < scene.objectCount(); i++) {
+            if (scene.shape(i) instanceof TriangleMesh mesh) {
+                triangles += mesh.triangleCount();
+            }
+        }
+        long pixels = (long) compiled.settings().width() * compiled.settings().height();
+        return FIXED_BYTES + pixels * BYTES_PER_PIXEL + triangles * BYTES_PER_TRIANGLE
+                + scene.objectCount() * BYTES_PER_OBJECT;
+    }
+
+    /** Bytes as MiB for messages, rounded up. */
+    public static long mebibytes(long bytes) {
+        return (bytes + (1L << 20) - 1) >> 20;
+    }
+}
