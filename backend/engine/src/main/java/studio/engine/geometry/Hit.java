@@ -22,6 +22,8 @@ public final class Hit {
 
     /** Traversal stack of the scene's BVH over its objects. */
     public final int[] sceneStack = new int[Bvh.STACK_SIZE];
+    /** Where the ray enters each node on {@link #sceneStack}, so a node beyond the nearest hit so far is skipped. */
+    public final double[] sceneStackEntry = new double[Bvh.STACK_SIZE];
     /** Traversal stack of a BVH inside one shape (a mesh's triangles), used while the scene's is in use. */
     public final int[] shapeStack = new int[Bvh.STACK_SIZE];
 

@@ -149,33 +149,46 @@ public final class ShapeSet {
         }
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
-        boolean negX = ray.dx < 0, negY = ray.dy < 0, negZ = ray.dz < 0;
         double[] nb = nodeBounds;
         int[] links = nodeLinks;
         int[] stack = hit.sceneStack;
+        double[] stackEntry = hit.sceneStackEntry;
         int sp = 0, node = 0;
+        // Any shape may still win a tie up to best*(1+TIE), so nodes are culled only beyond that.
+        double cull = winner == Integer.MAX_VALUE ? tMax : Math.min(tMax, best * (1 + Scene.TIE));
+        double entry = Slab.entry(nb, 0, ox, oy, oz, ix, iy, iz, cull);
         while (true) {
-            // Any shape may still win a tie up to best*(1+TIE), so nodes are culled only beyond that.
-            double cull = winner == Integer.MAX_VALUE ? tMax : Math.min(tMax, best * (1 + Scene.TIE));
-            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, cull)) {
+            if (entry <= cull) {
                 int o = 3 * node;
                 int count = links[o + 1];
                 if (count < 0) {
-                    int axis = ~count;
-                    if (axis == 0 ? negX : axis == 1 ? negY : negZ) {
-                        stack[sp++] = node + 1;
-                        node = links[o];
-                    } else {
-                        stack[sp++] = links[o];
-                        node++;
+                    // both children's boxes are tested here: the nearer is visited first, the other
+                    // waits on the stack with its entry distance, and a child the ray misses is never pushed
+                    int left = node + 1, right = links[o];
+                    double inLeft = Slab.entry(nb, 6 * left, ox, oy, oz, ix, iy, iz, cull);
+                    double inRight = Slab.entry(nb, 6 * right, ox, oy, oz, ix, iy, iz, cull);
+                    boolean hitLeft = inLeft <= cull, hitRight = inRight <= cull; // a miss is NaN: false
+                    if (hitLeft && hitRight) {
+                        boolean leftFirst = inLeft <= inRight;
+                        stack[sp] = leftFirst ? right : left;
+                        stackEntry[sp++] = leftFirst ? inRight : inLeft;
+                        node = leftFirst ? left : right;
+                        entry = leftFirst ? inLeft : inRight;
+                        continue;
                     }
-                    continue;
-                }
-                for (int slot = links[o], end = slot + count; slot < end; slot++) {
-                    int i = leafShapes[slot];
-                    if (shapes[i].intersect(ray, limit(i, winner, best, tMax), hit)) {
-                        best = hit.t;
-                        winner = i;
+                    if (hitLeft || hitRight) {
+                        node = hitLeft ? left : right;
+                        entry = hitLeft ? inLeft : inRight;
+                        continue;
+                    }
+                } else {
+                    for (int slot = links[o], end = slot + count; slot < end; slot++) {
+                        int i = leafShapes[slot];
+                        if (shapes[i].intersect(ray, limit(i, winner, best, tMax), hit)) {
+                            best = hit.t;
+                            winner = i;
+                            cull = Math.min(tMax, best * (1 + Scene.TIE));
+                        }
                     }
                 }
             }
@@ -183,6 +196,7 @@ public final class ShapeSet {
                 break;
             }
             node = stack[--sp];
+            entry = stackEntry[sp];
         }
         if (winner == Integer.MAX_VALUE) {
             return false;

@@ -102,4 +102,28 @@ class SlabTest {
     private static double uniform(Random random, double lo, double hi) {
         return lo + (hi - lo) * random.nextDouble();
     }
+
+    @Test
+    @DisplayName("entry: the distance where the ray enters (0 inside), NaN on a miss even with an infinite tMax, "
+            + "and the same verdict as hits() on 100,000 random rays")
+    void entryGivesTheEntryDistanceAndAgreesWithHits() {
+        double[] box = {-1, -1, -1, 1, 1, 1};
+        double inf = Double.POSITIVE_INFINITY;
+        assertEquals(4, Slab.entry(box, 0, 0, 0, 5, 1 / 0.0, 1 / 0.0, -1, inf));
+        assertEquals(0, Slab.entry(box, 0, 0, 0, 0, 1, 1, 1, inf));
+        assertTrue(Double.isNaN(Slab.entry(box, 0, 0, 3, 5, 1 / 0.0, 1 / 0.0, -1, inf)), "passes above the box");
+        assertTrue(Double.isNaN(Slab.entry(box, 0, 0, 0, 5, 1 / 0.0, 1 / 0.0, -1, 3.9)), "box beyond tMax");
+        assertFalse(Slab.entry(box, 0, 0, 3, 5, 1 / 0.0, 1 / 0.0, -1, inf) <= inf, "a miss fails every comparison");
+        Random random = new Random(7);
+        for (int i = 0; i < 100_000; i++) {
+            double ox = 4 * random.nextGaussian(), oy = 4 * random.nextGaussian(), oz = 4 * random.nextGaussian();
+            double dx = random.nextGaussian(), dy = random.nextGaussian(), dz = random.nextGaussian();
+            double tMax = random.nextBoolean() ? inf : 10 * random.nextDouble();
+            double entry = Slab.entry(box, 0, ox, oy, oz, 1 / dx, 1 / dy, 1 / dz, tMax);
+            assertEquals(Slab.hits(box, 0, ox, oy, oz, 1 / dx, 1 / dy, 1 / dz, tMax), entry <= tMax);
+            if (entry <= tMax) {
+                assertTrue(entry >= 0 && entry <= tMax);
+            }
+        }
+    }
 }
