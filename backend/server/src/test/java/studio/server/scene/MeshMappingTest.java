@@ -117,6 +117,22 @@ class MeshMappingTest {
     }
 
     @Test
+    void refusesFolderOrFileNamesThatStartWithADotOrAreEmpty() {
+        for (String bad : List.of(".hidden.obj", "meshes/.x.obj", "meshes//x.obj", "meshes/.obj", "a/.b/c.obj", ".obj")) {
+            FieldProblem p = onlyProblem("{'type':'mesh','file':'" + bad + "'}", MeshFiles.in(dir));
+            assertThat(p.message()).as(bad).contains("relative path");
+        }
+    }
+
+    @Test
+    void checksAFileNameOfTenThousandFoldersWithoutOverflowingTheStack() {
+        String deep = "a/".repeat(10_000) + "x.obj";
+        assertThat(MeshFiles.NAME.matcher(deep).matches()).isTrue();
+        assertThat(onlyProblem("{'type':'mesh','file':'" + deep + "'}", MeshFiles.bundled()).message())
+                .contains("ships with this server");
+    }
+
+    @Test
     void saysWhenTheFileIsMissingOrCannotBeReadHere() {
         assertThat(onlyProblem("{'type':'mesh','file':'missing.obj'}", MeshFiles.in(dir)).message())
                 .contains("no such file");
