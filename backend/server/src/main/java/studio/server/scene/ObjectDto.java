@@ -7,6 +7,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
 
 import jakarta.validation.Valid;
 import jakarta.validation.constraints.NotNull;
+import jakarta.validation.constraints.Pattern;
 import jakarta.validation.constraints.Positive;
 
 /** A scene object; {@code type} names its kind. */
@@ -49,7 +50,7 @@ public sealed interface ObjectDto {
      */
     record Mesh(
             String obj,
-            String file,
+            @Pattern(regexp = MeshFiles.NAME_RULE, message = MeshFiles.NAME_MESSAGE) String file,
             @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
             @Positive @Finite Double scale,
             @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,

@@ -2,6 +2,8 @@ package studio.server.scene;
 
 import java.util.List;
 
+import org.hibernate.validator.constraints.CodePointLength;
+
 import jakarta.validation.Valid;
 import jakarta.validation.constraints.DecimalMax;
 import jakarta.validation.constraints.Max;
@@ -9,7 +11,6 @@ import jakarta.validation.constraints.Min;
 import jakarta.validation.constraints.NotNull;
 import jakarta.validation.constraints.Pattern;
 import jakarta.validation.constraints.PositiveOrZero;
-import jakarta.validation.constraints.Size;
 
 /**
  * A scene file, as the editor saves it, the API takes it and the CLI reads it. Every field but
@@ -19,7 +20,7 @@ public record SceneDto(
         @Min(value = 1, message = "must be 1 (the only scene format version there is)")
         @Max(value = SceneDto.FORMAT_VERSION, message = "is newer than this server understands (it reads version 1)")
         Integer version,
-        @Size(max = 200, message = "must be at most 200 characters") String name,
+        @CodePointLength(max = 200, message = "must be at most 200 characters") String name,
         @Valid ImageDto image,
         @Valid CameraDto camera,
         @Pattern(regexp = SceneDto.COLOR, message = SceneDto.COLOR_MESSAGE) String background,

@@ -34,8 +34,8 @@ import tools.jackson.databind.node.ObjectNode;
 
 /**
  * Reads scene JSON strictly (unknown fields, duplicate keys, numbers as strings, fractions for
- * whole numbers and trailing garbage are all errors) and validates it with Bean Validation. Every
- * problem is reported with the JSON path of its field.
+ * whole numbers, {@code null} for a field and trailing garbage are all errors) and validates it with
+ * Bean Validation. Every problem is reported with the JSON path of its field.
  */
 public final class SceneReader {
 
@@ -76,6 +76,7 @@ public final class SceneReader {
      */
     public SceneDto read(byte[] json, Map<String, Object> overrides) {
         SceneDto scene;
+        List<FieldProblem> nulls = new ArrayList<>();
         try {
             JsonNode tree = mapper.readTree(json);
             if (tree == null || tree.isMissingNode()) {
@@ -85,18 +86,19 @@ public final class SceneReader {
                 throw new InvalidSceneException("", "expected a scene as a JSON object, not " + tree.getNodeType()
                         .toString().toLowerCase());
             }
+            dropNullFields(tree, "", nulls);
             applyOverrides((ObjectNode) tree, overrides);
             JsonNode objects = tree.get("objects");
             if (objects instanceof ArrayNode many && many.size() >= parallelObjects) {
-                return readInParallel((ObjectNode) tree, many);
+                return readInParallel((ObjectNode) tree, many, nulls);
             }
             scene = mapper.treeToValue(tree, SceneDto.class);
         } catch (JacksonException e) {
-            throw new InvalidSceneException(List.of(problemOf(e)));
+            throw new InvalidSceneException(withNulls(nulls, List.of(problemOf(e))));
         }
         List<FieldProblem> problems = new ArrayList<>();
         validator.validate(scene).forEach(v -> problems.add(new FieldProblem(pathOf(v.getPropertyPath()), v.getMessage())));
-        return checked(scene, problems);
+        return checked(scene, withNulls(nulls, problems));
     }
 
     /** Scenes with at least this many objects bind and validate them on all cores. */
@@ -109,7 +111,7 @@ public final class SceneReader {
      * it in one piece. When binding fails, the problem reported is the first in the scene's fields
      * other than objects, else the first object's, as reading in one piece would stop at one too.
      */
-    private SceneDto readInParallel(ObjectNode tree, ArrayNode objects) {
+    private SceneDto readInParallel(ObjectNode tree, ArrayNode objects, List<FieldProblem> nulls) {
         tree.set("objects", tree.arrayNode());
         SceneDto head = mapper.treeToValue(tree, SceneDto.class);
         int n = objects.size();
@@ -140,7 +142,7 @@ public final class SceneReader {
         });
         for (FieldProblem problem : bindProblems) {
             if (problem != null) {
-                throw new InvalidSceneException(List.of(problem));
+                throw new InvalidSceneException(withNulls(nulls, List.of(problem)));
             }
         }
         List<FieldProblem> problems = new ArrayList<>();
@@ -151,7 +153,7 @@ public final class SceneReader {
             }
         }
         return checked(new SceneDto(head.version(), head.name(), head.image(), head.camera(), head.background(),
-                head.ambient(), head.render(), head.lights(), Arrays.asList(dtos)), problems);
+                head.ambient(), head.render(), head.lights(), Arrays.asList(dtos)), withNulls(nulls, problems));
     }
 
     /** A field's path inside the object at {@code at}. */
@@ -169,6 +171,44 @@ public final class SceneReader {
 
     public SceneDto read(byte[] json) {
         return read(json, Map.of());
+    }
+
+    /**
+     * Removes every object member whose value is {@code null}, noting a problem for each: a field is
+     * given or left out (for its default), as the published schema says. Null elements of lists stay,
+     * for Bean Validation to name ("must be a number").
+     */
+    private static void dropNullFields(JsonNode node, String path, List<FieldProblem> problems) {
+        if (node instanceof ObjectNode object) {
+            for (String name : List.copyOf(object.propertyNames())) {
+                String child = path.isEmpty() ? name : path + "." + name;
+                if (object.get(name).isNull()) {
+                    object.remove(name);
+                    problems.add(new FieldProblem(child, "must not be null; leave the field out for its default"));
+                } else {
+                    dropNullFields(object.get(name), child, problems);
+                }
+            }
+        } else if (node.isArray()) {
+            for (int i = 0; i < node.size(); i++) {
+                dropNullFields(node.get(i), path + "[" + i + "]", problems);
+            }
+        }
+    }
+
+    /**
+     * The null-field problems and the others, sorted by field; a field that another rule names (a
+     * required one: "objects", "type") keeps that rule's message instead of the null one.
+     */
+    private static List<FieldProblem> withNulls(List<FieldProblem> nulls, List<FieldProblem> others) {
+        List<FieldProblem> all = new ArrayList<>(others);
+        for (FieldProblem n : nulls) {
+            if (others.stream().noneMatch(o -> o.field().equals(n.field()))) {
+                all.add(n);
+            }
+        }
+        all.sort(Comparator.comparing(FieldProblem::field).thenComparing(FieldProblem::message));
+        return all;
     }
 
     private static void applyOverrides(ObjectNode root, Map<String, Object> overrides) {

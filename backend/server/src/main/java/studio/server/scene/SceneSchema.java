@@ -13,6 +13,9 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.stream.IntStream;
+
+import org.hibernate.validator.constraints.CodePointLength;
 
 import com.fasterxml.jackson.annotation.JsonSubTypes;
 
@@ -24,7 +27,6 @@ import jakarta.validation.constraints.NotNull;
 import jakarta.validation.constraints.Pattern;
 import jakarta.validation.constraints.Positive;
 import jakarta.validation.constraints.PositiveOrZero;
-import jakarta.validation.constraints.Size;
 
 /**
  * The scene format as a JSON Schema (draft 2020-12), derived from the DTO records and their
@@ -74,7 +76,32 @@ public final class SceneSchema {
             schema.put("required", required);
         }
         schema.put("additionalProperties", false);
+        crossFieldRules(type, schema);
         return schema;
+    }
+
+    /**
+     * The rules across fields that SceneMapper checks and JSON Schema can state too (the others, such
+     * as a camera's up along its view direction, are listed in the API's agreement test).
+     */
+    private void crossFieldRules(Class<?> type, Map<String, Object> schema) {
+        if (type == ObjectDto.Mesh.class) {
+            // the OBJ text inline, or a file name: one of them
+            schema.put("oneOf", List.of(Map.of("required", List.of("obj")), Map.of("required", List.of("file"))));
+        }
+        if (type == RenderDto.class) {
+            // the regular sampler needs a square number of samples, and cannot sample adaptively
+            List<Integer> squares = IntStream.rangeClosed(1, (int) Math.sqrt(limits.maxSamples()))
+                    .map(k -> k * k).boxed().toList();
+            Map<String, Object> regular = new LinkedHashMap<>();
+            regular.put("properties", Map.of("sampler", Map.of("const", "regular")));
+            regular.put("required", List.of("sampler"));
+            Map<String, Object> then = new LinkedHashMap<>();
+            then.put("samples", Map.of("enum", squares));
+            then.put("adaptive", Map.of("maximum", 0));
+            schema.put("if", regular);
+            schema.put("then", Map.of("properties", then));
+        }
     }
 
     private Map<String, Object> value(Type type, AnnotatedType annotated, AnnotatedElement element, String path) {
@@ -90,6 +117,9 @@ public final class SceneSchema {
             if (limit != null) {
                 schema.put("maximum", limit);
             }
+            // what the Java type holds: a larger whole number is refused ("must be a whole number from ... to ...")
+            schema.putIfAbsent("minimum", raw == Long.class ? (Object) Long.MIN_VALUE : (Object) Integer.MIN_VALUE);
+            schema.putIfAbsent("maximum", raw == Long.class ? (Object) Long.MAX_VALUE : (Object) Integer.MAX_VALUE);
         } else if (raw == Boolean.class) {
             schema.put("type", "boolean");
         } else if (raw == String.class) {
@@ -98,9 +128,9 @@ public final class SceneSchema {
             if (pattern != null) {
                 schema.put("pattern", "^(" + pattern.regexp() + ")$");
             }
-            Size size = annotation(element, Size.class);
-            if (size != null) {
-                schema.put("maxLength", size.max());
+            CodePointLength length = annotation(element, CodePointLength.class);
+            if (length != null) {
+                schema.put("maxLength", length.max());
             }
         } else if (raw == List.class) {
             AnnotatedType item = ((AnnotatedParameterizedType) annotated).getAnnotatedActualTypeArguments()[0];
@@ -109,6 +139,9 @@ public final class SceneSchema {
             if (element.isAnnotationPresent(Vector.class)) {
                 schema.put("minItems", 3);
                 schema.put("maxItems", 3);
+            }
+            if (element.isAnnotationPresent(NonZeroVector.class)) {
+                schema.put("not", Map.of("items", Map.of("const", 0)));
             }
             Integer limit = limitOf(path);
             if (limit != null) {

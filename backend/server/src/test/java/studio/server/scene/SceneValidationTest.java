@@ -111,6 +111,15 @@ class SceneValidationTest {
     }
 
     @Test
+    void rejectsNullForAFieldThatHasADefault() {
+        assertOnlyProblem("{'image':null,'objects':[]}", "image", "must not be null; leave the field out for its default");
+        assertOnlyProblem(withObject("{'type':'sphere','radius':null}"), "objects[0].radius",
+                "must not be null; leave the field out for its default");
+        assertOnlyProblem("{'lights':[{'type':'point','falloff':null}],'objects':[]}", "lights[0].falloff",
+                "must not be null; leave the field out for its default");
+    }
+
+    @Test
     void rejectsNullObjectInList() {
         assertOnlyProblem("{'objects':[{'type':'sphere'},null]}", "objects[1]", "must be an object");
     }
