@@ -68,6 +68,12 @@ class ErrorResponsesTest {
     }
 
     @Test
+    void queryParameterWithoutNameIsABadRequestNotAServerError() throws Exception {
+        JsonNode problem = problem(send("GET", "/api/meshes?=null&file=meshes/torus-knot.obj", null, null), 400);
+        assertThat(problem.get("detail").asString()).contains("parameter without a name");
+    }
+
+    @Test
     void traceIsRefusedWithAProblem() throws Exception {
         problem(send("TRACE", "/api/render", null, null), 405);
     }
