@@ -57,6 +57,7 @@ class OpenApiContract {
                         .addApiResponse("200", image("The rendered image, PNG or JPEG as the scene's image.format says"))
                         .addApiResponse("400", ref("InvalidScene"))
                         .addApiResponse("413", ref("BodyTooLarge"))
+                        .addApiResponse("422", ref("RenderTimeExceeded"))
                         .addApiResponse("503", ref("RenderBusy")));
         operation(api, "/api/jobs", PathItem.HttpMethod.POST, "jobs", "startJob", "Start a render job")
                 .requestBody(sceneBody())
@@ -69,7 +70,8 @@ class OpenApiContract {
                                 .link("cancel", jobLink("cancelJob")))
                         .addApiResponse("400", ref("InvalidScene"))
                         .addApiResponse("413", ref("BodyTooLarge"))
-                        .addApiResponse("429", ref("QueueFull")));
+                        .addApiResponse("429", ref("QueueFull"))
+                        .addApiResponse("503", ref("MemoryBusy")));
         operation(api, "/api/jobs/{id}", PathItem.HttpMethod.GET, "jobs", "getJob", "A job's status")
                 .responses(new ApiResponses()
                         .addApiResponse("200", jobStatus("The job's status"))
@@ -155,9 +157,16 @@ class OpenApiContract {
         c.addResponses("InvalidScene", problem("The scene is invalid; `errors` names each bad field", "InvalidSceneProblem"));
         c.addResponses("BodyTooLarge", problem("The body is over this server's limit (studio.limits.max-body-bytes)",
                 "Problem"));
-        c.addResponses("RenderBusy", problem("Every render slot is busy (studio.concurrent-renders)", "Problem")
+        c.addResponses("RenderTimeExceeded", problem("The render ran longer than this server's time budget "
+                + "(studio.limits.max-render-time) and was stopped", "Problem"));
+        c.addResponses("RenderBusy", problem("Every render slot is busy (studio.concurrent-renders), the render "
+                + "memory is taken (studio.render-memory), or the server is shutting down", "Problem")
                 .addHeaderObject("Retry-After", headerRef("RetryAfter")));
-        c.addResponses("QueueFull", problem("The job queue is full (studio.jobs.queue)", "Problem")
+        c.addResponses("MemoryBusy", problem("The memory for reading the body is taken by other requests "
+                + "(studio.render-memory)", "Problem")
+                .addHeaderObject("Retry-After", headerRef("RetryAfter")));
+        c.addResponses("QueueFull", problem("The job queue is full (studio.jobs.queue), the render memory is "
+                + "taken by other jobs, or the server is shutting down", "Problem")
                 .addHeaderObject("Retry-After", headerRef("RetryAfter")));
         c.addResponses("JobNotFound", problem("No job has that id (it never existed, or it expired)", "Problem"));
         c.addResponses("JobNotDone", problem("The job is not done (queued, running, failed or cancelled)", "Problem"));

@@ -90,15 +90,15 @@ class OpenApiDocumentTest {
         JsonNode responses = doc.get("components").get("responses");
         assertThat(responses.get("InvalidScene").get("content").get("application/problem+json").get("schema")
                 .get("$ref").asString()).isEqualTo("#/components/schemas/InvalidSceneProblem");
-        for (String busy : List.of("RenderBusy", "QueueFull")) {
+        for (String busy : List.of("RenderBusy", "MemoryBusy", "QueueFull")) {
             assertThat(responses.get(busy).get("headers").get("Retry-After").get("$ref").asString())
                     .isEqualTo("#/components/headers/RetryAfter");
         }
         JsonNode paths = doc.get("paths");
         assertThat(paths.get("/api/render").get("post").get("responses").propertyNames())
-                .containsExactlyInAnyOrder("200", "400", "413", "503");
+                .containsExactlyInAnyOrder("200", "400", "413", "422", "503");
         assertThat(paths.get("/api/jobs").get("post").get("responses").propertyNames())
-                .containsExactlyInAnyOrder("202", "400", "413", "429");
+                .containsExactlyInAnyOrder("202", "400", "413", "429", "503");
         assertThat(paths.get("/api/jobs/{id}").get("get").get("responses").get("404").get("$ref").asString())
                 .isEqualTo("#/components/responses/JobNotFound");
         assertThat(paths.get("/api/jobs/{id}/image").get("get").get("responses").get("409").get("$ref").asString())

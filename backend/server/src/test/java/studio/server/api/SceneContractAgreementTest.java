@@ -47,7 +47,7 @@ import tools.jackson.databind.node.ObjectNode;
 @SpringBootTest(properties = {
         "studio.limits.max-width=1024", "studio.limits.max-height=1024", "studio.limits.max-samples=64",
         "studio.limits.max-depth=16", "studio.limits.max-objects=30", "studio.limits.max-lights=8",
-        "studio.limits.max-triangles=5000"})
+        "studio.limits.max-triangles=5000", "studio.limits.max-pixel-samples=16777216"})
 @AutoConfigureMockMvc
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class SceneContractAgreementTest {
@@ -92,9 +92,11 @@ class SceneContractAgreementTest {
     /** Valid scenes at the edges of the rules. */
     static Stream<Arguments> edgeScenes() {
         return Stream.of(
-                edge("every limit reached", "{'image':{'width':1024,'height':1024},'render':{'samples':64,'maxDepth':16},"
+                edge("every limit reached", "{'image':{'width':1024,'height':1024},'render':{'samples':16,'maxDepth':16},"
                         + "'lights':[" + repeat("{'type':'point'}", 8) + "],'objects':[" + repeat("{'type':'sphere'}", 30)
                         + "]}"),
+                edge("the most samples a pixel may take", "{'image':{'width':512,'height':512},'render':{'samples':64},"
+                        + "'objects':[]}"),
                 edge("no lights", "{'lights':[],'objects':[]}"),
                 edge("a name of 200 characters outside the BMP", "{'name':'" + "\uD83D\uDE00".repeat(200)
                         + "','objects':[]}"),
@@ -102,8 +104,8 @@ class SceneContractAgreementTest {
                 edge("the largest seed", "{'render':{'seed':9223372036854775807},'objects':[]}"),
                 edge("the regular sampler with a square number of samples and no adaptive sampling",
                         "{'render':{'sampler':'regular','samples':9,'adaptive':0},'objects':[]}"),
-                edge("adaptive sampling at its bounds", "{'render':{'sampler':'random','samples':64,'adaptive':1},"
-                        + "'objects':[]}"),
+                edge("adaptive sampling at its bounds", "{'image':{'width':64,'height':64},"
+                        + "'render':{'sampler':'random','samples':64,'adaptive':1},'objects':[]}"),
                 edge("a mesh file this server ships", object("{'type':'mesh','file':'meshes/torus-knot.obj'}")),
                 edge("an inline mesh, scaled and rotated", object("{'type':'mesh','obj':'" + TRIANGLE
                         + "','scale':0.5,'rotation':[0,90,0],'position':[1,2,3]}")),
@@ -246,6 +248,8 @@ class SceneContractAgreementTest {
                         "objects[0].center[1]"),
                 invalid("a whole number written with a fraction part (64.0)", "{'image':{'width':64.0},'objects':[]}",
                         "image.width"),
+                invalid("width x height x samples over the render budget, each within its limit",
+                        "{'image':{'width':1024,'height':1024},'render':{'samples':17},'objects':[]}", "render.samples"),
                 invalid("a duplicate key", "{'name':'a','name':'b','objects':[]}", ""));
     }
 
