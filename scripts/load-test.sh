@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Load test on loopback: builds studio.jar if missing, starts it with its default configuration on
+# a free port (the metrics endpoint exposed for this run only), runs scripts/LoadTest.java against
+# it and stops it. Exit code: the load test's (0 when every check passed). The server's log is kept
+# in backend/server/target/load-test-server.log.
+#
+#   scripts/load-test.sh [--clients 50] [--seconds 60] [other LoadTest.java options]
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+jar="$root/backend/server/target/studio.jar"
+java="${JAVA:-java}"
+log="$root/backend/server/target/load-test-server.log"
+
+if [[ ! -f "$jar" ]]; then
+  echo "building $jar"
+  mvn -B -q -f "$root/backend/pom.xml" package -pl server -am -DskipTests -DskipFrontend
+fi
+
+# port 0: the server takes a free port and logs it
+MANAGEMENT_ENDPOINTS_WEB_EXPOSURE_INCLUDE=health,info,metrics \
+  "$java" -jar "$jar" --server.port=0 >"$log" 2>&1 &
+pid=$!
+stop() {
+  kill "$pid" 2>/dev/null && wait "$pid" 2>/dev/null || true
+}
+trap stop EXIT
+
+port=""
+for _ in $(seq 600); do
+  port="$(sed -n 's/.*Tomcat started on port \([0-9]*\).*/\1/p' "$log" | head -1)"
+  [[ -z "$port" ]] && kill -0 "$pid" 2>/dev/null || break
+  sleep 0.1
+done
+if [[ -z "$port" ]]; then
+  echo "error: the server did not start; its log:" >&2
+  tail -20 "$log" >&2
+  exit 1
+fi
+echo "server pid $pid on port $port (log: $log)"
+status=0
+"$java" "$root/scripts/LoadTest.java" --url "http://127.0.0.1:$port" --pid "$pid" --scenes "$root/scenes" "$@" \
+  || status=$?
+if grep -q ' ERROR ' "$log"; then
+  echo "the server logged errors:"
+  grep -A3 ' ERROR ' "$log" | head -40
+  [[ $status -ne 0 ]] || status=1
+fi
+exit "$status"
