@@ -24,12 +24,16 @@ import studio.server.system.MemoryBudget;
 /**
  * One render job: its scene, state, progress, the tiles finished so far (for clients that
  * connect late) and, when done, the encoded image. State changes and events happen under the
- * job's lock, so every listener sees them in order.
+ * job's lock, so every listener sees them in order. A finished job lets go of its scene: it is
+ * kept for a while only for its status and image.
  */
 final class RenderJob implements Runnable {
 
     private final String id;
-    private final CompiledScene scene;
+    /** Null once the job is final. */
+    private CompiledScene scene;
+    private final int width, height;
+    private final String fileName, mediaType;
     private final RenderBudget budget;
     /** The render's memory while it is queued or running; then the image's, until the job is dropped. */
     private MemoryBudget.Reservation memory;
@@ -52,6 +56,10 @@ final class RenderJob implements Runnable {
     RenderJob(String id, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory) {
         this.id = id;
         this.scene = scene;
+        this.width = scene.settings().width();
+        this.height = scene.settings().height();
+        this.fileName = scene.fileName();
+        this.mediaType = scene.mediaType();
         this.budget = budget;
         this.memory = memory;
     }
@@ -64,12 +72,9 @@ final class RenderJob implements Runnable {
         return id;
     }
 
-    CompiledScene scene() {
-        return scene;
-    }
-
     @Override
     public void run() {
+        CompiledScene scene;
         synchronized (this) {
             if (state != JobState.QUEUED) {
                 return;
@@ -79,6 +84,7 @@ final class RenderJob implements Runnable {
                 return;
             }
             state = JobState.RUNNING;
+            scene = this.scene;
             startNanos = System.nanoTime();
             broadcastStatus();
         }
@@ -144,6 +150,7 @@ final class RenderJob implements Runnable {
         state = finalState;
         error = message;
         endNanos = System.nanoTime();
+        scene = null;
         tiles.clear();
         // the render's memory is free now; the image, already made, is counted until the job is dropped
         MemoryBudget.Reservation rendering = memory;
@@ -213,7 +220,7 @@ final class RenderJob implements Runnable {
         long end = endNanos != 0 ? endNanos : System.nanoTime();
         long elapsed = startNanos != 0 ? (end - startNanos) / 1_000_000 : 0;
         return new JobStatus(id, state, state == JobState.DONE ? 1.0 : progress, elapsed, raysPerSecond,
-                scene.settings().width(), scene.settings().height(), scene.fileName(), scene.mediaType(), error);
+                width, height, fileName, mediaType, error);
     }
 
     synchronized JobState state() {
