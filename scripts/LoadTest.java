@@ -27,9 +27,10 @@ import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * A load test of a running Ray Studio server on loopback: N clients for T seconds send a mix of
- * small synchronous renders, render jobs (polled, cancelled, or watched over server-sent events)
- * and invalid scenes, then it checks the answers, the jobs, health, heap and threads, prints a
- * report and exits 1 if any check failed (2 for bad arguments).
+ * small synchronous renders, render jobs (polled, cancelled, or watched over server-sent events;
+ * one in four with a 58,000-triangle inline mesh) and invalid scenes, then it checks the answers,
+ * the jobs, health, heap and threads, prints a report and exits 1 if any check failed (2 for bad
+ * arguments).
  *
  * <pre>
  * java scripts/LoadTest.java --url http://127.0.0.1:8080 [--clients 50] [--seconds 60]
@@ -62,6 +63,8 @@ public final class LoadTest {
             "{\"objects\": [{\"type\": \"teapot\"}]}",
             "");
     static final long POLL_MILLIS = 100;
+    /** One job in four carries an inline mesh of 2 x 170 x 170 triangles (1.8 MB of OBJ). */
+    static final int MESH_JOB_ONE_IN = 4, MESH_GRID = 170;
 
     record Options(URI url, int clients, int seconds, long pid, Path scenes, int drainSeconds, int idleSeconds,
                    long heapMarginMiB, long retryCapMillis, long seed) {
@@ -111,6 +114,7 @@ public final class LoadTest {
 
     private final Options options;
     private final List<Map<String, Object>> scenes;
+    private final Map<String, Object> meshScene = meshScene(MESH_GRID);
     private final HttpClient http = HttpClient.newBuilder().version(HttpClient.Version.HTTP_1_1)
             .connectTimeout(Duration.ofSeconds(5)).build();
     private final Map<String, Latencies> latencies = new ConcurrentHashMap<>();
@@ -201,7 +205,8 @@ public final class LoadTest {
     }
 
     private void render(Random random) throws IOException, InterruptedException {
-        Variant variant = variant(random, random.nextInt(SIZES.length), SAMPLES[random.nextInt(SAMPLES.length)]);
+        Variant variant = variant(pick(random), random, random.nextInt(SIZES.length),
+                SAMPLES[random.nextInt(SAMPLES.length)]);
         HttpResponse<byte[]> response = sendRetrying("render", post("/api/render", variant.json));
         if (response != null && expect("render", response, 200)) {
             checkImage("render", response, variant);
@@ -215,7 +220,8 @@ public final class LoadTest {
 
     /** Submits a job, then polls it (or reads its event stream) to the end, then fetches a done job's image. */
     private void job(Random random, boolean events) throws IOException, InterruptedException {
-        Variant variant = variant(random, random.nextInt(SIZES.length), SAMPLES[random.nextInt(SAMPLES.length)]);
+        Variant variant = variant(pickForJob(random), random, random.nextInt(SIZES.length),
+                SAMPLES[random.nextInt(SAMPLES.length)]);
         String id = submit(variant);
         if (id == null) {
             return;
@@ -229,7 +235,7 @@ public final class LoadTest {
      * polling or on its event stream.
      */
     private void cancel(Random random) throws IOException, InterruptedException {
-        Variant variant = variant(random, SIZES.length - 1, 16);
+        Variant variant = variant(pickForJob(random), random, SIZES.length - 1, 16);
         String id = submit(variant);
         if (id == null) {
             return;
@@ -547,8 +553,47 @@ public final class LoadTest {
     record Variant(String json, int width, int height, String format) {
     }
 
-    private Variant variant(Random random, int size, int samples) {
-        Map<String, Object> scene = new LinkedHashMap<>(scenes.get(random.nextInt(scenes.size())));
+    private Map<String, Object> pick(Random random) {
+        return scenes.get(random.nextInt(scenes.size()));
+    }
+
+    /**
+     * An example scene, or one time in {@value #MESH_JOB_ONE_IN} the mesh scene: finished jobs are
+     * kept (50 of them by default), so a job that kept its geometry would show in the heap.
+     */
+    private Map<String, Object> pickForJob(Random random) {
+        return random.nextInt(MESH_JOB_ONE_IN) == 0 ? meshScene : pick(random);
+    }
+
+    /** A flat grid of n x n squares, two triangles each, standing 2 m wide on the floor, as inline OBJ. */
+    static Map<String, Object> meshScene(int n) {
+        StringBuilder obj = new StringBuilder();
+        for (int j = 0; j <= n; j++) {
+            for (int i = 0; i <= n; i++) {
+                obj.append("v ").append(2.0 * i / n - 1).append(' ').append(2.0 * j / n).append(" 0\n");
+            }
+        }
+        for (int j = 0; j < n; j++) {
+            for (int i = 0; i < n; i++) {
+                int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 1, d = c + 1;
+                obj.append("f ").append(a).append(' ').append(b).append(' ').append(d).append('\n');
+                obj.append("f ").append(a).append(' ').append(d).append(' ').append(c).append('\n');
+            }
+        }
+        Map<String, Object> mesh = new LinkedHashMap<>();
+        mesh.put("type", "mesh");
+        mesh.put("obj", obj.toString());
+        mesh.put("rotation", List.of(0, 30, 0));
+        Map<String, Object> plane = new LinkedHashMap<>();
+        plane.put("type", "plane");
+        Map<String, Object> scene = new LinkedHashMap<>();
+        scene.put("name", "load-test-grid");
+        scene.put("objects", List.of(mesh, plane));
+        return scene;
+    }
+
+    private Variant variant(Map<String, Object> original, Random random, int size, int samples) {
+        Map<String, Object> scene = new LinkedHashMap<>(original);
         String format = random.nextBoolean() ? "png" : "jpg";
         Map<String, Object> image = new LinkedHashMap<>(Json.object(scene.getOrDefault("image", Map.of())));
         image.put("width", SIZES[size][0]);

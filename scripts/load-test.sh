@@ -2,13 +2,13 @@
 # Load test on loopback: builds studio.jar if missing, starts it with its default configuration on
 # a free port (the metrics endpoint exposed for this run only), runs scripts/LoadTest.java against
 # it and stops it. Exit code: the load test's (0 when every check passed). The server's log is kept
-# in backend/server/target/load-test-server.log.
+# in backend/server/target/load-test-server.log. STUDIO_JAR=path tests another jar.
 #
 #   scripts/load-test.sh [--clients 50] [--seconds 60] [other LoadTest.java options]
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-jar="$root/backend/server/target/studio.jar"
+jar="${STUDIO_JAR:-$root/backend/server/target/studio.jar}"
 java="${JAVA:-java}"
 log="$root/backend/server/target/load-test-server.log"
 
