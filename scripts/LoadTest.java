@@ -35,7 +35,7 @@ import java.util.concurrent.atomic.AtomicLong;
  * <pre>
  * java scripts/LoadTest.java --url http://127.0.0.1:8080 [--clients 50] [--seconds 60]
  *      [--pid PID] [--scenes scenes] [--drain-seconds 60] [--idle-seconds 10]
- *      [--heap-margin-mib 64] [--retry-cap-ms 2000] [--seed 1]
+ *      [--heap-margin-mib 64] [--retry-cap-ms 2000] [--warmup-seconds 5] [--seed 1]
  * </pre>
  *
  * The server must expose the metrics endpoint (MANAGEMENT_ENDPOINTS_WEB_EXPOSURE_INCLUDE=health,info,metrics).
@@ -66,8 +66,9 @@ public final class LoadTest {
     /** One job in four carries an inline mesh of 2 x 170 x 170 triangles (1.8 MB of OBJ). */
     static final int MESH_JOB_ONE_IN = 4, MESH_GRID = 170;
 
+    /** @param warmupSeconds requests started in the first seconds are counted and checked but not timed */
     record Options(URI url, int clients, int seconds, long pid, Path scenes, int drainSeconds, int idleSeconds,
-                   long heapMarginMiB, long retryCapMillis, long seed) {
+                   long heapMarginMiB, long retryCapMillis, int warmupSeconds, long seed) {
 
         static Options parse(String[] args) {
             Map<String, String> given = new LinkedHashMap<>();
@@ -83,7 +84,8 @@ public final class LoadTest {
                     Integer.parseInt(take(given, "drain-seconds", "60")),
                     Integer.parseInt(take(given, "idle-seconds", "10")),
                     Long.parseLong(take(given, "heap-margin-mib", "64")),
-                    Long.parseLong(take(given, "retry-cap-ms", "2000")), Long.parseLong(take(given, "seed", "1")));
+                    Long.parseLong(take(given, "retry-cap-ms", "2000")),
+                    Integer.parseInt(take(given, "warmup-seconds", "5")), Long.parseLong(take(given, "seed", "1")));
             if (!given.isEmpty()) {
                 throw new IllegalArgumentException("unknown options: " + given.keySet());
             }
@@ -123,7 +125,7 @@ public final class LoadTest {
     private final Problems problems = new Problems();
     private final AtomicLong retryWaits = new AtomicLong();
     private final AtomicLong gaveUp = new AtomicLong();
-    private volatile long stopAt, drainUntil;
+    private volatile long timedFrom = Long.MAX_VALUE, stopAt, drainUntil;
 
     LoadTest(Options options, List<Map<String, Object>> scenes) {
         this.options = options;
@@ -138,6 +140,7 @@ public final class LoadTest {
                 mib(before.heap), before.threads, options.clients(), options.seconds());
 
         long start = System.nanoTime();
+        timedFrom = start + TimeUnit.SECONDS.toNanos(options.warmupSeconds());
         stopAt = start + TimeUnit.SECONDS.toNanos(options.seconds());
         drainUntil = stopAt + TimeUnit.SECONDS.toNanos(options.drainSeconds());
         ScheduledExecutorService monitor = Executors.newSingleThreadScheduledExecutor();
@@ -447,7 +450,8 @@ public final class LoadTest {
     }
 
     private void record(String kind, int status, long beginNanos) {
-        latencies.computeIfAbsent(kind + " " + status, k -> new Latencies()).add(System.nanoTime() - beginNanos);
+        latencies.computeIfAbsent(kind + " " + status, k -> new Latencies())
+                .add(System.nanoTime() - beginNanos, beginNanos >= timedFrom);
     }
 
     private void checkHealth() {
@@ -612,20 +616,28 @@ public final class LoadTest {
         double seconds = loadNanos / 1e9;
         long requests = 0, renders = 0, busy = 0, full = 0;
         System.out.println();
+        System.out.printf("latency of the requests started after the first %d s (the JVM warming up)%n",
+                options.warmupSeconds());
         System.out.println("kind          status    count   p50 ms   p90 ms   p99 ms   max ms");
         for (Map.Entry<String, Latencies> row : new TreeMap<>(latencies).entrySet()) {
             String[] kindStatus = row.getKey().split(" ");
             long[] sorted = row.getValue().sorted();
-            System.out.printf(Locale.ROOT, "%-13s %6s %8d %8.1f %8.1f %8.1f %8.1f%n", kindStatus[0], kindStatus[1],
-                    sorted.length, pct(sorted, 50), pct(sorted, 90), pct(sorted, 99), sorted[sorted.length - 1] / 1e6);
+            int count = row.getValue().count();
+            if (sorted.length == 0) {
+                System.out.printf("%-13s %6s %8d%n", kindStatus[0], kindStatus[1], count);
+            } else {
+                System.out.printf(Locale.ROOT, "%-13s %6s %8d %8.1f %8.1f %8.1f %8.1f%n", kindStatus[0],
+                        kindStatus[1], count, pct(sorted, 50), pct(sorted, 90), pct(sorted, 99),
+                        sorted[sorted.length - 1] / 1e6);
+            }
             if (!kindStatus[0].equals("health")) {
-                requests += sorted.length;
+                requests += count;
             }
             if (row.getKey().equals("render 200")) {
-                renders += sorted.length;
+                renders += count;
             }
-            busy += kindStatus[1].equals("503") ? sorted.length : 0;
-            full += kindStatus[1].equals("429") ? sorted.length : 0;
+            busy += kindStatus[1].equals("503") ? count : 0;
+            full += kindStatus[1].equals("429") ? count : 0;
         }
         Map<String, Long> states = new TreeMap<>();
         for (String state : jobs.values()) {
@@ -704,16 +716,24 @@ public final class LoadTest {
         }
     }
 
-    /** Latencies of one kind and status, in nanoseconds. */
+    /** How many answers of one kind and status, and the latencies of those timed, in nanoseconds. */
     static final class Latencies {
         private long[] values = new long[256];
-        private int size;
+        private int size, count;
 
-        synchronized void add(long nanos) {
+        synchronized void add(long nanos, boolean timed) {
+            count++;
+            if (!timed) {
+                return;
+            }
             if (size == values.length) {
                 values = Arrays.copyOf(values, size * 2);
             }
             values[size++] = nanos;
+        }
+
+        synchronized int count() {
+            return count;
         }
 
         synchronized long[] sorted() {
