@@ -35,7 +35,7 @@ import java.util.concurrent.atomic.AtomicLong;
  * <pre>
  * java scripts/LoadTest.java --url http://127.0.0.1:8080 [--clients 50] [--seconds 60]
  *      [--pid PID] [--scenes scenes] [--drain-seconds 60] [--idle-seconds 10]
- *      [--heap-margin-mib 64] [--retry-cap-ms 2000] [--warmup-seconds 5] [--seed 1]
+ *      [--heap-margin-mib 64] [--retry-cap-ms 2000] [--warmup-seconds 5] [--mesh-one-in 4] [--seed 1]
  * </pre>
  *
  * The server must expose the metrics endpoint (MANAGEMENT_ENDPOINTS_WEB_EXPOSURE_INCLUDE=health,info,metrics).
@@ -63,12 +63,15 @@ public final class LoadTest {
             "{\"objects\": [{\"type\": \"teapot\"}]}",
             "");
     static final long POLL_MILLIS = 100;
-    /** One job in four carries an inline mesh of 2 x 170 x 170 triangles (1.8 MB of OBJ). */
-    static final int MESH_JOB_ONE_IN = 4, MESH_GRID = 170;
+    /** The mesh jobs' inline mesh: 2 x 170 x 170 triangles, 1.8 MB of OBJ. */
+    static final int MESH_GRID = 170;
 
-    /** @param warmupSeconds requests started in the first seconds are counted and checked but not timed */
+    /**
+     * @param warmupSeconds requests started in the first seconds are counted and checked but not timed
+     * @param meshOneIn     one job in this many carries the inline mesh (0: none)
+     */
     record Options(URI url, int clients, int seconds, long pid, Path scenes, int drainSeconds, int idleSeconds,
-                   long heapMarginMiB, long retryCapMillis, int warmupSeconds, long seed) {
+                   long heapMarginMiB, long retryCapMillis, int warmupSeconds, int meshOneIn, long seed) {
 
         static Options parse(String[] args) {
             Map<String, String> given = new LinkedHashMap<>();
@@ -85,7 +88,8 @@ public final class LoadTest {
                     Integer.parseInt(take(given, "idle-seconds", "10")),
                     Long.parseLong(take(given, "heap-margin-mib", "64")),
                     Long.parseLong(take(given, "retry-cap-ms", "2000")),
-                    Integer.parseInt(take(given, "warmup-seconds", "5")), Long.parseLong(take(given, "seed", "1")));
+                    Integer.parseInt(take(given, "warmup-seconds", "5")),
+                    Integer.parseInt(take(given, "mesh-one-in", "4")), Long.parseLong(take(given, "seed", "1")));
             if (!given.isEmpty()) {
                 throw new IllegalArgumentException("unknown options: " + given.keySet());
             }
@@ -562,11 +566,12 @@ public final class LoadTest {
     }
 
     /**
-     * An example scene, or one time in {@value #MESH_JOB_ONE_IN} the mesh scene: finished jobs are
-     * kept (50 of them by default), so a job that kept its geometry would show in the heap.
+     * An example scene, or one time in --mesh-one-in the mesh scene: finished jobs are kept (50 of
+     * them by default), so a job that kept its geometry would show in the heap.
      */
     private Map<String, Object> pickForJob(Random random) {
-        return random.nextInt(MESH_JOB_ONE_IN) == 0 ? meshScene : pick(random);
+        int oneIn = options.meshOneIn();
+        return oneIn > 0 && random.nextInt(oneIn) == 0 ? meshScene : pick(random);
     }
 
     /** A flat grid of n x n squares, two triangles each, standing 2 m wide on the floor, as inline OBJ. */
