@@ -27,15 +27,16 @@ import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * A load test of a running Ray Studio server on loopback: N clients for T seconds send a mix of
- * small synchronous renders, render jobs (polled, cancelled, or watched over server-sent events;
- * one in four with a 58,000-triangle inline mesh) and invalid scenes, then it checks the answers,
- * the jobs, health, heap and threads, prints a report and exits 1 if any check failed (2 for bad
- * arguments).
+ * small synchronous renders, render jobs (polled, cancelled, or watched over server-sent events)
+ * and invalid scenes; then, one at a time, a few jobs with a 58,000-triangle inline mesh, so that
+ * finished jobs (the server keeps the last 50) that hold on to their scene show in the heap. It
+ * checks the answers, the jobs, health, heap and threads, prints a report and exits 1 if any check
+ * failed (2 for bad arguments).
  *
  * <pre>
  * java scripts/LoadTest.java --url http://127.0.0.1:8080 [--clients 50] [--seconds 60]
  *      [--pid PID] [--scenes scenes] [--drain-seconds 60] [--idle-seconds 10]
- *      [--heap-margin-mib 64] [--retry-cap-ms 2000] [--warmup-seconds 5] [--mesh-one-in 4] [--seed 1]
+ *      [--heap-margin-mib 64] [--retry-cap-ms 2000] [--warmup-seconds 5] [--mesh-jobs 20] [--seed 1]
  * </pre>
  *
  * The server must expose the metrics endpoint (MANAGEMENT_ENDPOINTS_WEB_EXPOSURE_INCLUDE=health,info,metrics).
@@ -63,15 +64,15 @@ public final class LoadTest {
             "{\"objects\": [{\"type\": \"teapot\"}]}",
             "");
     static final long POLL_MILLIS = 100;
-    /** The mesh jobs' inline mesh: 2 x 170 x 170 triangles, 1.8 MB of OBJ. */
+    /** The mesh jobs' inline mesh: 2 x 170 x 170 triangles, 2.4 MB of OBJ. */
     static final int MESH_GRID = 170;
 
     /**
      * @param warmupSeconds requests started in the first seconds are counted and checked but not timed
-     * @param meshOneIn     one job in this many carries the inline mesh (0: none)
+     * @param meshJobs      mesh jobs after the load, one at a time
      */
     record Options(URI url, int clients, int seconds, long pid, Path scenes, int drainSeconds, int idleSeconds,
-                   long heapMarginMiB, long retryCapMillis, int warmupSeconds, int meshOneIn, long seed) {
+                   long heapMarginMiB, long retryCapMillis, int warmupSeconds, int meshJobs, long seed) {
 
         static Options parse(String[] args) {
             Map<String, String> given = new LinkedHashMap<>();
@@ -89,7 +90,7 @@ public final class LoadTest {
                     Long.parseLong(take(given, "heap-margin-mib", "64")),
                     Long.parseLong(take(given, "retry-cap-ms", "2000")),
                     Integer.parseInt(take(given, "warmup-seconds", "5")),
-                    Integer.parseInt(take(given, "mesh-one-in", "4")), Long.parseLong(take(given, "seed", "1")));
+                    Integer.parseInt(take(given, "mesh-jobs", "20")), Long.parseLong(take(given, "seed", "1")));
             if (!given.isEmpty()) {
                 throw new IllegalArgumentException("unknown options: " + given.keySet());
             }
@@ -167,6 +168,7 @@ public final class LoadTest {
         monitor.awaitTermination(15, TimeUnit.SECONDS);
         checkJobsFinal();
         checkHealth();
+        meshJobs();
 
         Thread.sleep(TimeUnit.SECONDS.toMillis(options.idleSeconds()));
         Memory after = memory();
@@ -227,7 +229,7 @@ public final class LoadTest {
 
     /** Submits a job, then polls it (or reads its event stream) to the end, then fetches a done job's image. */
     private void job(Random random, boolean events) throws IOException, InterruptedException {
-        Variant variant = variant(pickForJob(random), random, random.nextInt(SIZES.length),
+        Variant variant = variant(pick(random), random, random.nextInt(SIZES.length),
                 SAMPLES[random.nextInt(SAMPLES.length)]);
         String id = submit(variant);
         if (id == null) {
@@ -242,7 +244,7 @@ public final class LoadTest {
      * polling or on its event stream.
      */
     private void cancel(Random random) throws IOException, InterruptedException {
-        Variant variant = variant(pickForJob(random), random, SIZES.length - 1, 16);
+        Variant variant = variant(pick(random), random, SIZES.length - 1, 16);
         String id = submit(variant);
         if (id == null) {
             return;
@@ -291,9 +293,13 @@ public final class LoadTest {
 
     /** The final state, or null if the job was not final by the drain timeout (or could not be read). */
     private String pollToEnd(String id) throws IOException, InterruptedException {
+        return pollToEnd(id, "job-status");
+    }
+
+    private String pollToEnd(String id, String kind) throws IOException, InterruptedException {
         while (System.nanoTime() < drainUntil) {
-            HttpResponse<byte[]> response = send("job-status", HttpRequest.newBuilder(uri("/api/jobs/" + id)).GET());
-            if (!expect("job-status", response, 200)) {
+            HttpResponse<byte[]> response = send(kind, HttpRequest.newBuilder(uri("/api/jobs/" + id)).GET());
+            if (!expect(kind, response, 200)) {
                 return null;
             }
             String state = Json.string(Json.object(Json.parse(body(response))), "state");
@@ -495,6 +501,34 @@ public final class LoadTest {
 
     // ---- jobs and memory
 
+    /**
+     * Mesh jobs, one at a time, each to done and its image: the server keeps the last 50 finished
+     * jobs, so if a finished job held its scene these would hold about 7 MB each.
+     */
+    private void meshJobs() throws IOException, InterruptedException {
+        Random random = new Random(options.seed());
+        stopAt = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        drainUntil = stopAt;
+        for (int i = 0; i < options.meshJobs(); i++) {
+            Variant variant = variant(meshScene, random, 0, 1);
+            HttpResponse<byte[]> response = sendRetrying("mesh-submit", post("/api/jobs", variant.json));
+            if (response == null || !expect("mesh-submit", response, 202)) {
+                problems.add("mesh job " + i + " was not accepted within 60 s");
+                return;
+            }
+            String id = Json.string(Json.object(Json.parse(body(response))), "id");
+            String state = pollToEnd(id, "mesh-status");
+            if (!"done".equals(state)) {
+                problems.add("mesh job " + id + " ended " + state);
+                continue;
+            }
+            HttpResponse<byte[]> image = send("mesh-image", HttpRequest.newBuilder(uri("/api/jobs/" + id + "/image")).GET());
+            if (expect("mesh-image", image, 200)) {
+                checkImage("mesh-image", image, variant);
+            }
+        }
+    }
+
     private static boolean isFinal(String state) {
         return "done".equals(state) || "failed".equals(state) || "cancelled".equals(state);
     }
@@ -565,15 +599,6 @@ public final class LoadTest {
         return scenes.get(random.nextInt(scenes.size()));
     }
 
-    /**
-     * An example scene, or one time in --mesh-one-in the mesh scene: finished jobs are kept (50 of
-     * them by default), so a job that kept its geometry would show in the heap.
-     */
-    private Map<String, Object> pickForJob(Random random) {
-        int oneIn = options.meshOneIn();
-        return oneIn > 0 && random.nextInt(oneIn) == 0 ? meshScene : pick(random);
-    }
-
     /** A flat grid of n x n squares, two triangles each, standing 2 m wide on the floor, as inline OBJ. */
     static Map<String, Object> meshScene(int n) {
         StringBuilder obj = new StringBuilder();
@@ -635,7 +660,7 @@ public final class LoadTest {
                         kindStatus[1], count, pct(sorted, 50), pct(sorted, 90), pct(sorted, 99),
                         sorted[sorted.length - 1] / 1e6);
             }
-            if (!kindStatus[0].equals("health")) {
+            if (!kindStatus[0].equals("health") && !kindStatus[0].startsWith("mesh-")) {
                 requests += count;
             }
             if (row.getKey().equals("render 200")) {
@@ -657,6 +682,8 @@ public final class LoadTest {
         System.out.printf("jobs accepted: %d %s%n", jobs.size(), states);
         System.out.printf("429: %d, 503: %d; retries after Retry-After: %d; given up at the end: %d%n", full, busy,
                 retryWaits.get(), gaveUp.get());
+        System.out.printf("then %d mesh jobs (%,d triangles each), one at a time, and %d s idle%n", options.meshJobs(),
+                2 * MESH_GRID * MESH_GRID, options.idleSeconds());
         System.out.printf(Locale.ROOT, "heap: %.1f MiB before, %.1f MiB after (limit %.1f)%n", mib(before.heap),
                 mib(after.heap), mib(before.heap + margin));
         System.out.printf("threads: %d before, %d after (limit %d)%n", before.threads, after.threads, threadCeiling);
