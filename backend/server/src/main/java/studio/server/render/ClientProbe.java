@@ -16,7 +16,9 @@ import jakarta.servlet.ServletRequestWrapper;
  * a connection that has something to read has been closed or reset by the client (a client waiting
  * for its image sends nothing more). Reads are rate-limited and serialised, and the probe is closed
  * before the request completes, so it never touches a connection the container has recycled. With
- * another container it answers "still there", and only a failed write notices.
+ * another container it answers "still there", and only a failed write notices. A client that
+ * half-closes its side of the connection after the body (rare: HTTP clients keep it open for the
+ * response) looks gone too, and so does one that pipelines its next request behind this one.
  */
 public final class ClientProbe {
 
