@@ -30,6 +30,14 @@ async function step(name, body) {
 function expect(condition, message) {
   if (!condition) throw new Error(message);
 }
+/** Polls an async condition until it holds (the editor re-renders after a click, not during it). */
+async function until(condition, message, timeoutMs = 5000) {
+  const end = Date.now() + timeoutMs;
+  while (!(await condition())) {
+    if (Date.now() > end) throw new Error(typeof message === 'function' ? await message() : message);
+    await new Promise((resolve) => setTimeout(resolve, 25));
+  }
+}
 
 const server = await startServer(jar);
 const browser = await chromium.launch({
@@ -81,10 +89,12 @@ try {
   });
 
   await step('undo puts the sphere back, redo moves it again', async () => {
+    const centerX = page.getByLabel('Center x');
     await page.getByRole('button', { name: 'Undo' }).click();
-    expect(Number(await page.getByLabel('Center x').inputValue()) === xBefore, 'undo did not restore x');
+    await until(async () => Number(await centerX.inputValue()) === xBefore,
+      async () => `undo did not restore x: ${xBefore} expected, ${await centerX.inputValue()} shown`);
     await page.getByRole('button', { name: 'Redo' }).click();
-    expect(Number(await page.getByLabel('Center x').inputValue()) > xBefore, 'redo did not move it again');
+    await until(async () => Number(await centerX.inputValue()) > xBefore, 'redo did not move it again');
   });
 
   await step('changing its material to mirror', async () => {
