@@ -22,7 +22,7 @@ public final class Slab {
      * Where the ray o + t*d, with inverse direction (ix, iy, iz) = 1/d, enters the box stored at
      * {@code bounds[o..o+5]} if it meets it for some t in [0, tMax] (0 if it starts inside), else
      * NaN, which fails every comparison (tMax may be infinite, so no distance can mean a miss). The
-     * same test as {@link #hits}, with the entry distance kept for ordering a closest-hit traversal.
+     * entry distance orders a closest-hit traversal; {@link #hits} asks only whether there is one.
      */
     public static double entry(double[] bounds, int o, double ox, double oy, double oz,
                                double ix, double iy, double iz, double tMax) {
@@ -79,50 +79,6 @@ public final class Slab {
      */
     public static boolean hits(double[] bounds, int o, double ox, double oy, double oz,
                                double ix, double iy, double iz, double tMax) {
-        double tNear = 0, tFar = tMax;
-        double near, far;
-        if (ix >= 0) {
-            near = (bounds[o] - ox) * ix;
-            far = (bounds[o + 3] - ox) * ix;
-        } else {
-            near = (bounds[o + 3] - ox) * ix;
-            far = (bounds[o] - ox) * ix;
-        }
-        if (near > tNear) {
-            tNear = near;
-        }
-        far *= FAR_WIDENING;
-        if (far < tFar) {
-            tFar = far;
-        }
-        if (iy >= 0) {
-            near = (bounds[o + 1] - oy) * iy;
-            far = (bounds[o + 4] - oy) * iy;
-        } else {
-            near = (bounds[o + 4] - oy) * iy;
-            far = (bounds[o + 1] - oy) * iy;
-        }
-        if (near > tNear) {
-            tNear = near;
-        }
-        far *= FAR_WIDENING;
-        if (far < tFar) {
-            tFar = far;
-        }
-        if (iz >= 0) {
-            near = (bounds[o + 2] - oz) * iz;
-            far = (bounds[o + 5] - oz) * iz;
-        } else {
-            near = (bounds[o + 5] - oz) * iz;
-            far = (bounds[o + 2] - oz) * iz;
-        }
-        if (near > tNear) {
-            tNear = near;
-        }
-        far *= FAR_WIDENING;
-        if (far < tFar) {
-            tFar = far;
-        }
-        return tNear <= tFar;
+        return !Double.isNaN(entry(bounds, o, ox, oy, oz, ix, iy, iz, tMax));
     }
 }

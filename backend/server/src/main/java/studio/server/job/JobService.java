@@ -1,5 +1,6 @@
 package studio.server.job;
 
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -28,19 +29,19 @@ public final class JobService implements AutoCloseable {
 
     private final JobSettings settings;
     private final RenderBudget budget;
-    private final java.time.Duration shutdownGrace;
+    private final Duration shutdownGrace;
     private final ThreadPoolExecutor executor;
     private final ScheduledExecutorService janitor;
     private final Map<String, RenderJob> jobs = new ConcurrentHashMap<>();
 
     public JobService(JobSettings settings) {
-        this(settings, RenderBudget.unlimited(), java.time.Duration.ofSeconds(5));
+        this(settings, RenderBudget.unlimited(), Duration.ofSeconds(5));
     }
 
     /**
      * @param shutdownGrace on shutdown, how long running jobs may go on before they are cancelled
      */
-    public JobService(JobSettings settings, RenderBudget budget, java.time.Duration shutdownGrace) {
+    public JobService(JobSettings settings, RenderBudget budget, Duration shutdownGrace) {
         this.settings = settings;
         this.budget = budget;
         this.shutdownGrace = shutdownGrace;

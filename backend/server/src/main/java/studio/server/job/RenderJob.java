@@ -64,10 +64,6 @@ final class RenderJob implements Runnable {
         this.memory = memory;
     }
 
-    RenderJob(String id, CompiledScene scene) {
-        this(id, scene, RenderBudget.unlimited(), MemoryBudget.unlimited().tryReserve(0));
-    }
-
     String id() {
         return id;
     }

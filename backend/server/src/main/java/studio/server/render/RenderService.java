@@ -101,21 +101,6 @@ public final class RenderService implements AutoCloseable {
         return ticket;
     }
 
-    /** Validates, renders and encodes a scene, waiting for the image. */
-    public RenderedImage render(byte[] sceneJson) {
-        try {
-            return start(sceneJson).result().join();
-        } catch (java.util.concurrent.CompletionException e) {
-            if (e.getCause() instanceof RuntimeException runtime) {
-                throw runtime;
-            }
-            if (e.getCause() instanceof Error error) {
-                throw error;
-            }
-            throw e;
-        }
-    }
-
     /** Renders running or about to run. */
     public int active() {
         return running.size();
