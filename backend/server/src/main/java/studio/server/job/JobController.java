@@ -2,8 +2,6 @@ package studio.server.job;
 
 import java.net.URI;
 
-import org.springframework.http.ContentDisposition;
-import org.springframework.http.HttpHeaders;
 import org.springframework.http.MediaType;
 import org.springframework.http.ResponseEntity;
 import org.springframework.web.bind.annotation.DeleteMapping;
@@ -14,6 +12,7 @@ import org.springframework.web.bind.annotation.RequestBody;
 import org.springframework.web.bind.annotation.RestController;
 import org.springframework.web.servlet.mvc.method.annotation.SseEmitter;
 
+import studio.server.render.RenderedImage;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.SceneCompiler;
 
@@ -52,14 +51,8 @@ class JobController {
     ResponseEntity<byte[]> image(@PathVariable String id) {
         JobService.JobImage image = jobs.image(id);
         JobStatus status = image.status();
-        return ResponseEntity.ok()
-                .contentType(MediaType.parseMediaType(status.mediaType()))
-                .header(HttpHeaders.CONTENT_DISPOSITION,
-                        ContentDisposition.attachment().filename(status.fileName()).build().toString())
-                .header("X-Render-Millis", Long.toString(status.elapsedMillis()))
-                .header("X-Rays-Per-Second", Long.toString(Math.round(status.raysPerSecond())))
-                .header("X-Image-Size", status.width() + "x" + status.height())
-                .body(image.bytes());
+        return new RenderedImage(image.bytes(), status.mediaType(), status.fileName(), status.width(), status.height(),
+                status.elapsedMillis(), status.raysPerSecond()).toResponse();
     }
 
     @DeleteMapping("/api/jobs/{id}")

@@ -2,9 +2,6 @@ package studio.server.render;
 
 import java.util.concurrent.CompletionException;
 
-import org.springframework.http.ContentDisposition;
-import org.springframework.http.HttpHeaders;
-import org.springframework.http.MediaType;
 import org.springframework.http.ResponseEntity;
 import org.springframework.web.bind.annotation.PostMapping;
 import org.springframework.web.bind.annotation.RequestBody;
@@ -50,23 +47,12 @@ class RenderController {
         response.onCompletion(client::close);
         ticket.result().whenComplete((image, error) -> {
             if (error == null) {
-                response.setResult(ok(image));
+                response.setResult(image.toResponse());
             } else {
                 response.setErrorResult(error instanceof CompletionException wrapped && wrapped.getCause() != null
                         ? wrapped.getCause() : error);
             }
         });
         return response;
-    }
-
-    static ResponseEntity<byte[]> ok(RenderedImage image) {
-        return ResponseEntity.ok()
-                .contentType(MediaType.parseMediaType(image.mediaType()))
-                .header(HttpHeaders.CONTENT_DISPOSITION,
-                        ContentDisposition.attachment().filename(image.fileName()).build().toString())
-                .header("X-Render-Millis", Long.toString(image.elapsedMillis()))
-                .header("X-Rays-Per-Second", Long.toString(Math.round(image.raysPerSecond())))
-                .header("X-Image-Size", image.width() + "x" + image.height())
-                .body(image.bytes());
     }
 }
