@@ -17,6 +17,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
 import studio.engine.scene.Scene;
+import studio.server.Await;
 import studio.server.render.RenderBudget;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.ExampleSceneFiles;
@@ -60,14 +61,8 @@ class JobServiceTest {
         }
     }
 
-    static void await(String what, BooleanSupplier condition) throws InterruptedException {
-        long deadline = System.nanoTime() + Duration.ofSeconds(30).toNanos();
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                throw new AssertionError("timed out waiting until " + what);
-            }
-            Thread.sleep(10);
-        }
+    static void await(String what, BooleanSupplier condition) throws Exception {
+        Await.until(what, 30_000, condition::getAsBoolean);
     }
 
     @Test

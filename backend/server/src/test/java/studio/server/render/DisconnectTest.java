@@ -10,7 +10,6 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
-import java.util.function.BooleanSupplier;
 import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
@@ -18,6 +17,7 @@ import org.springframework.beans.factory.annotation.Autowired;
 import org.springframework.boot.test.context.SpringBootTest;
 import org.springframework.boot.test.web.server.LocalServerPort;
 
+import studio.server.Await;
 import studio.server.job.JobService;
 import studio.server.job.JobState;
 import studio.server.system.MemoryBudget;
@@ -60,17 +60,17 @@ class DisconnectTest {
     void aClientThatDisconnectsCancelsItsRenderWithinATile() throws Exception {
         long cancelledBefore = renders.cancelled();
         try (Socket socket = post(SLOW_SCENE)) {
-            await(() -> renders.active() == 1, 10_000, "the render to start");
+            Await.until("the render to start", 10_000, () -> renders.active() == 1);
             Thread.sleep(200);
         } // the client goes away
         long closed = System.nanoTime();
-        await(() -> renders.active() == 0, 10_000, "the render to stop");
+        Await.until("the render to stop", 10_000, () -> renders.active() == 0);
         long stoppedMillis = (System.nanoTime() - closed) / 1_000_000;
         System.out.printf("disconnect: the render stopped %d ms after its client went away%n", stoppedMillis);
         assertThat(renders.cancelled()).isEqualTo(cancelledBefore + 1);
         // a 32 x 32 tile of this scene at 256 samples takes well under a second on one thread
         assertThat(stoppedMillis).as("ms from disconnect to the render's end").isLessThan(3_000);
-        await(() -> memory.reserved() == 0, 5_000, "the memory to be given back");
+        Await.until("the memory to be given back", 5_000, () -> memory.reserved() == 0);
     }
 
     @Test
@@ -80,18 +80,18 @@ class DisconnectTest {
         for (int i = 0; i < 5; i++) {
             disconnectDuringRender();
         }
-        await(() -> renders.active() == 0, 10_000, "the warm-up renders to stop");
+        Await.until("the warm-up renders to stop", 10_000, () -> renders.active() == 0);
         int before = settledThreadCount(threads);
         long cancelledBefore = renders.cancelled();
         for (int i = 0; i < 200; i++) {
             disconnectDuringRender();
         }
-        await(() -> renders.active() == 0, 20_000, "every render to stop");
+        Await.until("every render to stop", 20_000, () -> renders.active() == 0);
         int after = settledThreadCount(threads);
         System.out.printf("disconnect: live threads %d before and %d after 200 disconnects mid-render%n", before, after);
         assertThat(renders.cancelled() - cancelledBefore).isEqualTo(200);
         assertThat(after).as("live threads after 200 disconnects (before: %d)", before).isLessThanOrEqualTo(before + 4);
-        await(() -> memory.reserved() == 0, 5_000, "the memory to be given back");
+        Await.until("the memory to be given back", 5_000, () -> memory.reserved() == 0);
     }
 
     @Test
@@ -111,7 +111,7 @@ class DisconnectTest {
             }
         } // the only watcher goes away
         long closed = System.nanoTime();
-        await(() -> jobs.status(id).state() == JobState.CANCELLED, 10_000, "the job to be cancelled");
+        Await.until("the job to be cancelled", 10_000, () -> jobs.status(id).state() == JobState.CANCELLED);
         long millis = (System.nanoTime() - closed) / 1_000_000;
         System.out.printf("disconnect: the job was cancelled %d ms after its event stream went away%n", millis);
         assertThat(millis).as("ms from disconnect to the job's end").isLessThan(3_000);
@@ -121,9 +121,9 @@ class DisconnectTest {
     private void disconnectDuringRender() throws Exception {
         long cancelled = renders.cancelled();
         try (Socket socket = post(SLOW_SCENE)) {
-            await(() -> renders.active() > 0 || renders.cancelled() > cancelled, 10_000, "the render to start");
+            Await.until("the render to start", 10_000, () -> renders.active() > 0 || renders.cancelled() > cancelled);
         }
-        await(() -> renders.cancelled() > cancelled, 10_000, "the render to be cancelled");
+        Await.until("the render to be cancelled", 10_000, () -> renders.cancelled() > cancelled);
     }
 
     private Socket post(String json) throws IOException {
@@ -155,15 +155,5 @@ class DisconnectTest {
             last = Math.min(last, now);
         }
         return last;
-    }
-
-    private static void await(BooleanSupplier condition, long millis, String what) throws InterruptedException {
-        long end = System.nanoTime() + millis * 1_000_000;
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > end) {
-                throw new AssertionError("timed out after " + millis + " ms waiting for " + what);
-            }
-            Thread.sleep(2);
-        }
     }
 }

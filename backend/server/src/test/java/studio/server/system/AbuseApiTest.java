@@ -18,6 +18,7 @@ import org.springframework.beans.factory.annotation.Autowired;
 import org.springframework.boot.test.context.SpringBootTest;
 import org.springframework.boot.test.web.server.LocalServerPort;
 
+import studio.server.Await;
 import studio.server.render.RenderService;
 import tools.jackson.databind.JsonNode;
 import tools.jackson.databind.json.JsonMapper;
@@ -60,7 +61,7 @@ class AbuseApiTest {
         HttpResponse<String> tiny = post("/api/render", "{\"image\": {\"width\": 8, \"height\": 6}, \"objects\": ["
                 + SPHERE + "]}");
         assertThat(tiny.statusCode()).isEqualTo(200);
-        await("every render to end", () -> renders.active() == 0);
+        Await.until("every render to end", 30_000, () -> renders.active() == 0);
     }
 
     static Stream<Arguments> malformedBodies() {
@@ -146,7 +147,7 @@ class AbuseApiTest {
         HttpResponse<String> accepted = post("/api/jobs", SLOW);
         assertThat(accepted.statusCode()).isEqualTo(202);
         String id = JSON.readTree(accepted.body()).get("id").asString();
-        await("the job to end", () -> !JSON.readTree(get("/api/jobs/" + id).body()).get("state").asString()
+        Await.until("the job to end", 30_000, () -> !JSON.readTree(get("/api/jobs/" + id).body()).get("state").asString()
                 .matches("queued|running"));
         JsonNode status = JSON.readTree(get("/api/jobs/" + id).body());
         assertThat(status.get("state").asString()).isEqualTo("failed");
@@ -169,20 +170,5 @@ class AbuseApiTest {
 
     private HttpResponse<String> get(String path) throws Exception {
         return HTTP.send(HttpRequest.newBuilder(uri(path)).build(), HttpResponse.BodyHandlers.ofString());
-    }
-
-    interface Condition {
-        boolean holds() throws Exception;
-    }
-
-    /** Polls a condition for up to 30 s. */
-    static void await(String what, Condition condition) throws Exception {
-        long deadline = System.nanoTime() + Duration.ofSeconds(30).toNanos();
-        while (!condition.holds()) {
-            if (System.nanoTime() > deadline) {
-                throw new AssertionError("timed out waiting for " + what);
-            }
-            Thread.sleep(20);
-        }
     }
 }
