@@ -12,12 +12,11 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Stream;
 
-import jakarta.validation.Validation;
-import jakarta.validation.ValidatorFactory;
 import studio.server.render.ImageFiles;
 import studio.server.cli.Args;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
+import studio.server.scene.LazyValidation;
 import studio.server.scene.MeshFiles;
 import studio.server.scene.SceneCompiler;
 
@@ -59,7 +58,7 @@ public final class BenchCommand {
         System.setProperty("java.awt.headless", "true");
 
         Map<String, CompiledScene> scenes = new LinkedHashMap<>();
-        try (ValidatorFactory validation = Validation.buildDefaultValidatorFactory()) {
+        try (LazyValidation validation = new LazyValidation()) {
             SceneCompiler compiler = SceneCompiler.standalone(validation);
             for (Path file : sceneFiles(options.scenes)) {
                 try {

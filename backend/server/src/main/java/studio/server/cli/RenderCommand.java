@@ -13,13 +13,12 @@ import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 
-import jakarta.validation.Validation;
-import jakarta.validation.ValidatorFactory;
 import studio.engine.render.RenderResult;
 import studio.engine.render.Renderer;
 import studio.server.render.ImageFiles;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
+import studio.server.scene.LazyValidation;
 import studio.server.scene.MeshFiles;
 import studio.server.scene.SceneCompiler;
 
@@ -65,7 +64,7 @@ public final class RenderCommand {
         }
 
         CompiledScene compiled;
-        try (ValidatorFactory validation = Validation.buildDefaultValidatorFactory()) {
+        try (LazyValidation validation = new LazyValidation()) {
             SceneCompiler compiler = SceneCompiler.standalone(validation);
             compiled = compiler.compile(json, options.overrides(), options.threads,
                     MeshFiles.in(options.scene.toAbsolutePath().getParent()));

@@ -1,8 +1,9 @@
 package studio.server.scene;
 
 import java.util.Map;
+import java.util.function.Supplier;
 
-import jakarta.validation.ValidatorFactory;
+import jakarta.validation.Validator;
 
 /** Scene JSON in, an engine scene out: the one path the API and the CLI share. */
 public final class SceneCompiler {
@@ -39,16 +40,15 @@ public final class SceneCompiler {
 
     /**
      * A compiler outside Spring (the CLI, the benchmark, tests) with this server's default limits;
-     * the caller owns the validator factory and closes it.
+     * the caller owns the validator (e.g. a {@link LazyValidation}) and closes it.
      */
-    public static SceneCompiler standalone(ValidatorFactory validation) {
-        return standalone(validation, MeshFiles.none());
+    public static SceneCompiler standalone(Supplier<Validator> validator) {
+        return standalone(validator, MeshFiles.none());
     }
 
-    /** As {@link #standalone(ValidatorFactory)}, reading meshes' files from {@code meshFiles}. */
-    public static SceneCompiler standalone(ValidatorFactory validation, MeshFiles meshFiles) {
-        return new SceneCompiler(new SceneReader(validation.getValidator()), new SceneMapper(SceneLimits.DEFAULTS),
-                meshFiles);
+    /** As {@link #standalone(Supplier)}, reading meshes' files from {@code meshFiles}. */
+    public static SceneCompiler standalone(Supplier<Validator> validator, MeshFiles meshFiles) {
+        return new SceneCompiler(new SceneReader(validator), new SceneMapper(SceneLimits.DEFAULTS), meshFiles);
     }
 
     public CompiledScene compile(byte[] json) {

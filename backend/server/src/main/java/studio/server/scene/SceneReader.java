@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 
@@ -39,18 +40,31 @@ import tools.jackson.databind.node.ObjectNode;
  */
 public final class SceneReader {
 
+    /** Plainly valid scenes skip Jackson's binding and the validator (see {@link FastPathBinder}). */
+    private static final FastPathBinder FAST_PATH = new FastPathBinder(SceneDto.class);
+
     private final JsonMapper mapper;
     private final int parallelObjects;
-    private final Validator validator;
+    private final boolean fastPath;
+    private final Supplier<Validator> validator;
 
     public SceneReader(Validator validator) {
-        this(validator, PARALLEL_OBJECTS);
+        this(() -> validator);
     }
 
-    /** @param parallelObjects from how many objects on they are read in parallel (tests compare both ways) */
-    SceneReader(Validator validator, int parallelObjects) {
+    /** @param validator asked for only when a scene takes the full path (the CLI then never boots it for a valid scene) */
+    public SceneReader(Supplier<Validator> validator) {
+        this(validator, PARALLEL_OBJECTS, true);
+    }
+
+    /**
+     * @param parallelObjects from how many objects on they are read in parallel (tests compare both ways)
+     * @param fastPath        whether plainly valid scenes take the fast path (tests compare both ways)
+     */
+    SceneReader(Supplier<Validator> validator, int parallelObjects, boolean fastPath) {
         this.validator = validator;
         this.parallelObjects = parallelObjects;
+        this.fastPath = fastPath;
         this.mapper = JsonMapper.builder()
                 .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
                 .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
@@ -88,6 +102,12 @@ public final class SceneReader {
             }
             dropNullFields(tree, "", nulls);
             applyOverrides((ObjectNode) tree, overrides);
+            if (fastPath && nulls.isEmpty()) {
+                SceneDto fast = FAST_PATH.bind(tree);
+                if (fast != null) {
+                    return fast;
+                }
+            }
             JsonNode objects = tree.get("objects");
             if (objects instanceof ArrayNode many && many.size() >= parallelObjects) {
                 return readInParallel((ObjectNode) tree, many, nulls);
@@ -97,7 +117,7 @@ public final class SceneReader {
             throw new InvalidSceneException(withNulls(nulls, List.of(problemOf(e))));
         }
         List<FieldProblem> problems = new ArrayList<>();
-        validator.validate(scene).forEach(v -> problems.add(new FieldProblem(pathOf(v.getPropertyPath()), v.getMessage())));
+        validator.get().validate(scene).forEach(v -> problems.add(new FieldProblem(pathOf(v.getPropertyPath()), v.getMessage())));
         return checked(scene, withNulls(nulls, problems));
     }
 
@@ -135,7 +155,7 @@ public final class SceneReader {
                     continue;
                 }
                 List<FieldProblem> found = new ArrayList<>(0);
-                validator.validate(dtos[i]).forEach(v -> found.add(
+                validator.get().validate(dtos[i]).forEach(v -> found.add(
                         new FieldProblem(within(at, pathOf(v.getPropertyPath())), v.getMessage())));
                 objectProblems[i] = found;
             }
@@ -146,7 +166,7 @@ public final class SceneReader {
             }
         }
         List<FieldProblem> problems = new ArrayList<>();
-        validator.validate(head).forEach(v -> problems.add(new FieldProblem(pathOf(v.getPropertyPath()), v.getMessage())));
+        validator.get().validate(head).forEach(v -> problems.add(new FieldProblem(pathOf(v.getPropertyPath()), v.getMessage())));
         for (List<FieldProblem> found : objectProblems) {
             if (found != null) {
                 problems.addAll(found);

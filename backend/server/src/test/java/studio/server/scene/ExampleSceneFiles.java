@@ -43,6 +43,6 @@ public final class ExampleSceneFiles {
 
     /** A compiler with the default limits, as the CLI builds it, reading meshes from the scenes folder. */
     public static SceneCompiler compiler() {
-        return SceneCompiler.standalone(VALIDATION, MeshFiles.in(dir()));
+        return SceneCompiler.standalone(VALIDATION::getValidator, MeshFiles.in(dir()));
     }
 }

@@ -23,8 +23,8 @@ class SceneReaderParallelTest {
 
     private static final ValidatorFactory VALIDATION = Validation.byProvider(HibernateValidator.class).configure()
             .defaultLocale(Locale.ENGLISH).buildValidatorFactory();
-    private static final SceneReader PARALLEL = new SceneReader(VALIDATION.getValidator(), 16);
-    private static final SceneReader IN_ONE_PIECE = new SceneReader(VALIDATION.getValidator(), Integer.MAX_VALUE);
+    private static final SceneReader PARALLEL = new SceneReader(VALIDATION::getValidator, 16, false);
+    private static final SceneReader IN_ONE_PIECE = new SceneReader(VALIDATION::getValidator, Integer.MAX_VALUE, false);
     private static final int N = 1500;
 
     @AfterAll
