@@ -55,7 +55,8 @@ import studio.engine.scene.Scene;
  *
  * <p>With the {@code sobol} sampler, adaptive sampling instead walks one scrambled Sobol sequence per
  * pixel, in two passes over each tile. First every pixel takes {@value #BASE} samples, and so does a
- * one-pixel ring around the tile (the ring's samples are the same its own tiles take). A pixel then
+ * one-pixel ring around the tile (the ring's samples are the same its own tiles take, and are shared
+ * with them through {@link TileBorders}). A pixel then
  * stops at {@value #BASE} if all 36 base samples of its 3 x 3 neighbourhood agree: per channel c,
  * (largest - smallest of them) / {@value #BASE} &lt;= L, with L as above from the pixel's own means. Looking at the neighbours finds the thin edges, shadow slivers and specks that the pixel's
  * own four samples miss but a neighbour's catch. Otherwise the pixel walks on along its sequence,
@@ -101,13 +102,15 @@ public final class Renderer {
                                      BooleanSupplier cancelled) {
         long start = System.nanoTime();
         Film film = new Film(settings.width(), settings.height());
-        List<TileRect> tiles = tiles(settings.width(), settings.height(),
-                tileSize(settings.width(), settings.height(), settings.effectiveThreads()));
+        int tileSize = tileSize(settings.width(), settings.height(), settings.effectiveThreads());
+        List<TileRect> tiles = tiles(settings.width(), settings.height(), tileSize);
+        TileBorders borders = settings.adaptive() && settings.sampler() instanceof SobolSampler
+                ? new TileBorders(settings.width(), settings.height(), tileSize) : null;
         AtomicInteger done = new AtomicInteger();
         LongAdder rays = new LongAdder();
         LongAdder samples = new LongAdder();
         LongAdder nonFinite = new LongAdder();
-        ThreadLocal<TileWorker> workers = ThreadLocal.withInitial(() -> new TileWorker(scene, settings));
+        ThreadLocal<TileWorker> workers = ThreadLocal.withInitial(() -> new TileWorker(scene, settings, borders));
 
         ForkJoinPool pool = new ForkJoinPool(settings.effectiveThreads());
         try {
@@ -182,6 +185,8 @@ public final class Renderer {
         /** Adaptive sampling walks one Sobol sequence per pixel (see progressiveTile). */
         final boolean progressive;
         final SobolSampler.Sequence sequence = new SobolSampler.Sequence();
+        /** Progressive adaptive sampling: base samples shared with the neighbouring tiles. */
+        final TileBorders borders;
         final Ray cameraRay = new Ray();
         /** Progressive adaptive sampling: each base pixel's sum and per-channel range, over a tile and its ring. */
         final double[] baseSum = new double[3 * RING_TILE * RING_TILE];
@@ -199,7 +204,8 @@ public final class Renderer {
         /** The smallest and largest finite sample values per channel since the last {@link #resetRange}. */
         private double minR, minG, minB, maxR, maxG, maxB;
 
-        TileWorker(Scene scene, RenderSettings settings) {
+        TileWorker(Scene scene, RenderSettings settings, TileBorders borders) {
+            this.borders = borders;
             integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight());
             camera = scene.camera();
             sampler = settings.sampler();
@@ -244,7 +250,8 @@ public final class Renderer {
         /**
          * Adaptive sampling along one Sobol sequence, in two passes over the tile. First every pixel of
          * the tile and of a one-pixel ring around it takes {@value #BASE} samples (a ring pixel's are
-         * the same samples its own tile takes, so tiles need not wait for each other). Then each
+         * the same samples its own tile takes, so tiles need not wait for each other; whichever tile
+         * takes an edge pixel's first leaves them in {@link TileBorders} for the other). Then each
          * pixel of the tile stops there if all base samples of its 3 x 3 neighbourhood agree, else it
          * walks on along its sequence, doubling, and after 2^k samples compares the estimate from the
          * first half with the one from the second half, each a stratified (0, k-1, 2)-net: half their
@@ -259,20 +266,34 @@ public final class Renderer {
             long bad = 0;
             for (int y = y0; y < y1; y++) {
                 for (int x = x0; x < x1; x++) {
-                    random.reset(x, y, seed);
-                    sequence.seed(random);
-                    sequence.fill(0, base, xs, ys);
-                    resetRange();
-                    long badHere = trace(x, y, 0, base);
+                    int i = (y - y0) * stride + x - x0;
+                    int entry = borders.entryOf(x, y);
+                    long badHere = entry < 0 ? -1 : borders.loadOrClaim(entry, baseSum, baseMin, baseMax, 3 * i);
+                    if (badHere < 0) {
+                        random.reset(x, y, seed);
+                        sequence.seed(random);
+                        sequence.fill(0, base, xs, ys);
+                        resetRange();
+                        try {
+                            badHere = trace(x, y, 0, base);
+                        } catch (RuntimeException | Error e) {
+                            if (entry >= 0) {
+                                borders.abandon(entry);
+                            }
+                            throw e;
+                        }
+                        baseSum[3 * i] = sumR;
+                        baseSum[3 * i + 1] = sumG;
+                        baseSum[3 * i + 2] = sumB;
+                        baseMin[3 * i] = minR; baseMin[3 * i + 1] = minG; baseMin[3 * i + 2] = minB;
+                        baseMax[3 * i] = maxR; baseMax[3 * i + 1] = maxG; baseMax[3 * i + 2] = maxB;
+                        if (entry >= 0) {
+                            borders.store(entry, baseSum, baseMin, baseMax, 3 * i, (int) badHere);
+                        }
+                    }
                     if (tile.contains(x, y)) {
                         bad += badHere;
                     }
-                    int i = (y - y0) * stride + x - x0;
-                    baseSum[3 * i] = sumR;
-                    baseSum[3 * i + 1] = sumG;
-                    baseSum[3 * i + 2] = sumB;
-                    baseMin[3 * i] = minR; baseMin[3 * i + 1] = minG; baseMin[3 * i + 2] = minB;
-                    baseMax[3 * i] = maxR; baseMax[3 * i + 1] = maxG; baseMax[3 * i + 2] = maxB;
                 }
             }
             for (int y = tile.y(); y < tile.y() + tile.height(); y++) {

@@ -164,6 +164,17 @@ class AdaptiveSamplingTest {
     }
 
     @Test
+    void neighbouringTilesShareTheirEdgesBaseSamplesSoNoneIsTracedTwice() {
+        // unlit and flat: one ray per sample; the tiles' one-pixel rings would add about 10% more rays
+        Scene scene = flatSphere(new Camera(new Vec3(0, 0, 4), Vec3.ZERO, UP, 40));
+        for (int threads = 1; threads <= 3; threads++) {
+            RenderResult result = Renderer.render(scene, settings(150, 110, Sampler.of("sobol", 64), 0.05, threads));
+            assertTrue(result.meanSamplesPerPixel() > Renderer.BASE, "the edge is refined");
+            assertEquals(result.samplesTaken(), result.raysTraced(), threads + " threads");
+        }
+    }
+
+    @Test
     void sobolRefinesAFlatPixelWhoseNeighbourDiffers() {
         // a flat white box filling x < 0 seen head on: the edge lies exactly between columns 3 and 4 of 8,
         // so every pixel's own samples agree, but columns 3 and 4 each have a neighbour of the other colour

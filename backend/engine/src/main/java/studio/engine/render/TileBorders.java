@@ -1,0 +1,102 @@
+package studio.engine.render;
+
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+
+/**
+ * Adaptive sampling with sobol: the base samples of the pixels on the tiles' edges, shared between
+ * neighbouring tiles. A tile judges its edge pixels by a one-pixel ring of its neighbours' pixels;
+ * whichever tile takes a pixel's base samples first leaves them here, and the other reads them
+ * instead of tracing them again (on the stripes benchmark scene at 320x240 the ring was 7% of all
+ * rays). Base samples are seeded by pixel, so both tiles would get the same values: the image does
+ * not depend on which tile went first, nor on the thread count.
+ *
+ * <p>Per pixel on an edge: its base sum, smallest and largest sample per channel, and how many
+ * samples came out non-finite. Two rows per row of tiles (its first and last) and two columns per
+ * column of tiles; a corner pixel is kept with its row. About 2 x 2 / size of the image's pixels at
+ * 80 bytes each: 10 bytes a pixel with 32-pixel tiles.
+ */
+final class TileBorders {
+
+    private static final VarHandle STATE = MethodHandles.arrayElementVarHandle(int[].class);
+    private static final int FREE = 0, CLAIMED = 1, STORED = 2;
+    private static final int VALUES = 9;
+
+    private final int width, height, size;
+    private final int rowEntries;
+    /** Per entry: sum r, g, b, min r, g, b, max r, g, b; rows' entries first, then columns'. */
+    private final double[] values;
+    private final int[] nonFinite;
+    /** Per entry FREE, CLAIMED (a tile is tracing it) or STORED (its values are written: release/acquire). */
+    private final int[] states;
+
+    TileBorders(int width, int height, int size) {
+        this.width = width;
+        this.height = height;
+        this.size = size;
+        int tileRows = (height + size - 1) / size, tileColumns = (width + size - 1) / size;
+        rowEntries = 2 * tileRows * width;
+        int entries = rowEntries + 2 * tileColumns * height;
+        values = new double[VALUES * entries];
+        nonFinite = new int[entries];
+        states = new int[entries];
+    }
+
+    /** Pixel (x, y)'s entry, or -1 if it lies inside its tile (no other tile's ring holds it). */
+    int entryOf(int x, int y) {
+        int slot = edgeSlot(y, height);
+        if (slot >= 0) {
+            return (2 * (y / size) + slot) * width + x;
+        }
+        slot = edgeSlot(x, width);
+        return slot < 0 ? -1 : rowEntries + (2 * (x / size) + slot) * height + y;
+    }
+
+    /** 0 on the first line of a tile, 1 on its last, -1 in between. */
+    private int edgeSlot(int coordinate, int extent) {
+        int within = coordinate % size;
+        if (within == 0) {
+            return 0;
+        }
+        return within == size - 1 || coordinate == extent - 1 ? 1 : -1;
+    }
+
+    /**
+     * Copies an entry's base sum, minima and maxima into the arrays at {@code at} (3 values each) and
+     * returns its count of non-finite samples; or returns -1 when no tile has taken them yet: the
+     * caller then owns the entry and must {@link #store} it (or {@link #abandon} it if tracing
+     * fails). While another tile traces an entry it waits for it (a few rays), so no base sample is
+     * ever traced twice and the rays traced, too, are the same at any thread count.
+     */
+    int loadOrClaim(int entry, double[] sum, double[] min, double[] max, int at) {
+        while (true) {
+            int state = (int) STATE.getAcquire(states, entry);
+            if (state == STORED) {
+                int v = VALUES * entry;
+                System.arraycopy(values, v, sum, at, 3);
+                System.arraycopy(values, v + 3, min, at, 3);
+                System.arraycopy(values, v + 6, max, at, 3);
+                return nonFinite[entry];
+            }
+            if (state == FREE && STATE.compareAndSet(states, entry, FREE, CLAIMED)) {
+                return -1;
+            }
+            Thread.onSpinWait();
+        }
+    }
+
+    /** Leaves a claimed entry's values for the neighbouring tile. */
+    void store(int entry, double[] sum, double[] min, double[] max, int at, int bad) {
+        int v = VALUES * entry;
+        System.arraycopy(sum, at, values, v, 3);
+        System.arraycopy(min, at, values, v + 3, 3);
+        System.arraycopy(max, at, values, v + 6, 3);
+        nonFinite[entry] = bad;
+        STATE.setRelease(states, entry, STORED);
+    }
+
+    /** Frees a claimed entry whose tracing failed, so that no other tile waits for it forever. */
+    void abandon(int entry) {
+        STATE.setRelease(states, entry, FREE);
+    }
+}
