@@ -317,19 +317,22 @@ public final class Renderer {
          * all their base samples in the channel where it is widest, over {@code base}.
          */
         private double neighbourhoodStep(int i, int stride, int cx, int cy, int w, int h, int base) {
-            double widest = 0;
-            for (int c = 0; c < 3; c++) {
-                double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-                for (int ny = Math.max(0, cy - 1); ny <= Math.min(h - 1, cy + 1); ny++) {
-                    for (int nx = Math.max(0, cx - 1); nx <= Math.min(w - 1, cx + 1); nx++) {
-                        int j = i + (ny - cy) * stride + (nx - cx);
-                        lo = Math.min(lo, baseMin[3 * j + c]);
-                        hi = Math.max(hi, baseMax[3 * j + c]);
-                    }
+            double loR = Double.POSITIVE_INFINITY, loG = loR, loB = loR;
+            double hiR = Double.NEGATIVE_INFINITY, hiG = hiR, hiB = hiR;
+            int nx0 = Math.max(0, cx - 1), nx1 = Math.min(w - 1, cx + 1);
+            for (int ny = Math.max(0, cy - 1); ny <= Math.min(h - 1, cy + 1); ny++) {
+                int row = i + (ny - cy) * stride - cx;
+                for (int nx = nx0; nx <= nx1; nx++) {
+                    int j = 3 * (row + nx);
+                    loR = Math.min(loR, baseMin[j]);
+                    loG = Math.min(loG, baseMin[j + 1]);
+                    loB = Math.min(loB, baseMin[j + 2]);
+                    hiR = Math.max(hiR, baseMax[j]);
+                    hiG = Math.max(hiG, baseMax[j + 1]);
+                    hiB = Math.max(hiB, baseMax[j + 2]);
                 }
-                widest = Math.max(widest, hi - lo);
             }
-            return widest / base;
+            return Math.max(hiR - loR, Math.max(hiG - loG, hiB - loB)) / base;
         }
 
         /**
