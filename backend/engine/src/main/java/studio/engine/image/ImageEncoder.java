@@ -50,9 +50,10 @@ public final class ImageEncoder {
     }
 
     public static void writePng(BufferedImage image, OutputStream out) throws IOException {
-        if (!ImageIO.write(image, "png", out)) {
-            throw new IOException("no PNG writer available");
-        }
+        int[] rgb = image.getType() == BufferedImage.TYPE_INT_RGB
+                ? ((DataBufferInt) image.getRaster().getDataBuffer()).getData()
+                : image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
+        PngEncoder.write(rgb, image.getWidth(), image.getHeight(), out);
     }
 
     /** Writes a baseline JPEG; {@code quality} from 0 (smallest) to 1 (best). */

@@ -9,7 +9,8 @@ import studio.server.scene.CompiledScene;
  * The figures are upper bounds of what the engine and the encoders allocate:
  * <ul>
  * <li>per pixel {@value #BYTES_PER_PIXEL}: the film (three doubles, 24), the 8-bit image (4), the
- *     encoded file with its growing buffer (up to 8), a job's tile previews until it ends (4) and,
+ *     encoding (a PNG's filtered rows and compressed pieces, then the file with its growing buffer:
+ *     up to 12), a job's tile previews until it ends (4) and,
  *     under adaptive sampling, the base samples on the tiles' edges (10 with 32-pixel tiles; the
  *     16-pixel tiles of small images take more, within the fixed part);</li>
  * <li>per triangle {@value #BYTES_PER_TRIANGLE}: positions, normals and indices, the mesh's BVH and
@@ -20,7 +21,7 @@ import studio.server.scene.CompiledScene;
  */
 public final class RenderMemory {
 
-    static final long BYTES_PER_PIXEL = 50;
+    static final long BYTES_PER_PIXEL = 54;
     static final long BYTES_PER_TRIANGLE = 200;
     static final long BYTES_PER_OBJECT = 400;
     static final long FIXED_BYTES = 4L << 20;

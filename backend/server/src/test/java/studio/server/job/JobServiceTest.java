@@ -237,7 +237,7 @@ class JobServiceTest {
 
     @Test
     void jobThatDoesNotFitTheFreeMemoryIsRefusedWithARetryDelay() {
-        // LARGE needs about 1024 x 768 x 50 bytes = 38 MiB; two do not fit in 48 MiB
+        // LARGE needs about 1024 x 768 x 54 bytes = 41 MiB; two do not fit in 48 MiB
         MemoryBudget memory = new MemoryBudget(48L << 20);
         JobService jobs = service(settings(1, 4), memory, Duration.ofSeconds(5));
         JobStatus running = jobs.submit(compile(LARGE));
