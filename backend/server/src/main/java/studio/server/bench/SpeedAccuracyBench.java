@@ -19,9 +19,9 @@ import studio.server.scene.CompiledScene;
 
 /**
  * Measures one scene: a reference render with many jittered samples, then every available sampler
- * at each sample count, then (if the engine has it) adaptive sampling at each threshold on top of
- * sobol, or else the best of those samplers. Every render reuses the compiled scene and its settings with only
- * the sampler (and threshold) swapped, and runs on all cores.
+ * at each sample count and (if the engine has it) adaptive sampling at each threshold on top of
+ * sobol, or else of the best of those samplers, timed in rounds. Every render reuses the compiled
+ * scene and its settings with only the sampler (and threshold) swapped, and runs on all cores.
  */
 final class SpeedAccuracyBench {
 
@@ -31,7 +31,7 @@ final class SpeedAccuracyBench {
     static final long REFERENCE_SEED_OFFSET = 0x5EED_0001L;
 
     /**
-     * @param runs               timed renders per setting; the median counts (one warm-up render per scene comes first)
+     * @param runs               timed renders per setting, one per round; the median counts (warm-up renders per scene come first)
      * @param referenceSamples   samples per pixel of the reference
      * @param sampleCounts       the fixed counts per pixel to measure
      * @param thresholds         the adaptive thresholds to measure
@@ -82,28 +82,46 @@ final class SpeedAccuracyBench {
         log.printf(Locale.ROOT, "%s: reference, %s at %d samples/pixel, %.0f ms%n", name, REFERENCE_SAMPLER,
                 config.referenceSamples(), referenceMillis);
 
-        List<Measurement> rows = new ArrayList<>();
+        List<Planned> fixed = new ArrayList<>();
         for (String samplerName : EngineFeatures.SAMPLER_NAMES) {
             for (int n : config.sampleCounts()) {
                 Optional<Sampler> sampler = EngineFeatures.sampler(samplerName, n);
                 if (sampler.isPresent()) {
-                    rows.add(measure(name, Method.fixed(samplerName), n,
-                            settings(base, sampler.get(), Double.NaN, base.seed(), adaptive), scene, reference));
+                    fixed.add(new Planned(Method.fixed(samplerName), n,
+                            settings(base, sampler.get(), Double.NaN, base.seed(), adaptive)));
                 }
             }
         }
-        if (adaptive) {
-            // sobol first: its adaptive sampling walks one stratified sequence (see Renderer)
-            String best = adaptiveAccepts(base, "sobol") ? "sobol" : bestSampler(rows, base);
-            if (best != null) {
-                Sampler sampler = EngineFeatures.sampler(best, config.adaptiveMaxSamples()).orElseThrow();
-                for (double threshold : config.thresholds()) {
-                    rows.add(measure(name, Method.adaptive(best, threshold), config.adaptiveMaxSamples(),
-                            settings(base, sampler, threshold, base.seed(), true), scene, reference));
-                }
-            }
+        if (!adaptive) {
+            return new SceneResult(name, measure(name, fixed, scene, reference), reference, referenceMillis);
+        }
+        // sobol first: its adaptive sampling walks one stratified sequence (see Renderer); it is measured
+        // in the same rounds as the fixed counts, so that the ratios between them see the same machine
+        if (adaptiveAccepts(base, "sobol")) {
+            List<Planned> all = new ArrayList<>(fixed);
+            all.addAll(adaptivePlans("sobol", base));
+            return new SceneResult(name, measure(name, all, scene, reference), reference, referenceMillis);
+        }
+        List<Measurement> rows = new ArrayList<>(measure(name, fixed, scene, reference));
+        String best = bestSampler(rows, base);
+        if (best != null) {
+            rows.addAll(measure(name, adaptivePlans(best, base), scene, reference));
         }
         return new SceneResult(name, rows, reference, referenceMillis);
+    }
+
+    /** A setting to measure. */
+    private record Planned(Method method, int samples, RenderSettings settings) {
+    }
+
+    private List<Planned> adaptivePlans(String samplerName, RenderSettings base) {
+        Sampler sampler = EngineFeatures.sampler(samplerName, config.adaptiveMaxSamples()).orElseThrow();
+        List<Planned> plans = new ArrayList<>();
+        for (double threshold : config.thresholds()) {
+            plans.add(new Planned(Method.adaptive(samplerName, threshold), config.adaptiveMaxSamples(),
+                    settings(base, sampler, threshold, base.seed(), true)));
+        }
+        return plans;
     }
 
     /**
@@ -151,26 +169,41 @@ final class SpeedAccuracyBench {
         }
     }
 
-    private Measurement measure(String scene, Method method, int samples, RenderSettings settings, Scene world,
-                                Film reference) {
-        double[] millis = new double[config.runs()];
-        RenderResult first = null;
+    /**
+     * Times every setting {@code runs} times in rounds (each round renders every setting once), so a
+     * slow spell of the machine, which here lasts from seconds to minutes, falls on all settings alike
+     * instead of on the few measured during it; the median of each setting's runs counts. Errors come
+     * from the first round (the same seed gives the same pixels on every run).
+     */
+    private List<Measurement> measure(String scene, List<Planned> plans, Scene world, Film reference) {
+        double[][] millis = new double[plans.size()][config.runs()];
+        double[] rmse = new double[plans.size()], meanSpp = new double[plans.size()];
         for (int run = 0; run < config.runs(); run++) {
-            long start = System.nanoTime();
-            RenderResult result = Renderer.render(world, settings);
-            millis[run] = (System.nanoTime() - start) / 1e6;
-            if (first == null) {
-                first = result; // the same seed gives the same pixels on every run
+            log.printf(Locale.ROOT, "%s: round %d of %d, %d settings%n", scene, run + 1, config.runs(), plans.size());
+            for (int i = 0; i < plans.size(); i++) {
+                RenderSettings settings = plans.get(i).settings();
+                long start = System.nanoTime();
+                RenderResult result = Renderer.render(world, settings);
+                millis[i][run] = (System.nanoTime() - start) / 1e6;
+                if (run == 0) {
+                    rmse[i] = ImageError.rmse(result.film(), reference);
+                    meanSpp[i] = (double) EngineFeatures.samplesTaken(result, settings)
+                            / (settings.width() * settings.height());
+                }
             }
         }
-        double rmse = ImageError.rmse(first.film(), reference);
-        double meanSpp = (double) EngineFeatures.samplesTaken(first, settings) / (settings.width() * settings.height());
-        Measurement m = new Measurement(scene, method.name(), samples, meanSpp, median(millis), rmse,
-                ImageError.psnr(rmse), method.adaptiveThreshold());
-        log.printf(Locale.ROOT, "%s: %-20s %4d spp (mean %6.1f) %9.1f ms  rmse %.5f  psnr %5.2f dB%n", scene,
-                method.isAdaptive() ? method.name() + " " + method.adaptiveThreshold() : method.name(), samples,
-                meanSpp, m.medianMillis(), rmse, m.psnr());
-        return m;
+        List<Measurement> rows = new ArrayList<>();
+        for (int i = 0; i < plans.size(); i++) {
+            Planned plan = plans.get(i);
+            Method method = plan.method();
+            Measurement m = new Measurement(scene, method.name(), plan.samples(), meanSpp[i], median(millis[i]),
+                    rmse[i], ImageError.psnr(rmse[i]), method.adaptiveThreshold());
+            log.printf(Locale.ROOT, "%s: %-20s %4d spp (mean %6.1f) %9.1f ms  rmse %.5f  psnr %5.2f dB%n", scene,
+                    method.isAdaptive() ? method.name() + " " + method.adaptiveThreshold() : method.name(),
+                    plan.samples(), meanSpp[i], m.medianMillis(), rmse[i], m.psnr());
+            rows.add(m);
+        }
+        return rows;
     }
 
     /** The settings with the sampler, the seed and (if the engine has it) the adaptive threshold swapped. */
