@@ -80,7 +80,7 @@ public final class BenchCommand {
 
         SpeedAccuracyBench bench = new SpeedAccuracyBench(
                 SpeedAccuracyBench.Config.defaults(options.runs, options.referenceSamples), err);
-        err.printf(Locale.ROOT, "bench: %d scenes at %dx%d on %d threads, %d runs per setting, reference %s at %d "
+        err.printf(Locale.ROOT, "bench: %d scenes at %dx%d on %d threads, %d rounds (every setting once a round), reference %s at %d "
                         + "samples/pixel; adaptive sampling %s%n", scenes.size(), options.width, options.height,
                 Runtime.getRuntime().availableProcessors(), options.runs, SpeedAccuracyBench.REFERENCE_SAMPLER,
                 options.referenceSamples, EngineFeatures.hasAdaptive() ? "measured" : "not in this engine, skipped");
@@ -104,7 +104,7 @@ public final class BenchCommand {
         }
 
         StringBuilder summary = new StringBuilder();
-        summary.append(String.format(Locale.ROOT, "Speed against accuracy, %dx%d, median of %d runs on %d threads; "
+        summary.append(String.format(Locale.ROOT, "Speed against accuracy, %dx%d, median of %d rounds on %d threads; "
                         + "error against %s at %d samples/pixel, RMSE in linear light, PSNR peak 1.0.%n"
                         + "slope: least squares of log RMSE against log samples/pixel (4..256; adaptive: all thresholds, "
                         + "mean samples/pixel).%n"
