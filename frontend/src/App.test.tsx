@@ -49,11 +49,12 @@ describe('App', () => {
     }
     expect(screen.getByTestId('top-view')).toBeInTheDocument();
     expect(screen.getByTestId('side-view')).toBeInTheDocument();
-    expect(await screen.findByTestId('preview-3d')).toBeInTheDocument();
+    // the 3D preview is loaded lazily (three.js): on a loaded machine that can take more than the default 1 s
+    expect(await screen.findByTestId('preview-3d', {}, { timeout: 10_000 })).toBeInTheDocument();
     expect(screen.getByRole('complementary', { name: 'Inspector' })).toBeInTheDocument();
     expect(screen.getByRole('button', { name: 'Render' })).toBeInTheDocument();
     expect(within(screen.getByTestId('top-view')).getAllByTestId(/^object-/)).toHaveLength(STARTER_SCENE.objects.length);
-  });
+  }, 20_000);
 
   it('adds a sphere, selected in both views and the inspector; Undo and Redo buttons', async () => {
     const user = userEvent.setup();

@@ -110,7 +110,12 @@ final class RenderJob implements Runnable {
     private void tileFinished(Film film, TileRect tile, int done, int total) {
         String png = tilePng(film, tile);
         synchronized (this) {
-            progress = (double) done / total;
+            if (state.isFinal()) {
+                return; // a tile that finished after the job ended (cancelled) is not news
+            }
+            // the tiles recorded, not the renderer's count: with several threads a later count can
+            // arrive here first, and progress would step back, or run ahead of what a late client replays
+            progress = Math.max(progress, (double) (tiles.size() + 1) / total);
             TileEvent event = new TileEvent(tile.x(), tile.y(), tile.width(), tile.height(), png, progress);
             tiles.add(event);
             for (JobListener listener : List.copyOf(listeners)) {

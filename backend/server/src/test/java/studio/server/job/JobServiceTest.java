@@ -97,6 +97,11 @@ class JobServiceTest {
                 "tile:32,0", "tile:32,16", "tile:32,32", "tile:48,0", "tile:48,16", "tile:48,32"), tiles);
         assertEquals(2 + tiles.size() + 1, recorder.events.size(), recorder.events.toString());
         assertEquals("end:done", recorder.events.get(recorder.events.size() - 1));
+        // progress counts the tiles sent, one more each time, on two render threads too (it went by
+        // the renderer's count, which two threads can deliver out of order: a step back)
+        for (int i = 0; i < recorder.progress.size(); i++) {
+            assertEquals((i + 1) / 12.0, recorder.progress.get(i), 1e-12, "tile event " + i);
+        }
     }
 
     @Test
@@ -309,6 +314,7 @@ class JobServiceTest {
     /** Records events as "status:running", "tile:x,y", "end:done". */
     static final class Recorder implements JobListener {
         final List<String> events = new CopyOnWriteArrayList<>();
+        final List<Double> progress = new CopyOnWriteArrayList<>();
         volatile JobStatus ended;
 
         @Override
@@ -320,6 +326,7 @@ class JobServiceTest {
         public void tile(TileEvent tile) {
             assertTrue(tile.png().length() > 0);
             events.add("tile:" + tile.x() + "," + tile.y());
+            progress.add(tile.progress());
         }
 
         @Override
