@@ -30,6 +30,7 @@ class JobController {
 
     @PostMapping("/api/jobs")
     ResponseEntity<JobStatus> start(@RequestBody(required = false) byte[] scene) {
+        jobs.checkRoom();
         CompiledScene compiled = compiler.compile(scene != null ? scene : new byte[0]);
         JobStatus status = jobs.submit(compiled);
         return ResponseEntity.accepted().location(URI.create("/api/jobs/" + status.id())).body(status);

@@ -67,6 +67,21 @@ public final class JobService implements AutoCloseable {
      * @throws JobQueueFullException when every slot and queue place, or the memory the render needs, is taken
      * @throws studio.server.scene.InvalidSceneException when the render could never fit the memory budget
      */
+    /**
+     * Refuses at once ({@link JobQueueFullException}, a 429) while the queue is full or the server
+     * is shutting down, so that a refused request costs no scene reading: compiling a mesh scene
+     * takes far longer than answering. {@link #submit} checks again. The price: while the queue is
+     * full, an invalid scene, too, is answered 429 first, and its 400 comes on the retry.
+     */
+    public void checkRoom() {
+        if (executor.isShutdown()) {
+            throw new JobQueueFullException(retryAfterSeconds(), "the server is shutting down");
+        }
+        if (executor.getQueue().remainingCapacity() == 0) {
+            throw new JobQueueFullException(retryAfterSeconds());
+        }
+    }
+
     public JobStatus submit(CompiledScene scene) {
         CompiledScene withThreads = new CompiledScene(scene.scene(),
                 scene.settings().withThreads(settings.renderThreads()), scene.format(), scene.quality(),

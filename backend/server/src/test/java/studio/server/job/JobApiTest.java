@@ -136,6 +136,8 @@ class JobApiTest {
         assertEquals(429, refused.statusCode());
         assertTrue(Integer.parseInt(refused.headers().firstValue("Retry-After").orElseThrow()) >= 1);
         assertEquals(429, JSON.readTree(refused.body()).get("status").asInt());
+        // refused before the scene is read: an invalid one gets the 429 too, and its 400 on the retry
+        assertEquals(429, post("{\"objects\": 5}").statusCode());
     }
 
     @Test

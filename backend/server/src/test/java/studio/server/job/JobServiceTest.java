@@ -141,6 +141,21 @@ class JobServiceTest {
     }
 
     @Test
+    void aFullQueueIsRefusedBeforeAnySceneIsRead() throws Exception {
+        JobService jobs = service(settings(1, 1));
+        jobs.checkRoom();
+        JobStatus running = jobs.submit(compile(LARGE));
+        await("running", () -> jobs.status(running.id()).state() == JobState.RUNNING);
+        jobs.checkRoom(); // the queue's one place is free
+        JobStatus queued = jobs.submit(compile(LARGE));
+        JobQueueFullException full = assertThrows(JobQueueFullException.class, jobs::checkRoom);
+        assertTrue(full.retryAfterSeconds() >= 1);
+        jobs.cancel(queued.id());
+        jobs.checkRoom();
+        jobs.cancel(running.id());
+    }
+
+    @Test
     void fullQueueIsRefusedWithARetryDelay() {
         JobService jobs = service(settings(1, 1));
         JobStatus running = jobs.submit(compile(LARGE));
