@@ -26,8 +26,8 @@ final class PngEncoder {
     private static final int WINDOW = 32 * 1024;
     private static final int COST_STRIDE = 7;
     /**
-     * zlib's level 4: a 4096x4096 render-like image in 0.63 s on 2 cores and 11.1 MB, where the
-     * default level 6 took 2.2 s for 9.8 MB and ImageIO's writer 1.5 s for 18.4 MB.
+     * zlib's level 4: a 4096x4096 render-like image in 0.63-0.86 s on 2 cores and 11.1 MB, where
+     * the default level 6 took 2.3-2.4 s for 9.8 MB and ImageIO's writer 1.5-1.8 s for 18.4 MB.
      */
     private static final int LEVEL = 4;
 

@@ -104,6 +104,7 @@ public final class Renderer {
         Film film = new Film(settings.width(), settings.height());
         int tileSize = tileSize(settings.width(), settings.height(), settings.effectiveThreads());
         List<TileRect> tiles = tiles(settings.width(), settings.height(), tileSize);
+        // adaptive sampling with sobol is progressive (see TileWorker#progressiveTile)
         TileBorders borders = settings.adaptive() && settings.sampler() instanceof SobolSampler
                 ? new TileBorders(settings.width(), settings.height(), tileSize) : null;
         AtomicInteger done = new AtomicInteger();
@@ -182,10 +183,11 @@ public final class Renderer {
         final Sampler sampler;
         /** Adaptive sampling: a full batch, and the last, partial batch when the maximum is not a multiple. */
         final Sampler batchSampler, remainderSampler;
-        /** Adaptive sampling walks one Sobol sequence per pixel (see progressiveTile). */
-        final boolean progressive;
         final SobolSampler.Sequence sequence = new SobolSampler.Sequence();
-        /** Progressive adaptive sampling: base samples shared with the neighbouring tiles. */
+        /**
+         * Adaptive sampling with sobol walks one Sobol sequence per pixel (see progressiveTile) and
+         * shares the base samples of the tiles' edges here; null for every other render.
+         */
         final TileBorders borders;
         final Ray cameraRay = new Ray();
         /** Progressive adaptive sampling: each base pixel's sum and per-channel range, over a tile and its ring. */
@@ -211,7 +213,6 @@ public final class Renderer {
             sampler = settings.sampler();
             int n = sampler.samplesPerPixel();
             threshold = settings.adaptiveThreshold();
-            progressive = sampler instanceof SobolSampler;
             batchSampler = settings.adaptive() && n >= BATCH ? sampler.withSamplesPerPixel(BATCH) : null;
             remainderSampler = settings.adaptive() && n % BATCH != 0 ? sampler.withSamplesPerPixel(n % BATCH) : null;
             xs = new double[n];
@@ -224,7 +225,7 @@ public final class Renderer {
 
         /** Renders one tile into the film; returns how many samples came out non-finite. */
         long render(Film film, TileRect tile) {
-            if (threshold > 0 && progressive) {
+            if (borders != null) {
                 return progressiveTile(film, tile);
             }
             long bad = 0;

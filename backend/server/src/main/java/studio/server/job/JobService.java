@@ -62,12 +62,6 @@ public final class JobService implements AutoCloseable {
     }
 
     /**
-     * Queues a validated scene.
-     *
-     * @throws JobQueueFullException when every slot and queue place, or the memory the render needs, is taken
-     * @throws studio.server.scene.InvalidSceneException when the render could never fit the memory budget
-     */
-    /**
      * Refuses at once ({@link JobQueueFullException}, a 429) while the queue is full or the server
      * is shutting down, so that a refused request costs no scene reading: compiling a mesh scene
      * takes far longer than answering. {@link #submit} checks again. The price: while the queue is
@@ -82,13 +76,17 @@ public final class JobService implements AutoCloseable {
         }
     }
 
+    /**
+     * Queues a validated scene.
+     *
+     * @throws JobQueueFullException when every slot and queue place, or the memory the render needs, is taken
+     * @throws studio.server.scene.InvalidSceneException when the render could never fit the memory budget
+     */
     public JobStatus submit(CompiledScene scene) {
+        checkRoom();
         CompiledScene withThreads = new CompiledScene(scene.scene(),
                 scene.settings().withThreads(settings.renderThreads()), scene.format(), scene.quality(),
                 scene.fileStem());
-        if (executor.isShutdown()) {
-            throw new JobQueueFullException(retryAfterSeconds(), "the server is shutting down");
-        }
         MemoryBudget.Reservation memory = budget.reserve(withThreads);
         if (memory == null) {
             throw new JobQueueFullException(retryAfterSeconds(), "the server's render memory is taken by other jobs");

@@ -115,7 +115,7 @@ final class RenderJob implements Runnable {
             }
             // the tiles recorded, not the renderer's count: with several threads a later count can
             // arrive here first, and progress would step back, or run ahead of what a late client replays
-            progress = Math.max(progress, (double) (tiles.size() + 1) / total);
+            progress = (double) (tiles.size() + 1) / total;
             TileEvent event = new TileEvent(tile.x(), tile.y(), tile.width(), tile.height(), png, progress);
             tiles.add(event);
             for (JobListener listener : List.copyOf(listeners)) {

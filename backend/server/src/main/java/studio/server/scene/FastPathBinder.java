@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 import java.util.function.Predicate;
 
 import org.hibernate.validator.constraints.CodePointLength;
@@ -82,46 +83,30 @@ final class FastPathBinder {
         return NotSure.INSTANCE;
     }
 
+    /**
+     * The JSON values a boxed field takes as Jackson reads it here: no coercion, a whole number for
+     * Integer and Long (Integer within int's range), any number for Double.
+     */
+    private static final Map<Class<?>, Reader> SCALARS = Map.of(
+            Double.class, scalar(node -> node.isInt() || node.isLong() || node.isDouble(), JsonNode::doubleValue),
+            Integer.class, scalar(JsonNode::isInt, JsonNode::intValue),
+            Long.class, scalar(node -> node.isInt() || node.isLong(), JsonNode::longValue),
+            Boolean.class, scalar(JsonNode::isBoolean, JsonNode::booleanValue),
+            String.class, scalar(JsonNode::isString, JsonNode::stringValue));
+
+    private static Reader scalar(Predicate<JsonNode> kind, Function<JsonNode, Object> value) {
+        return node -> {
+            if (!kind.test(node)) {
+                throw notSure();
+            }
+            return value.apply(node);
+        };
+    }
+
     private static Reader readerOf(Class<?> type, Map<Class<?>, Reader> known) {
-        if (type == Double.class) {
-            return node -> {
-                if (!(node.isInt() || node.isLong() || node.isDouble())) {
-                    throw notSure();
-                }
-                return node.doubleValue();
-            };
-        }
-        if (type == Integer.class) {
-            return node -> {
-                if (!node.isInt()) {
-                    throw notSure();
-                }
-                return node.intValue();
-            };
-        }
-        if (type == Long.class) {
-            return node -> {
-                if (!(node.isInt() || node.isLong())) {
-                    throw notSure();
-                }
-                return node.longValue();
-            };
-        }
-        if (type == Boolean.class) {
-            return node -> {
-                if (!node.isBoolean()) {
-                    throw notSure();
-                }
-                return node.booleanValue();
-            };
-        }
-        if (type == String.class) {
-            return node -> {
-                if (!node.isString()) {
-                    throw notSure();
-                }
-                return node.stringValue();
-            };
+        Reader scalar = SCALARS.get(type);
+        if (scalar != null) {
+            return scalar;
         }
         Reader done = known.get(type);
         if (done != null) {
@@ -191,12 +176,12 @@ final class FastPathBinder {
                 } catch (NoSuchFieldException e) {
                     throw new IllegalStateException(e);
                 }
+                String where = type.getSimpleName() + "." + component.getName();
                 List<Annotation> annotations = new ArrayList<>(List.of(field.getAnnotations()));
                 annotations.addAll(List.of(field.getAnnotatedType().getAnnotations()));
-                checks[i] = checkOf(annotations, type.getSimpleName() + "." + component.getName());
+                checks[i] = checkOf(annotations, where);
                 if (List.class.isAssignableFrom(component.getType())) {
-                    readers[i] = listReader(field.getAnnotatedType(), known,
-                            type.getSimpleName() + "." + component.getName());
+                    readers[i] = listReader(field.getAnnotatedType(), known, where);
                 } else {
                     readers[i] = readerOf(component.getType(), known);
                 }

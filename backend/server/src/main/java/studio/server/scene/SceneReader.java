@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
 import java.util.stream.Collectors;
-import java.util.stream.IntStream;
 
 import com.fasterxml.jackson.annotation.JsonSubTypes;
 
@@ -29,7 +28,6 @@ import tools.jackson.databind.exc.InvalidTypeIdException;
 import tools.jackson.databind.exc.MismatchedInputException;
 import tools.jackson.databind.exc.UnrecognizedPropertyException;
 import tools.jackson.databind.json.JsonMapper;
-import tools.jackson.databind.node.ArrayNode;
 import tools.jackson.databind.node.JsonNodeFactory;
 import tools.jackson.databind.node.ObjectNode;
 
@@ -44,7 +42,6 @@ public final class SceneReader {
     private static final FastPathBinder FAST_PATH = new FastPathBinder(SceneDto.class);
 
     private final JsonMapper mapper;
-    private final int parallelObjects;
     private final boolean fastPath;
     private final Supplier<Validator> validator;
 
@@ -54,16 +51,12 @@ public final class SceneReader {
 
     /** @param validator asked for only when a scene takes the full path (the CLI then never boots it for a valid scene) */
     public SceneReader(Supplier<Validator> validator) {
-        this(validator, PARALLEL_OBJECTS, true);
+        this(validator, true);
     }
 
-    /**
-     * @param parallelObjects from how many objects on they are read in parallel (tests compare both ways)
-     * @param fastPath        whether plainly valid scenes take the fast path (tests compare both ways)
-     */
-    SceneReader(Supplier<Validator> validator, int parallelObjects, boolean fastPath) {
+    /** @param fastPath whether plainly valid scenes take the fast path (tests compare both ways) */
+    SceneReader(Supplier<Validator> validator, boolean fastPath) {
         this.validator = validator;
-        this.parallelObjects = parallelObjects;
         this.fastPath = fastPath;
         this.mapper = JsonMapper.builder()
                 .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
@@ -100,17 +93,13 @@ public final class SceneReader {
                 throw new InvalidSceneException("", "expected a scene as a JSON object, not " + tree.getNodeType()
                         .toString().toLowerCase());
             }
-            dropNullFields(tree, "", nulls);
+            dropNullFields(tree, new StringBuilder(), nulls);
             applyOverrides((ObjectNode) tree, overrides);
             if (fastPath && nulls.isEmpty()) {
                 SceneDto fast = FAST_PATH.bind(tree);
                 if (fast != null) {
                     return fast;
                 }
-            }
-            JsonNode objects = tree.get("objects");
-            if (objects instanceof ArrayNode many && many.size() >= parallelObjects) {
-                return readInParallel((ObjectNode) tree, many, nulls);
             }
             scene = mapper.treeToValue(tree, SceneDto.class);
         } catch (JacksonException e) {
@@ -119,66 +108,6 @@ public final class SceneReader {
         List<FieldProblem> problems = new ArrayList<>();
         validator.get().validate(scene).forEach(v -> problems.add(new FieldProblem(pathOf(v.getPropertyPath()), v.getMessage())));
         return checked(scene, withNulls(nulls, problems));
-    }
-
-    /** Scenes with at least this many objects bind and validate them on all cores. */
-    static final int PARALLEL_OBJECTS = 1024;
-    private static final int CHUNK = 256;
-
-    /**
-     * Binds and validates a long {@code objects} array in chunks on all cores (a cold JVM spends
-     * most of a 10,000-sphere scene's reading there), with the same paths and messages as reading
-     * it in one piece. When binding fails, the problem reported is the first in the scene's fields
-     * other than objects, else the first object's, as reading in one piece would stop at one too.
-     */
-    private SceneDto readInParallel(ObjectNode tree, ArrayNode objects, List<FieldProblem> nulls) {
-        tree.set("objects", tree.arrayNode());
-        SceneDto head = mapper.treeToValue(tree, SceneDto.class);
-        int n = objects.size();
-        ObjectDto[] dtos = new ObjectDto[n];
-        FieldProblem[] bindProblems = new FieldProblem[n];
-        @SuppressWarnings("unchecked")
-        List<FieldProblem>[] objectProblems = new List[n];
-        IntStream.range(0, (n + CHUNK - 1) / CHUNK).parallel().forEach(chunk -> {
-            for (int i = chunk * CHUNK; i < Math.min(n, (chunk + 1) * CHUNK); i++) {
-                JsonNode node = objects.get(i);
-                String at = "objects[" + i + "]";
-                if (node.isNull()) {
-                    objectProblems[i] = List.of(new FieldProblem(at, "must be an object"));
-                    continue;
-                }
-                try {
-                    dtos[i] = mapper.treeToValue(node, ObjectDto.class);
-                } catch (JacksonException e) {
-                    FieldProblem problem = problemOf(e);
-                    bindProblems[i] = new FieldProblem(within(at, problem.field()), problem.message());
-                    continue;
-                }
-                List<FieldProblem> found = new ArrayList<>(0);
-                validator.get().validate(dtos[i]).forEach(v -> found.add(
-                        new FieldProblem(within(at, pathOf(v.getPropertyPath())), v.getMessage())));
-                objectProblems[i] = found;
-            }
-        });
-        for (FieldProblem problem : bindProblems) {
-            if (problem != null) {
-                throw new InvalidSceneException(withNulls(nulls, List.of(problem)));
-            }
-        }
-        List<FieldProblem> problems = new ArrayList<>();
-        validator.get().validate(head).forEach(v -> problems.add(new FieldProblem(pathOf(v.getPropertyPath()), v.getMessage())));
-        for (List<FieldProblem> found : objectProblems) {
-            if (found != null) {
-                problems.addAll(found);
-            }
-        }
-        return checked(new SceneDto(head.version(), head.name(), head.image(), head.camera(), head.background(),
-                head.ambient(), head.render(), head.lights(), Arrays.asList(dtos)), withNulls(nulls, problems));
-    }
-
-    /** A field's path inside the object at {@code at}. */
-    private static String within(String at, String path) {
-        return path.isEmpty() ? at : at + "." + path;
     }
 
     private static SceneDto checked(SceneDto scene, List<FieldProblem> problems) {
@@ -196,22 +125,35 @@ public final class SceneReader {
     /**
      * Removes every object member whose value is {@code null}, noting a problem for each: a field is
      * given or left out (for its default), as the published schema says. Null elements of lists stay,
-     * for Bean Validation to name ("must be a number").
+     * for Bean Validation to name ("must be a number"). The path is built in one buffer, and made a
+     * string only for a null found (a scene of 10,000 objects has some 100,000 members).
      */
-    private static void dropNullFields(JsonNode node, String path, List<FieldProblem> problems) {
+    private static void dropNullFields(JsonNode node, StringBuilder path, List<FieldProblem> problems) {
+        int length = path.length();
         if (node instanceof ObjectNode object) {
-            for (String name : List.copyOf(object.propertyNames())) {
-                String child = path.isEmpty() ? name : path + "." + name;
-                if (object.get(name).isNull()) {
-                    object.remove(name);
-                    problems.add(new FieldProblem(child, "must not be null; leave the field out for its default"));
-                } else {
-                    dropNullFields(object.get(name), child, problems);
+            List<String> nulls = null;
+            for (Map.Entry<String, JsonNode> member : object.properties()) {
+                JsonNode value = member.getValue();
+                if (value.isNull() || value.isContainer()) {
+                    path.append(length > 0 ? "." : "").append(member.getKey());
+                    if (value.isNull()) {
+                        (nulls != null ? nulls : (nulls = new ArrayList<>())).add(member.getKey());
+                        problems.add(new FieldProblem(path.toString(), "must not be null; leave the field out for its default"));
+                    } else {
+                        dropNullFields(value, path, problems);
+                    }
+                    path.setLength(length);
                 }
+            }
+            if (nulls != null) {
+                nulls.forEach(object::remove);
             }
         } else if (node.isArray()) {
             for (int i = 0; i < node.size(); i++) {
-                dropNullFields(node.get(i), path + "[" + i + "]", problems);
+                if (node.get(i).isContainer()) {
+                    dropNullFields(node.get(i), path.append('[').append(i).append(']'), problems);
+                    path.setLength(length);
+                }
             }
         }
     }
