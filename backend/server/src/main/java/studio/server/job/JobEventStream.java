@@ -23,9 +23,10 @@ final class JobEventStream implements JobListener {
     JobEventStream(String jobId, JobService service) {
         this.jobId = jobId;
         this.service = service;
-        emitter.onCompletion(this::close);
-        emitter.onTimeout(this::close);
-        emitter.onError(e -> disconnected());
+        // off the container's thread: see JobService#offContainerThread
+        emitter.onCompletion(() -> service.offContainerThread(this::close));
+        emitter.onTimeout(() -> service.offContainerThread(this::close));
+        emitter.onError(e -> service.offContainerThread(this::disconnected));
     }
 
     SseEmitter emitter() {

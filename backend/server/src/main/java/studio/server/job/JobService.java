@@ -157,6 +157,21 @@ public final class JobService implements AutoCloseable {
         }
     }
 
+    /**
+     * Runs what an event stream's container callback asks for (the stream completed, failed or
+     * timed out) on the janitor's thread instead of the container's. The container calls back
+     * holding the request's state lock, which a render thread sending a tile waits for while it holds
+     * its job's lock; taking the job's lock in the callback itself deadlocked the two (a CI run:
+     * a disconnected job's render thread stopped, and the job was never cancelled).
+     */
+    void offContainerThread(Runnable work) {
+        try {
+            janitor.execute(work);
+        } catch (RejectedExecutionException e) {
+            // shutting down: every job is being cancelled anyway
+        }
+    }
+
     private RenderJob job(String id) {
         RenderJob job = jobs.get(id);
         if (job == null) {
