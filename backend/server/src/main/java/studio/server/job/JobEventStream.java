@@ -7,9 +7,11 @@ import org.springframework.web.servlet.mvc.method.annotation.SseEmitter;
 
 /**
  * One client's server-sent event stream of a job: {@code status}, {@code tile} and finally
- * {@code end}, then the stream closes. When the client goes away (the container reports an async
- * error, or the next write fails) the stream is dropped, and the job is cancelled if nobody else
- * watches it (see {@link JobService#disconnected}).
+ * {@code end}, then the stream closes. Its writes happen on its own sender thread (see
+ * {@link JobSubscription}), so a client that does not read blocks nobody else. When the client goes
+ * away (the container reports an async error, or the next write fails) the stream is dropped, and
+ * the job is cancelled if nobody else watches it (see {@link JobService#disconnected}); when it
+ * stops reading, the stream is closed and the job goes on.
  */
 final class JobEventStream implements JobListener {
 
@@ -48,6 +50,12 @@ final class JobEventStream implements JobListener {
         if (send(SseEmitter.event().name("end").data(status, MediaType.APPLICATION_JSON))) {
             emitter.complete();
         }
+    }
+
+    /** Fell behind (the client does not read): the stream closes, the job goes on. */
+    @Override
+    public void dropped() {
+        emitter.complete();
     }
 
     @Override

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.UUID;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
@@ -17,6 +18,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 import studio.server.render.RenderBudget;
 import studio.server.scene.CompiledScene;
+import studio.server.system.Drainable;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -25,14 +27,21 @@ import studio.server.system.MemoryBudget;
  * lack of it later), keeps them for a while after they finish, and cancels work nobody is waiting
  * for any more: a job whose last event stream broke, or that nobody has asked about for a while.
  */
-public final class JobService implements AutoCloseable {
+public final class JobService implements Drainable, AutoCloseable {
 
     private final JobSettings settings;
     private final RenderBudget budget;
     private final Duration shutdownGrace;
     private final ThreadPoolExecutor executor;
     private final ScheduledExecutorService janitor;
+    /** Delivers events to listeners (see {@link JobSubscription}): a thread per subscription while it has news. */
+    private final ExecutorService senders;
     private final Map<String, RenderJob> jobs = new ConcurrentHashMap<>();
+
+    /** Listeners (event streams) at once, over all jobs; each holds a sender thread while it has news. */
+    static final int MAX_LISTENERS = 256;
+    /** A listener whose delivery has not returned for this long is dropped (see {@link JobSubscription}). */
+    static final long STALL_MILLIS = 5_000;
 
     public JobService(JobSettings settings) {
         this(settings, RenderBudget.unlimited(), Duration.ofSeconds(5));
@@ -59,6 +68,13 @@ public final class JobService implements AutoCloseable {
             return t;
         });
         janitor.scheduleWithFixedDelay(this::sweep, 5, 5, TimeUnit.SECONDS);
+        janitor.scheduleWithFixedDelay(this::dropStalledListeners, 1, 1, TimeUnit.SECONDS);
+        AtomicInteger senderThreads = new AtomicInteger();
+        this.senders = Executors.newCachedThreadPool(r -> {
+            Thread t = new Thread(r, "job-events-" + senderThreads.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
     }
 
     /**
@@ -134,8 +150,35 @@ public final class JobService implements AutoCloseable {
     public record JobImage(JobStatus status, byte[] bytes) {
     }
 
+    /**
+     * Subscribes a listener to a job's events.
+     *
+     * @throws JobQueueFullException when {@value #MAX_LISTENERS} listeners are subscribed already
+     */
     void subscribe(String id, JobListener listener) {
-        job(id).subscribe(listener);
+        RenderJob job = job(id);
+        int listeners = 0;
+        for (RenderJob each : jobs.values()) {
+            listeners += each.subscriptionCount();
+        }
+        if (listeners >= MAX_LISTENERS) {
+            throw new JobQueueFullException(retryAfterSeconds(), "the server has as many event streams open as it "
+                    + "serves (" + MAX_LISTENERS + "); poll the job's status instead, or try again shortly");
+        }
+        job.subscribe(listener, senders);
+    }
+
+    /**
+     * Drops every listener whose delivery has not returned for {@value #STALL_MILLIS} ms (its client
+     * does not read its event stream): it hears nothing more, and its job goes on.
+     */
+    void dropStalledListeners() {
+        long now = System.nanoTime();
+        for (RenderJob job : jobs.values()) {
+            for (JobSubscription stalled : job.stalled(TimeUnit.MILLISECONDS.toNanos(STALL_MILLIS), now)) {
+                job.drop(stalled);
+            }
+        }
     }
 
     void unsubscribe(String id, JobListener listener) {
@@ -172,7 +215,7 @@ public final class JobService implements AutoCloseable {
         }
     }
 
-    private RenderJob job(String id) {
+    RenderJob job(String id) {
         RenderJob job = jobs.get(id);
         if (job == null) {
             throw new JobNotFoundException(id);
@@ -224,35 +267,77 @@ public final class JobService implements AutoCloseable {
         return jobs.size();
     }
 
-    /**
-     * Stops taking jobs, cancels the queued ones, lets the running ones finish for up to
-     * {@code graceMillis}, then cancels them too (they stop at their next tile) and waits for that.
-     * Every job ends DONE or CANCELLED; nothing is left half done.
-     */
-    public void shutdown(long graceMillis) {
-        janitor.shutdownNow();
+    /** Stops taking jobs (new ones get 429) and cancels the queued ones at once; their listeners hear the end. */
+    @Override
+    public void stopAccepting() {
         executor.shutdown();
+        executor.getQueue().clear();
         for (RenderJob job : jobs.values()) {
             if (job.state() == JobState.QUEUED) {
                 job.cancel("cancelled: the server is shutting down");
             }
         }
+    }
+
+    /**
+     * Waits until the running jobs have ended and their listeners have heard the end (or left), at
+     * most until the deadline.
+     *
+     * @return true if every job ended
+     */
+    @Override
+    public boolean awaitEnd(long deadlineNanos) throws InterruptedException {
+        boolean ended = executor.awaitTermination(Math.max(0, deadlineNanos - System.nanoTime()), TimeUnit.NANOSECONDS);
+        awaitListeners(deadlineNanos);
+        return ended;
+    }
+
+    /** Cancels the jobs still running (they stop within a tile) and waits for that as {@link #awaitEnd}. */
+    @Override
+    public void cancelRunning(long deadlineNanos) throws InterruptedException {
+        for (RenderJob job : jobs.values()) {
+            if (!job.state().isFinal()) {
+                job.cancel("cancelled: the server shut down before the render finished");
+            }
+        }
+        awaitEnd(deadlineNanos);
+    }
+
+    /** Until the deadline, waits for every listener of a finished job to hear its end (a stalled one is dropped). */
+    private void awaitListeners(long deadlineNanos) throws InterruptedException {
+        while (System.nanoTime() - deadlineNanos < 0) {
+            boolean heard = true;
+            for (RenderJob job : jobs.values()) {
+                heard &= !job.state().isFinal() || !job.hasListeners();
+            }
+            if (heard) {
+                return;
+            }
+            Thread.sleep(10);
+        }
+    }
+
+    /**
+     * Stops taking jobs, cancels the queued ones, lets the running ones finish for up to
+     * {@code graceMillis}, then cancels them too (they stop within a tile) and waits for that, at most
+     * {@link #SHUTDOWN_CANCEL_WAIT_MILLIS}. Every job ends DONE or CANCELLED; nothing is left half
+     * done, and every listener that reads hears the end.
+     */
+    public void shutdown(long graceMillis) {
+        stopAccepting();
         try {
-            if (!executor.awaitTermination(graceMillis, TimeUnit.MILLISECONDS)) {
-                for (RenderJob job : jobs.values()) {
-                    if (!job.state().isFinal()) {
-                        job.cancel("cancelled: the server shut down before the render finished");
-                    }
-                }
-                executor.awaitTermination(SHUTDOWN_CANCEL_WAIT_MILLIS, TimeUnit.MILLISECONDS);
+            if (!awaitEnd(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(graceMillis))) {
+                cancelRunning(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(SHUTDOWN_CANCEL_WAIT_MILLIS));
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
         executor.shutdownNow();
+        janitor.shutdownNow();
+        senders.shutdownNow();
     }
 
-    /** After cancelling, how long shutdown waits for the renders to reach their next tile. */
+    /** After cancelling, how long shutdown waits for the renders to stop. */
     static final long SHUTDOWN_CANCEL_WAIT_MILLIS = 5_000;
 
     @Override

@@ -8,5 +8,6 @@ package studio.server.job;
  * @param error         why it failed or was cancelled, else null
  */
 public record JobStatus(String id, JobState state, double progress, long elapsedMillis, Double raysPerSecond,
-                        int width, int height, String fileName, String mediaType, String error) {
+                        int width, int height, String fileName, String mediaType, String error)
+        implements JobEvent {
 }

@@ -6,6 +6,7 @@ import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Base64;
 import java.util.List;
+import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 import javax.imageio.ImageIO;
@@ -22,12 +23,17 @@ import studio.server.scene.CompiledScene;
 import studio.server.system.MemoryBudget;
 
 /**
- * One render job: its scene, state, progress, the tiles finished so far (for clients that
- * connect late) and, when done, the encoded image. State changes and events happen under the
- * job's lock, so every listener sees them in order. A finished job lets go of its scene: it is
- * kept for a while only for its status and image.
+ * One render job: its scene, state, progress, its event log (state changes and the tiles finished
+ * so far, for clients that connect late) and, when done, the encoded image. State changes and the
+ * log are written under the job's lock; listeners hear them through their {@link JobSubscription}s,
+ * off the lock and off the render threads, in order. A finished job lets go of its scene and, once
+ * its last subscriber has heard the end, of its log: it is kept for a while only for its status
+ * and image.
  */
 final class RenderJob implements Runnable {
+
+    /** At most this many events of the log go to a listener in one pass of its sender. */
+    static final int DELIVERY_BATCH = 64;
 
     private final String id;
     /** Null once the job is final. */
@@ -38,8 +44,10 @@ final class RenderJob implements Runnable {
     /** The render's memory while it is queued or running; then the image's, until the job is dropped. */
     private MemoryBudget.Reservation memory;
     private final AtomicBoolean cancelRequested = new AtomicBoolean();
-    private final List<TileEvent> tiles = new ArrayList<>();
-    private final List<JobListener> listeners = new ArrayList<>();
+    /** Status changes and finished tiles, in order; cleared when the job is final and nobody reads it. */
+    private final List<JobEvent> log = new ArrayList<>();
+    private int tileCount;
+    private final List<JobSubscription> subscriptions = new ArrayList<>();
     private final long createdNanos = System.nanoTime();
 
     private JobState state = JobState.QUEUED;
@@ -115,12 +123,9 @@ final class RenderJob implements Runnable {
             }
             // the tiles recorded, not the renderer's count: with several threads a later count can
             // arrive here first, and progress would step back, or run ahead of what a late client replays
-            progress = (double) (tiles.size() + 1) / total;
-            TileEvent event = new TileEvent(tile.x(), tile.y(), tile.width(), tile.height(), png, progress);
-            tiles.add(event);
-            for (JobListener listener : List.copyOf(listeners)) {
-                listener.tile(event);
-            }
+            progress = (double) ++tileCount / total;
+            log.add(new TileEvent(tile.x(), tile.y(), tile.width(), tile.height(), png, progress));
+            wakeAll();
         }
     }
 
@@ -152,44 +157,114 @@ final class RenderJob implements Runnable {
         error = message;
         endNanos = System.nanoTime();
         scene = null;
-        tiles.clear();
         // the render's memory is free now; the image, already made, is counted until the job is dropped
         MemoryBudget.Reservation rendering = memory;
         memory = image != null ? budget.memory().forceReserve(image.length) : null;
         if (rendering != null) {
             rendering.close();
         }
-        JobStatus status = status();
-        for (JobListener listener : List.copyOf(listeners)) {
-            listener.end(status);
+        if (subscriptions.isEmpty()) {
+            log.clear();
         }
-        listeners.clear();
+        wakeAll();
     }
 
-    /** Registers a listener: it first hears the status and every tile so far, then what follows. */
-    synchronized void subscribe(JobListener listener) {
+    /**
+     * Registers a listener: its sender delivers the status, every tile so far, then what follows,
+     * and last the end.
+     */
+    synchronized JobSubscription subscribe(JobListener listener, Executor sender) {
         touch();
-        JobStatus status = status();
-        listener.status(status);
-        if (state.isFinal()) {
-            listener.end(status);
-            return;
+        JobSubscription subscription = new JobSubscription(listener, this, sender);
+        subscription.first = status();
+        subscription.joinedAt = log.size();
+        subscription.next = state.isFinal() ? log.size() : 0;
+        subscriptions.add(subscription);
+        subscription.wake();
+        return subscription;
+    }
+
+    /** What the subscription has not heard yet (at most a batch of the log), or null if nothing. */
+    synchronized JobSubscription.Delivery take(JobSubscription subscription) {
+        if (subscription.detached) {
+            return null;
         }
-        for (TileEvent tile : tiles) {
-            listener.tile(tile);
+        JobStatus first = subscription.first;
+        subscription.first = null;
+        int from = subscription.next, to = Math.min(log.size(), from + DELIVERY_BATCH);
+        List<JobEvent> events = new ArrayList<>(to - from);
+        for (int i = from; i < to; i++) {
+            JobEvent event = log.get(i);
+            if (event instanceof TileEvent || i >= subscription.joinedAt) {
+                events.add(event);
+            }
         }
-        listeners.add(listener);
+        subscription.next = to;
+        JobStatus end = null;
+        if (state.isFinal() && to == log.size() && !subscription.endTaken) {
+            subscription.endTaken = true;
+            end = status();
+        }
+        return first == null && events.isEmpty() && end == null ? null
+                : new JobSubscription.Delivery(first, events, end);
+    }
+
+    /** True if {@link #take} has something for the subscription. */
+    synchronized boolean hasNews(JobSubscription subscription) {
+        return !subscription.detached && (subscription.first != null || subscription.next < log.size()
+                || state.isFinal() && !subscription.endTaken);
+    }
+
+    /** The subscription leaves the job (it heard the end, or its client went away); true if it was there. */
+    synchronized boolean detach(JobSubscription subscription) {
+        subscription.detached = true;
+        boolean removed = subscriptions.remove(subscription);
+        if (state.isFinal() && subscriptions.isEmpty()) {
+            log.clear();
+        }
+        return removed;
+    }
+
+    /** Drops a subscription that fell behind; the job goes on. Its sender tells its listener when free. */
+    synchronized void drop(JobSubscription subscription) {
+        subscription.dropped = true;
+        detach(subscription);
+        subscription.wake();
+    }
+
+    /** The subscriptions whose deliveries have not returned for {@code nanos}. */
+    synchronized List<JobSubscription> stalled(long nanos, long now) {
+        List<JobSubscription> stalled = new ArrayList<>();
+        for (JobSubscription subscription : subscriptions) {
+            if (subscription.stalledFor(nanos, now)) {
+                stalled.add(subscription);
+            }
+        }
+        return stalled;
     }
 
     synchronized void unsubscribe(JobListener listener) {
-        listeners.remove(listener);
+        JobSubscription subscription = subscriptionOf(listener);
+        if (subscription != null) {
+            detach(subscription);
+        }
         touch();
     }
 
     /** Removes the listener; true if it was the last one of an unfinished job. */
     synchronized boolean unsubscribeLast(JobListener listener) {
-        boolean removed = listeners.remove(listener);
-        return removed && listeners.isEmpty() && !state.isFinal();
+        JobSubscription subscription = subscriptionOf(listener);
+        boolean removed = subscription != null && detach(subscription);
+        return removed && subscriptions.isEmpty() && !state.isFinal();
+    }
+
+    private JobSubscription subscriptionOf(JobListener listener) {
+        for (JobSubscription subscription : subscriptions) {
+            if (subscription.listener == listener) {
+                return subscription;
+            }
+        }
+        return null;
     }
 
     /** Gives back the memory the job holds (it is being dropped, or was never started). */
@@ -201,19 +276,27 @@ final class RenderJob implements Runnable {
     }
 
     synchronized void heartbeat() {
-        for (JobListener listener : List.copyOf(listeners)) {
-            listener.heartbeat();
+        for (JobSubscription subscription : subscriptions) {
+            subscription.heartbeat();
         }
     }
 
+    synchronized int subscriptionCount() {
+        return subscriptions.size();
+    }
+
     synchronized boolean hasListeners() {
-        return !listeners.isEmpty();
+        return !subscriptions.isEmpty();
     }
 
     private void broadcastStatus() {
-        JobStatus status = status();
-        for (JobListener listener : List.copyOf(listeners)) {
-            listener.status(status);
+        log.add(status());
+        wakeAll();
+    }
+
+    private void wakeAll() {
+        for (JobSubscription subscription : subscriptions) {
+            subscription.wake();
         }
     }
 

@@ -18,6 +18,7 @@ import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.SceneCompiler;
+import studio.server.system.Drainable;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -25,7 +26,7 @@ import studio.server.system.MemoryBudget;
  * {@link RenderBudget}, on the service's own render threads, so that the HTTP thread is free and a
  * client that goes away can cancel its render ({@link Ticket#cancel()}).
  */
-public final class RenderService implements AutoCloseable {
+public final class RenderService implements Drainable, AutoCloseable {
 
     private final SceneCompiler compiler;
     private final Semaphore slots;
@@ -116,24 +117,50 @@ public final class RenderService implements AutoCloseable {
         return budget.maxTime().toMillis() + 60_000;
     }
 
-    /** Cancels every running render and stops the render threads, waiting up to {@code graceMillis} for them. */
-    public void shutdown(long graceMillis) {
+    /** Refuses new renders from now on (503 with Retry-After); the running ones go on. */
+    @Override
+    public void stopAccepting() {
         closed = true;
         executor.shutdown();
+    }
+
+    /** Waits until the running renders have ended, at most until the deadline; true if they all did. */
+    @Override
+    public boolean awaitEnd(long deadlineNanos) throws InterruptedException {
+        return executor.awaitTermination(Math.max(0, deadlineNanos - System.nanoTime()), TimeUnit.NANOSECONDS);
+    }
+
+    /** Cancels the running renders (their clients get 503 with Retry-After) and waits as {@link #awaitEnd}. */
+    @Override
+    public void cancelRunning(long deadlineNanos) throws InterruptedException {
         for (Ticket ticket : running) {
             ticket.cancel();
         }
+        awaitEnd(deadlineNanos);
+    }
+
+    /**
+     * Refuses new renders, lets the running ones finish for up to {@code graceMillis}, then cancels them
+     * and waits for that, at most {@value #CANCEL_WAIT_MILLIS} ms more.
+     */
+    public void shutdown(long graceMillis) {
+        stopAccepting();
         try {
-            executor.awaitTermination(graceMillis, TimeUnit.MILLISECONDS);
+            if (!awaitEnd(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(graceMillis))) {
+                cancelRunning(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(CANCEL_WAIT_MILLIS));
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
         executor.shutdownNow();
     }
 
+    /** After cancelling, how long shutdown waits for the renders to stop. */
+    static final long CANCEL_WAIT_MILLIS = 5_000;
+
     @Override
     public void close() {
-        shutdown(5_000);
+        shutdown(0);
     }
 
     /** One synchronous render: its result when it ends, and a way to stop it. */

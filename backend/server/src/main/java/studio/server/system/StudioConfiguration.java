@@ -1,5 +1,7 @@
 package studio.server.system;
 
+import java.util.List;
+
 import org.springframework.boot.context.properties.EnableConfigurationProperties;
 import org.springframework.boot.web.servlet.FilterRegistrationBean;
 import org.springframework.context.annotation.Bean;
@@ -49,6 +51,11 @@ class StudioConfiguration {
     @Bean(destroyMethod = "close")
     JobService jobService(StudioProperties properties, RenderBudget budget) {
         return new JobService(properties.jobSettings(), budget, properties.jobs().shutdownGrace());
+    }
+
+    @Bean
+    GracefulShutdown gracefulShutdown(RenderService renders, JobService jobs, StudioProperties properties) {
+        return new GracefulShutdown(List.of(renders, jobs), properties.jobs().shutdownGrace());
     }
 
     @Bean

@@ -109,10 +109,12 @@ class JobServiceTest {
         JobService jobs = service(settings(1, 4));
         JobStatus started = jobs.submit(compile(LARGE));
         await("a few tiles", () -> jobs.status(started.id()).progress() > 0.02);
+        double progress = jobs.status(started.id()).progress();
         Recorder late = new Recorder();
         jobs.subscribe(started.id(), late);
-        long replayed = late.events.stream().filter(e -> e.startsWith("tile:")).count();
-        assertTrue(replayed >= 0.02 * 768, "replayed only " + replayed + " tiles");
+        await("the tiles so far", () -> late.events.stream().filter(e -> e.startsWith("tile:")).count()
+                >= Math.round(progress * 768));
+        assertEquals("status:running", late.events.get(0));
         jobs.cancel(started.id());
     }
 
@@ -324,6 +326,90 @@ class JobServiceTest {
         assertTrue(stopped.error().contains("shut down"), stopped.error());
         assertTrue(millis < 300 + JobService.SHUTDOWN_CANCEL_WAIT_MILLIS, "shutdown took " + millis + " ms");
         assertThrows(JobNotDoneException.class, () -> jobs.image(running.id()));
+    }
+
+    // --- listeners that stop reading ------------------------------------------------------------
+
+    @Test
+    void listenerThatStopsReadingHoldsUpNeitherTheJobNorItsStatusAndIsDropped() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus started = jobs.submit(compile(scene(512, 384, 16)));
+        Stuck stuck = new Stuck();
+        Recorder reading = new Recorder();
+        jobs.subscribe(started.id(), stuck);
+        jobs.subscribe(started.id(), reading);
+        try {
+            await("the stuck listener inside its first tile", () -> stuck.inside);
+            long stuckAt = System.nanoTime();
+            // the render thread wrote to the stuck listener under the job's lock: status waited for it
+            while (!jobs.status(started.id()).state().isFinal()) {
+                long before = System.nanoTime();
+                jobs.status(started.id());
+                long millis = (System.nanoTime() - before) / 1_000_000;
+                assertTrue(millis < 1_000, "status took " + millis + " ms");
+                Thread.sleep(20);
+            }
+            assertEquals(JobState.DONE, jobs.status(started.id()).state(), "the job goes on without the stuck listener");
+            await("the reading listener's end", () -> reading.ended != null);
+            assertEquals(JobState.DONE, reading.ended.state());
+            await("the stuck listener dropped", () -> !jobs.job(started.id()).hasListeners());
+            long droppedAfter = (System.nanoTime() - stuckAt) / 1_000_000;
+            assertTrue(droppedAfter >= JobService.STALL_MILLIS - 1_000, "dropped after " + droppedAfter + " ms");
+        } finally {
+            stuck.release.countDown();
+        }
+        await("the stuck listener told it was dropped", () -> stuck.dropped);
+        assertEquals(null, stuck.ended, "a dropped listener hears no end");
+    }
+
+    @Test
+    void shutdownTellsTheListenersOfRunningAndQueuedJobsTheirEnd() throws Exception {
+        JobService jobs = service(settings(1, 4));
+        JobStatus running = jobs.submit(compile(LARGE));
+        JobStatus queued = jobs.submit(compile(SMALL));
+        Recorder watchingRunning = new Recorder(), watchingQueued = new Recorder();
+        jobs.subscribe(running.id(), watchingRunning);
+        jobs.subscribe(queued.id(), watchingQueued);
+        await("running", () -> jobs.status(running.id()).progress() > 0);
+        jobs.stopAccepting();
+        await("the queued job's end, at once", () -> watchingQueued.ended != null);
+        assertEquals(JobState.CANCELLED, watchingQueued.ended.state());
+        assertEquals(null, watchingRunning.ended, "the running job goes on for its grace period");
+        assertThrows(JobQueueFullException.class, () -> jobs.submit(compile(SMALL)));
+        jobs.cancelRunning(System.nanoTime() + 5_000_000_000L);
+        assertEquals(JobState.CANCELLED, watchingRunning.ended.state());
+        assertTrue(watchingRunning.ended.error().contains("shut down"), watchingRunning.ended.error());
+    }
+
+    /** A listener whose client stops reading: its first tile blocks until released (a minute at most). */
+    static final class Stuck implements JobListener {
+        final java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
+        volatile boolean inside, dropped;
+        volatile JobStatus ended;
+
+        @Override
+        public void status(JobStatus status) {
+        }
+
+        @Override
+        public void tile(TileEvent tile) {
+            inside = true;
+            try {
+                release.await(60, java.util.concurrent.TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+
+        @Override
+        public void end(JobStatus status) {
+            ended = status;
+        }
+
+        @Override
+        public void dropped() {
+            dropped = true;
+        }
     }
 
     /** Records events as "status:running", "tile:x,y", "end:done". */
