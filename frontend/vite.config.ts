@@ -2,7 +2,10 @@
 import { defineConfig } from 'vite';
 import react from '@vitejs/plugin-react';
 
-/** Backend address for `npm run dev`; the built page is served by the Java jar itself. */
+/**
+ * Backend address for `npm run dev`; the built page is served by the Java jar itself. The proxy
+ * forwards WebSocket upgrades too (`ws`), for the live ray-traced view at /api/preview.
+ */
 const BACKEND = 'http://localhost:8080';
 
 export default defineConfig({
@@ -14,7 +17,7 @@ export default defineConfig({
   },
   server: {
     proxy: {
-      '/api': { target: BACKEND, changeOrigin: true },
+      '/api': { target: BACKEND, changeOrigin: true, ws: true },
     },
   },
   test: {

@@ -64,7 +64,7 @@ export function App({ fetchFn }: AppProps) {
             </div>
             <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
               <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
-                <Preview3D />
+                <Preview3D shown={tab === 'preview'} onFieldErrors={setFieldErrors} />
               </Suspense>
             </div>
             <div role="tabpanel" id="panel-json" aria-labelledby="tab-json" hidden={tab !== 'json'} className="tab-panel">

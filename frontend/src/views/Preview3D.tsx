@@ -1,20 +1,39 @@
 import { useEffect, useRef, useState } from 'react';
 import { meshCache } from '../hooks/useMeshes';
+import type { SocketFactory } from '../live/liveSession';
+import { RayTracedView } from '../live/RayTracedView';
 import { sceneToThree } from '../model/toThree';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { PreviewEngine, type PreviewMode } from './previewEngine';
+
+/** What the preview shows: one of the three.js cameras, or the server's ray-traced frames. */
+export type PreviewView = PreviewMode | 'raytraced';
+
+/** Props of {@link Preview3D}. */
+export interface Preview3DProps {
+  /** False while the panel is hidden behind another tab: the ray-traced view then closes its connection. */
+  shown?: boolean;
+  /** Receives the field errors of a scene the ray-traced view's server refused (`{}` once it renders). */
+  onFieldErrors?: (errors: Record<string, string>) => void;
+  /** Opens the ray-traced view's socket; `new WebSocket(url)` by default, a fake in tests. */
+  socketFactory?: SocketFactory;
+}
 
 /**
  * The three.js preview. "Camera view" looks through the render camera (same position, target,
  * up, vertical fov, aspect = image width / height, letterboxed); "Orbit view" lets you look
  * around with the mouse and shows the render camera's frustum. Frames are drawn on demand: the
- * store is followed by a subscription, never by per-frame React state.
+ * store is followed by a subscription, never by per-frame React state. "Ray traced" shows the
+ * server's live render instead (its socket open only while that view is shown); the three.js
+ * scene is not updated meanwhile.
  */
-export function Preview3D() {
+export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Preview3DProps) {
   const host = useRef<HTMLDivElement>(null);
   const engine = useRef<PreviewEngine | null>(null);
-  const [mode, setMode] = useState<PreviewMode>('camera');
+  const [view, setView] = useState<PreviewView>('camera');
   const [failure, setFailure] = useState<string | null>(null);
+  const viewRef = useRef(view);
+  const push = useRef(() => {});
 
   useEffect(() => {
     const element = host.current;
@@ -28,16 +47,18 @@ export function Preview3D() {
     }
     engine.current = preview;
     element.appendChild(preview.canvas);
-    const push = () => {
+    const update = () => {
+      if (viewRef.current === 'raytraced') return;
       const state = useSceneStore.getState();
       preview.update(sceneToThree(selectDisplayScene(state), state.selection, (mesh) => meshCache.get(mesh)));
     };
-    push();
+    push.current = update;
+    update();
     const unsubscribe = useSceneStore.subscribe((state, old) => {
-      if (state.scene !== old.scene || state.preview !== old.preview || state.selection !== old.selection) push();
+      if (state.scene !== old.scene || state.preview !== old.preview || state.selection !== old.selection) update();
     });
     // A mesh file that finishes loading appears without waiting for the next edit.
-    const unsubscribeMeshes = meshCache.subscribe(push);
+    const unsubscribeMeshes = meshCache.subscribe(update);
     const measure = () => preview.resize(element.clientWidth, element.clientHeight);
     measure();
     const observer = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver(measure);
@@ -51,22 +72,32 @@ export function Preview3D() {
     };
   }, []);
 
-  useEffect(() => engine.current?.setMode(mode), [mode]);
+  useEffect(() => {
+    const was = viewRef.current;
+    viewRef.current = view;
+    if (view === 'raytraced') return;
+    if (was === 'raytraced') push.current(); // the scene may have changed while it was not followed
+    engine.current?.setMode(view);
+  }, [view]);
+
+  const viewButton = (id: PreviewView, label: string, title: string) => (
+    <button type="button" aria-pressed={view === id} onClick={() => setView(id)} title={title}>
+      {label}
+    </button>
+  );
 
   return (
     <section className="preview3d" aria-label="3D preview">
       <header className="panel-header">
         <h2>3D preview</h2>
         <div className="segmented" role="group" aria-label="Preview camera">
-          <button type="button" aria-pressed={mode === 'camera'} onClick={() => setMode('camera')} title="See exactly what the render camera frames">
-            Camera view
-          </button>
-          <button type="button" aria-pressed={mode === 'orbit'} onClick={() => setMode('orbit')} title="Look around freely: drag to orbit, wheel to zoom, right-drag to pan">
-            Orbit view
-          </button>
+          {viewButton('camera', 'Camera view', 'See exactly what the render camera frames')}
+          {viewButton('orbit', 'Orbit view', 'Look around freely: drag to orbit, wheel to zoom, right-drag to pan')}
+          {viewButton('raytraced', 'Ray traced', 'See the server’s render, refined live as you edit')}
         </div>
       </header>
-      <div className="preview3d__viewport" ref={host} data-testid="preview-3d" data-mode={mode}>
+      {view === 'raytraced' && shown && <RayTracedView onFieldErrors={onFieldErrors} socketFactory={socketFactory} />}
+      <div className="preview3d__viewport" ref={host} data-testid="preview-3d" data-mode={view} hidden={view === 'raytraced'}>
         {failure && (
           <p className="preview3d__failure" role="note">
             The 3D preview needs WebGL, which this browser does not offer ({failure}). The top and side views and rendering still work.
