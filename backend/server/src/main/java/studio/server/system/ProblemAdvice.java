@@ -1,8 +1,5 @@
 package studio.server.system;
 
-import java.util.List;
-import java.util.Map;
-
 import org.apache.tomcat.util.http.InvalidParameterException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -21,7 +18,6 @@ import studio.server.job.JobNotFoundException;
 import studio.server.job.JobQueueFullException;
 import studio.server.render.RenderBusyException;
 import studio.server.render.RenderTimeExceededException;
-import studio.server.scene.FieldProblem;
 import studio.server.scene.InvalidSceneException;
 
 /**
@@ -35,14 +31,7 @@ class ProblemAdvice extends ResponseEntityExceptionHandler {
 
     @ExceptionHandler(InvalidSceneException.class)
     ResponseEntity<ProblemDetail> invalidScene(InvalidSceneException e) {
-        List<FieldProblem> problems = e.problems();
-        ProblemDetail problem = ProblemDetail.forStatus(HttpStatus.BAD_REQUEST);
-        problem.setTitle("Invalid scene");
-        problem.setDetail(problems.size() == 1 ? problems.get(0).toString()
-                : problems.size() + " problems, the first: " + problems.get(0));
-        problem.setProperty("errors", problems.stream()
-                .map(p -> Map.of("field", p.field(), "message", p.message())).toList());
-        return ResponseEntity.badRequest().body(problem);
+        return ResponseEntity.badRequest().body(Problems.invalidScene(e));
     }
 
     @ExceptionHandler(JobNotFoundException.class)

@@ -1,0 +1,205 @@
+package studio.server.preview;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import org.springframework.http.HttpStatus;
+import org.springframework.web.socket.BinaryMessage;
+import org.springframework.web.socket.CloseStatus;
+import org.springframework.web.socket.TextMessage;
+import org.springframework.web.socket.WebSocketSession;
+import org.springframework.web.socket.handler.AbstractWebSocketHandler;
+import org.springframework.web.socket.handler.ConcurrentWebSocketSessionDecorator;
+
+import studio.server.system.MemoryBudget;
+
+/**
+ * The WebSocket side of the live view ({@code /api/preview}): assembles each text message from the
+ * container's pieces (its buffer stays at its default 8 KiB, allocated for every session; a message
+ * may be as large as a request body, its memory reserved as it arrives), hands it to its session's {@link PreviewSession}, and
+ * closes the session's work when the connection goes.
+ */
+final class PreviewHandler extends AbstractWebSocketHandler implements AutoCloseable {
+
+    /** How long one frame may take to send, and how much may wait to be sent, before the view is closed. */
+    static final int SEND_TIME_LIMIT_MILLIS = 10_000, SEND_BUFFER_LIMIT = 16 << 20;
+    /** A message's pieces as they arrive: 2 bytes a character while assembling, then its UTF-8 bytes. */
+    static final int BYTES_PER_CHAR = 2;
+
+    private static final String VIEW = "studio.preview.view", SOCKET = "studio.preview.socket",
+            PARTS = "studio.preview.parts";
+
+    private final PreviewRenderer renderer;
+    private final long maxMessageBytes;
+    private final ExecutorService workers;
+    private final int maxSessions;
+    private final Duration idleTimeout;
+    /** Live views open or being opened (a place is taken at the handshake). */
+    private final AtomicInteger open = new AtomicInteger();
+
+    PreviewHandler(PreviewRenderer renderer, long maxMessageBytes, int maxSessions, Duration idleTimeout) {
+        this.renderer = renderer;
+        this.idleTimeout = idleTimeout;
+        this.maxMessageBytes = maxMessageBytes;
+        this.maxSessions = maxSessions;
+        AtomicInteger count = new AtomicInteger();
+        this.workers = Executors.newCachedThreadPool(r -> {
+            Thread t = new Thread(r, "live-view-" + count.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
+    }
+
+    /** Live views open now. */
+    int open() {
+        return open.get();
+    }
+
+    /** Takes a place for a new view; false when all are taken. */
+    boolean tryOpen() {
+        if (open.incrementAndGet() > maxSessions) {
+            open.decrementAndGet();
+            return false;
+        }
+        return true;
+    }
+
+    /** Gives a view's place back. */
+    void release() {
+        open.decrementAndGet();
+    }
+
+    @Override
+    public void afterConnectionEstablished(WebSocketSession session) {
+        if (session instanceof org.springframework.web.socket.adapter.NativeWebSocketSession adapter
+                && adapter.getNativeSession() instanceof jakarta.websocket.Session container) {
+            container.setMaxIdleTimeout(idleTimeout.toMillis());
+        }
+        WebSocketSession socket = new ConcurrentWebSocketSessionDecorator(session, SEND_TIME_LIMIT_MILLIS,
+                SEND_BUFFER_LIMIT);
+        session.getAttributes().put(SOCKET, socket);
+        session.getAttributes().put(VIEW, new PreviewSession(renderer, workers, new PreviewSession.Output() {
+            @Override
+            public void frame(byte[] message) throws IOException {
+                socket.sendMessage(new BinaryMessage(message));
+            }
+
+            @Override
+            public void text(String message) throws IOException {
+                socket.sendMessage(new TextMessage(message));
+            }
+
+            @Override
+            public void close() {
+                try {
+                    socket.close(CloseStatus.SERVER_ERROR.withReason("the live view could not go on"));
+                } catch (IOException e) {
+                    // gone already
+                }
+            }
+        }));
+    }
+
+    @Override
+    protected void handleTextMessage(WebSocketSession session, TextMessage message) throws IOException {
+        Parts parts = (Parts) session.getAttributes().computeIfAbsent(PARTS, k -> new Parts());
+        String piece = message.getPayload();
+        parts.length += piece.length();
+        if (parts.length > maxMessageBytes) {
+            parts.clear();
+            session.close(CloseStatus.TOO_BIG_TO_PROCESS.withReason("a message may be at most " + maxMessageBytes
+                    + " bytes (studio.limits.max-body-bytes)"));
+            return;
+        }
+        if (!parts.refused) {
+            MemoryBudget.Reservation more = renderer.memory().tryReserve((long) piece.length() * BYTES_PER_CHAR);
+            if (more != null) {
+                parts.add(piece, more);
+            } else {
+                parts.refuse();
+            }
+        }
+        if (message.isLast()) {
+            if (parts.refused) {
+                socket(session).sendMessage(new TextMessage(renderer.problem(null, HttpStatus.SERVICE_UNAVAILABLE,
+                        "Service Unavailable", PreviewSession.BUSY)));
+            } else {
+                view(session).receive(parts.chars.toString().getBytes(StandardCharsets.UTF_8));
+            }
+            parts.clear();
+        }
+    }
+
+    @Override
+    protected void handleBinaryMessage(WebSocketSession session, BinaryMessage message) throws IOException {
+        session.close(CloseStatus.NOT_ACCEPTABLE.withReason("the live view takes text messages (JSON)"));
+    }
+
+    @Override
+    public boolean supportsPartialMessages() {
+        return true;
+    }
+
+    @Override
+    public void afterConnectionClosed(WebSocketSession session, CloseStatus status) {
+        PreviewSession view = (PreviewSession) session.getAttributes().remove(VIEW);
+        if (view != null) {
+            view.close();
+            release();
+        }
+        Parts parts = (Parts) session.getAttributes().remove(PARTS);
+        if (parts != null) {
+            parts.clear();
+        }
+    }
+
+    private static WebSocketSession socket(WebSocketSession session) {
+        return (WebSocketSession) session.getAttributes().get(SOCKET);
+    }
+
+    private static PreviewSession view(WebSocketSession session) {
+        return (PreviewSession) session.getAttributes().get(VIEW);
+    }
+
+    @Override
+    public void close() {
+        workers.shutdownNow();
+    }
+
+    /** A text message being assembled, and the memory its pieces hold. */
+    private static final class Parts {
+        final StringBuilder chars = new StringBuilder();
+        final List<MemoryBudget.Reservation> memory = new ArrayList<>();
+        /** Characters received, kept or not. */
+        long length;
+        /** A piece could not be reserved: the rest of this message is dropped, and the client told. */
+        boolean refused;
+
+        void add(String piece, MemoryBudget.Reservation reservation) {
+            chars.append(piece);
+            memory.add(reservation);
+        }
+
+        void refuse() {
+            long seen = length;
+            clear();
+            length = seen;
+            refused = true;
+        }
+
+        void clear() {
+            chars.setLength(0);
+            chars.trimToSize();
+            memory.forEach(MemoryBudget.Reservation::close);
+            memory.clear();
+            length = 0;
+            refused = false;
+        }
+    }
+}

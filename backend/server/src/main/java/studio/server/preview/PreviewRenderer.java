@@ -1,0 +1,133 @@
+package studio.server.preview;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.util.HashMap;
+import java.util.Map;
+import java.util.function.BooleanSupplier;
+
+import org.springframework.http.HttpStatus;
+import org.springframework.http.ProblemDetail;
+
+import studio.engine.image.ImageEncoder;
+import studio.engine.render.RenderListener;
+import studio.engine.render.RenderResult;
+import studio.server.render.RenderBudget;
+import studio.server.scene.CompiledScene;
+import studio.server.scene.InvalidSceneException;
+import studio.server.scene.SceneCompiler;
+import studio.server.system.MemoryBudget;
+import studio.server.system.Problems;
+import tools.jackson.databind.json.JsonMapper;
+
+/**
+ * What every live view shares: reading a revision's scene as {@code POST /api/render} does, rendering
+ * one pass within the render budget, encoding its frame, and the problems a view is sent.
+ */
+final class PreviewRenderer {
+
+    /** JPEG quality of the passes before the last. */
+    static final double COARSE_QUALITY = 0.85;
+
+    private final SceneCompiler compiler;
+    private final RenderBudget budget;
+    private final int threads;
+    private final PreviewProperties limits;
+    private final JsonMapper json;
+
+    PreviewRenderer(SceneCompiler compiler, RenderBudget budget, int threads, PreviewProperties limits,
+                    JsonMapper json) {
+        this.compiler = compiler;
+        this.budget = budget;
+        this.threads = threads;
+        this.limits = limits;
+        this.json = json;
+    }
+
+    PreviewProperties limits() {
+        return limits;
+    }
+
+    MemoryBudget memory() {
+        return budget.memory();
+    }
+
+    /**
+     * The scene of a revision at the view's size, or null if the memory to read it is taken right now.
+     *
+     * @throws InvalidSceneException as {@code POST /api/render} would refuse it
+     */
+    CompiledScene compile(PreviewRequest request) {
+        // what reading the scene holds besides its bytes: the JSON tree, the records, the engine's objects
+        try (MemoryBudget.Reservation reading = budget.memory().tryReserve((long) request.scene().length * 8)) {
+            if (reading == null) {
+                return null;
+            }
+            return compile(request, threads);
+        }
+    }
+
+    private CompiledScene compile(PreviewRequest request, int threads) {
+        Map<String, Object> overrides = new HashMap<>();
+        if (request.width() > 0) {
+            overrides.put("image.width", request.width());
+        }
+        if (request.height() > 0) {
+            overrides.put("image.height", request.height());
+        }
+        overrides.put("image.format", "png");
+        return compiler.compile(request.scene(), overrides, threads);
+    }
+
+    /**
+     * Renders one pass and encodes it as a frame message.
+     *
+     * @return the frame, or null if the render memory is taken right now
+     * @throws studio.engine.render.RenderCancelledException when {@code superseded} turns true first
+     * @throws studio.server.render.RenderTimeExceededException past the render time budget
+     */
+    byte[] render(CompiledScene scene, PreviewPass pass, long revision, long receivedNanos,
+                  BooleanSupplier superseded) {
+        CompiledScene passScene = new CompiledScene(scene.scene(), pass.settings(), "png", 1, scene.fileStem());
+        try (MemoryBudget.Reservation memory = budget.reserve(passScene)) {
+            if (memory == null) {
+                return null;
+            }
+            RenderResult result = budget.render(passScene, RenderListener.NONE, superseded);
+            ByteArrayOutputStream image = new ByteArrayOutputStream();
+            var pixels = ImageEncoder.toImage(result.film());
+            if (pass.last()) {
+                ImageEncoder.writePng(pixels, image);
+            } else {
+                ImageEncoder.writeJpeg(pixels, COARSE_QUALITY, image);
+            }
+            PreviewFrame frame = new PreviewFrame(revision, pass.number(), pass.settings().width(),
+                    pass.settings().height(), pass.settings().sampler().samplesPerPixel(), pass.last(),
+                    pass.last() ? "png" : "jpeg", (System.nanoTime() - receivedNanos) / 1_000_000);
+            return frame.encode(image.toByteArray());
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** {@code {"revision": n, "problem": {...}}} for an invalid message or scene. */
+    String problem(Long revision, InvalidSceneException e) {
+        return problem(revision, Problems.invalidScene(e));
+    }
+
+    /** {@code {"revision": n, "problem": {...}}} for a problem of another kind. */
+    String problem(Long revision, HttpStatus status, String title, String detail) {
+        ProblemDetail problem = ProblemDetail.forStatusAndDetail(status, detail);
+        problem.setTitle(title);
+        return problem(revision, problem);
+    }
+
+    private String problem(Long revision, ProblemDetail problem) {
+        problem.setInstance(java.net.URI.create("/api/preview"));
+        Map<String, Object> message = new HashMap<>();
+        message.put("revision", revision);
+        message.put("problem", problem);
+        return json.writeValueAsString(message);
+    }
+}

@@ -1,0 +1,156 @@
+package studio.server.preview;
+
+import java.io.IOException;
+import java.util.concurrent.Executor;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicReference;
+
+import org.springframework.http.HttpStatus;
+
+import studio.engine.render.RenderCancelledException;
+import studio.server.render.RenderTimeExceededException;
+import studio.server.scene.CompiledScene;
+import studio.server.scene.InvalidSceneException;
+
+/**
+ * One live view: the newest revision a client sent and the work of showing it. Messages only
+ * replace the pending revision and wake the view's worker (one task at a time on the shared
+ * worker pool), which reads the scene, then renders its passes coarse to fine and sends a frame
+ * after each. Before each pass, and within each render (between tiles, as every render is
+ * cancelled), the worker checks for a newer revision or a closed session and drops the old one's
+ * work. So revisions that arrive faster than frames are skipped but the newest, and frames go out
+ * in revision order: only the worker sends.
+ */
+final class PreviewSession {
+
+    /** Where frames and problems go (the WebSocket, or a test's recorder). */
+    interface Output {
+        void frame(byte[] message) throws IOException;
+
+        void text(String message) throws IOException;
+
+        /** Sending failed or the view is over: give the connection up. */
+        void close();
+    }
+
+    /** A message as it arrived. */
+    private record Pending(byte[] message, long receivedNanos) {
+    }
+
+    static final String BUSY = "the server is reading or rendering as much as its memory allows right now; the "
+            + "view renders again with your next change";
+
+    private final PreviewRenderer renderer;
+    private final Executor worker;
+    private final Output output;
+    private final AtomicReference<Pending> pending = new AtomicReference<>();
+    private final AtomicBoolean working = new AtomicBoolean();
+    private volatile boolean closed;
+    /** The last revision accepted (worker thread only). */
+    private long lastRevision = -1;
+
+    PreviewSession(PreviewRenderer renderer, Executor worker, Output output) {
+        this.renderer = renderer;
+        this.worker = worker;
+        this.output = output;
+    }
+
+    /** A message from the client: it replaces any revision not yet started, and stops the one being shown. */
+    void receive(byte[] message) {
+        pending.set(new Pending(message, System.nanoTime()));
+        wake();
+    }
+
+    /** The client went away: the work in hand stops within a tile. */
+    void close() {
+        closed = true;
+        pending.set(null);
+    }
+
+    boolean closed() {
+        return closed;
+    }
+
+    private void wake() {
+        if (working.compareAndSet(false, true)) {
+            try {
+                worker.execute(this::work);
+            } catch (RejectedExecutionException e) {
+                working.set(false);
+                output.close(); // the server is stopping
+            }
+        }
+    }
+
+    private void work() {
+        for (;;) {
+            Pending next = closed ? null : pending.getAndSet(null);
+            if (next == null) {
+                working.set(false);
+                // a message that arrived after getAndSet found the worker busy: look once more
+                if (closed || pending.get() == null || !working.compareAndSet(false, true)) {
+                    return;
+                }
+                continue;
+            }
+            try {
+                show(next);
+            } catch (IOException | RuntimeException e) {
+                closed = true;
+                output.close();
+                return;
+            }
+        }
+    }
+
+    /** Whether the revision being shown is no longer wanted. */
+    private boolean superseded() {
+        return closed || pending.get() != null;
+    }
+
+    private void show(Pending next) throws IOException {
+        PreviewRequest request;
+        CompiledScene scene;
+        try {
+            request = PreviewRequest.parse(next.message(), renderer.limits().maxWidth(), renderer.limits().maxHeight());
+            if (request.revision() <= lastRevision) {
+                throw new InvalidSceneException("revision", "must be greater than the last revision, " + lastRevision);
+            }
+            lastRevision = request.revision();
+            scene = renderer.compile(request);
+            if (scene == null) {
+                output.text(renderer.problem(request.revision(), HttpStatus.SERVICE_UNAVAILABLE, "Service Unavailable",
+                        BUSY));
+                return;
+            }
+        } catch (InvalidSceneException e) {
+            output.text(renderer.problem(PreviewRequest.revisionOf(next.message()), e));
+            return;
+        }
+        for (PreviewPass pass : PreviewPass.plan(scene.settings())) {
+            if (superseded()) {
+                return;
+            }
+            byte[] frame;
+            try {
+                frame = renderer.render(scene, pass, request.revision(), next.receivedNanos(), this::superseded);
+            } catch (RenderCancelledException e) {
+                return;
+            } catch (RenderTimeExceededException e) {
+                output.text(renderer.problem(request.revision(), HttpStatus.UNPROCESSABLE_CONTENT,
+                        "Render time budget exceeded", e.getMessage()));
+                return;
+            } catch (InvalidSceneException e) {
+                output.text(renderer.problem(request.revision(), e)); // it could never fit the render memory
+                return;
+            }
+            if (frame == null) {
+                output.text(renderer.problem(request.revision(), HttpStatus.SERVICE_UNAVAILABLE, "Service Unavailable",
+                        BUSY));
+                return;
+            }
+            output.frame(frame);
+        }
+    }
+}
