@@ -4,7 +4,9 @@ import react from '@vitejs/plugin-react';
 
 /**
  * Backend address for `npm run dev`; the built page is served by the Java jar itself. The proxy
- * forwards WebSocket upgrades too (`ws`), for the live ray-traced view at /api/preview.
+ * forwards WebSocket upgrades too (`ws`), for the live ray-traced view at /api/preview, with the
+ * backend's own Origin (`rewriteWsOrigin`): the server accepts upgrades from its own origin only
+ * and refused the dev server's with 403.
  */
 const BACKEND = 'http://localhost:8080';
 
@@ -17,7 +19,7 @@ export default defineConfig({
   },
   server: {
     proxy: {
-      '/api': { target: BACKEND, changeOrigin: true, ws: true },
+      '/api': { target: BACKEND, changeOrigin: true, ws: true, rewriteWsOrigin: true },
     },
   },
   test: {

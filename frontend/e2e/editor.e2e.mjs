@@ -140,6 +140,63 @@ try {
     await page.screenshot({ path: `${out}field-error.png` });
   });
 
+  await step('the Ray traced view names the same refused field, then renders, and follows a drag in the top view', async () => {
+    await page.getByRole('button', { name: 'Ray traced' }).click();
+    const view = page.getByTestId('ray-traced-view');
+    const canvas = view.getByTestId('ray-traced-canvas');
+    const summary = view.getByTestId('error-summary');
+    await summary.waitFor({ timeout: 15000 });
+    expect((await summary.innerText()).includes('camera.up'), 'the live view does not name camera.up');
+
+    // an up vector across the view: the scene renders, coarse to fine, and the problem goes
+    for (const [axis, value] of [['y', '0'], ['z', '-1']]) {
+      const input = page.getByLabel(`Up ${axis}`);
+      await input.fill(value);
+      await input.press('Enter');
+    }
+    const attribute = async (name) => canvas.getAttribute(name);
+    /** True once the final frame of the newest revision sent is on the canvas. */
+    const current = async () => (await attribute('data-final')) === 'true'
+      && (await attribute('data-revision')) === (await attribute('data-sent-revision'));
+    const where = async () => `frame of revision ${await attribute('data-revision')} (final: ${await attribute('data-final')}), `
+      + `revision ${await attribute('data-sent-revision')} sent`;
+    await until(current, async () => `no final frame of the valid scene: ${await where()}`, 60000);
+    await summary.waitFor({ state: 'detached', timeout: 5000 });
+    const status = await view.getByTestId('ray-traced-status').innerText();
+    expect(/^final · \d+ spp · \d+x\d+ · /.test(status), `unexpected status line "${status}"`);
+    const picture = () => canvas.evaluate((c) => {
+      const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let sum = 0;
+      const reds = new Set();
+      for (let i = 0; i < data.length; i += 4) {
+        sum = (sum * 31 + data[i] + 3 * data[i + 1] + 7 * data[i + 2]) % 1e9;
+        reds.add(data[i]);
+      }
+      return { sum, distinct: reds.size };
+    });
+    const before = await picture();
+    expect(before.distinct > 1, 'the ray-traced canvas is blank');
+
+    // a drag: frames of the transient position come while the button is still down
+    const revisionBefore = Number(await attribute('data-revision'));
+    const sphere = page.getByTestId('top-view').locator('[data-kind="sphere"]').last();
+    const box = await sphere.boundingBox();
+    const x = box.x + box.width * 0.75, y = box.y + box.height * 0.6;
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let i = 1; i <= 5; i++) await page.mouse.move(x - 6 * i, y - 4 * i);
+    await until(async () => Number(await attribute('data-revision')) > revisionBefore,
+      async () => `no frame of a newer revision during the drag: ${await where()}`, 30000);
+    for (let i = 6; i <= 10; i++) await page.mouse.move(x - 6 * i, y - 4 * i);
+    await page.mouse.up();
+    await until(current, async () => `no final frame of the dropped position: ${await where()}`, 60000);
+    const after = await picture();
+    expect(after.sum !== before.sum, 'the picture did not change with the sphere\'s position');
+    await page.screenshot({ path: `${out}ray-traced.png` });
+    await page.getByRole('button', { name: 'Camera view' }).click();
+    await view.waitFor({ state: 'detached', timeout: 5000 });
+  });
+
   await step('no uncaught errors in the page', async () => {
     expect(pageErrors.length === 0, `page errors: ${pageErrors.join('\n')}`);
   });

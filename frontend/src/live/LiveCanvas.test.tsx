@@ -10,7 +10,7 @@ const BOX = { width: 400, height: 300, left: 20, top: 0 };
 
 function renderCanvas(connection: LiveConnection, frame: FrameHeader | null = frameHeader({ pass: 2, width: 100, height: 75, millis: 40 })) {
   const onReconnect = vi.fn();
-  render(<LiveCanvas canvasRef={() => {}} box={BOX} frame={frame} connection={connection} onReconnect={onReconnect} />);
+  render(<LiveCanvas canvasRef={() => {}} box={BOX} frame={frame} sentRevision={7} connection={connection} onReconnect={onReconnect} />);
   return onReconnect;
 }
 
@@ -20,6 +20,7 @@ describe('LiveCanvas', () => {
     const canvas = screen.getByRole('img');
     expect(canvas).toHaveStyle({ left: '20px', top: '0px', width: '400px', height: '300px' });
     expect(canvas).toHaveAttribute('data-revision', '7');
+    expect(canvas).toHaveAttribute('data-sent-revision', '7');
     expect(canvas).toHaveAttribute('data-final', 'true');
     expect(screen.getByRole('status')).toHaveTextContent('final · 16 spp · 400x300 · 900 ms');
   });

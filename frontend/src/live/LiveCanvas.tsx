@@ -12,6 +12,8 @@ export interface LiveCanvasProps {
   box: ViewFit['box'];
   /** The frame on the canvas, for the status line; null before the first. */
   frame: FrameHeader | null;
+  /** The newest revision sent (`data-sent-revision`: the picture is current when `data-revision` equals it). */
+  sentRevision: number;
   connection: LiveConnection;
   /** Connects again after the view gave up. */
   onReconnect: () => void;
@@ -21,7 +23,7 @@ export interface LiveCanvasProps {
  * The ray-traced frames, scaled to the view, with a status line: the frame's pass, samples,
  * size and time, or how the connection is doing while there is nothing to show or it is lost.
  */
-export function LiveCanvas({ canvasRef, box, frame, connection, onReconnect }: LiveCanvasProps) {
+export function LiveCanvas({ canvasRef, box, frame, sentRevision, connection, onReconnect }: LiveCanvasProps) {
   const notice = connectionNotice(connection, frame !== null);
   return (
     <>
@@ -32,6 +34,7 @@ export function LiveCanvas({ canvasRef, box, frame, connection, onReconnect }: L
         role="img"
         aria-label="The scene as the server ray traces it"
         data-revision={frame?.revision}
+        data-sent-revision={sentRevision}
         data-pass={frame?.pass}
         data-final={frame ? String(frame.final) : undefined}
         style={{ left: `${box.left}px`, top: `${box.top}px`, width: `${box.width}px`, height: `${box.height}px` }}

@@ -35,7 +35,7 @@ export function RayTracedView({ onFieldErrors, socketFactory, decodeImage }: Ray
   const { problem } = live;
   return (
     <div className="preview3d__viewport live-view" ref={panel} data-testid="ray-traced-view">
-      <LiveCanvas canvasRef={live.canvasRef} box={fit.box} frame={live.frame} connection={live.connection} onReconnect={live.reconnect} />
+      <LiveCanvas canvasRef={live.canvasRef} box={fit.box} frame={live.frame} sentRevision={live.sentRevision} connection={live.connection} onReconnect={live.reconnect} />
       {problem && (
         <div className="live-view__problem">
           {problem.status === 400 ? (

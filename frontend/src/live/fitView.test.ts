@@ -16,6 +16,11 @@ describe('fitView', () => {
     expect(fit.pixels.width / fit.pixels.height).toBeCloseTo(4 / 3, 2);
   });
 
+  it("asks for no more than the server's default limit, keeping the aspect", () => {
+    expect(fitView(1900, 1000, 4 / 3, 2).pixels).toEqual({ width: 2048, height: 1536 });
+    expect(fitView(3000, 3000, 1 / 4, 1).pixels).toEqual({ width: 512, height: 2048 });
+  });
+
   it('never asks for less than one pixel, nor trusts an odd aspect or ratio', () => {
     expect(fitView(0, 0, 4 / 3, 1).pixels).toEqual({ width: 1, height: 1 });
     expect(fitView(300, 200, Number.NaN, 0).pixels).toEqual({ width: 200, height: 200 });

@@ -46,6 +46,8 @@ export interface LiveSessionOptions {
   /** The server refused a revision's scene; null once a newer revision has been drawn. */
   onProblem: (problem: RevisionProblem | null) => void;
   onConnection: (connection: LiveConnection) => void;
+  /** A revision was sent (at most once per animation frame). */
+  onSent: (revision: number) => void;
 }
 
 /**
@@ -53,6 +55,12 @@ export interface LiveSessionOptions {
  * restart, short enough not to knock forever on a server that refuses the view.
  */
 export const RETRY_DELAYS = [500, 1000, 2000, 4000, 8000, 10_000, 10_000, 10_000];
+
+/**
+ * Close codes for a message the server will not take (unsupported data, bad data, policy, too
+ * big): the view gives up until the next edit instead of sending it again.
+ */
+const REFUSED_MESSAGE = new Set([1003, 1007, 1008, 1009]);
 
 /** `WebSocket.OPEN`. */
 const OPEN = 1;
@@ -140,16 +148,19 @@ export class LiveSession {
     socket.onclose = (event) => {
       if (socket !== this.socket) return;
       this.socket = null;
-      this.lost(describeClose(event));
+      this.lost(describeClose(event), event.code);
     };
   }
 
-  /** The socket closed (or could not be made): pause, retry after a while, or give up. */
-  private lost(reason: string): void {
+  /**
+   * The socket closed (or could not be made): pause, retry after a while, or give up (at once
+   * when the server refused the message itself: sending it again would only be refused again).
+   */
+  private lost(reason: string, code = 1006): void {
     if (this.disposed) return;
     const complete = !this.wanted || (this.lastSent !== null && this.settled >= this.revision && sameView(this.lastSent, this.wanted));
     if (complete) return this.setConnection({ state: 'paused', reason });
-    if (this.attempts >= RETRY_DELAYS.length) return this.setConnection({ state: 'failed', reason });
+    if (this.attempts >= RETRY_DELAYS.length || REFUSED_MESSAGE.has(code)) return this.setConnection({ state: 'failed', reason });
     const delayMillis = RETRY_DELAYS[this.attempts++];
     this.setConnection({ state: 'retrying', reason, delayMillis });
     this.retryTimer = setTimeout(() => this.connect(), delayMillis);
@@ -170,6 +181,7 @@ export class LiveSession {
     this.revision += 1;
     socket.send(encodeRevision({ revision: this.revision, ...wanted }));
     this.lastSent = this.sentOnSocket = wanted;
+    this.options.onSent(this.revision);
   };
 
   private receive(data: unknown): void {
@@ -191,10 +203,12 @@ export class LiveSession {
     const problem = decodeProblem(text);
     if (!problem) return;
     this.attempts = 0;
-    this.settled = Math.max(this.settled, problem.revision);
-    if ((this.drawn && problem.revision < this.drawn.revision) || problem.revision < this.problemRevision) return;
-    this.problemRevision = problem.revision;
-    this.options.onProblem(problem);
+    // A message the server could not read whole names no revision: it can only be the newest sent.
+    const revision = problem.revision ?? this.revision;
+    this.settled = Math.max(this.settled, revision);
+    if ((this.drawn && revision < this.drawn.revision) || revision < this.problemRevision) return;
+    this.problemRevision = revision;
+    this.options.onProblem({ ...problem, revision });
   }
 
   /** Decodes a frame off the main thread, then draws it unless a newer one was drawn meanwhile. */

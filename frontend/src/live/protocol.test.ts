@@ -113,6 +113,12 @@ describe('decodeProblem', () => {
     expect(problem?.error.errors).toEqual([{ field: 'objects[0].radius', message: 'must be greater than 0' }]);
   });
 
+  it('reads a problem that names no revision (a message the server could not read whole)', () => {
+    const problem = decodeProblem(JSON.stringify({ revision: null, problem: { title: 'Service Unavailable', status: 503, detail: 'busy' } }));
+    expect(problem?.revision).toBeNull();
+    expect(problem?.error).toMatchObject({ status: 503, detail: 'busy' });
+  });
+
   it.each([['not json'], ['[]'], ['{"problem": {"title": "x"}}'], ['{"revision": 2}'], ['{"revision": 2, "problem": "bad"}']])(
     'passes over a text message that is no problem: %s',
     (text) => expect(decodeProblem(text)).toBeNull(),

@@ -49,7 +49,8 @@ export interface Frame {
 
 /** The server's refusal of one revision's scene. */
 export interface RevisionProblem {
-  revision: number;
+  /** The revision refused; null when the server could not tell which (a message it could not read whole). */
+  revision: number | null;
   /** The problem as the REST client reads it: status, title, detail, field errors by JSON path. */
   error: ApiError;
 }
@@ -104,7 +105,7 @@ export function decodeProblem(text: string): RevisionProblem | null {
   } catch {
     return null;
   }
-  if (!isRecord(body) || !isCount(body.revision) || !isRecord(body.problem)) return null;
+  if (!isRecord(body) || !(isCount(body.revision) || body.revision === null) || !isRecord(body.problem)) return null;
   const status = typeof body.problem.status === 'number' ? body.problem.status : 400;
   return { revision: body.revision, error: problemToError(status, body.problem) };
 }

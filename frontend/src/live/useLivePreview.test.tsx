@@ -54,6 +54,7 @@ describe('useLivePreview', () => {
     await nextFrame();
     expect(socket.messages()).toEqual([{ revision: 1, scene: SCENE, width: 64, height: 48 }]);
     expect(hook.result.current.connection.state).toBe('open');
+    expect(hook.result.current.sentRevision).toBe(1);
 
     hook.unmount();
     expect(socket.closedBy).toEqual({ code: 1000, reason: 'view closed' });
@@ -189,6 +190,33 @@ describe('useLivePreview', () => {
     hook.unmount();
     expect(onFieldErrors).toHaveBeenCalledTimes(calls + 1);
     expect(onFieldErrors).toHaveBeenLastCalledWith({});
+  });
+
+  it('takes a problem that names no revision as the answer to the newest one sent', async () => {
+    const { hook, sockets } = setup();
+    const socket = sockets.last();
+    act(() => socket.open());
+    await nextFrame();
+    act(() => socket.frame({ revision: 1, pass: 1 }));
+    await settle();
+    hook.rerender({ scene: moved(1) });
+    await nextFrame();
+    act(() => socket.receive({ revision: null, problem: { title: 'Service Unavailable', status: 503, detail: 'busy' } }));
+    expect(hook.result.current.problem).toMatchObject({ status: 503, detail: 'busy' });
+    act(() => socket.drop(1000, 'idle')); // answered in full: no reconnection until the next edit
+    expect(hook.result.current.connection.state).toBe('paused');
+  });
+
+  it('gives up at once when the server refuses the message itself, until the next edit', async () => {
+    const { hook, sockets } = setup();
+    act(() => sockets.last().open());
+    await nextFrame();
+    act(() => sockets.last().drop(1009, 'a message may be at most 1000 bytes'));
+    expect(hook.result.current.connection).toEqual({ state: 'failed', reason: 'a message may be at most 1000 bytes' });
+    act(() => vi.advanceTimersByTime(60_000));
+    expect(sockets.opened).toHaveLength(1);
+    hook.rerender({ scene: moved(1) });
+    expect(sockets.opened).toHaveLength(2);
   });
 
   it('reconnects a dropped connection with growing delays and sends the current scene again', async () => {

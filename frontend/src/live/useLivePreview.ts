@@ -29,6 +29,8 @@ export interface LivePreview {
   canvasRef: RefObject<HTMLCanvasElement | null>;
   /** The header of the frame on the canvas; null before the first. */
   frame: FrameHeader | null;
+  /** The newest revision sent (0 before the first): the picture is up to date when the frame shows it. */
+  sentRevision: number;
   /** The server's refusal of the newest scene; null once a newer one renders. */
   problem: ApiError | null;
   connection: LiveConnection;
@@ -47,6 +49,7 @@ export function useLivePreview(options: LivePreviewOptions): LivePreview {
   const { scene, width, height } = options;
   const canvasRef = useRef<HTMLCanvasElement | null>(null);
   const [frame, setFrame] = useState<FrameHeader | null>(null);
+  const [sentRevision, setSentRevision] = useState(0);
   const [problem, setProblem] = useState<ApiError | null>(null);
   const [connection, setConnection] = useState<LiveConnection>({ state: 'connecting' });
   const optionsRef = useRef(options);
@@ -75,6 +78,7 @@ export function useLivePreview(options: LivePreviewOptions): LivePreview {
         reportFieldErrors(p?.error.status === 400 ? toFieldErrorMap(p.error.errors) : {});
       },
       onConnection: setConnection,
+      onSent: setSentRevision,
     });
     session.current = live;
     return () => {
@@ -87,5 +91,5 @@ export function useLivePreview(options: LivePreviewOptions): LivePreview {
   useEffect(() => session.current?.show(scene, width, height), [scene, width, height]);
 
   const reconnect = useCallback(() => session.current?.reconnect(), []);
-  return { canvasRef, frame, problem, connection, reconnect };
+  return { canvasRef, frame, sentRevision, problem, connection, reconnect };
 }
