@@ -82,6 +82,9 @@ describe('useLivePreview', () => {
     await nextFrame();
     hook.rerender({ scene: structuredClone(SCENE) });
     await nextFrame();
+    hook.rerender({ scene: moved(1) }); // moved and back within one frame
+    hook.rerender({ scene: structuredClone(SCENE) });
+    await nextFrame();
     expect(sockets.last().sent).toHaveLength(1);
     hook.rerender({ scene: structuredClone(SCENE), width: 128, height: 96 });
     await nextFrame();
