@@ -255,7 +255,7 @@ class RenderApiTest {
                 .andExpect(status().isBadRequest())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
                 .andExpect(jsonPath("$.status").value(400))
-                .andExpect(jsonPath("$.errors[0].field").value(""))
+                .andExpect(jsonPath("$.errors[0].field").value("objects[0]"))
                 .andExpect(jsonPath("$.errors[0].message").value(containsString("line 2")));
     }
 
