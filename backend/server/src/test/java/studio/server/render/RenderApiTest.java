@@ -139,7 +139,8 @@ class RenderApiTest {
 
     @Test
     void namesTheFileRenderWhenTheSceneHasNoName() throws Exception {
-        AsyncMvc.perform(mvc, post("/api/render").content("{\"image\":{\"width\":4,\"height\":4},\"render\":{\"samples\":1},"
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"image\":{\"width\":4,"
+                        + "\"height\":4},\"render\":{\"samples\":1},"
                         + "\"objects\":[]}"))
                 .andExpect(status().isOk())
                 .andExpect(header().string(HttpHeaders.CONTENT_DISPOSITION, "attachment; filename=\"render.png\""));
@@ -269,9 +270,10 @@ class RenderApiTest {
 
     @Test
     void serviceStillRendersAfterBadRequests() throws Exception {
-        AsyncMvc.perform(mvc, post("/api/render").content("[1, 2"))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("[1, 2"))
                 .andExpect(status().isBadRequest());
-        AsyncMvc.perform(mvc, post("/api/render").content("{\"objects\":[{\"type\":\"sphere\",\"radius\":0}]}"))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                        .content("{\"objects\":[{\"type\":\"sphere\",\"radius\":0}]}"))
                 .andExpect(status().isBadRequest());
         assertRendersTinyScene();
     }
