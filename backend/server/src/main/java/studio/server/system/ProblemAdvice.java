@@ -128,6 +128,8 @@ class ProblemAdvice extends ResponseEntityExceptionHandler {
         String detail = (accepted.isEmpty() ? "the body's media type is not accepted here"
                 : "the body must be sent as " + accepted + " (Content-Type: " + e.getSupportedMediaTypes().get(0) + ")")
                 + (given == null || given.isBlank() ? "; this request has no Content-Type"
+                : e.getContentType() == null ? "; this request's, '" + abbreviated(given) + "', cannot be read (a "
+                + "malformed type, or a charset this server does not know)"
                 : "; this request's is '" + abbreviated(given) + "'");
         return handleExceptionInternal(e, ProblemDetail.forStatusAndDetail(status, detail), headers, status, request);
     }

@@ -67,6 +67,16 @@ class SceneMediaTypeTest {
     }
 
     @ParameterizedTest
+    @ValueSource(strings = {"json", "application/json; charset=klingon"})
+    void refusesAContentTypeItCannotRead(String contentType) throws Exception {
+        HttpResponse<String> response = post("/api/render", contentType, TINY);
+        assertThat(response.statusCode()).isEqualTo(415);
+        assertThat(JSON.readTree(response.body()).get("detail").asString())
+                .endsWith("this request's, '" + contentType + "', cannot be read (a malformed type, or a charset this "
+                        + "server does not know)");
+    }
+
+    @ParameterizedTest
     @ValueSource(strings = {"application/json", "application/json; charset=utf-8", "application/vnd.studio.scene+json"})
     void takesJsonOfEveryKind(String contentType) throws Exception {
         assertThat(post("/api/render", contentType, TINY).statusCode()).isEqualTo(200);
