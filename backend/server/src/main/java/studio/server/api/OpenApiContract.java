@@ -26,6 +26,7 @@ import io.swagger.v3.oas.models.parameters.RequestBody;
 import io.swagger.v3.oas.models.responses.ApiResponse;
 import io.swagger.v3.oas.models.responses.ApiResponses;
 import studio.server.scene.SceneLimits;
+import studio.server.scene.SceneMediaTypes;
 
 /**
  * The API's OpenAPI 3.1 document (/v3/api-docs, Swagger UI at /swagger-ui.html). springdoc finds
@@ -57,6 +58,7 @@ class OpenApiContract {
                         .addApiResponse("200", image("The rendered image, PNG or JPEG as the scene's image.format says"))
                         .addApiResponse("400", ref("InvalidScene"))
                         .addApiResponse("413", ref("BodyTooLarge"))
+                        .addApiResponse("415", ref("NotJson"))
                         .addApiResponse("422", ref("RenderTimeExceeded"))
                         .addApiResponse("503", ref("RenderBusy")));
         operation(api, "/api/jobs", PathItem.HttpMethod.POST, "jobs", "startJob", "Start a render job")
@@ -70,6 +72,7 @@ class OpenApiContract {
                                 .link("cancel", jobLink("cancelJob")))
                         .addApiResponse("400", ref("InvalidScene"))
                         .addApiResponse("413", ref("BodyTooLarge"))
+                        .addApiResponse("415", ref("NotJson"))
                         .addApiResponse("429", ref("QueueFull"))
                         .addApiResponse("503", ref("MemoryBusy")));
         operation(api, "/api/jobs/{id}", PathItem.HttpMethod.GET, "jobs", "getJob", "A job's status")
@@ -157,6 +160,11 @@ class OpenApiContract {
         c.addResponses("InvalidScene", problem("The scene is invalid; `errors` names each bad field", "InvalidSceneProblem"));
         c.addResponses("BodyTooLarge", problem("The body is over this server's limit (studio.limits.max-body-bytes)",
                 "Problem"));
+        c.addResponses("NotJson", problem("The body is not sent as JSON: its Content-Type is missing or another "
+                + "type (text/plain, form data, XML); nothing was read or rendered", "Problem")
+                .addHeaderObject("Accept", new Header().required(true).description("The media types a scene is taken as: "
+                        + SceneMediaTypes.JSON + ", " + SceneMediaTypes.JSON_SUFFIXED)
+                        .schema(schema("{\"type\": \"string\"}"))));
         c.addResponses("RenderTimeExceeded", problem("The render ran longer than this server's time budget "
                 + "(studio.limits.max-render-time) and was stopped", "Problem"));
         c.addResponses("RenderBusy", problem("Every render slot is busy (studio.concurrent-renders), the render "
@@ -197,7 +205,7 @@ class OpenApiContract {
 
     private static RequestBody sceneBody() {
         return new RequestBody().required(true).description("A scene (see components/schemas/Scene)")
-                .content(new Content().addMediaType("application/json", new MediaType().schema(schemaRef("Scene"))
+                .content(new Content().addMediaType(SceneMediaTypes.JSON, new MediaType().schema(schemaRef("Scene"))
                         .example(json(ApiSchemas.EXAMPLE_SCENE))));
     }
 

@@ -15,8 +15,12 @@ import org.springframework.web.servlet.mvc.method.annotation.SseEmitter;
 import studio.server.render.RenderedImage;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.SceneCompiler;
+import studio.server.scene.SceneMediaTypes;
 
-/** Render jobs: start, watch (status and an event stream of tiles), fetch the image, cancel. */
+/**
+ * Render jobs: start, watch (status and an event stream of tiles), fetch the image, cancel. A job's
+ * scene must be sent as JSON ({@link SceneMediaTypes}).
+ */
 @RestController
 class JobController {
 
@@ -28,7 +32,7 @@ class JobController {
         this.jobs = jobs;
     }
 
-    @PostMapping("/api/jobs")
+    @PostMapping(path = "/api/jobs", consumes = {SceneMediaTypes.JSON, SceneMediaTypes.JSON_SUFFIXED})
     ResponseEntity<JobStatus> start(@RequestBody(required = false) byte[] scene) {
         jobs.checkRoom();
         CompiledScene compiled = compiler.compile(scene != null ? scene : new byte[0]);

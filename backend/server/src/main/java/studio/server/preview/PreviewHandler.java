@@ -6,7 +6,9 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
+import java.util.concurrent.SynchronousQueue;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import org.springframework.http.HttpStatus;
@@ -29,6 +31,7 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
 
     /** How long one frame may take to send, and how much may wait to be sent, before the view is closed. */
     static final int SEND_TIME_LIMIT_MILLIS = 10_000, SEND_BUFFER_LIMIT = 16 << 20;
+    static final int WORKER_KEEP_ALIVE_SECONDS = 2;
     /** A message's pieces as they arrive: 2 bytes a character while assembling, then its UTF-8 bytes. */
     static final int BYTES_PER_CHAR = 2;
 
@@ -49,11 +52,13 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
         this.maxMessageBytes = maxMessageBytes;
         this.maxSessions = maxSessions;
         AtomicInteger count = new AtomicInteger();
-        this.workers = Executors.newCachedThreadPool(r -> {
-            Thread t = new Thread(r, "live-view-" + count.incrementAndGet());
-            t.setDaemon(true);
-            return t;
-        });
+        // a worker per view while it has a revision to show; idle workers end after a few seconds
+        this.workers = new ThreadPoolExecutor(0, Integer.MAX_VALUE, WORKER_KEEP_ALIVE_SECONDS, TimeUnit.SECONDS,
+                new SynchronousQueue<>(), r -> {
+                    Thread t = new Thread(r, "live-view-" + count.incrementAndGet());
+                    t.setDaemon(true);
+                    return t;
+                });
     }
 
     /** Live views open now. */

@@ -9,11 +9,13 @@ import org.springframework.web.bind.annotation.RestController;
 import org.springframework.web.context.request.async.DeferredResult;
 
 import jakarta.servlet.http.HttpServletRequest;
+import studio.server.scene.SceneMediaTypes;
 
 /**
  * POST /api/render: a scene in, the image out. The render runs on the render service's threads
  * while the request waits asynchronously; a client that disconnects cancels its render at the next
- * tile ({@link ClientProbe} notices it, or the container reports an async error).
+ * tile ({@link ClientProbe} notices it, or the container reports an async error). The body must be
+ * sent as JSON ({@link SceneMediaTypes}).
  */
 @RestController
 class RenderController {
@@ -24,7 +26,7 @@ class RenderController {
         this.renderService = renderService;
     }
 
-    @PostMapping("/api/render")
+    @PostMapping(path = "/api/render", consumes = {SceneMediaTypes.JSON, SceneMediaTypes.JSON_SUFFIXED})
     DeferredResult<ResponseEntity<byte[]>> render(@RequestBody(required = false) byte[] scene,
                                                   HttpServletRequest request) {
         ClientProbe client = ClientProbe.of(request);

@@ -32,9 +32,16 @@ import studio.engine.scene.SceneObject;
 public final class SceneMapper {
 
     private final SceneLimits limits;
+    private final MeshCache meshes;
 
     public SceneMapper(SceneLimits limits) {
+        this(limits, MeshCache.none());
+    }
+
+    /** @param meshes meshes already read and built, reused when a scene has them unchanged */
+    public SceneMapper(SceneLimits limits, MeshCache meshes) {
         this.limits = limits;
+        this.meshes = meshes;
     }
 
     /** As {@link #map(SceneDto, int, MeshFiles)}, with no mesh files (inline meshes only). */
@@ -86,14 +93,27 @@ public final class SceneMapper {
             String path = "objects[" + i + "]";
             Shape shape;
             if (o instanceof ObjectDto.Mesh mesh) {
-                MeshData data = meshData(mesh, path, meshFiles, limits.maxTriangles() - triangles, problems);
+                String text = meshText(mesh, path, meshFiles, problems);
+                String digest = text != null ? MeshCache.digest(text) : null;
+                MeshData data = text != null
+                        ? meshData(text, digest, meshField(mesh, path), limits.maxTriangles() - triangles, problems)
+                        : null;
                 if (data == null) {
                     shape = null;
                 } else {
                     triangles += data.triangleCount();
-                    shape = problems.attempt(path, () -> new TriangleMesh(data,
+                    MeshCache.Placement placement = new MeshCache.Placement(digest,
                             vec(or(mesh.position(), SceneDefaults.ORIGIN)), or(mesh.scale(), SceneDefaults.MESH_SCALE),
-                            vec(or(mesh.rotation(), SceneDefaults.ORIGIN))));
+                            vec(or(mesh.rotation(), SceneDefaults.ORIGIN)));
+                    shape = meshes.built(placement);
+                    if (shape == null) {
+                        TriangleMesh built = problems.attempt(path, () -> new TriangleMesh(data,
+                                placement.position(), placement.scale(), placement.rotation()));
+                        if (built != null) {
+                            meshes.keepBuilt(placement, built);
+                        }
+                        shape = built;
+                    }
                 }
             } else {
                 shape = problems.attempt(path, () -> shape(o));
@@ -145,35 +165,37 @@ public final class SceneMapper {
         return new Camera(position, lookAt, up, or(c.fov(), SceneDefaults.CAMERA_FOV_DEGREES));
     }
 
-    /**
-     * The mesh's OBJ data, from its inline text or its file; null (and a problem) if there is none,
-     * it does not parse, or it has more than {@code triangleBudget} triangles.
-     */
-    private static MeshData meshData(ObjectDto.Mesh mesh, String path, MeshFiles files, int triangleBudget,
-                                     Problems problems) {
-        String field;
-        String text;
+    /** The mesh's OBJ text, inline or from its file; null (and a problem) if there is none. */
+    private static String meshText(ObjectDto.Mesh mesh, String path, MeshFiles files, Problems problems) {
         if ((mesh.obj() == null) == (mesh.file() == null)) {
             problems.add(path, mesh.obj() == null ? "a mesh needs its OBJ text in \"obj\" or a \"file\" name"
                     : "give the mesh either \"obj\" or \"file\", not both");
             return null;
         }
-        if (mesh.obj() != null) {
-            field = path + ".obj";
-            text = mesh.obj();
-        } else {
-            field = path + ".file";
-            text = problems.attempt(field, () -> files.read(mesh.file()));
-            if (text == null) {
+        return mesh.obj() != null ? mesh.obj() : problems.attempt(path + ".file", () -> files.read(mesh.file()));
+    }
+
+    /** The field that holds the mesh's OBJ: its {@code obj} or its {@code file}. */
+    private static String meshField(ObjectDto.Mesh mesh, String path) {
+        return path + (mesh.obj() != null ? ".obj" : ".file");
+    }
+
+    /**
+     * The OBJ data of a mesh's text (read before, or parsed now and kept); null (and a problem) if it
+     * does not parse, or it has more than {@code triangleBudget} triangles.
+     */
+    private MeshData meshData(String text, String digest, String field, int triangleBudget, Problems problems) {
+        MeshData data = meshes.parsed(digest);
+        if (data == null) {
+            try {
+                data = ObjReader.parse(text);
+            } catch (IllegalArgumentException e) {
+                problems.add(field, "is not a usable OBJ mesh: " + e.getMessage());
                 return null;
             }
-        }
-        MeshData data;
-        try {
-            data = ObjReader.parse(text);
-        } catch (IllegalArgumentException e) {
-            problems.add(field, "is not a usable OBJ mesh: " + e.getMessage());
-            return null;
+            if (data.triangleCount() <= triangleBudget) {
+                meshes.keepParsed(digest, data);
+            }
         }
         if (data.triangleCount() > triangleBudget) {
             problems.add(field, "has " + data.triangleCount() + " triangles; this server's limit is "

@@ -14,10 +14,10 @@ import jakarta.validation.ElementKind;
 import jakarta.validation.Path;
 import jakarta.validation.Validator;
 import tools.jackson.core.JacksonException;
+import tools.jackson.core.JsonParser;
 import tools.jackson.core.StreamReadFeature;
 import tools.jackson.core.TokenStreamLocation;
 import tools.jackson.core.exc.InputCoercionException;
-import tools.jackson.core.exc.StreamReadException;
 import tools.jackson.databind.DeserializationFeature;
 import tools.jackson.databind.JsonNode;
 import tools.jackson.databind.MapperFeature;
@@ -84,15 +84,15 @@ public final class SceneReader {
     public SceneDto read(byte[] json, Map<String, Object> overrides) {
         SceneDto scene;
         List<FieldProblem> nulls = new ArrayList<>();
+        JsonNode tree = readTree(json);
+        if (tree == null || tree.isMissingNode()) {
+            throw new InvalidSceneException("", "the request body is empty; expected a scene as a JSON object");
+        }
+        if (!tree.isObject()) {
+            throw new InvalidSceneException("", "expected a scene as a JSON object, not " + tree.getNodeType()
+                    .toString().toLowerCase());
+        }
         try {
-            JsonNode tree = mapper.readTree(json);
-            if (tree == null || tree.isMissingNode()) {
-                throw new InvalidSceneException("", "the request body is empty; expected a scene as a JSON object");
-            }
-            if (!tree.isObject()) {
-                throw new InvalidSceneException("", "expected a scene as a JSON object, not " + tree.getNodeType()
-                        .toString().toLowerCase());
-            }
             dropNullFields(tree, new StringBuilder(), nulls);
             applyOverrides((ObjectNode) tree, overrides);
             if (fastPath && nulls.isEmpty()) {
@@ -108,6 +108,25 @@ public final class SceneReader {
         List<FieldProblem> problems = new ArrayList<>();
         validator.get().validate(scene).forEach(v -> problems.add(new FieldProblem(pathOf(v.getPropertyPath()), v.getMessage())));
         return checked(scene, withNulls(nulls, problems));
+    }
+
+    /**
+     * The scene's JSON as a tree (null for an empty body). The parser is kept, so that where it
+     * failed can be told by JSON path ({@link MalformedJson}).
+     */
+    private JsonNode readTree(byte[] json) {
+        try (JsonParser parser = mapper.createParser(json)) {
+            try {
+                return mapper.readTree(parser);
+            } catch (MismatchedInputException trailing) {
+                // reading a tree can only mismatch on content after the scene (FAIL_ON_TRAILING_TOKENS)
+                TokenStreamLocation at = trailing.getLocation();
+                throw new InvalidSceneException("", "malformed JSON at line " + at.getLineNr() + ", column "
+                        + at.getColumnNr() + ": " + MalformedJson.AFTER_THE_SCENE);
+            } catch (JacksonException e) {
+                throw new InvalidSceneException(List.of(MalformedJson.problem(e, parser, json)));
+            }
+        }
     }
 
     private static SceneDto checked(SceneDto scene, List<FieldProblem> problems) {
@@ -257,19 +276,10 @@ public final class SceneReader {
         if (e instanceof InputCoercionException coercion && wholeNumberRange(coercion.getTargetType()) != null) {
             return new FieldProblem(path, "must be a whole number " + wholeNumberRange(coercion.getTargetType()));
         }
-        // reading the tree can only mismatch on content after the scene (FAIL_ON_TRAILING_TOKENS)
-        boolean trailing = e instanceof MismatchedInputException m && m.getTargetType() != null
-                && JsonNode.class.isAssignableFrom(m.getTargetType());
-        if (e instanceof StreamReadException || trailing) {
-            TokenStreamLocation at = e.getLocation();
-            String where = at != null ? " at line " + at.getLineNr() + ", column " + at.getColumnNr() : "";
-            return new FieldProblem(path, "malformed JSON" + where + ": "
-                    + (trailing ? "unexpected content after the scene's closing '}'" : firstLine(e.getOriginalMessage())));
-        }
         if (e instanceof MismatchedInputException mismatch && mismatch.getTargetType() != null) {
             return new FieldProblem(path, expected(mismatch.getTargetType()));
         }
-        return new FieldProblem(path, firstLine(e.getOriginalMessage()));
+        return new FieldProblem(path, ParserMessages.plain(firstLine(e.getOriginalMessage())));
     }
 
     /** "from MIN to MAX" for an integer type, else null. */

@@ -1,16 +1,23 @@
 package studio.server.system;
 
+import java.util.stream.Collectors;
+
 import org.apache.tomcat.util.http.InvalidParameterException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.springframework.http.HttpHeaders;
 import org.springframework.http.HttpStatus;
+import org.springframework.http.HttpStatusCode;
+import org.springframework.http.MediaType;
 import org.springframework.http.ProblemDetail;
 import org.springframework.http.ResponseEntity;
 import org.springframework.http.converter.HttpMessageNotReadableException;
+import org.springframework.web.HttpMediaTypeNotSupportedException;
 import org.springframework.web.bind.annotation.ExceptionHandler;
 import org.springframework.web.bind.annotation.RestControllerAdvice;
+import org.springframework.web.context.request.WebRequest;
 import org.springframework.web.servlet.mvc.method.annotation.ResponseEntityExceptionHandler;
+import org.springframework.web.servlet.resource.NoResourceFoundException;
 
 import studio.engine.render.RenderCancelledException;
 import studio.server.job.JobNotDoneException;
@@ -93,13 +100,42 @@ class ProblemAdvice extends ResponseEntityExceptionHandler {
 
     @Override
     protected ResponseEntity<Object> handleHttpMessageNotReadable(HttpMessageNotReadableException e, HttpHeaders headers,
-            org.springframework.http.HttpStatusCode status, org.springframework.web.context.request.WebRequest request) {
+            HttpStatusCode status, WebRequest request) {
         Throwable cause = e.getMostSpecificCause();
         if (cause instanceof BodyTooLargeException tooLarge) {
             return ResponseEntity.status(HttpStatus.CONTENT_TOO_LARGE)
                     .body(ProblemDetail.forStatusAndDetail(HttpStatus.CONTENT_TOO_LARGE, tooLarge.getMessage()));
         }
         return super.handleHttpMessageNotReadable(e, headers, status, request);
+    }
+
+    /** A scene posted as anything but JSON (see SceneMediaTypes): say what to send, and what was sent. */
+    @Override
+    protected ResponseEntity<Object> handleHttpMediaTypeNotSupported(HttpMediaTypeNotSupportedException e,
+            HttpHeaders headers, HttpStatusCode status, WebRequest request) {
+        String accepted = e.getSupportedMediaTypes().stream().map(MediaType::toString).collect(Collectors.joining(" or "));
+        String given = request.getHeader(HttpHeaders.CONTENT_TYPE);
+        String detail = (accepted.isEmpty() ? "the body's media type is not accepted here"
+                : "the body must be sent as " + accepted + " (Content-Type: " + e.getSupportedMediaTypes().get(0) + ")")
+                + (given == null || given.isBlank() ? "; this request has no Content-Type"
+                : e.getContentType() == null ? "; this request's, '" + abbreviated(given) + "', cannot be read (a "
+                + "malformed type, or a charset this server does not know)"
+                : "; this request's is '" + abbreviated(given) + "'");
+        return handleExceptionInternal(e, ProblemDetail.forStatusAndDetail(status, detail), headers, status, request);
+    }
+
+    /** Spring's own detail ("No static resource api/x.") speaks of its resource handling. */
+    @Override
+    protected ResponseEntity<Object> handleNoResourceFoundException(NoResourceFoundException e, HttpHeaders headers,
+            HttpStatusCode status, WebRequest request) {
+        ProblemDetail problem = ProblemDetail.forStatusAndDetail(status, "there is nothing at /"
+                + abbreviated(e.getResourcePath()));
+        return handleExceptionInternal(e, problem, headers, status, request);
+    }
+
+    /** Text from the request, cut short for the detail that repeats it. */
+    private static String abbreviated(String text) {
+        return text.length() > 100 ? text.substring(0, 100) + "…" : text;
     }
 
     @ExceptionHandler(Exception.class)

@@ -14,8 +14,10 @@ import jakarta.servlet.RequestDispatcher;
 import jakarta.servlet.http.HttpServletRequest;
 
 /**
- * The errors that never reach a controller (the servlet container refusing a TRACE request or a
- * malformed URL) as RFC 9457 problems too, in place of Spring Boot's own JSON error body.
+ * The errors that never reach a controller (the servlet container refusing a TRACE request, a body
+ * it cannot read) as RFC 9457 problems too, in place of Spring Boot's own JSON error body. The
+ * requests the container refuses before the application is chosen (a malformed URL or header)
+ * never come here: {@link ProblemReportValve} answers them.
  */
 @RestController
 class ProblemErrorController implements ErrorController {
@@ -28,7 +30,7 @@ class ProblemErrorController implements ErrorController {
         if (status == null) {
             status = HttpStatus.INTERNAL_SERVER_ERROR;
         }
-        ProblemDetail problem = ProblemDetail.forStatus(status);
+        ProblemDetail problem = ProblemDetail.forStatusAndDetail(status, StatusDetails.detail(status.value()));
         if (request.getAttribute(RequestDispatcher.ERROR_REQUEST_URI) instanceof String uri) {
             problem.setInstance(URI.create(uri.replaceAll("[^A-Za-z0-9/_.-]", "")));
         }

@@ -12,6 +12,7 @@ import studio.server.job.JobService;
 import studio.server.render.RenderBudget;
 import studio.server.render.RenderService;
 import studio.server.scene.ExampleScenes;
+import studio.server.scene.MeshCache;
 import studio.server.scene.MeshFiles;
 import studio.server.scene.SceneCompiler;
 import studio.server.scene.SceneLimits;
@@ -29,8 +30,15 @@ class StudioConfiguration {
     }
 
     @Bean
-    SceneCompiler sceneCompiler(Validator validator, SceneLimits limits) {
-        return new SceneCompiler(new SceneReader(validator), new SceneMapper(limits), MeshFiles.bundled());
+    SceneCompiler sceneCompiler(Validator validator, SceneLimits limits, MemoryBudget memory) {
+        return new SceneCompiler(new SceneReader(validator), new SceneMapper(limits, meshCache(limits, memory)),
+                MeshFiles.bundled());
+    }
+
+    /** Meshes kept for scenes that send them again (the live view does on every edit): an eighth of the render memory. */
+    private static MeshCache meshCache(SceneLimits limits, MemoryBudget memory) {
+        long triangles = memory.capacity() / 8 / MeshCache.BYTES_PER_TRIANGLE;
+        return new MeshCache(Math.min(limits.maxTriangles(), triangles), memory);
     }
 
     @Bean

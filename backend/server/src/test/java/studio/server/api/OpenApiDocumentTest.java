@@ -96,12 +96,25 @@ class OpenApiDocumentTest {
         }
         JsonNode paths = doc.get("paths");
         assertThat(paths.get("/api/render").get("post").get("responses").propertyNames())
-                .containsExactlyInAnyOrder("200", "400", "413", "422", "503");
+                .containsExactlyInAnyOrder("200", "400", "413", "415", "422", "503");
         assertThat(paths.get("/api/jobs").get("post").get("responses").propertyNames())
-                .containsExactlyInAnyOrder("202", "400", "413", "429", "503");
+                .containsExactlyInAnyOrder("202", "400", "413", "415", "429", "503");
         assertThat(paths.get("/api/jobs/{id}").get("get").get("responses").get("404").get("$ref").asString())
                 .isEqualTo("#/components/responses/JobNotFound");
         assertThat(paths.get("/api/jobs/{id}/image").get("get").get("responses").get("409").get("$ref").asString())
                 .isEqualTo("#/components/responses/JobNotDone");
+    }
+
+    @Test
+    void sceneOperationsAnswer415ProblemNamingTheAcceptedTypes() {
+        for (String path : List.of("/api/render", "/api/jobs")) {
+            assertThat(doc.get("paths").get(path).get("post").get("responses").get("415").get("$ref").asString())
+                    .isEqualTo("#/components/responses/NotJson");
+        }
+        JsonNode notJson = doc.get("components").get("responses").get("NotJson");
+        assertThat(notJson.get("content").get("application/problem+json").get("schema").get("$ref").asString())
+                .isEqualTo("#/components/schemas/Problem");
+        assertThat(notJson.get("headers").get("Accept").get("description").asString())
+                .contains("application/json").contains("application/*+json");
     }
 }

@@ -250,7 +250,7 @@ class SceneContractAgreementTest {
                         "image.width"),
                 invalid("width x height x samples over the render budget, each within its limit",
                         "{'image':{'width':1024,'height':1024},'render':{'samples':17},'objects':[]}", "render.samples"),
-                invalid("a duplicate key", "{'name':'a','name':'b','objects':[]}", ""));
+                invalid("a duplicate key", "{'name':'a','name':'b','objects':[]}", "name"));
     }
 
     // --- the tests -------------------------------------------------------------------------------

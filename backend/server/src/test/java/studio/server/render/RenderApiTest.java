@@ -139,7 +139,8 @@ class RenderApiTest {
 
     @Test
     void namesTheFileRenderWhenTheSceneHasNoName() throws Exception {
-        AsyncMvc.perform(mvc, post("/api/render").content("{\"image\":{\"width\":4,\"height\":4},\"render\":{\"samples\":1},"
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"image\":{\"width\":4,"
+                        + "\"height\":4},\"render\":{\"samples\":1},"
                         + "\"objects\":[]}"))
                 .andExpect(status().isOk())
                 .andExpect(header().string(HttpHeaders.CONTENT_DISPOSITION, "attachment; filename=\"render.png\""));
@@ -255,7 +256,7 @@ class RenderApiTest {
                 .andExpect(status().isBadRequest())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
                 .andExpect(jsonPath("$.status").value(400))
-                .andExpect(jsonPath("$.errors[0].field").value(""))
+                .andExpect(jsonPath("$.errors[0].field").value("objects[0]"))
                 .andExpect(jsonPath("$.errors[0].message").value(containsString("line 2")));
     }
 
@@ -269,9 +270,10 @@ class RenderApiTest {
 
     @Test
     void serviceStillRendersAfterBadRequests() throws Exception {
-        AsyncMvc.perform(mvc, post("/api/render").content("[1, 2"))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("[1, 2"))
                 .andExpect(status().isBadRequest());
-        AsyncMvc.perform(mvc, post("/api/render").content("{\"objects\":[{\"type\":\"sphere\",\"radius\":0}]}"))
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                        .content("{\"objects\":[{\"type\":\"sphere\",\"radius\":0}]}"))
                 .andExpect(status().isBadRequest());
         assertRendersTinyScene();
     }

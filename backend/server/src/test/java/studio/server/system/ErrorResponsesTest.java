@@ -49,10 +49,9 @@ class ErrorResponsesTest {
     }
 
     @Test
-    void multipartContentTypeWithoutBoundaryIsAnInvalidSceneNotAServerError() throws Exception {
-        JsonNode problem = problem(send("POST", "/api/render", "multipart/form-data", "{\"objects\": [}"), 400);
-        assertThat(problem.get("errors").get(0).get("field").asString()).isEmpty();
-        assertThat(problem.get("errors").get(0).get("message").asString()).startsWith("malformed JSON");
+    void multipartContentTypeWithoutBoundaryIsRefusedAsNotJsonNotAServerError() throws Exception {
+        JsonNode problem = problem(send("POST", "/api/render", "multipart/form-data", "{\"objects\": [}"), 415);
+        assertThat(problem.get("detail").asString()).contains("application/json");
     }
 
     @Test
@@ -61,10 +60,10 @@ class ErrorResponsesTest {
     }
 
     @Test
-    void wellFormedMultipartBodyIsReadAsTheSceneItIsNot() throws Exception {
+    void wellFormedMultipartBodyIsRefusedAsNotJson() throws Exception {
         String body = "--b\r\nContent-Disposition: form-data; name=\"scene\"\r\n\r\n{}\r\n--b--\r\n";
-        JsonNode problem = problem(send("POST", "/api/jobs", "multipart/form-data; boundary=b", body), 400);
-        assertThat(problem.get("errors").get(0).get("message").asString()).startsWith("malformed JSON");
+        JsonNode problem = problem(send("POST", "/api/jobs", "multipart/form-data; boundary=b", body), 415);
+        assertThat(problem.get("detail").asString()).contains("application/json");
     }
 
     @Test
