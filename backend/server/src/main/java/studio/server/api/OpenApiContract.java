@@ -77,7 +77,7 @@ class OpenApiContract {
                         .addApiResponse("200", jobStatus("The job's status"))
                         .addApiResponse("404", ref("JobNotFound")));
         operation(api, "/api/jobs/{id}", PathItem.HttpMethod.DELETE, "jobs", "cancelJob",
-                "Cancel a job: a queued one at once, a running one between tiles")
+                "Cancel a job: a queued one at once, a running one within a few milliseconds")
                 .responses(new ApiResponses()
                         .addApiResponse("202", jobStatus("The job's status after the cancel"))
                         .addApiResponse("404", ref("JobNotFound")));

@@ -156,12 +156,12 @@ public final class RenderService implements AutoCloseable {
             return result;
         }
 
-        /** Stops the render at its next tile (a no-op once it has ended). */
+        /** Stops the render within a few milliseconds (a no-op once it has ended). */
         public void cancel() {
             cancelRequested.set(true);
         }
 
-        /** Asked between tiles: a cancel, or a client that went away. */
+        /** Asked by the render every few milliseconds: a cancel, or a client that went away. */
         private boolean stopRequested() {
             if (!cancelRequested.get() && client.gone()) {
                 cancelRequested.set(true);
