@@ -1,5 +1,6 @@
 package studio.server.render;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -14,13 +15,16 @@ import org.junit.jupiter.api.Test;
 
 import studio.server.Await;
 import studio.server.scene.ExampleSceneFiles;
+import studio.server.scene.InvalidSceneException;
 import studio.server.system.MemoryBudget;
 
-/** The synchronous render service without HTTP: its time budget. */
+/** The synchronous render service without HTTP: its slots, its time budget, and what a refused request costs. */
 class RenderServiceTest {
 
     /** One 16 x 16 tile that takes several seconds on one thread. */
     private static final byte[] ONE_SLOW_TILE = HallOfGlass.scene(16, 256).getBytes(StandardCharsets.UTF_8);
+    private static final byte[] NOT_A_SCENE = "{\"objects\": [{\"type\": \"teapot\"}]}"
+            .getBytes(StandardCharsets.UTF_8);
 
     private final MemoryBudget memory = new MemoryBudget(256L << 20);
     private RenderService renders;
@@ -29,6 +33,21 @@ class RenderServiceTest {
     void stop() throws Exception {
         renders.close();
         Await.until("the memory to be given back", 10_000, () -> memory.reserved() == 0);
+    }
+
+    /** As for jobs: the slot is checked before the scene is read, so a refusal costs no reading. */
+    @Test
+    void aRequestWithNoFreeSlotIsRefusedBeforeItsSceneIsRead() throws Exception {
+        renders = new RenderService(ExampleSceneFiles.compiler(), 1, 1,
+                new RenderBudget(Duration.ofMinutes(5), memory));
+        RenderService.Ticket busy = renders.start(ONE_SLOW_TILE);
+
+        assertThrows(RenderBusyException.class, () -> renders.start(NOT_A_SCENE));
+
+        busy.cancel();
+        Await.until("the slot to be free", 10_000, () -> renders.active() == 0);
+        assertThrows(InvalidSceneException.class, () -> renders.start(NOT_A_SCENE));
+        assertEquals(0, renders.active(), "an invalid scene gives its slot back");
     }
 
     @Test
