@@ -2,10 +2,11 @@ package studio.engine.render;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ExecutionException;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.function.BooleanSupplier;
 
@@ -18,9 +19,10 @@ import studio.engine.scene.Scene;
 
 /**
  * Renders a scene into a {@link Film}: the image is cut into tiles, the tiles run on a
- * ForkJoinPool of the requested size, each finished tile is reported, and a cancel request is
- * honoured between tiles. Each pixel's samples are seeded from the pixel, so the result is the
- * same, bit for bit, whatever the number of threads.
+ * ForkJoinPool of the requested size, each finished tile is reported, and a cancel request stops
+ * the render within a few milliseconds and a camera sample, inside a tile too. Each pixel's
+ * samples are seeded from the pixel, so the result is the same, bit for bit, whatever the number
+ * of threads.
  *
  * <p><b>Adaptive sampling</b> ({@link RenderSettings#adaptiveThreshold()} t &gt; 0). With N the
  * sampler's samples per pixel (the maximum), a pixel takes samples in batches of {@value #BATCH},
@@ -85,6 +87,11 @@ public final class Renderer {
     public static final int MIN_BATCHES = 2;
     /** Adaptive sampling: the error limit scales with the root of the pixel's brightest channel, but of at least this. */
     public static final double ERROR_FLOOR = 1.0 / 255;
+    /**
+     * While tiles are rendered, the calling thread asks the cancel condition this often: a render
+     * stops within this and one camera sample of its cancel or deadline.
+     */
+    static final long POLL_MILLIS = 5;
 
     private Renderer() {
     }
@@ -94,9 +101,13 @@ public final class Renderer {
     }
 
     /**
-     * Renders the scene.
+     * Renders the scene. {@code cancelled} is asked before each tile and, while tiles are being
+     * rendered, every {@value #POLL_MILLIS} ms by the calling thread (never per sample: it may be
+     * slow); once it answers true, every tile stops within one camera sample (see {@link StopSignal}).
+     * The render returns or throws once no tile is being rendered any more (unless the calling
+     * thread is interrupted: then at once, and the tiles stop within a sample).
      *
-     * @throws RenderCancelledException if {@code cancelled} turned true before the last tile
+     * @throws RenderCancelledException if {@code cancelled} turned true before the last tile was done
      */
     public static RenderResult render(Scene scene, RenderSettings settings, RenderListener listener,
                                      BooleanSupplier cancelled) {
@@ -107,46 +118,60 @@ public final class Renderer {
         // adaptive sampling with sobol is progressive (see TileWorker#progressiveTile)
         TileBorders borders = settings.adaptive() && settings.sampler() instanceof SobolSampler
                 ? new TileBorders(settings.width(), settings.height(), tileSize) : null;
+        StopSignal stop = new StopSignal();
+        CountDownLatch ended = new CountDownLatch(tiles.size());
+        AtomicReference<Throwable> failure = new AtomicReference<>();
         AtomicInteger done = new AtomicInteger();
         LongAdder rays = new LongAdder();
         LongAdder samples = new LongAdder();
         LongAdder nonFinite = new LongAdder();
-        ThreadLocal<TileWorker> workers = ThreadLocal.withInitial(() -> new TileWorker(scene, settings, borders));
+        ThreadLocal<TileWorker> workers = ThreadLocal.withInitial(
+                () -> new TileWorker(scene, settings, borders, stop));
 
         ForkJoinPool pool = new ForkJoinPool(settings.effectiveThreads());
         try {
-            List<Future<?>> futures = new ArrayList<>(tiles.size());
             for (TileRect tile : tiles) {
-                futures.add(pool.submit(() -> {
-                    if (cancelled.getAsBoolean()) {
-                        return;
+                pool.execute(() -> {
+                    try {
+                        if (stop.raised() || cancelled.getAsBoolean()) {
+                            stop.raise();
+                            return;
+                        }
+                        TileWorker worker = workers.get();
+                        long raysBefore = worker.integrator.rays, samplesBefore = worker.samples;
+                        long bad = worker.render(film, tile);
+                        rays.add(worker.integrator.rays - raysBefore);
+                        samples.add(worker.samples - samplesBefore);
+                        nonFinite.add(bad);
+                        listener.tileFinished(film, tile, done.incrementAndGet(), tiles.size());
+                    } catch (RenderCancelledException e) {
+                        stop.raise();
+                    } catch (RuntimeException | Error e) {
+                        failure.compareAndSet(null, e);
+                        stop.raise(); // the render has failed: the other tiles need not go on
+                    } finally {
+                        ended.countDown();
                     }
-                    TileWorker worker = workers.get();
-                    long raysBefore = worker.integrator.rays, samplesBefore = worker.samples;
-                    long bad = worker.render(film, tile);
-                    rays.add(worker.integrator.rays - raysBefore);
-                    samples.add(worker.samples - samplesBefore);
-                    nonFinite.add(bad);
-                    listener.tileFinished(film, tile, done.incrementAndGet(), tiles.size());
-                }));
+                });
             }
-            for (Future<?> future : futures) {
-                future.get();
+            while (!ended.await(POLL_MILLIS, TimeUnit.MILLISECONDS)) {
+                if (!stop.raised() && cancelled.getAsBoolean()) {
+                    stop.raise();
+                }
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new RenderCancelledException();
-        } catch (ExecutionException e) {
-            Throwable cause = e.getCause();
-            if (cause instanceof RuntimeException runtime) {
-                throw runtime;
-            }
-            if (cause instanceof Error error) {
-                throw error;
-            }
-            throw new IllegalStateException(cause);
         } finally {
+            stop.raise(); // a no-op unless the render ends early: interrupted, or the condition threw
             pool.shutdownNow();
+        }
+        Throwable failed = failure.get();
+        if (failed instanceof RuntimeException runtime) {
+            throw runtime;
+        }
+        if (failed instanceof Error error) {
+            throw error;
         }
         if (done.get() < tiles.size()) {
             throw new RenderCancelledException();
@@ -189,6 +214,8 @@ public final class Renderer {
          * shares the base samples of the tiles' edges here; null for every other render.
          */
         final TileBorders borders;
+        /** Read before every camera sample. */
+        final StopSignal stop;
         final Ray cameraRay = new Ray();
         /** Progressive adaptive sampling: each base pixel's sum and per-channel range, over a tile and its ring. */
         final double[] baseSum = new double[3 * RING_TILE * RING_TILE];
@@ -206,8 +233,9 @@ public final class Renderer {
         /** The smallest and largest finite sample values per channel since the last {@link #resetRange}. */
         private double minR, minG, minB, maxR, maxG, maxB;
 
-        TileWorker(Scene scene, RenderSettings settings, TileBorders borders) {
+        TileWorker(Scene scene, RenderSettings settings, TileBorders borders, StopSignal stop) {
             this.borders = borders;
+            this.stop = stop;
             integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight());
             camera = scene.camera();
             sampler = settings.sampler();
@@ -269,7 +297,7 @@ public final class Renderer {
                 for (int x = x0; x < x1; x++) {
                     int i = (y - y0) * stride + x - x0;
                     int entry = borders.entryOf(x, y);
-                    long badHere = entry < 0 ? -1 : borders.loadOrClaim(entry, baseSum, baseMin, baseMax, 3 * i);
+                    long badHere = entry < 0 ? -1 : borders.loadOrClaim(entry, baseSum, baseMin, baseMax, 3 * i, stop);
                     if (badHere < 0) {
                         random.reset(x, y, seed);
                         sequence.seed(random);
@@ -434,11 +462,16 @@ public final class Renderer {
             return trace(x, y, 0, count);
         }
 
-        /** Traces samples first .. first + count - 1 of the pattern in xs, ys; sums into sumR/G/B. */
+        /**
+         * Traces samples first .. first + count - 1 of the pattern in xs, ys; sums into sumR/G/B.
+         *
+         * @throws RenderCancelledException once the render's stop signal is raised
+         */
         private long trace(int x, int y, int first, int count) {
             long bad = 0;
             double r = 0, g = 0, b = 0;
             for (int s = first; s < first + count; s++) {
+                stop.check();
                 double ndcX = 2 * (x + xs[s]) / width - 1;
                 double ndcY = 1 - 2 * (y + ys[s]) / height;
                 Ray ray = camera.ray(ndcX, ndcY, aspect, cameraRay);

@@ -65,10 +65,13 @@ final class TileBorders {
      * Copies an entry's base sum, minima and maxima into the arrays at {@code at} (3 values each) and
      * returns its count of non-finite samples; or returns -1 when no tile has taken them yet: the
      * caller then owns the entry and must {@link #store} it (or {@link #abandon} it if tracing
-     * fails). While another tile traces an entry it waits for it (a few rays), so no base sample is
-     * ever traced twice and the rays traced, too, are the same at any thread count.
+     * fails or the render stops). While another tile traces an entry it waits for it (a few rays),
+     * so no base sample is ever traced twice and the rays traced, too, are the same at any thread
+     * count; but not once the render is stopping, when the other tile may never store it.
+     *
+     * @throws RenderCancelledException if {@code stop} is raised while the entry is claimed by another tile
      */
-    int loadOrClaim(int entry, double[] sum, double[] min, double[] max, int at) {
+    int loadOrClaim(int entry, double[] sum, double[] min, double[] max, int at, StopSignal stop) {
         while (true) {
             int state = (int) STATE.getAcquire(states, entry);
             if (state == STORED) {
@@ -81,6 +84,7 @@ final class TileBorders {
             if (state == FREE && STATE.compareAndSet(states, entry, FREE, CLAIMED)) {
                 return -1;
             }
+            stop.check();
             Thread.onSpinWait();
         }
     }
@@ -95,7 +99,11 @@ final class TileBorders {
         STATE.setRelease(states, entry, STORED);
     }
 
-    /** Frees a claimed entry whose tracing failed, so that no other tile waits for it forever. */
+    /**
+     * Frees a claimed entry whose tracing failed or was stopped, so that no other tile waits for it
+     * forever: the tile that waits claims it next, and traces it or, if the render is stopping,
+     * gives it up in turn.
+     */
     void abandon(int entry) {
         STATE.setRelease(states, entry, FREE);
     }

