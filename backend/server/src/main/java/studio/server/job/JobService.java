@@ -190,8 +190,8 @@ public final class JobService implements Drainable, AutoCloseable {
 
     /**
      * A listener's connection broke (its client went away): it is dropped, and if it was the job's
-     * last listener, the job is cancelled at its next tile, as nobody is left to see the result.
-     * A client that wants a job to go on without watching it polls its status instead.
+     * last listener, the job is cancelled (it stops within a few milliseconds), as nobody is left to
+     * see the result. A client that wants a job to go on without watching it polls its status instead.
      */
     void disconnected(String id, JobListener listener) {
         RenderJob job = jobs.get(id);

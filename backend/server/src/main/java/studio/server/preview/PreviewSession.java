@@ -17,7 +17,7 @@ import studio.server.scene.InvalidSceneException;
  * One live view: the newest revision a client sent and the work of showing it. Messages only
  * replace the pending revision and wake the view's worker (one task at a time on the shared
  * worker pool), which reads the scene, then renders its passes coarse to fine and sends a frame
- * after each. Before each pass, and within each render (between tiles, as every render is
+ * after each. Before each pass, and within each render (before every sample, as every render is
  * cancelled), the worker checks for a newer revision or a closed session and drops the old one's
  * work. So revisions that arrive faster than frames are skipped but the newest, and frames go out
  * in revision order: only the worker sends.
