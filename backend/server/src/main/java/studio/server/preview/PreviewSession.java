@@ -19,8 +19,10 @@ import studio.server.scene.InvalidSceneException;
  * worker pool), which reads the scene, then renders its passes coarse to fine and sends a frame
  * after each. Before each pass, and within each render (before every sample, as every render is
  * cancelled), the worker checks for a newer revision or a closed session and drops the old one's
- * work. So revisions that arrive faster than frames are skipped but the newest, and frames go out
- * in revision order: only the worker sends.
+ * work, except that the first, coarsest pass of a revision it has read is always shown. So
+ * revisions that arrive faster than frames are skipped but the newest, a drag over a large scene
+ * still shows a frame for every revision read, and frames go out in revision order: only the
+ * worker sends.
  */
 final class PreviewSession {
 
@@ -129,12 +131,17 @@ final class PreviewSession {
             return;
         }
         for (PreviewPass pass : PreviewPass.plan(scene.settings())) {
-            if (superseded()) {
+            // the first, coarsest pass is shown even if a newer revision is waiting: it costs little
+            // next to reading the scene, and in a drag over a scene that takes longer to read than
+            // the drag's steps, every revision would otherwise be dropped unseen until the drag stops
+            boolean first = pass.number() == 1;
+            if (!first && superseded()) {
                 return;
             }
             byte[] frame;
             try {
-                frame = renderer.render(scene, pass, request.revision(), next.receivedNanos(), this::superseded);
+                frame = renderer.render(scene, pass, request.revision(), next.receivedNanos(),
+                        first ? this::closed : this::superseded);
             } catch (RenderCancelledException e) {
                 return;
             } catch (RenderTimeExceededException e) {
