@@ -17,7 +17,8 @@ import java.util.Arrays;
  * <p>Vertex normals are kept only if every face corner names one; a position used with several
  * normals becomes several vertices. Problems (a non-finite or unparsable number, an index of 0 or
  * out of range, a face with fewer than 3 corners, a zero normal) throw {@link ObjFormatException}
- * naming the line.
+ * naming the line. Numbers are decimal, as OBJ writers write them: no hexadecimal floats, no
+ * {@code f} or {@code d} suffixes (which {@link Double#parseDouble} would take).
  *
  * <p>Hand-rolled for speed: the text is read in chunks into one char buffer and each line is
  * tokenised in place, without regular expressions or a String per line or token. Numbers of up
@@ -299,17 +300,21 @@ public final class ObjReader {
             wellFormed = expDigits > 0;
             exponent += expNegative ? -e : e;
         }
-        if (wellFormed && digits > 0 && i == end && significant <= 19) {
-            double v = DecimalToDouble.toDouble(significand, exponent);
-            if (v == v) {
-                return negative ? -v : v;
+        if (wellFormed && digits > 0 && i == end) {
+            if (significant <= 19) {
+                double v = DecimalToDouble.toDouble(significand, exponent);
+                if (v == v) {
+                    return negative ? -v : v;
+                }
             }
+            return Double.parseDouble(token(start, end)); // a decimal number: it parses
         }
-        try {
-            return Double.parseDouble(token(start, end));
-        } catch (NumberFormatException e) {
-            throw new ObjFormatException(line, "'" + token(start, end) + "' is not a number");
+        String token = token(start, end);
+        String unsigned = token.startsWith("-") || token.startsWith("+") ? token.substring(1) : token;
+        if (unsigned.equals("NaN") || unsigned.equals("Infinity")) {
+            return Double.NaN; // the caller says it is not finite
         }
+        throw new ObjFormatException(line, "'" + token + "' is not a number");
     }
 
     /** Moves to the next whitespace-separated token of the line; a '#' ends the line. */

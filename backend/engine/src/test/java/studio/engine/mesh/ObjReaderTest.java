@@ -195,6 +195,18 @@ class ObjReaderTest {
     }
 
     @Test
+    void numbersAreDecimalOnly() {
+        // Double.parseDouble would take all of these
+        for (String number : new String[] {"0x1p3", "0X1.8P1", "1.5f", "2d", "1e3D"}) {
+            ObjFormatException e = assertThrows(ObjFormatException.class,
+                    () -> ObjReader.parse("\nv " + number + " 0 0\n"), number);
+            assertEquals(2, e.line());
+            assertTrue(e.getMessage().contains("'" + number + "' is not a number"), e.getMessage());
+        }
+        assertEquals(1500.0, ObjReader.parse("v 1.5e3 0 0\n").positions()[0]);
+    }
+
+    @Test
     void vertexWithTooFewCoordinatesAndZeroNormalAreReported() {
         ObjFormatException shortVertex = assertThrows(ObjFormatException.class, () -> ObjReader.parse("v 1 2\n"));
         ObjFormatException zeroNormal = assertThrows(ObjFormatException.class, () -> ObjReader.parse("vn 0 0 0\n"));
