@@ -155,15 +155,17 @@ class OpenApiContract {
                 .schema(schema("{\"type\": \"string\", \"pattern\": \"^/api/jobs/[A-Za-z0-9-]+$\"}")));
 
         c.addResponses("InvalidScene", problem("The scene is invalid; `errors` names each bad field", "InvalidSceneProblem"));
-        c.addResponses("BodyTooLarge", problem("The body is over this server's limit (studio.limits.max-body-bytes)",
+        c.addResponses("BodyTooLarge", problem("The body is over this server's limit (studio.limits.max-body-bytes), "
+                + "or reading it and building its meshes needs more than all of the render memory (studio.render-memory)",
                 "Problem"));
         c.addResponses("RenderTimeExceeded", problem("The render ran longer than this server's time budget "
                 + "(studio.limits.max-render-time) and was stopped", "Problem"));
-        c.addResponses("RenderBusy", problem("Every render slot is busy (studio.concurrent-renders), the render "
-                + "memory is taken (studio.render-memory), or the server is shutting down", "Problem")
+        c.addResponses("RenderBusy", problem("Every render slot is busy (studio.concurrent-renders), the memory for "
+                + "reading the body or for the render is taken (studio.render-memory), or the server is shutting down",
+                "Problem")
                 .addHeaderObject("Retry-After", headerRef("RetryAfter")));
-        c.addResponses("MemoryBusy", problem("The memory for reading the body is taken by other requests "
-                + "(studio.render-memory)", "Problem")
+        c.addResponses("MemoryBusy", problem("The memory for reading the body and building its meshes is taken by "
+                + "other requests (studio.render-memory)", "Problem")
                 .addHeaderObject("Retry-After", headerRef("RetryAfter")));
         c.addResponses("QueueFull", problem("The job queue is full (studio.jobs.queue), the render memory is "
                 + "taken by other jobs, or the server is shutting down", "Problem")

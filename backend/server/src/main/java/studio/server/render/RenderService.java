@@ -18,6 +18,7 @@ import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.SceneCompiler;
+import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -64,14 +65,15 @@ public final class RenderService implements AutoCloseable {
      * @throws RenderBusyException if every slot, or the memory the render needs, is taken right now
      */
     public Ticket start(byte[] sceneJson) {
-        return start(sceneJson, ClientProbe.NONE);
+        return start(sceneJson, ClientProbe.NONE, IntakeMemory.NONE);
     }
 
     /**
      * As {@link #start(byte[])}; the render also stops when {@code client} finds its client gone.
+     * The compile draws on the request's {@code intake}, which hands it over to the render's memory.
      */
-    public Ticket start(byte[] sceneJson, ClientProbe client) {
-        CompiledScene compiled = compiler.compile(sceneJson, Map.of(), threads);
+    public Ticket start(byte[] sceneJson, ClientProbe client, IntakeMemory intake) {
+        CompiledScene compiled = compiler.compile(sceneJson, Map.of(), threads, intake);
         if (closed) {
             throw new RenderBusyException("the server is shutting down; try again shortly");
         }
@@ -80,7 +82,7 @@ public final class RenderService implements AutoCloseable {
         }
         MemoryBudget.Reservation memory;
         try {
-            memory = budget.reserve(compiled);
+            memory = budget.reserve(compiled, intake);
         } catch (RuntimeException e) {
             slots.release();
             throw e;

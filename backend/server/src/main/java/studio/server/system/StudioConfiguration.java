@@ -66,9 +66,8 @@ class StudioConfiguration {
     }
 
     @Bean
-    FilterRegistrationBean<IntakeMemoryFilter> intakeMemoryFilter(StudioProperties properties, MemoryBudget memory) {
-        FilterRegistrationBean<IntakeMemoryFilter> registration =
-                new FilterRegistrationBean<>(new IntakeMemoryFilter(memory, properties.limits().maxBodyBytes()));
+    FilterRegistrationBean<IntakeMemoryFilter> intakeMemoryFilter(MemoryBudget memory) {
+        FilterRegistrationBean<IntakeMemoryFilter> registration = new FilterRegistrationBean<>(new IntakeMemoryFilter(memory));
         registration.addUrlPatterns("/api/*");
         registration.setOrder(2);
         return registration;
