@@ -56,6 +56,7 @@ class OpenApiContract {
                 .responses(new ApiResponses()
                         .addApiResponse("200", image("The rendered image, PNG or JPEG as the scene's image.format says"))
                         .addApiResponse("400", ref("InvalidScene"))
+                        .addApiResponse("408", ref("BodyTooSlow"))
                         .addApiResponse("413", ref("BodyTooLarge"))
                         .addApiResponse("422", ref("RenderTimeExceeded"))
                         .addApiResponse("503", ref("RenderBusy")));
@@ -69,6 +70,7 @@ class OpenApiContract {
                                 .link("image", jobLink("getJobImage"))
                                 .link("cancel", jobLink("cancelJob")))
                         .addApiResponse("400", ref("InvalidScene"))
+                        .addApiResponse("408", ref("BodyTooSlow"))
                         .addApiResponse("413", ref("BodyTooLarge"))
                         .addApiResponse("429", ref("QueueFull"))
                         .addApiResponse("503", ref("MemoryBusy")));
@@ -158,6 +160,8 @@ class OpenApiContract {
         c.addResponses("BodyTooLarge", problem("The body is over this server's limit (studio.limits.max-body-bytes), "
                 + "or reading it and building its meshes needs more than all of the render memory (studio.render-memory)",
                 "Problem"));
+        c.addResponses("BodyTooSlow", problem("The body came too slowly: after studio.limits.body-grace it must keep "
+                + "coming at studio.limits.min-body-rate a second on average", "Problem"));
         c.addResponses("RenderTimeExceeded", problem("The render ran longer than this server's time budget "
                 + "(studio.limits.max-render-time) and was stopped", "Problem"));
         c.addResponses("RenderBusy", problem("Every render slot is busy (studio.concurrent-renders), the memory for "

@@ -72,4 +72,13 @@ class StudioConfiguration {
         registration.setOrder(2);
         return registration;
     }
+
+    @Bean
+    FilterRegistrationBean<BodyDeadlineFilter> bodyDeadlineFilter(StudioProperties properties) {
+        FilterRegistrationBean<BodyDeadlineFilter> registration = new FilterRegistrationBean<>(
+                new BodyDeadlineFilter(properties.limits().bodyGrace(), properties.limits().minBodyRate()));
+        registration.addUrlPatterns("/api/*");
+        registration.setOrder(3);
+        return registration;
+    }
 }

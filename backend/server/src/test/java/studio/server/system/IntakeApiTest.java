@@ -3,7 +3,10 @@ package studio.server.system;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
 import java.net.Socket;
+import java.net.SocketTimeoutException;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
@@ -24,13 +27,14 @@ import studio.server.render.RenderService;
 import tools.jackson.databind.json.JsonMapper;
 
 /**
- * The memory a request body may take, over real sockets against a server with a 64 MiB budget:
- * bodies reserve what arrives, not what they declare; a scene whose meshes need more memory to
- * build than the budget gets 413 instead of exhausting the heap; the compile's memory passes to
- * the render.
+ * The memory and time a request body may take, over real sockets against a server with a 64 MiB
+ * budget: bodies reserve what arrives, not what they declare; a trickling body gets 408; a scene
+ * whose meshes need more memory to build than the budget gets 413 instead of exhausting the heap;
+ * the compile's memory passes to the render.
  */
 @SpringBootTest(webEnvironment = SpringBootTest.WebEnvironment.RANDOM_PORT, properties = {
-        "studio.render-memory=64MB", "studio.render-threads=2"})
+        "studio.render-memory=64MB", "studio.render-threads=2", "studio.limits.body-grace=1s",
+        "studio.limits.min-body-rate=64KB"})
 class IntakeApiTest {
 
     private static final JsonMapper JSON = JsonMapper.builder().build();
@@ -79,6 +83,33 @@ class IntakeApiTest {
         assertThat(memory.reserved()).isLessThan(1 << 20);
         assertThat(post("/api/render", SMALL).statusCode()).isEqualTo(200);
         assertThat(post("/api/jobs", SMALL).statusCode()).isEqualTo(202);
+    }
+
+    @Test
+    void aTricklingBodyGets408SoonAfterItsGrace() throws Exception {
+        Socket socket = openBody("/api/render", 1000);
+        OutputStream out = socket.getOutputStream();
+        InputStream in = socket.getInputStream();
+        socket.setSoTimeout(300);
+        long start = System.nanoTime();
+        byte[] answer = new byte[4096];
+        int n = -1;
+        for (int sent = 0; n < 0 && sent < 100; sent++) { // one byte every 300 ms: 30 s at most
+            out.write(sent == 0 ? '{' : ' ');
+            out.flush();
+            try {
+                n = in.read(answer);
+            } catch (SocketTimeoutException notYet) {
+                // no answer yet: send another byte
+            }
+        }
+        double seconds = (System.nanoTime() - start) / 1e9;
+
+        assertThat(n).as("an answer before 30 s").isPositive();
+        String response = new String(answer, 0, n, StandardCharsets.UTF_8);
+        assertThat(response).startsWith("HTTP/1.1 408").contains("application/problem+json")
+                .contains("studio.limits.min-body-rate");
+        assertThat(seconds).as("seconds until the answer").isLessThan(5);
     }
 
     @Test
