@@ -1,5 +1,7 @@
 package studio.engine.accel;
 
+import studio.engine.memory.MemoryGate;
+
 /**
  * A bounding volume hierarchy over primitives given only by their boxes, flattened into arrays in
  * depth-first order (pbrt's LinearBVHNode; sunflow's flat BIH). Node {@code i} has its box at
@@ -46,7 +48,12 @@ public final class Bvh {
      * array is read, not kept or changed.
      */
     public static Bvh build(double[] primitiveBounds, int count) {
-        return new BvhBuilder(primitiveBounds, count).build();
+        return build(primitiveBounds, count, MemoryGate.UNLIMITED);
+    }
+
+    /** As above, asking {@code memory} before each array the build allocates or grows. */
+    public static Bvh build(double[] primitiveBounds, int count, MemoryGate memory) {
+        return new BvhBuilder(primitiveBounds, count, memory).build();
     }
 
     /** Node boxes, six doubles per node; read-only. */

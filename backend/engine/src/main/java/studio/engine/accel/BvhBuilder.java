@@ -2,6 +2,8 @@ package studio.engine.accel;
 
 import java.util.Arrays;
 
+import studio.engine.memory.MemoryGate;
+
 /**
  * Builds a {@link Bvh} top-down with the binned surface area heuristic (Wald 2007; pbrt's
  * BuildRecursive): the centroids of a node's primitives are sorted into up to {@value #BINS} bins
@@ -14,6 +16,10 @@ import java.util.Arrays;
  * copied once into slot order and partitioned in place, scratch bins reused for every node, and
  * each child's box and centroid bounds worked out while its parent is split (from the bins and
  * during the partition), so no node scans its primitives just to bound them.
+ *
+ * <p>Every array it allocates or grows is first asked of a {@link MemoryGate}: for n primitives,
+ * the copied boxes (48n bytes), the slots (4n) and the nodes (60 bytes each, at most 2n - 1; the
+ * arrays start at n/2 nodes and double).
  */
 final class BvhBuilder {
 
@@ -32,6 +38,7 @@ final class BvhBuilder {
     /** Primitive boxes in slot order, six doubles per slot; partitioned together with {@link #ids}. */
     private final double[] box;
     private final int[] ids;
+    private final MemoryGate memory;
     private double[] nodeBounds;
     private int[] nodeLinks;
     private int nodeCount;
@@ -45,10 +52,14 @@ final class BvhBuilder {
     private final double[] rightArea = new double[BINS];
     private final int[] rightCount = new int[BINS];
 
-    BvhBuilder(double[] primitiveBounds, int count) {
+    BvhBuilder(double[] primitiveBounds, int count, MemoryGate memory) {
         if (count <= 0 || primitiveBounds.length < 6L * count) {
             throw new IllegalArgumentException("a BVH needs at least one primitive box; got " + count);
         }
+        int capacity = Math.max(1, count / 2);
+        memory.reserve(MemoryGate.doubles(6L * count) + MemoryGate.ints(count) + MemoryGate.doubles(6L * capacity)
+                + MemoryGate.ints(3L * capacity));
+        this.memory = memory;
         box = Arrays.copyOf(primitiveBounds, 6 * count);
         for (double v : box) {
             if (!Double.isFinite(v)) {
@@ -59,7 +70,6 @@ final class BvhBuilder {
         for (int i = 0; i < count; i++) {
             ids[i] = i;
         }
-        int capacity = Math.max(1, count / 2);
         nodeBounds = new double[6 * capacity];
         nodeLinks = new int[3 * capacity];
     }
@@ -68,6 +78,7 @@ final class BvhBuilder {
         long start = System.nanoTime();
         scanBounds(0, ids.length, slot(1, 0));
         buildNode(0, ids.length, 1, slot(1, 0));
+        memory.reserve(MemoryGate.doubles(6L * nodeCount) + MemoryGate.ints(3L * nodeCount));
         return new Bvh(Arrays.copyOf(nodeBounds, 6 * nodeCount), Arrays.copyOf(nodeLinks, 3 * nodeCount), ids,
                 maxDepth, System.nanoTime() - start);
     }
@@ -84,6 +95,7 @@ final class BvhBuilder {
     private int buildNode(int start, int end, int depth, int info) {
         int node = nodeCount++;
         if (nodeCount * 3 > nodeLinks.length) {
+            memory.reserve(MemoryGate.ints(nodeLinks.length * 2L) + MemoryGate.doubles(nodeBounds.length * 2L));
             nodeLinks = Arrays.copyOf(nodeLinks, nodeLinks.length * 2);
             nodeBounds = Arrays.copyOf(nodeBounds, nodeBounds.length * 2);
         }

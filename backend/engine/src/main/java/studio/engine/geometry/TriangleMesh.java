@@ -8,6 +8,7 @@ import studio.engine.accel.Slab;
 import studio.engine.math.Fp;
 import studio.engine.math.Rotation;
 import studio.engine.math.Vec3;
+import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.MeshData;
 
 /**
@@ -30,6 +31,9 @@ import studio.engine.mesh.MeshData;
  * {@link Rays#spawn} offsets it like any other hit. (It offsets along the interpolated normal; where
  * vertex normals bend far from the faces a reflected ray can dip under the surface and darken it,
  * the usual shading-normal terminator.) Zero-area triangles are dropped when the mesh is made.
+ *
+ * <p>Making a mesh takes memory in proportion to it (its world-space copies, the triangles' boxes
+ * and the BVH build, about 280 bytes a triangle in all); it is asked of a {@link MemoryGate} first.
  */
 public final class TriangleMesh implements Shape {
 
@@ -51,6 +55,11 @@ public final class TriangleMesh implements Shape {
     private final int bvhDepth;
 
     public TriangleMesh(MeshData mesh, Vec3 position, double scale, Vec3 rotationDegrees) {
+        this(mesh, position, scale, rotationDegrees, MemoryGate.UNLIMITED);
+    }
+
+    /** As above, asking {@code memory} before every allocation that grows with the mesh. */
+    public TriangleMesh(MeshData mesh, Vec3 position, double scale, Vec3 rotationDegrees, MemoryGate memory) {
         if (mesh == null) {
             throw new IllegalArgumentException("a triangle mesh needs mesh data");
         }
@@ -66,6 +75,12 @@ public final class TriangleMesh implements Shape {
         this.position = position;
         this.scale = scale;
         this.rotationDegrees = rotationDegrees;
+        // At most every given triangle is kept: world positions and normals, the kept indices (and
+        // their trimmed copy), the boxes and the indices in BVH order; the BVH asks for its own.
+        long given = mesh.indices().length;
+        memory.reserve(MemoryGate.doubles(mesh.positions().length)
+                + (mesh.normals() == null ? 0 : MemoryGate.doubles(mesh.normals().length))
+                + 3 * MemoryGate.ints(given) + MemoryGate.doubles(2 * given));
         Rotation r = Rotation.fromEulerDegrees(rotationDegrees);
         this.positions = worldPositions(mesh.positions(), r, position, scale);
         this.normals = mesh.normals() == null ? null : worldNormals(mesh.normals(), r);
@@ -79,7 +94,7 @@ public final class TriangleMesh implements Shape {
         for (int t = 0; t < count; t++) {
             triangleBounds(valid, t, boxes);
         }
-        Bvh bvh = Bvh.build(boxes, count);
+        Bvh bvh = Bvh.build(boxes, count, memory);
         int[] order = bvh.primitives();
         int[] sorted = new int[valid.length];
         for (int slot = 0; slot < count; slot++) {

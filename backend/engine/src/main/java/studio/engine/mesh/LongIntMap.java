@@ -2,18 +2,28 @@ package studio.engine.mesh;
 
 import java.util.Arrays;
 
+import studio.engine.memory.MemoryGate;
+
 /**
  * A map from long keys to non-negative int values with open addressing and no boxing, for
  * de-duplicating vertices by a pair of indices (OBJ position/normal pairs, icosphere edges).
  */
 final class LongIntMap {
 
+    private final MemoryGate memory;
     private long[] keys;
     private int[] values;
     private int size;
 
     LongIntMap(int expected) {
+        this(expected, MemoryGate.UNLIMITED);
+    }
+
+    /** @param memory asked before the table is allocated and before it grows */
+    LongIntMap(int expected, MemoryGate memory) {
+        this.memory = memory;
         int capacity = Integer.highestOneBit(Math.max(16, expected * 2 - 1)) << 1;
+        memory.reserve(MemoryGate.longs(capacity) + MemoryGate.ints(capacity));
         keys = new long[capacity];
         values = new int[capacity];
         Arrays.fill(values, -1);
@@ -50,6 +60,7 @@ final class LongIntMap {
     private void grow() {
         long[] oldKeys = keys;
         int[] oldValues = values;
+        memory.reserve(MemoryGate.longs(oldKeys.length * 2L) + MemoryGate.ints(oldKeys.length * 2L));
         keys = new long[oldKeys.length * 2];
         values = new int[oldValues.length * 2];
         Arrays.fill(values, -1);

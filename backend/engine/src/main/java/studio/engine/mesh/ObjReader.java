@@ -6,6 +6,8 @@ import java.io.StringReader;
 import java.io.UncheckedIOException;
 import java.util.Arrays;
 
+import studio.engine.memory.MemoryGate;
+
 /**
  * Reads Wavefront OBJ text into an object-space {@link MeshData}. Understood: {@code v x y z [w]}
  * (w and any further values ignored), {@code vn x y z}, {@code f} with corners {@code i},
@@ -17,7 +19,13 @@ import java.util.Arrays;
  * <p>Vertex normals are kept only if every face corner names one; a position used with several
  * normals becomes several vertices. Problems (a non-finite or unparsable number, an index of 0 or
  * out of range, a face with fewer than 3 corners, a zero normal) throw {@link ObjFormatException}
- * naming the line.
+ * naming the line. Numbers are decimal, as OBJ writers write them: no hexadecimal floats, no
+ * {@code f} or {@code d} suffixes (which {@link Double#parseDouble} would take).
+ *
+ * <p>A reader may be given a limit on triangles and a {@link MemoryGate}: it stops with
+ * {@link TooManyTrianglesException} as soon as a face passes the limit, and asks the gate before
+ * it allocates or grows any array, so neither a long text nor one polygon of millions of corners
+ * can take more memory than it was granted.
  *
  * <p>Hand-rolled for speed: the text is read in chunks into one char buffer and each line is
  * tokenised in place, without regular expressions or a String per line or token. Numbers of up
@@ -28,41 +36,78 @@ import java.util.Arrays;
 public final class ObjReader {
 
     private final Reader in;
+    private final int maxTriangles;
+    private final MemoryGate memory;
     /** Buffered text; lines are parsed in place, so only the current chunk is held. */
-    private char[] text = new char[1 << 16];
+    private char[] text;
     private int length;
     private boolean endOfInput;
     private int pos, lineEnd, line;
     private int tokenStart, tokenEnd;
 
-    private double[] positions = new double[3 * 1024];
+    private double[] positions;
     private int positionCount;
-    private double[] normals = new double[3 * 1024];
+    private double[] normals;
     private int normalCount;
     /** Per triangle corner: position index and normal index (-1: none). */
-    private int[] cornerPositions = new int[3 * 1024];
-    private int[] cornerNormals = new int[3 * 1024];
+    private int[] cornerPositions;
+    private int[] cornerNormals;
     private int cornerCount;
     private boolean everyCornerHasNormal = true;
     /** The current face's corners. */
-    private int[] facePositions = new int[16];
-    private int[] faceNormals = new int[16];
+    private int[] facePositions;
+    private int[] faceNormals;
 
-    private ObjReader(Reader in) {
+    /**
+     * @param length the text's length if known, else -1: a short text gets small buffers (a scene
+     *               may hold thousands of small meshes), a long or unknown one 64 Ki chars and room
+     *               for 1,024 vertices and triangles, which then double as needed
+     */
+    private ObjReader(Reader in, long length, int maxTriangles, MemoryGate memory) {
+        if (maxTriangles < 0) {
+            throw new IllegalArgumentException("the triangle limit must not be negative: " + maxTriangles);
+        }
         this.in = in;
+        this.maxTriangles = maxTriangles;
+        this.memory = memory;
+        long known = length < 0 ? Long.MAX_VALUE : length;
+        int chars = 2 * (int) Math.min(1 << 15, known / 2 + 1); // the text and a char; at least 2, so a read has room
+        int vertices = (int) Math.min(1024, known / 8 + 1); // "v 0 0 0" and its newline
+        int triangles = (int) Math.min(1024, known / 2 + 1); // a corner and its space
+        memory.reserve(MemoryGate.chars(chars) + 2 * MemoryGate.doubles(3 * vertices)
+                + 2 * MemoryGate.ints(3 * triangles) + 2 * MemoryGate.ints(16));
+        text = new char[chars];
+        positions = new double[3 * vertices];
+        normals = new double[3 * vertices];
+        cornerPositions = new int[3 * triangles];
+        cornerNormals = new int[3 * triangles];
+        facePositions = new int[16];
+        faceNormals = new int[16];
     }
 
+    /** Reads a whole text, without limits. */
     public static MeshData parse(String text) {
+        return parse(text, Integer.MAX_VALUE, MemoryGate.UNLIMITED);
+    }
+
+    /**
+     * Reads a whole text, with at most {@code maxTriangles} triangles, asking {@code memory} before
+     * every allocation.
+     *
+     * @throws TooManyTrianglesException as soon as a face passes the limit
+     * @throws ObjFormatException        if the text is not a usable mesh
+     */
+    public static MeshData parse(String text, int maxTriangles, MemoryGate memory) {
         try {
-            return new ObjReader(new StringReader(text)).read();
+            return new ObjReader(new StringReader(text), text.length(), maxTriangles, memory).read();
         } catch (IOException e) {
             throw new UncheckedIOException(e); // a StringReader does not throw
         }
     }
 
-    /** Reads the whole of {@code in} (not closed here); a buffered reader is not needed. */
+    /** Reads the whole of {@code in} (not closed here), without limits; a buffered reader is not needed. */
     public static MeshData read(Reader in) throws IOException {
-        return new ObjReader(in).read();
+        return new ObjReader(in, -1, Integer.MAX_VALUE, MemoryGate.UNLIMITED).read();
     }
 
     private MeshData read() throws IOException {
@@ -88,6 +133,7 @@ public final class ObjReader {
             // The line runs past the buffered text: keep its start, read more.
             int kept = length - lineStart;
             if (kept == text.length) {
+                memory.reserve(MemoryGate.chars(text.length * 2L));
                 text = Arrays.copyOf(text, text.length * 2);
             } else if (lineStart > 0) {
                 System.arraycopy(text, lineStart, text, 0, kept);
@@ -123,6 +169,7 @@ public final class ObjReader {
 
     private void vertex() {
         if (3 * positionCount + 3 > positions.length) {
+            memory.reserve(MemoryGate.doubles(positions.length * 2L));
             positions = Arrays.copyOf(positions, positions.length * 2);
         }
         for (int k = 0; k < 3; k++) {
@@ -133,6 +180,7 @@ public final class ObjReader {
 
     private void normal() {
         if (3 * normalCount + 3 > normals.length) {
+            memory.reserve(MemoryGate.doubles(normals.length * 2L));
             normals = Arrays.copyOf(normals, normals.length * 2);
         }
         double x = coordinate("normal"), y = coordinate("normal"), z = coordinate("normal");
@@ -158,8 +206,13 @@ public final class ObjReader {
 
     private void face() {
         int corners = 0;
+        int room = maxTriangles - cornerCount / 3; // triangles still allowed
         while (nextToken()) {
+            if (corners - 1 > room) { // this corner would make the face's (corners - 1)th triangle
+                throw new TooManyTrianglesException(maxTriangles, line);
+            }
             if (corners == facePositions.length) {
+                memory.reserve(2 * MemoryGate.ints(corners * 2L));
                 facePositions = Arrays.copyOf(facePositions, corners * 2);
                 faceNormals = Arrays.copyOf(faceNormals, corners * 2);
             }
@@ -172,6 +225,7 @@ public final class ObjReader {
         int triangles = corners - 2;
         if (cornerCount + 3 * triangles > cornerPositions.length) {
             int capacity = Math.max(cornerPositions.length * 2, cornerCount + 3 * triangles);
+            memory.reserve(2 * MemoryGate.ints(capacity));
             cornerPositions = Arrays.copyOf(cornerPositions, capacity);
             cornerNormals = Arrays.copyOf(cornerNormals, capacity);
         }
@@ -299,17 +353,21 @@ public final class ObjReader {
             wellFormed = expDigits > 0;
             exponent += expNegative ? -e : e;
         }
-        if (wellFormed && digits > 0 && i == end && significant <= 19) {
-            double v = DecimalToDouble.toDouble(significand, exponent);
-            if (v == v) {
-                return negative ? -v : v;
+        if (wellFormed && digits > 0 && i == end) {
+            if (significant <= 19) {
+                double v = DecimalToDouble.toDouble(significand, exponent);
+                if (v == v) {
+                    return negative ? -v : v;
+                }
             }
+            return Double.parseDouble(token(start, end)); // a decimal number: it parses
         }
-        try {
-            return Double.parseDouble(token(start, end));
-        } catch (NumberFormatException e) {
-            throw new ObjFormatException(line, "'" + token(start, end) + "' is not a number");
+        String token = token(start, end);
+        String unsigned = token.startsWith("-") || token.startsWith("+") ? token.substring(1) : token;
+        if (unsigned.equals("NaN") || unsigned.equals("Infinity")) {
+            return Double.NaN; // the caller says it is not finite
         }
+        throw new ObjFormatException(line, "'" + token + "' is not a number");
     }
 
     /** Moves to the next whitespace-separated token of the line; a '#' ends the line. */
@@ -338,17 +396,21 @@ public final class ObjReader {
     }
 
     private MeshData result() {
+        long copies = MemoryGate.doubles(3L * positionCount) + MemoryGate.ints(cornerCount);
         if (!everyCornerHasNormal || cornerCount == 0) {
+            memory.reserve(copies);
             return new MeshData(Arrays.copyOf(positions, 3 * positionCount),
                     Arrays.copyOf(cornerPositions, cornerCount), null);
         }
         if (normalCount == positionCount && Arrays.equals(cornerPositions, 0, cornerCount, cornerNormals, 0, cornerCount)) {
             // f v//v ...: normal i belongs to vertex i, as OBJ writers usually arrange it
+            memory.reserve(copies + MemoryGate.doubles(3L * normalCount));
             return new MeshData(Arrays.copyOf(positions, 3 * positionCount), Arrays.copyOf(cornerPositions, cornerCount),
                     Arrays.copyOf(normals, 3 * normalCount));
         }
         // Otherwise vertices are (position, normal) pairs, numbered in order of first use.
-        LongIntMap pairs = new LongIntMap(positionCount);
+        LongIntMap pairs = new LongIntMap(positionCount, memory);
+        memory.reserve(2 * MemoryGate.doubles(3L * positionCount) + MemoryGate.ints(cornerCount));
         double[] outPositions = new double[3 * positionCount];
         double[] outNormals = new double[3 * positionCount];
         int[] indices = new int[cornerCount];
@@ -361,6 +423,7 @@ public final class ObjReader {
                 v = vertices++;
                 pairs.putNew(key, v);
                 if (3 * v + 3 > outPositions.length) {
+                    memory.reserve(2 * MemoryGate.doubles(outPositions.length * 2L));
                     outPositions = Arrays.copyOf(outPositions, outPositions.length * 2);
                     outNormals = Arrays.copyOf(outNormals, outNormals.length * 2);
                 }
@@ -369,6 +432,7 @@ public final class ObjReader {
             }
             indices[c] = v;
         }
+        memory.reserve(2 * MemoryGate.doubles(3L * vertices));
         return new MeshData(Arrays.copyOf(outPositions, 3 * vertices), indices, Arrays.copyOf(outNormals, 3 * vertices));
     }
 }

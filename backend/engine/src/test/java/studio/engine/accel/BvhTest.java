@@ -8,6 +8,8 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
+import studio.engine.memory.CountingGate;
+
 /** The flattened tree's invariants on ordinary and degenerate inputs. */
 class BvhTest {
 
@@ -29,6 +31,31 @@ class BvhTest {
         assertValid(bvh, boxes, n);
         assertTrue(bvh.depth() < 40, "depth " + bvh.depth());
         assertTrue(bvh.buildNanos() > 0);
+    }
+
+    @Test
+    void buildAsksTheGateForWhatItAllocates() {
+        Random random = new Random(2);
+        Bvh.build(new double[6], 1); // loads and initialises what the first build needs
+        for (int n : new int[] {1, 7, 200_000}) {
+            double[] boxes = new double[6 * n];
+            for (int i = 0; i < n; i++) {
+                for (int a = 0; a < 3; a++) {
+                    double c = random.nextDouble() * 100, h = random.nextDouble();
+                    boxes[6 * i + a] = c - h;
+                    boxes[6 * i + a + 3] = c + h;
+                }
+            }
+            CountingGate gate = new CountingGate();
+            long allocated = CountingGate.allocatedBy(() -> Bvh.build(boxes, n, gate));
+
+            assertTrue(allocated <= gate.granted() + CountingGate.SLACK, n + ": " + allocated + " allocated, "
+                    + gate.granted() + " granted");
+            assertTrue(n < 1000 || gate.granted() < 1.2 * allocated, n + ": granted " + gate.granted());
+            CountingGate stingy = new CountingGate(gate.granted() / 2);
+            assertTrue(CountingGate.allocatedBy(() -> Bvh.build(boxes, n, stingy))
+                    <= gate.granted() / 2 + CountingGate.SLACK, "a refusal stops the build");
+        }
     }
 
     @Test

@@ -17,6 +17,7 @@ import org.junit.jupiter.api.Test;
 import studio.engine.camera.Camera;
 import studio.engine.math.Rotation;
 import studio.engine.math.Vec3;
+import studio.engine.memory.CountingGate;
 import studio.engine.mesh.MeshData;
 import studio.engine.mesh.MeshShapes;
 
@@ -273,5 +274,22 @@ class TriangleMeshTest {
         assertEquals(mesh.vertexCount() * 3, mesh.positions().length);
         assertEquals(mesh.vertexCount() * 3, mesh.normals().length);
         assertTrue(mesh.bvhDepth() > 1 && mesh.bvhDepth() < 20);
+    }
+
+    @Test
+    void makingAMeshAsksTheGateForWhatItAllocates() {
+        MeshData knot = MeshShapes.torusKnot(2, 3, 500, 200); // 200,000 triangles
+        MeshData flat = new MeshData(knot.positions(), knot.indices(), null);
+        CountingGate gate = new CountingGate();
+
+        long allocated = CountingGate.allocatedBy(
+                () -> new TriangleMesh(flat, new Vec3(1, 2, 3), 2, new Vec3(10, 20, 30), gate));
+
+        assertTrue(allocated <= gate.granted() + CountingGate.SLACK, allocated + " allocated, " + gate.granted()
+                + " granted");
+        assertTrue(gate.granted() < 1.2 * allocated, "granted " + gate.granted() + " for " + allocated);
+        CountingGate stingy = new CountingGate(gate.granted() / 2);
+        assertTrue(CountingGate.allocatedBy(() -> new TriangleMesh(flat, Vec3.ZERO, 1, Vec3.ZERO, stingy))
+                <= gate.granted() / 2 + CountingGate.SLACK, "a refusal stops the build");
     }
 }

@@ -12,6 +12,8 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
+import studio.engine.memory.CountingGate;
+
 /** Wavefront OBJ: the statement and index forms read, and the problems reported with their line. */
 class ObjReaderTest {
 
@@ -192,6 +194,72 @@ class ObjReaderTest {
         assertEquals(1, huge.line());
         assertEquals(2, garbage.line());
         assertTrue(garbage.getMessage().contains("'x3' is not a number"), garbage.getMessage());
+    }
+
+    @Test
+    void numbersAreDecimalOnly() {
+        // Double.parseDouble would take all of these
+        for (String number : new String[] {"0x1p3", "0X1.8P1", "1.5f", "2d", "1e3D"}) {
+            ObjFormatException e = assertThrows(ObjFormatException.class,
+                    () -> ObjReader.parse("\nv " + number + " 0 0\n"), number);
+            assertEquals(2, e.line());
+            assertTrue(e.getMessage().contains("'" + number + "' is not a number"), e.getMessage());
+        }
+        assertEquals(1500.0, ObjReader.parse("v 1.5e3 0 0\n").positions()[0]);
+    }
+
+    @Test
+    void stopsAtTheTriangleLimitWithoutReadingOn() {
+        // One polygon of a million corners (999,998 triangles in its fan), and a bad line after it
+        String text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf" + " 1".repeat(1_000_000) + "\nf 1 2 x\n";
+        CountingGate gate = new CountingGate();
+
+        TooManyTrianglesException e = assertThrows(TooManyTrianglesException.class,
+                () -> ObjReader.parse(text, 1000, gate));
+
+        assertEquals(4, e.line());
+        assertEquals(1000, e.limit());
+        // the line is buffered (4 MiB of chars, with its growth 8 MiB); reading the whole face would take 70 MiB more
+        assertTrue(gate.granted() < 10 << 20, "granted " + gate.granted());
+        assertEquals(1, ObjReader.parse(SQUARE + "f 1 2 3\n", 1, gate).triangleCount());
+        assertThrows(TooManyTrianglesException.class, () -> ObjReader.parse(SQUARE + "f 1 2 3 4\n", 1, gate));
+        assertThrows(TooManyTrianglesException.class, () -> ObjReader.parse(SQUARE + "f 1 2 3\nf 1 3 4\n", 1, gate));
+    }
+
+    @Test
+    void asksTheGateBeforeAllocatingWhatItReads() {
+        MeshData knot = MeshShapes.torusKnot(2, 3, 400, 100);
+        StringBuilder shared = new StringBuilder(ObjWriter.toString(knot));
+        // the same, but each corner's normal is another vertex's: vertices become (position, normal) pairs
+        StringBuilder pairs = new StringBuilder(ObjWriter.toString(new MeshData(knot.positions(), new int[0],
+                knot.normals())));
+        int vertices = knot.vertexCount();
+        for (int i = 0; i < knot.indices().length; i += 3) {
+            pairs.append('f');
+            for (int k = 0; k < 3; k++) {
+                int v = knot.indices()[i + k];
+                pairs.append(' ').append(v + 1).append("//").append((v + 1) % vertices + 1);
+            }
+            pairs.append('\n');
+        }
+        for (String text : new String[] {shared.toString(), pairs.toString(), "v 0 0 0\n".repeat(100_000)}) {
+            CountingGate gate = new CountingGate();
+            long allocated = CountingGate.allocatedBy(() -> ObjReader.parse(text, Integer.MAX_VALUE, gate));
+
+            assertTrue(allocated <= gate.granted() + CountingGate.SLACK, allocated + " allocated, " + gate.granted()
+                    + " granted");
+            assertTrue(gate.granted() < 2 * allocated, "granted " + gate.granted() + " for " + allocated);
+        }
+    }
+
+    @Test
+    void aGateThatRefusesStopsTheReaderBeforeItAllocatesMore() {
+        String text = ObjWriter.toString(MeshShapes.torusKnot(2, 3, 400, 100));
+        CountingGate gate = new CountingGate(1 << 20);
+
+        long allocated = CountingGate.allocatedBy(() -> ObjReader.parse(text, Integer.MAX_VALUE, gate));
+
+        assertTrue(allocated <= (1 << 20) + CountingGate.SLACK, "allocated " + allocated);
     }
 
     @Test

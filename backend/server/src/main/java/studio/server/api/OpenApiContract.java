@@ -57,6 +57,7 @@ class OpenApiContract {
                 .responses(new ApiResponses()
                         .addApiResponse("200", image("The rendered image, PNG or JPEG as the scene's image.format says"))
                         .addApiResponse("400", ref("InvalidScene"))
+                        .addApiResponse("408", ref("BodyTooSlow"))
                         .addApiResponse("413", ref("BodyTooLarge"))
                         .addApiResponse("415", ref("NotJson"))
                         .addApiResponse("422", ref("RenderTimeExceeded"))
@@ -71,6 +72,7 @@ class OpenApiContract {
                                 .link("image", jobLink("getJobImage"))
                                 .link("cancel", jobLink("cancelJob")))
                         .addApiResponse("400", ref("InvalidScene"))
+                        .addApiResponse("408", ref("BodyTooSlow"))
                         .addApiResponse("413", ref("BodyTooLarge"))
                         .addApiResponse("415", ref("NotJson"))
                         .addApiResponse("429", ref("QueueFull"))
@@ -158,21 +160,24 @@ class OpenApiContract {
                 .schema(schema("{\"type\": \"string\", \"pattern\": \"^/api/jobs/[A-Za-z0-9-]+$\"}")));
 
         c.addResponses("InvalidScene", problem("The scene is invalid; `errors` names each bad field", "InvalidSceneProblem"));
-        c.addResponses("BodyTooLarge", problem("The body is over this server's limit (studio.limits.max-body-bytes)",
+        c.addResponses("BodyTooLarge", problem("The body is over this server's limit (studio.limits.max-body-bytes), "
+                + "or reading it and building its meshes needs more than all of the render memory (studio.render-memory)",
                 "Problem"));
         c.addResponses("NotJson", problem("The body is not sent as JSON: its Content-Type is missing or another "
                 + "type (text/plain, form data, XML); nothing was read or rendered", "Problem")
                 .addHeaderObject("Accept", new Header().required(true).description("The media types a scene is taken as: "
                         + SceneMediaTypes.JSON + ", " + SceneMediaTypes.JSON_SUFFIXED)
                         .schema(schema("{\"type\": \"string\"}"))));
+        c.addResponses("BodyTooSlow", problem("The body came too slowly: after studio.limits.body-grace it must keep "
+                + "coming at studio.limits.min-body-rate a second on average", "Problem"));
         c.addResponses("RenderTimeExceeded", problem("The render ran longer than this server's time budget "
                 + "(studio.limits.max-render-time) and was stopped", "Problem"));
-        c.addResponses("RenderBusy", problem("Every render slot is busy (studio.concurrent-renders), the render "
-                + "memory is taken (studio.render-memory), the server is shutting down, or it gave up waiting for "
-                + "the render (its time budget and a minute to encode the image)", "Problem")
+        c.addResponses("RenderBusy", problem("Every render slot is busy (studio.concurrent-renders), the memory for "
+                + "reading the body or for the render is taken (studio.render-memory), the server is shutting down, "
+                + "or it gave up waiting for the render (its time budget and a minute to encode the image)", "Problem")
                 .addHeaderObject("Retry-After", headerRef("RetryAfter")));
-        c.addResponses("MemoryBusy", problem("The memory for reading the body is taken by other requests "
-                + "(studio.render-memory)", "Problem")
+        c.addResponses("MemoryBusy", problem("The memory for reading the body and building its meshes is taken by "
+                + "other requests (studio.render-memory)", "Problem")
                 .addHeaderObject("Retry-After", headerRef("RetryAfter")));
         c.addResponses("QueueFull", problem("The job queue is full (studio.jobs.queue), the render memory is "
                 + "taken by other jobs, or the server is shutting down", "Problem")

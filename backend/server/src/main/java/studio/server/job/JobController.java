@@ -12,10 +12,13 @@ import org.springframework.web.bind.annotation.RequestBody;
 import org.springframework.web.bind.annotation.RestController;
 import org.springframework.web.servlet.mvc.method.annotation.SseEmitter;
 
+import jakarta.servlet.http.HttpServletRequest;
+
 import studio.server.render.RenderedImage;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.SceneCompiler;
 import studio.server.scene.SceneMediaTypes;
+import studio.server.system.IntakeMemory;
 
 /**
  * Render jobs: start, watch (status and an event stream of tiles), fetch the image, cancel. A job's
@@ -33,10 +36,11 @@ class JobController {
     }
 
     @PostMapping(path = "/api/jobs", consumes = {SceneMediaTypes.JSON, SceneMediaTypes.JSON_SUFFIXED})
-    ResponseEntity<JobStatus> start(@RequestBody(required = false) byte[] scene) {
+    ResponseEntity<JobStatus> start(@RequestBody(required = false) byte[] scene, HttpServletRequest request) {
         jobs.checkRoom();
-        CompiledScene compiled = compiler.compile(scene != null ? scene : new byte[0]);
-        JobStatus status = jobs.submit(compiled);
+        IntakeMemory intake = IntakeMemory.of(request);
+        CompiledScene compiled = compiler.compile(scene != null ? scene : new byte[0], intake);
+        JobStatus status = jobs.submit(compiled, intake);
         return ResponseEntity.accepted().location(URI.create("/api/jobs/" + status.id())).body(status);
     }
 

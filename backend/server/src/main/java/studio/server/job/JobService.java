@@ -19,6 +19,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import studio.server.render.RenderBudget;
 import studio.server.scene.CompiledScene;
 import studio.server.system.Drainable;
+import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -99,11 +100,16 @@ public final class JobService implements Drainable, AutoCloseable {
      * @throws studio.server.scene.InvalidSceneException when the render could never fit the memory budget
      */
     public JobStatus submit(CompiledScene scene) {
+        return submit(scene, IntakeMemory.NONE);
+    }
+
+    /** As {@link #submit(CompiledScene)}; the request's {@code intake} hands its memory over to the job's. */
+    public JobStatus submit(CompiledScene scene, IntakeMemory intake) {
         checkRoom();
         CompiledScene withThreads = new CompiledScene(scene.scene(),
                 scene.settings().withThreads(settings.renderThreads()), scene.format(), scene.quality(),
                 scene.fileStem());
-        MemoryBudget.Reservation memory = budget.reserve(withThreads);
+        MemoryBudget.Reservation memory = budget.reserve(withThreads, intake);
         if (memory == null) {
             throw new JobQueueFullException(retryAfterSeconds(), "the server's render memory is taken by other jobs");
         }

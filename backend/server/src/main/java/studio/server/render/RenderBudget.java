@@ -9,6 +9,7 @@ import studio.engine.render.RenderResult;
 import studio.engine.render.Renderer;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
+import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -49,6 +50,18 @@ public final class RenderBudget {
      * @throws InvalidSceneException if the render could never fit into the budget
      */
     public MemoryBudget.Reservation reserve(CompiledScene scene) {
+        return reserve(scene, IntakeMemory.NONE);
+    }
+
+    /**
+     * Reserves the render's memory in the same step in which the request that compiled the scene
+     * gives back what compiling it took ({@link IntakeMemory#handOver}), so that a scene whose
+     * compile and render together exceed the budget can still run.
+     *
+     * @return the reservation, or null if the memory is taken by other work right now
+     * @throws InvalidSceneException if the render could never fit into the budget
+     */
+    public MemoryBudget.Reservation reserve(CompiledScene scene, IntakeMemory compiledWith) {
         long bytes = RenderMemory.estimate(scene);
         if (bytes > memory.capacity()) {
             throw new InvalidSceneException("image", "this scene needs about " + RenderMemory.mebibytes(bytes)
@@ -57,7 +70,7 @@ public final class RenderBudget {
                     + RenderMemory.mebibytes(memory.capacity()) + " MiB (studio.render-memory); make the image "
                     + "or the meshes smaller");
         }
-        return memory.tryReserve(bytes);
+        return compiledWith.handOver(memory, bytes);
     }
 
     /**

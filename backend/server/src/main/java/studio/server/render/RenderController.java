@@ -11,6 +11,7 @@ import org.springframework.web.context.request.async.DeferredResult;
 
 import jakarta.servlet.http.HttpServletRequest;
 import studio.server.scene.SceneMediaTypes;
+import studio.server.system.IntakeMemory;
 
 /**
  * POST /api/render: a scene in, the image out. The render runs on the render service's threads
@@ -36,7 +37,7 @@ class RenderController {
         ClientProbe client = ClientProbe.of(request);
         RenderService.Ticket ticket;
         try {
-            ticket = renderService.start(scene != null ? scene : new byte[0], client);
+            ticket = renderService.start(scene != null ? scene : new byte[0], client, IntakeMemory.of(request));
         } catch (RuntimeException e) {
             client.close();
             throw e;

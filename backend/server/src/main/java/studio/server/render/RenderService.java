@@ -19,6 +19,7 @@ import studio.engine.render.RenderResult;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.SceneCompiler;
 import studio.server.system.Drainable;
+import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -65,7 +66,7 @@ public final class RenderService implements Drainable, AutoCloseable {
      * @throws RenderBusyException if every slot, or the memory the render needs, is taken right now
      */
     public Ticket start(byte[] sceneJson) {
-        return start(sceneJson, ClientProbe.NONE);
+        return start(sceneJson, ClientProbe.NONE, IntakeMemory.NONE);
     }
 
     /**
@@ -74,8 +75,9 @@ public final class RenderService implements Drainable, AutoCloseable {
      * clients sending 100,000 boxes at once to 2 slots got their 503s after 20-25 s while every
      * scene was read first, after 0.3-0.7 s with the slot first. The price, as for jobs: while every
      * slot is busy, an invalid scene, too, is answered 503 first, and its 400 comes on the retry.
+     * The compile draws on the request's {@code intake}, which hands it over to the render's memory.
      */
-    public Ticket start(byte[] sceneJson, ClientProbe client) {
+    public Ticket start(byte[] sceneJson, ClientProbe client, IntakeMemory intake) {
         if (closed) {
             throw new RenderBusyException("the server is shutting down; try again shortly");
         }
@@ -85,8 +87,8 @@ public final class RenderService implements Drainable, AutoCloseable {
         CompiledScene compiled;
         MemoryBudget.Reservation memory;
         try {
-            compiled = compiler.compile(sceneJson, Map.of(), threads);
-            memory = budget.reserve(compiled);
+            compiled = compiler.compile(sceneJson, Map.of(), threads, intake);
+            memory = budget.reserve(compiled, intake);
         } catch (RuntimeException | Error e) {
             slots.release();
             throw e;

@@ -4,6 +4,7 @@ import java.util.Map;
 import java.util.function.Supplier;
 
 import jakarta.validation.Validator;
+import studio.engine.memory.MemoryGate;
 
 /** Scene JSON in, an engine scene out: the one path the API and the CLI share. */
 public final class SceneCompiler {
@@ -35,7 +36,26 @@ public final class SceneCompiler {
 
     /** As above, reading meshes' files from {@code files} (e.g. the scene file's folder). */
     public CompiledScene compile(byte[] json, Map<String, Object> overrides, int threads, MeshFiles files) {
-        return mapper.map(reader.read(json, overrides), threads, files);
+        return compile(json, overrides, threads, files, MemoryGate.UNLIMITED);
+    }
+
+    /**
+     * As above, asking {@code memory} before the engine's objects and the meshes' arrays are
+     * allocated (the body's own parse is reckoned as it arrives, before this is called).
+     */
+    public CompiledScene compile(byte[] json, Map<String, Object> overrides, int threads, MeshFiles files,
+                                 MemoryGate memory) {
+        return mapper.map(reader.read(json, overrides), threads, files, memory);
+    }
+
+    /** As {@link #compile(byte[])}, asking {@code memory} before the engine allocates. */
+    public CompiledScene compile(byte[] json, MemoryGate memory) {
+        return compile(json, Map.of(), 0, meshFiles, memory);
+    }
+
+    /** As {@link #compile(byte[], Map, int)}, asking {@code memory} before the engine allocates. */
+    public CompiledScene compile(byte[] json, Map<String, Object> overrides, int threads, MemoryGate memory) {
+        return compile(json, overrides, threads, meshFiles, memory);
     }
 
     /**

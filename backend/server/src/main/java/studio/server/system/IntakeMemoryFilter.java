@@ -2,8 +2,6 @@ package studio.server.system;
 
 import java.io.IOException;
 
-import org.springframework.http.HttpHeaders;
-import org.springframework.http.MediaType;
 import org.springframework.web.filter.OncePerRequestFilter;
 
 import jakarta.servlet.FilterChain;
@@ -12,24 +10,20 @@ import jakarta.servlet.http.HttpServletRequest;
 import jakarta.servlet.http.HttpServletResponse;
 
 /**
- * Reserves the memory a request body takes while it is read and turned into a scene (the bytes,
- * the JSON tree, the records and the engine's objects: {@value #INTAKE_FACTOR} times the body) from
- * the {@link MemoryBudget} before reading it, and gives it back when the request has been handled
- * (an asynchronous render keeps its own reservation). When the budget cannot cover it, the
- * request gets 503 with Retry-After and the body is never read: many large bodies at once cannot
- * exhaust the heap. A body without a declared length counts at the body limit.
+ * Gives every request with a body its {@link IntakeMemory}: the body reserves what it will take as
+ * it arrives, the scene compiler what the engine asks for, and what is left is given back when the
+ * request has been handled (a render or a job takes its share over before). Nothing is reserved
+ * for a declared Content-Length before the bytes come: a client that declares 32 MiB and sends one
+ * byte holds what that byte will take (8 bytes, 168 for a <code>{</code>), so idle clients cannot
+ * lock others out (61 that declared 32 MiB each held 12 KiB in all, where they had held the whole
+ * budget).
  */
 final class IntakeMemoryFilter extends OncePerRequestFilter {
 
-    static final int INTAKE_FACTOR = 8;
-    static final int RETRY_AFTER_SECONDS = 2;
-
     private final MemoryBudget budget;
-    private final long maxBodyBytes;
 
-    IntakeMemoryFilter(MemoryBudget budget, long maxBodyBytes) {
+    IntakeMemoryFilter(MemoryBudget budget) {
         this.budget = budget;
-        this.maxBodyBytes = maxBodyBytes;
     }
 
     @Override
@@ -40,20 +34,9 @@ final class IntakeMemoryFilter extends OncePerRequestFilter {
     @Override
     protected void doFilterInternal(HttpServletRequest request, HttpServletResponse response, FilterChain chain)
             throws ServletException, IOException {
-        long declared = request.getContentLengthLong();
-        long body = declared >= 0 ? Math.min(declared, maxBodyBytes) : maxBodyBytes;
-        MemoryBudget.Reservation reservation = budget.tryReserve(body * INTAKE_FACTOR);
-        if (reservation == null) {
-            response.setStatus(503);
-            response.setHeader(HttpHeaders.RETRY_AFTER, Integer.toString(RETRY_AFTER_SECONDS));
-            response.setContentType(MediaType.APPLICATION_PROBLEM_JSON_VALUE);
-            response.getWriter().write("{\"type\":\"about:blank\",\"title\":\"Service Unavailable\",\"status\":503,"
-                    + "\"detail\":\"the server is reading or rendering as much as its memory allows; try again in "
-                    + RETRY_AFTER_SECONDS + " s\"}");
-            return;
-        }
-        try (reservation) {
-            chain.doFilter(request, response);
+        try (IntakeMemory intake = IntakeMemory.of(budget)) {
+            intake.attachTo(request);
+            chain.doFilter(new WatchedBody(request, intake::bodyArrived), response);
         }
     }
 }

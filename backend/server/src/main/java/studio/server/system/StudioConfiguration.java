@@ -81,11 +81,19 @@ class StudioConfiguration {
     }
 
     @Bean
-    FilterRegistrationBean<IntakeMemoryFilter> intakeMemoryFilter(StudioProperties properties, MemoryBudget memory) {
-        FilterRegistrationBean<IntakeMemoryFilter> registration =
-                new FilterRegistrationBean<>(new IntakeMemoryFilter(memory, properties.limits().maxBodyBytes()));
+    FilterRegistrationBean<IntakeMemoryFilter> intakeMemoryFilter(MemoryBudget memory) {
+        FilterRegistrationBean<IntakeMemoryFilter> registration = new FilterRegistrationBean<>(new IntakeMemoryFilter(memory));
         registration.addUrlPatterns("/api/*");
         registration.setOrder(2);
+        return registration;
+    }
+
+    @Bean
+    FilterRegistrationBean<BodyDeadlineFilter> bodyDeadlineFilter(StudioProperties properties) {
+        FilterRegistrationBean<BodyDeadlineFilter> registration = new FilterRegistrationBean<>(
+                new BodyDeadlineFilter(properties.limits().bodyGrace(), properties.limits().minBodyRate()));
+        registration.addUrlPatterns("/api/*");
+        registration.setOrder(3);
         return registration;
     }
 }

@@ -31,12 +31,18 @@ public record StudioProperties(Limits limits, Jobs jobs, @DefaultValue("2") int 
                        @DefaultValue("2m") Duration abandonAfter, @DefaultValue("20s") Duration shutdownGrace) {
     }
 
-    /** Limits on one scene, one request and one render. */
+    /**
+     * Limits on one scene, one request and one render.
+     *
+     * @param bodyGrace   how long any request body may take to arrive
+     * @param minBodyRate beyond that, how fast (per second, on average) it must keep arriving
+     */
     public record Limits(@DefaultValue("4096") int maxWidth, @DefaultValue("4096") int maxHeight,
                          @DefaultValue("1024") int maxSamples, @DefaultValue("16") int maxDepth,
                          @DefaultValue("100000") int maxObjects, @DefaultValue("100") int maxLights,
                          @DefaultValue("2000000") int maxTriangles, @DefaultValue("33554432") long maxBodyBytes,
-                         @DefaultValue("268435456") long maxPixelSamples, @DefaultValue("5m") Duration maxRenderTime) {
+                         @DefaultValue("268435456") long maxPixelSamples, @DefaultValue("5m") Duration maxRenderTime,
+                         @DefaultValue("10s") Duration bodyGrace, @DefaultValue("256KB") DataSize minBodyRate) {
 
         public SceneLimits toSceneLimits() {
             return new SceneLimits(maxWidth, maxHeight, maxSamples, maxDepth, maxObjects, maxLights, maxTriangles,
@@ -64,7 +70,8 @@ public record StudioProperties(Limits limits, Jobs jobs, @DefaultValue("2") int 
         if (limits == null) {
             SceneLimits d = SceneLimits.DEFAULTS;
             limits = new Limits(d.maxWidth(), d.maxHeight(), d.maxSamples(), d.maxDepth(), d.maxObjects(),
-                    d.maxLights(), d.maxTriangles(), d.maxBodyBytes(), d.maxPixelSamples(), Duration.ofMinutes(5));
+                    d.maxLights(), d.maxTriangles(), d.maxBodyBytes(), d.maxPixelSamples(), Duration.ofMinutes(5),
+                    Duration.ofSeconds(10), DataSize.ofKilobytes(256));
         }
         if (renderMemory == null) {
             renderMemory = DataSize.ofBytes(0);

@@ -96,9 +96,9 @@ class OpenApiDocumentTest {
         }
         JsonNode paths = doc.get("paths");
         assertThat(paths.get("/api/render").get("post").get("responses").propertyNames())
-                .containsExactlyInAnyOrder("200", "400", "413", "415", "422", "503");
+                .containsExactlyInAnyOrder("200", "400", "408", "413", "415", "422", "503");
         assertThat(paths.get("/api/jobs").get("post").get("responses").propertyNames())
-                .containsExactlyInAnyOrder("202", "400", "413", "415", "429", "503");
+                .containsExactlyInAnyOrder("202", "400", "408", "413", "415", "429", "503");
         assertThat(paths.get("/api/jobs/{id}").get("get").get("responses").get("404").get("$ref").asString())
                 .isEqualTo("#/components/responses/JobNotFound");
         assertThat(paths.get("/api/jobs/{id}/image").get("get").get("responses").get("409").get("$ref").asString())

@@ -42,7 +42,7 @@ class RenderControllerTest {
 
     @Test
     void busyServerGives503WithRetryAfter() throws Exception {
-        given(renderService.start(any(), any())).willThrow(new RenderBusyException());
+        given(renderService.start(any(), any(), any())).willThrow(new RenderBusyException());
         AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\":[]}"))
                 .andExpect(status().isServiceUnavailable())
                 .andExpect(header().string(HttpHeaders.RETRY_AFTER, "5"))
@@ -53,7 +53,7 @@ class RenderControllerTest {
 
     @Test
     void unexpectedFailureGives500ProblemWithoutInternals() throws Exception {
-        given(renderService.start(any(), any())).willThrow(new IllegalStateException("secret internal state"));
+        given(renderService.start(any(), any(), any())).willThrow(new IllegalStateException("secret internal state"));
         AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\":[]}"))
                 .andExpect(status().isInternalServerError())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
@@ -66,7 +66,7 @@ class RenderControllerTest {
         byte[] body = "{\"objects\":[]}".getBytes();
         RenderService.Ticket ticket = ticket(CompletableFuture.completedFuture(
                 new RenderedImage(new byte[] {1, 2, 3}, "image/jpeg", "scene.jpg", 3, 2, 42, 1234.4)));
-        given(renderService.start(eq(body), any())).willReturn(ticket);
+        given(renderService.start(eq(body), any(), any())).willReturn(ticket);
         AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(body))
                 .andExpect(status().isOk())
                 .andExpect(content().contentType(MediaType.IMAGE_JPEG))
@@ -82,14 +82,14 @@ class RenderControllerTest {
         mvc.perform(post("/api/renders").content("{\"objects\":[]}"))
                 .andExpect(status().isNotFound())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON));
-        verify(renderService, never()).start(any(), any());
+        verify(renderService, never()).start(any(), any(), any());
     }
 
     @Test
     void renderOverItsTimeBudgetGives422SayingSo() throws Exception {
         RenderService.Ticket ticket = ticket(
                 CompletableFuture.failedFuture(new RenderTimeExceededException(Duration.ofMinutes(5))));
-        given(renderService.start(any(), any())).willReturn(ticket);
+        given(renderService.start(any(), any(), any())).willReturn(ticket);
         AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\":[]}"))
                 .andExpect(status().isUnprocessableContent())
                 .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
@@ -102,7 +102,7 @@ class RenderControllerTest {
     void clientThatGoesAwayCancelsItsRender() throws Exception {
         CompletableFuture<RenderedImage> never = new CompletableFuture<>();
         RenderService.Ticket ticket = ticket(never);
-        given(renderService.start(any(), any())).willReturn(ticket);
+        given(renderService.start(any(), any(), any())).willReturn(ticket);
         MvcResult result = mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
                 .content("{\"objects\":[]}")).andReturn();
         // what the container does when the connection drops during an async request
@@ -122,7 +122,7 @@ class RenderControllerTest {
     void renderTheServerGivesUpWaitingForGives503WithRetryAfterAndCancelsIt() throws Exception {
         CompletableFuture<RenderedImage> never = new CompletableFuture<>();
         RenderService.Ticket ticket = ticket(never);
-        given(renderService.start(any(), any())).willReturn(ticket);
+        given(renderService.start(any(), any(), any())).willReturn(ticket);
         given(renderService.responseTimeoutMillis()).willReturn(62_000L);
         MvcResult result = mvc.perform(post("/api/render").contentType(MediaType.APPLICATION_JSON)
                 .content("{\"objects\":[]}")).andReturn();

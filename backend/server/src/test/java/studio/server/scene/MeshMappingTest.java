@@ -150,7 +150,28 @@ class MeshMappingTest {
         assertThat(map(tetra, sixTriangles, MeshFiles.none()).scene().objectCount()).isEqualTo(1);
         List<FieldProblem> problems = problems(tetra + "," + tetra, sixTriangles, MeshFiles.none());
         assertThat(problems).extracting(FieldProblem::field).containsExactly("objects[1].obj");
-        assertThat(problems.get(0).message()).contains("4 triangles").contains("limit is 2 more");
+        assertThat(problems.get(0).message()).contains("more than 2 triangles").contains("limit is 2 more");
+    }
+
+    @Test
+    void stopsReadingAMeshAtTheTriangleLimit() {
+        // one polygon of a million corners: 999,998 triangles in its fan, the limit 1,000
+        SceneLimits thousand = new SceneLimits(64, 48, 9, 3, 10, 1, 1000, 10_000_000);
+        SceneDto scene = READER.read(SceneValidationTest.json("{'image':{'width':8,'height':6},"
+                + "'render':{'samples':1,'maxDepth':1},'objects':[{'type':'mesh','obj':'"
+                + "v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf" + " 1".repeat(1_000_000) + "'}]}"));
+        com.sun.management.ThreadMXBean threads =
+                (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long before = threads.getThreadAllocatedBytes(Thread.currentThread().getId());
+
+        InvalidSceneException e = catchThrowableOfType(InvalidSceneException.class,
+                () -> new SceneMapper(thousand).map(scene, 0));
+
+        long allocated = threads.getThreadAllocatedBytes(Thread.currentThread().getId()) - before;
+        // the line is buffered (2 M chars, 8 MiB with its growth); reading all its corners took 70 MiB more
+        assertThat(allocated).isLessThan(12L << 20);
+        assertThat(e.problems()).extracting(FieldProblem::field).containsExactly("objects[0].obj");
+        assertThat(e.problems().get(0).message()).contains("more than 1000 triangles").contains("OBJ line 4");
     }
 
     @Test

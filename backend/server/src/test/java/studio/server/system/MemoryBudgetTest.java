@@ -3,10 +3,13 @@ package studio.server.system;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.time.Duration;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+
 import org.junit.jupiter.api.Test;
-import org.springframework.mock.web.MockFilterChain;
-import org.springframework.mock.web.MockHttpServletRequest;
-import org.springframework.mock.web.MockHttpServletResponse;
+
+import studio.server.Await;
 
 class MemoryBudgetTest {
 
@@ -44,54 +47,71 @@ class MemoryBudgetTest {
     }
 
     @Test
-    void bodyTheBudgetCannotCoverGets503WithRetryAfterAndIsNeverRead() throws Exception {
-        MemoryBudget budget = new MemoryBudget(1000);
-        IntakeMemoryFilter filter = new IntakeMemoryFilter(budget, 10_000);
-        MockHttpServletRequest request = new MockHttpServletRequest("POST", "/api/render");
-        request.setContent(new byte[200]); // 200 x 8 = 1600 > 1000
-        MockHttpServletResponse response = new MockHttpServletResponse();
-        MockFilterChain chain = new MockFilterChain();
-        filter.doFilter(request, response, chain);
-        assertThat(response.getStatus()).isEqualTo(503);
-        assertThat(response.getHeader("Retry-After")).isEqualTo("2");
-        assertThat(response.getContentType()).isEqualTo("application/problem+json");
-        assertThat(chain.getRequest()).as("the request went no further").isNull();
+    void growsWhileTheRestCoversItAndGivesAllBackOnClose() {
+        MemoryBudget budget = new MemoryBudget(100);
+        MemoryBudget.Reservation growing = budget.tryReserve(0);
+        assertThat(growing.tryGrow(70)).isTrue();
+        MemoryBudget.Reservation other = budget.tryReserve(20);
+        assertThat(growing.tryGrow(11)).as("beyond the budget").isFalse();
+        assertThat(growing.bytes()).isEqualTo(70);
+        assertThat(growing.tryGrow(10)).isTrue();
+        assertThat(budget.reserved()).isEqualTo(100);
+        growing.close();
+        other.close();
         assertThat(budget.reserved()).isZero();
     }
 
     @Test
-    void bodyWithinTheBudgetHoldsItsShareWhileHandledThenGivesItBack() throws Exception {
-        MemoryBudget budget = new MemoryBudget(1000);
-        IntakeMemoryFilter filter = new IntakeMemoryFilter(budget, 10_000);
-        MockHttpServletRequest request = new MockHttpServletRequest("POST", "/api/render");
-        request.setContent(new byte[100]);
-        long[] seen = new long[1];
-        filter.doFilter(request, new MockHttpServletResponse(), (req, res) -> seen[0] = budget.reserved());
-        assertThat(seen[0]).isEqualTo(100 * IntakeMemoryFilter.INTAKE_FACTOR);
+    void handsOverInOneStepKeepingWhatItIsToldTo() {
+        MemoryBudget budget = new MemoryBudget(100);
+        MemoryBudget.Reservation compile = budget.tryReserve(80);
+        // 80 held, 20 free: 90 more fit only because the compile gives back all but 10 in the same step
+        MemoryBudget.Reservation render = compile.tryHandOver(90, 10);
+        assertThat(render).isNotNull();
+        assertThat(render.bytes()).isEqualTo(90);
+        assertThat(compile.bytes()).isEqualTo(10);
+        assertThat(budget.reserved()).isEqualTo(100);
+        assertThat(compile.tryHandOver(1, 10)).as("nothing left to give").isNull();
+        assertThat(compile.bytes()).as("unchanged when refused").isEqualTo(10);
+        compile.close();
+        render.close();
         assertThat(budget.reserved()).isZero();
     }
 
     @Test
-    void bodyOfUnknownLengthCountsAtTheBodyLimit() throws Exception {
-        MemoryBudget budget = new MemoryBudget(1000);
-        IntakeMemoryFilter filter = new IntakeMemoryFilter(budget, 200); // 200 x 8 > 1000
-        MockHttpServletRequest chunked = new MockHttpServletRequest("POST", "/api/jobs") {
-            @Override
-            public long getContentLengthLong() {
-                return -1;
-            }
-        };
-        MockHttpServletResponse response = new MockHttpServletResponse();
-        filter.doFilter(chunked, response, new MockFilterChain());
-        assertThat(response.getStatus()).isEqualTo(503);
+    void oneReservationWaitsForMemoryWhileOthersAreRefusedAtOnce() throws Exception {
+        MemoryBudget budget = new MemoryBudget(100);
+        MemoryBudget.Reservation render = budget.tryReserve(60);
+        MemoryBudget.Reservation first = budget.tryReserve(10);
+        MemoryBudget.Reservation second = budget.tryReserve(0);
+        CompletableFuture<Boolean> waited = CompletableFuture.supplyAsync(
+                () -> first.growOrWait(50, Duration.ofSeconds(30)));
+        Await.until("the first to wait", 10_000, budget::hasWaiter);
+
+        assertThat(second.tryGrow(25)).as("30 free, but the waiter needs 50 of them").isFalse();
+        assertThat(budget.tryReserve(25)).isNull();
+        assertThat(second.growOrWait(1, Duration.ofSeconds(30))).as("one waits at a time").isFalse();
+        render.close();
+
+        assertThat(waited.get(10, TimeUnit.SECONDS)).isTrue();
+        assertThat(first.bytes()).isEqualTo(60);
+        assertThat(budget.hasWaiter()).isFalse();
+        assertThat(second.tryGrow(40)).isTrue();
     }
 
     @Test
-    void getRequestsPassWithoutAReservation() throws Exception {
-        MemoryBudget budget = new MemoryBudget(1);
-        IntakeMemoryFilter filter = new IntakeMemoryFilter(budget, 10_000);
-        MockHttpServletResponse response = new MockHttpServletResponse();
-        filter.doFilter(new MockHttpServletRequest("GET", "/api/scenes"), response, new MockFilterChain());
-        assertThat(response.getStatus()).isEqualTo(200);
+    void aWaitEndsAtItsBoundHoldingWhatItHeld() {
+        MemoryBudget budget = new MemoryBudget(100);
+        MemoryBudget.Reservation other = budget.tryReserve(60);
+        MemoryBudget.Reservation growing = budget.tryReserve(10);
+        long start = System.nanoTime();
+
+        assertThat(growing.growOrWait(50, Duration.ofMillis(200))).isFalse();
+
+        assertThat((System.nanoTime() - start) / 1_000_000).isBetween(150L, 5_000L);
+        assertThat(growing.bytes()).isEqualTo(10);
+        assertThat(growing.growOrWait(91, Duration.ofSeconds(30))).as("could never fit: no wait").isFalse();
+        assertThat(budget.hasWaiter()).isFalse();
+        other.close();
     }
 }
