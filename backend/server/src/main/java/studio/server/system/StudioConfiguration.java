@@ -81,4 +81,9 @@ class StudioConfiguration {
         registration.setOrder(3);
         return registration;
     }
+
+    @Bean
+    RenderMemoryHealth renderMemoryHealthIndicator(MemoryBudget memory) {
+        return new RenderMemoryHealth(memory);
+    }
 }
