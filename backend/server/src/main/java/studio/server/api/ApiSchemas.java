@@ -141,7 +141,17 @@ final class ApiSchemas {
     static final String HEALTH = """
             {
               "type": "object",
-              "properties": { "status": { "type": "string", "enum": ["UP", "DOWN", "OUT_OF_SERVICE", "UNKNOWN"] } },
+              "properties": {
+                "status": { "type": "string", "enum": ["UP", "DOWN", "OUT_OF_SERVICE", "UNKNOWN"] },
+                "components": {
+                  "type": "object",
+                  "description": "Each check's status and details; renderMemory: the memory budget's capacityBytes, reservedBytes and freeBytes",
+                  "additionalProperties": {
+                    "type": "object",
+                    "properties": { "status": { "type": "string" }, "details": { "type": "object" } }
+                  }
+                }
+              },
               "required": ["status"]
             }""";
 

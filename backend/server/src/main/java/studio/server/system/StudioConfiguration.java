@@ -96,4 +96,9 @@ class StudioConfiguration {
         registration.setOrder(3);
         return registration;
     }
+
+    @Bean
+    RenderMemoryHealth renderMemoryHealthIndicator(MemoryBudget memory) {
+        return new RenderMemoryHealth(memory);
+    }
 }

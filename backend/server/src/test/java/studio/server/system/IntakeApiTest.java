@@ -24,13 +24,14 @@ import org.springframework.boot.test.web.server.LocalServerPort;
 
 import studio.server.Await;
 import studio.server.render.RenderService;
+import tools.jackson.databind.JsonNode;
 import tools.jackson.databind.json.JsonMapper;
 
 /**
  * The memory and time a request body may take, over real sockets against a server with a 64 MiB
  * budget: bodies reserve what arrives, not what they declare; a trickling body gets 408; a scene
  * whose meshes need more memory to build than the budget gets 413 instead of exhausting the heap;
- * the compile's memory passes to the render.
+ * the compile's memory passes to the render; the health endpoint shows the budget.
  */
 @SpringBootTest(webEnvironment = SpringBootTest.WebEnvironment.RANDOM_PORT, properties = {
         "studio.render-memory=64MB", "studio.render-threads=2", "studio.limits.body-grace=1s",
@@ -137,6 +138,25 @@ class IntakeApiTest {
         String id = JSON.readTree(accepted.body()).get("id").asString();
         Await.until("the job to finish", 30_000,
                 () -> JSON.readTree(get("/api/jobs/" + id).body()).get("state").asString().equals("done"));
+    }
+
+    @Test
+    void healthShowsTheRenderMemoryBelowTheStatus() throws Exception {
+        MemoryBudget.Reservation held = memory.tryReserve(1000);
+        try {
+            JsonNode health = JSON.readTree(get("/actuator/health").body());
+
+            assertThat(health.get("status").asString()).isEqualTo("UP");
+            JsonNode renderMemory = health.get("components").get("renderMemory");
+            assertThat(renderMemory.get("status").asString()).isEqualTo("UP");
+            JsonNode details = renderMemory.get("details");
+            assertThat(details.get("capacityBytes").asLong()).isEqualTo(64L << 20);
+            assertThat(details.get("reservedBytes").asLong()).isGreaterThanOrEqualTo(1000);
+            assertThat(details.get("freeBytes").asLong())
+                    .isEqualTo(details.get("capacityBytes").asLong() - details.get("reservedBytes").asLong());
+        } finally {
+            held.close();
+        }
     }
 
     /** A socket that has sent a POST's headers, declaring {@code length} bytes of body, and none of it. */
