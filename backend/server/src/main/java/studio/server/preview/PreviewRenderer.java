@@ -9,6 +9,7 @@ import java.util.function.BooleanSupplier;
 
 import org.springframework.http.HttpStatus;
 import org.springframework.http.ProblemDetail;
+import org.springframework.web.ErrorResponse;
 
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.RenderListener;
@@ -17,6 +18,7 @@ import studio.server.render.RenderBudget;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
 import studio.server.scene.SceneCompiler;
+import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 import studio.server.system.Problems;
 import tools.jackson.databind.json.JsonMapper;
@@ -54,21 +56,21 @@ final class PreviewRenderer {
     }
 
     /**
-     * The scene of a revision at the view's size, or null if the memory to read it is taken right now.
+     * The scene of a revision at the view's size, its reading and building drawn on the memory
+     * budget as a request body's are.
      *
      * @throws InvalidSceneException as {@code POST /api/render} would refuse it
+     * @throws org.springframework.web.ErrorResponseException 503 while the memory is taken, 413 if it could never fit
      */
     CompiledScene compile(PreviewRequest request) {
-        // what reading the scene holds besides its bytes: the JSON tree, the records, the engine's objects
-        try (MemoryBudget.Reservation reading = budget.memory().tryReserve((long) request.scene().length * 8)) {
-            if (reading == null) {
-                return null;
-            }
-            return compile(request, threads);
+        // as a request body: the scene's bytes once parsed, then what the engine asks for as it builds
+        try (IntakeMemory reading = IntakeMemory.of(budget.memory())) {
+            reading.bodyArrived(request.scene(), 0, request.scene().length);
+            return compile(request, reading);
         }
     }
 
-    private CompiledScene compile(PreviewRequest request, int threads) {
+    private CompiledScene compile(PreviewRequest request, IntakeMemory memory) {
         Map<String, Object> overrides = new HashMap<>();
         if (request.width() > 0) {
             overrides.put("image.width", request.width());
@@ -77,7 +79,7 @@ final class PreviewRenderer {
             overrides.put("image.height", request.height());
         }
         overrides.put("image.format", "png");
-        return compiler.compile(request.scene(), overrides, threads);
+        return compiler.compile(request.scene(), overrides, threads, memory);
     }
 
     /**
@@ -114,6 +116,11 @@ final class PreviewRenderer {
     /** {@code {"revision": n, "problem": {...}}} for an invalid message or scene. */
     String problem(Long revision, InvalidSceneException e) {
         return problem(revision, Problems.invalidScene(e));
+    }
+
+    /** {@code {"revision": n, "problem": {...}}} for a refusal that carries its own problem. */
+    String problem(Long revision, ErrorResponse refusal) {
+        return problem(revision, refusal.getBody());
     }
 
     /** {@code {"revision": n, "problem": {...}}} for a problem of another kind. */

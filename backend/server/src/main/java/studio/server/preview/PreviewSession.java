@@ -7,6 +7,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 
 import org.springframework.http.HttpStatus;
+import org.springframework.web.ErrorResponseException;
 
 import studio.engine.render.RenderCancelledException;
 import studio.server.render.RenderTimeExceededException;
@@ -121,13 +122,11 @@ final class PreviewSession {
             }
             lastRevision = request.revision();
             scene = renderer.compile(request);
-            if (scene == null) {
-                output.text(renderer.problem(request.revision(), HttpStatus.SERVICE_UNAVAILABLE, "Service Unavailable",
-                        BUSY));
-                return;
-            }
         } catch (InvalidSceneException e) {
             output.text(renderer.problem(PreviewRequest.revisionOf(next.message()), e));
+            return;
+        } catch (ErrorResponseException e) {
+            output.text(renderer.problem(PreviewRequest.revisionOf(next.message()), e)); // the memory to read it is taken, or too little
             return;
         }
         for (PreviewPass pass : PreviewPass.plan(scene.settings())) {

@@ -42,7 +42,7 @@ public final class IntakeMemory implements MemoryGate, AutoCloseable {
     }
 
     /** A request's memory, holding nothing yet. */
-    static IntakeMemory of(MemoryBudget budget) {
+    public static IntakeMemory of(MemoryBudget budget) {
         return new IntakeMemory(budget, Objects.requireNonNull(budget.tryReserve(0)));
     }
 
@@ -56,7 +56,7 @@ public final class IntakeMemory implements MemoryGate, AutoCloseable {
     }
 
     /** Reserves what {@code length} more bytes of the body will take once read and parsed. */
-    void bodyArrived(byte[] buffer, int offset, int length) {
+    public void bodyArrived(byte[] buffer, int offset, int length) {
         reserve(BodyMemory.of(buffer, offset, length));
         bodyBytes += length;
     }
