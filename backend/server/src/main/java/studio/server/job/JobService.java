@@ -325,26 +325,16 @@ public final class JobService implements Drainable, AutoCloseable {
 
     /**
      * Stops taking jobs, cancels the queued ones, lets the running ones finish for up to
-     * {@code graceMillis}, then cancels them too (they stop within a tile) and waits for that, at most
-     * {@link #SHUTDOWN_CANCEL_WAIT_MILLIS}. Every job ends DONE or CANCELLED; nothing is left half
+     * {@code graceMillis}, then cancels them too (they stop within milliseconds) and waits for that, at most
+     * {@link Drainable#CANCEL_WAIT_MILLIS}. Every job ends DONE or CANCELLED; nothing is left half
      * done, and every listener that reads hears the end.
      */
     public void shutdown(long graceMillis) {
-        stopAccepting();
-        try {
-            if (!awaitEnd(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(graceMillis))) {
-                cancelRunning(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(SHUTDOWN_CANCEL_WAIT_MILLIS));
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        Drainable.drain(List.of(this), graceMillis);
         executor.shutdownNow();
         janitor.shutdownNow();
         senders.shutdownNow();
     }
-
-    /** After cancelling, how long shutdown waits for the renders to stop. */
-    static final long SHUTDOWN_CANCEL_WAIT_MILLIS = 5_000;
 
     @Override
     public void close() {

@@ -1,5 +1,6 @@
 package studio.server.render;
 
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
@@ -148,22 +149,12 @@ public final class RenderService implements Drainable, AutoCloseable {
 
     /**
      * Refuses new renders, lets the running ones finish for up to {@code graceMillis}, then cancels them
-     * and waits for that, at most {@value #CANCEL_WAIT_MILLIS} ms more.
+     * and waits for that, at most {@value Drainable#CANCEL_WAIT_MILLIS} ms more.
      */
     public void shutdown(long graceMillis) {
-        stopAccepting();
-        try {
-            if (!awaitEnd(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(graceMillis))) {
-                cancelRunning(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(CANCEL_WAIT_MILLIS));
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        Drainable.drain(List.of(this), graceMillis);
         executor.shutdownNow();
     }
-
-    /** After cancelling, how long shutdown waits for the renders to stop. */
-    static final long CANCEL_WAIT_MILLIS = 5_000;
 
     @Override
     public void close() {

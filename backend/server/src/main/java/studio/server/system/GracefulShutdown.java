@@ -2,7 +2,6 @@ package studio.server.system;
 
 import java.time.Duration;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -21,9 +20,6 @@ import org.springframework.context.SmartLifecycle;
  * connections that are still open afterwards.
  */
 public final class GracefulShutdown implements SmartLifecycle {
-
-    /** After cancelling, how long the renders get to stop and their clients to hear it. */
-    static final long CANCEL_WAIT_MILLIS = 5_000;
 
     private static final Logger log = LoggerFactory.getLogger(GracefulShutdown.class);
 
@@ -48,22 +44,8 @@ public final class GracefulShutdown implements SmartLifecycle {
         }
         running = false;
         long start = System.nanoTime();
-        work.forEach(Drainable::stopAccepting);
-        try {
-            long deadline = start + grace.toNanos();
-            boolean ended = true;
-            for (Drainable each : work) {
-                ended &= each.awaitEnd(deadline);
-            }
-            if (!ended) {
-                log.info("shutting down: cancelling the renders still running after the grace period of {}", grace);
-                long cancelDeadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(CANCEL_WAIT_MILLIS);
-                for (Drainable each : work) {
-                    each.cancelRunning(cancelDeadline);
-                }
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        if (!Drainable.drain(work, grace.toMillis())) {
+            log.info("shutting down: the renders still running after the grace period of {} were cancelled", grace);
         }
         log.info("shutting down: renders drained in {} ms", (System.nanoTime() - start) / 1_000_000);
     }

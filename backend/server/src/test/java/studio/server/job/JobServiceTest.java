@@ -324,7 +324,7 @@ class JobServiceTest {
         JobStatus stopped = jobs.status(running.id());
         assertEquals(JobState.CANCELLED, stopped.state());
         assertTrue(stopped.error().contains("shut down"), stopped.error());
-        assertTrue(millis < 300 + JobService.SHUTDOWN_CANCEL_WAIT_MILLIS, "shutdown took " + millis + " ms");
+        assertTrue(millis < 300 + studio.server.system.Drainable.CANCEL_WAIT_MILLIS, "shutdown took " + millis + " ms");
         assertThrows(JobNotDoneException.class, () -> jobs.image(running.id()));
     }
 
