@@ -1,17 +1,16 @@
 package studio.server.preview;
 
 import java.io.IOException;
+import java.io.ByteArrayOutputStream;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.SynchronousQueue;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
-import org.springframework.http.HttpStatus;
+import org.springframework.web.ErrorResponseException;
 import org.springframework.web.socket.BinaryMessage;
 import org.springframework.web.socket.CloseStatus;
 import org.springframework.web.socket.TextMessage;
@@ -19,7 +18,7 @@ import org.springframework.web.socket.WebSocketSession;
 import org.springframework.web.socket.handler.AbstractWebSocketHandler;
 import org.springframework.web.socket.handler.ConcurrentWebSocketSessionDecorator;
 
-import studio.server.system.MemoryBudget;
+import studio.server.system.IntakeMemory;
 
 /**
  * The WebSocket side of the live view ({@code /api/preview}): assembles each text message from the
@@ -32,8 +31,6 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
     /** How long one frame may take to send, and how much may wait to be sent, before the view is closed. */
     static final int SEND_TIME_LIMIT_MILLIS = 10_000, SEND_BUFFER_LIMIT = 16 << 20;
     static final int WORKER_KEEP_ALIVE_SECONDS = 2;
-    /** A message's pieces as they arrive: 2 bytes a character while assembling, then its UTF-8 bytes. */
-    static final int BYTES_PER_CHAR = 2;
 
     private static final String VIEW = "studio.preview.view", SOCKET = "studio.preview.socket",
             PARTS = "studio.preview.parts";
@@ -114,7 +111,7 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
     @Override
     protected void handleTextMessage(WebSocketSession session, TextMessage message) throws IOException {
         Parts parts = (Parts) session.getAttributes().computeIfAbsent(PARTS, k -> new Parts());
-        String piece = message.getPayload();
+        String piece = parts.carried(message.getPayload(), message.isLast());
         parts.length += piece.length();
         if (parts.length > maxMessageBytes) {
             parts.clear();
@@ -122,20 +119,24 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
                     + " bytes (studio.limits.max-body-bytes)"));
             return;
         }
-        if (!parts.refused) {
-            MemoryBudget.Reservation more = renderer.memory().tryReserve((long) piece.length() * BYTES_PER_CHAR);
-            if (more != null) {
-                parts.add(piece, more);
-            } else {
-                parts.refuse();
+        if (parts.refusal == null) {
+            if (parts.memory == null) {
+                parts.memory = IntakeMemory.of(renderer.memory());
+            }
+            byte[] bytes = piece.getBytes(StandardCharsets.UTF_8);
+            try {
+                parts.memory.bodyArrived(bytes, 0, bytes.length); // what these bytes take once read, before keeping them
+                parts.bytes.writeBytes(bytes);
+            } catch (ErrorResponseException e) {
+                parts.refuse(e);
             }
         }
         if (message.isLast()) {
-            if (parts.refused) {
-                socket(session).sendMessage(new TextMessage(renderer.problem(null, HttpStatus.SERVICE_UNAVAILABLE,
-                        "Service Unavailable", PreviewSession.BUSY)));
+            if (parts.refusal != null) {
+                socket(session).sendMessage(new TextMessage(renderer.problem(null, parts.refusal)));
             } else {
-                view(session).receive(parts.chars.toString().getBytes(StandardCharsets.UTF_8));
+                view(session).receive(parts.bytes.toByteArray(), parts.memory); // the view owns the memory now
+                parts.memory = null;
             }
             parts.clear();
         }
@@ -177,34 +178,47 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
         workers.shutdownNow();
     }
 
-    /** A text message being assembled, and the memory its pieces hold. */
+    /**
+     * A text message being assembled as UTF-8, and the memory its reading holds (reserved by the
+     * bytes' shape as they arrive, as a request body's: see {@link IntakeMemory#bodyArrived}).
+     */
     private static final class Parts {
-        final StringBuilder chars = new StringBuilder();
-        final List<MemoryBudget.Reservation> memory = new ArrayList<>();
+        final ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        IntakeMemory memory;
         /** Characters received, kept or not. */
         long length;
-        /** A piece could not be reserved: the rest of this message is dropped, and the client told. */
-        boolean refused;
+        /** A high surrogate that ended a piece: its pair begins the next one. */
+        String carry = "";
+        /** Why the rest of this message is dropped (its memory was refused); the client is told. */
+        ErrorResponseException refusal;
 
-        void add(String piece, MemoryBudget.Reservation reservation) {
-            chars.append(piece);
-            memory.add(reservation);
+        /** The piece, with a split surrogate pair made whole across pieces. */
+        String carried(String piece, boolean last) {
+            String whole = carry + piece;
+            carry = "";
+            if (!last && !whole.isEmpty() && Character.isHighSurrogate(whole.charAt(whole.length() - 1))) {
+                carry = whole.substring(whole.length() - 1);
+                whole = whole.substring(0, whole.length() - 1);
+            }
+            return whole;
         }
 
-        void refuse() {
+        void refuse(ErrorResponseException e) {
             long seen = length;
             clear();
             length = seen;
-            refused = true;
+            refusal = e;
         }
 
         void clear() {
-            chars.setLength(0);
-            chars.trimToSize();
-            memory.forEach(MemoryBudget.Reservation::close);
-            memory.clear();
+            bytes.reset();
+            if (memory != null) {
+                memory.close();
+                memory = null;
+            }
             length = 0;
-            refused = false;
+            carry = "";
+            refusal = null;
         }
     }
 }

@@ -56,21 +56,13 @@ final class PreviewRenderer {
     }
 
     /**
-     * The scene of a revision at the view's size, its reading and building drawn on the memory
-     * budget as a request body's are.
+     * The scene of a revision at the view's size, its building drawn on {@code memory}, which holds
+     * the message's reading already (as a request body's intake does).
      *
      * @throws InvalidSceneException as {@code POST /api/render} would refuse it
      * @throws org.springframework.web.ErrorResponseException 503 while the memory is taken, 413 if it could never fit
      */
-    CompiledScene compile(PreviewRequest request) {
-        // as a request body: the scene's bytes once parsed, then what the engine asks for as it builds
-        try (IntakeMemory reading = IntakeMemory.of(budget.memory())) {
-            reading.bodyArrived(request.scene(), 0, request.scene().length);
-            return compile(request, reading);
-        }
-    }
-
-    private CompiledScene compile(PreviewRequest request, IntakeMemory memory) {
+    CompiledScene compile(PreviewRequest request, IntakeMemory memory) {
         Map<String, Object> overrides = new HashMap<>();
         if (request.width() > 0) {
             overrides.put("image.width", request.width());

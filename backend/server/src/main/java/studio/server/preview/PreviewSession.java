@@ -13,6 +13,7 @@ import studio.engine.render.RenderCancelledException;
 import studio.server.render.RenderTimeExceededException;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
+import studio.server.system.IntakeMemory;
 
 /**
  * One live view: the newest revision a client sent and the work of showing it. Messages only
@@ -37,11 +38,11 @@ final class PreviewSession {
         void close();
     }
 
-    /** A message as it arrived. */
-    private record Pending(byte[] message, long receivedNanos) {
+    /** A message as it arrived, with the memory its reading holds. */
+    private record Pending(byte[] message, IntakeMemory memory, long receivedNanos) {
     }
 
-    static final String BUSY = "the server is reading or rendering as much as its memory allows right now; the "
+    private static final String BUSY = "the server is reading or rendering as much as its memory allows right now; the "
             + "view renders again with your next change";
 
     private final PreviewRenderer renderer;
@@ -60,15 +61,21 @@ final class PreviewSession {
     }
 
     /** A message from the client: it replaces any revision not yet started, and stops the one being shown. */
-    void receive(byte[] message) {
-        pending.set(new Pending(message, System.nanoTime()));
+    void receive(byte[] message, IntakeMemory memory) {
+        Pending replaced = pending.getAndSet(new Pending(message, memory, System.nanoTime()));
+        if (replaced != null) {
+            replaced.memory().close();
+        }
         wake();
     }
 
     /** The client went away: the work in hand stops within a tile. */
     void close() {
         closed = true;
-        pending.set(null);
+        Pending dropped = pending.getAndSet(null);
+        if (dropped != null) {
+            dropped.memory().close();
+        }
     }
 
     boolean closed() {
@@ -97,7 +104,7 @@ final class PreviewSession {
                 }
                 continue;
             }
-            try {
+            try (IntakeMemory memory = next.memory()) {
                 show(next);
             } catch (IOException | RuntimeException e) {
                 closed = true;
@@ -121,13 +128,16 @@ final class PreviewSession {
                 throw new InvalidSceneException("revision", "must be greater than the last revision, " + lastRevision);
             }
             lastRevision = request.revision();
-            scene = renderer.compile(request);
+            scene = renderer.compile(request, next.memory());
         } catch (InvalidSceneException e) {
             output.text(renderer.problem(PreviewRequest.revisionOf(next.message()), e));
             return;
         } catch (ErrorResponseException e) {
-            output.text(renderer.problem(PreviewRequest.revisionOf(next.message()), e)); // the memory to read it is taken, or too little
+            // the memory to build it is taken right now (503), or it could never fit (413)
+            output.text(renderer.problem(PreviewRequest.revisionOf(next.message()), e));
             return;
+        } finally {
+            next.memory().close(); // the passes reserve their own render memory, which counts the scene
         }
         for (PreviewPass pass : PreviewPass.plan(scene.settings())) {
             // the first, coarsest pass is shown even if a newer revision is waiting: it costs little
