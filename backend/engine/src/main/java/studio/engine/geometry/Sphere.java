@@ -25,11 +25,31 @@ public record Sphere(Vec3 center, double radius) implements Shape {
 
     @Override
     public boolean intersect(Ray ray, double tMax, Hit hit) {
-        double t = nearestRoot(ray, tMax);
+        return intersect(center.x(), center.y(), center.z(), radius, ray, tMax, hit);
+    }
+
+    @Override
+    public boolean occluded(Ray ray, double tMax) {
+        return occluded(center.x(), center.y(), center.z(), radius, ray, tMax);
+    }
+
+    @Override
+    public Aabb bounds() {
+        double cx = center.x(), cy = center.y(), cz = center.z();
+        return new Aabb(cx - radius, cy - radius, cz - radius, cx + radius, cy + radius, cz + radius)
+                .padded(BOUNDS_PADDING);
+    }
+
+    /**
+     * {@link #intersect(Ray, double, Hit)} for the sphere with centre (cx, cy, cz) and the given
+     * radius: the one implementation, which the record and a scene's flat sphere arrays both call,
+     * so a sphere found either way has the same bits of t, point and normal.
+     */
+    public static boolean intersect(double cx, double cy, double cz, double radius, Ray ray, double tMax, Hit hit) {
+        double t = nearestRoot(cx, cy, cz, radius, ray, tMax);
         if (Double.isNaN(t)) {
             return false;
         }
-        double cx = center.x(), cy = center.y(), cz = center.z();
         double qx = ray.ox + t * ray.dx - cx, qy = ray.oy + t * ray.dy - cy, qz = ray.oz + t * ray.dz - cz;
         double len = Math.sqrt(qx * qx + qy * qy + qz * qz);
         double nx = qx / len, ny = qy / len, nz = qz / len;
@@ -40,21 +60,14 @@ public record Sphere(Vec3 center, double radius) implements Shape {
         return true;
     }
 
-    @Override
-    public boolean occluded(Ray ray, double tMax) {
-        return !Double.isNaN(nearestRoot(ray, tMax));
-    }
-
-    @Override
-    public Aabb bounds() {
-        double cx = center.x(), cy = center.y(), cz = center.z();
-        return new Aabb(cx - radius, cy - radius, cz - radius, cx + radius, cy + radius, cz + radius)
-                .padded(BOUNDS_PADDING);
+    /** {@link #occluded(Ray, double)} for the sphere with centre (cx, cy, cz) and the given radius. */
+    public static boolean occluded(double cx, double cy, double cz, double radius, Ray ray, double tMax) {
+        return !Double.isNaN(nearestRoot(cx, cy, cz, radius, ray, tMax));
     }
 
     /** The smallest root in (0, tMax), or NaN if there is none. */
-    private double nearestRoot(Ray ray, double tMax) {
-        double fx = ray.ox - center.x(), fy = ray.oy - center.y(), fz = ray.oz - center.z();
+    private static double nearestRoot(double cx, double cy, double cz, double radius, Ray ray, double tMax) {
+        double fx = ray.ox - cx, fy = ray.oy - cy, fz = ray.oz - cz;
         double dx = ray.dx, dy = ray.dy, dz = ray.dz;
         double a = dx * dx + dy * dy + dz * dz;
         double b = fx * dx + fy * dy + fz * dz;

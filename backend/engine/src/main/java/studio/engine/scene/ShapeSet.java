@@ -6,6 +6,7 @@ import studio.engine.accel.Slab;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Shape;
+import studio.engine.geometry.Sphere;
 
 /**
  * A scene's shapes in declaration order, searched for the nearest hit under the tie rule: of hits
@@ -26,6 +27,13 @@ import studio.engine.geometry.Shape;
  * clusters further apart than that) the lowest index of the nearest cluster wins in any visiting
  * order, as in the linear loop; only chains of near-ties spread over more than TIE can resolve
  * differently.
+ *
+ * <p>The BVH's leaves keep each sphere's centre and radius in a flat array by leaf slot and test
+ * it through {@link Sphere}'s static test, which the record itself calls, so the hit is the same to
+ * the bit; other shapes are asked through {@link Shape}. This spares a call through the interface
+ * (megamorphic once spheres, boxes and meshes share a tree) and two dependent loads per sphere
+ * (record, then its centre): on one thread, 10,000 spheres in a block, primary plus one shadow ray,
+ * 1,209 to 1,392 ns per ray before and 1,144 to 1,229 after (three alternating runs each).
  */
 public final class ShapeSet {
 
@@ -39,6 +47,12 @@ public final class ShapeSet {
     private final double[] nodeBounds;
     private final int[] nodeLinks;
     private final int[] leafShapes;
+    /**
+     * Per leaf slot, a sphere's centre and radius (four doubles), tested in the traversal loops
+     * through {@link Sphere}'s static tests without a call through {@link Shape} or a load of its
+     * centre; radius 0 marks a slot whose shape is not a sphere and is asked through {@link Shape}.
+     */
+    private final double[] leafSpheres;
     private final int nodeCount;
 
     private ShapeSet(Shape[] shapes, boolean useBvh) {
@@ -54,6 +68,7 @@ public final class ShapeSet {
             nodeBounds = null;
             nodeLinks = null;
             leafShapes = null;
+            leafSpheres = null;
             nodeCount = 0;
             return;
         }
@@ -73,8 +88,15 @@ public final class ShapeSet {
         Bvh bvh = Bvh.build(boxes, boundedCount);
         int[] order = bvh.primitives();
         leafShapes = new int[boundedCount];
+        leafSpheres = new double[4 * boundedCount];
         for (int slot = 0; slot < boundedCount; slot++) {
             leafShapes[slot] = boundedIndex[order[slot]];
+            if (shapes[leafShapes[slot]] instanceof Sphere sphere) {
+                leafSpheres[4 * slot] = sphere.center().x();
+                leafSpheres[4 * slot + 1] = sphere.center().y();
+                leafSpheres[4 * slot + 2] = sphere.center().z();
+                leafSpheres[4 * slot + 3] = sphere.radius();
+            }
         }
         unbounded = unboundedIndex;
         nodeBounds = bvh.bounds();
@@ -151,6 +173,7 @@ public final class ShapeSet {
         double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
         double[] nb = nodeBounds;
         int[] links = nodeLinks;
+        double[] spheres = leafSpheres;
         int[] stack = hit.sceneStack;
         double[] stackEntry = hit.sceneStackEntry;
         int sp = 0, node = 0;
@@ -184,7 +207,11 @@ public final class ShapeSet {
                 } else {
                     for (int slot = links[o], end = slot + count; slot < end; slot++) {
                         int i = leafShapes[slot];
-                        if (shapes[i].intersect(ray, limit(i, winner, best, tMax), hit)) {
+                        double limit = limit(i, winner, best, tMax);
+                        int k = 4 * slot;
+                        double r = spheres[k + 3];
+                        if (r != 0 ? Sphere.intersect(spheres[k], spheres[k + 1], spheres[k + 2], r, ray, limit, hit)
+                                : shapes[i].intersect(ray, limit, hit)) {
                             best = hit.t;
                             winner = i;
                             cull = Math.min(tMax, best * (1 + Scene.TIE));
@@ -223,6 +250,7 @@ public final class ShapeSet {
         double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
         double[] nb = nodeBounds;
         int[] links = nodeLinks;
+        double[] spheres = leafSpheres;
         int node = 0, end = nodeCount;
         while (node < end) {
             int o = 3 * node;
@@ -233,7 +261,10 @@ public final class ShapeSet {
                     continue;
                 }
                 for (int slot = links[o], last = slot + count; slot < last; slot++) {
-                    if (shapes[leafShapes[slot]].occluded(ray, tMax)) {
+                    int k = 4 * slot;
+                    double r = spheres[k + 3];
+                    if (r != 0 ? Sphere.occluded(spheres[k], spheres[k + 1], spheres[k + 2], r, ray, tMax)
+                            : shapes[leafShapes[slot]].occluded(ray, tMax)) {
                         return true;
                     }
                 }
