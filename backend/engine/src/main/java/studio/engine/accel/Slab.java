@@ -9,6 +9,16 @@ import studio.engine.math.Fp;
  * ignored by the comparisons, which counts the ray as inside that slab. Comparisons are
  * non-strict, so a flat box (a triangle's box, zmin = zmax) and a ray touching an edge are kept,
  * and every far distance is widened by 1 + 2*gamma(3) to cover the rounding of the distances.
+ *
+ * <p>A traversal works out once per ray whether any of its slab distances can be NaN at all
+ * ({@link #nanFree}). For most rays none can, and the largest near and smallest far distance are
+ * then taken with {@code Math.max} and {@code Math.min} instead of a comparison and a branch each:
+ * the same values, without branches the processor mispredicts about half the time in a deep tree
+ * (which of three slabs a ray enters last is a coin toss from box to box). Measured on one thread
+ * (thread CPU time, 640x480 primary rays plus a shadow ray per light, best of 12 per run, runs
+ * alternated): 10,000 spheres 257 to 286 ms before, 220 to 225 after; a 50,000-triangle mesh 151
+ * to 157 before, 126 to 138 after. In the editor's scenes of 6 to 16 objects, whose trees are a
+ * few levels deep, runs disagreed (from 8 % faster to 15 % slower) on a busy machine.
  */
 public final class Slab {
 
@@ -26,6 +36,50 @@ public final class Slab {
      */
     public static double entry(double[] bounds, int o, double ox, double oy, double oz,
                                double ix, double iy, double iz, double tMax) {
+        return entry(bounds, o, ox, oy, oz, ix, iy, iz, nanFree(ox, oy, oz, ix, iy, iz), tMax);
+    }
+
+    /**
+     * Whether no slab distance of this ray can be NaN: with a finite origin and finite, non-zero
+     * inverse direction components, (plane - origin) * inverse multiplies a finite or infinite
+     * number by a finite non-zero one, never 0 by infinity. False for a ray parallel to an axis
+     * plane (a zero direction component).
+     */
+    public static boolean nanFree(double ox, double oy, double oz, double ix, double iy, double iz) {
+        return Double.isFinite(ox) && Double.isFinite(oy) && Double.isFinite(oz)
+                && Double.isFinite(ix) && ix != 0 && Double.isFinite(iy) && iy != 0 && Double.isFinite(iz) && iz != 0;
+    }
+
+    /**
+     * {@link #entry(double[], int, double, double, double, double, double, double, double)} with
+     * {@link #nanFree} of the ray worked out once by the caller. The same result: without NaNs the
+     * maximum of 0 and the near distances, and the minimum of tMax and the far ones, are the
+     * values the comparisons pick (with +0 among the candidates, {@code Math.max} gives +0 for
+     * any zero, as the comparisons do).
+     */
+    public static double entry(double[] bounds, int o, double ox, double oy, double oz,
+                               double ix, double iy, double iz, boolean nanFree, double tMax) {
+        return nanFree ? entryWithoutNaN(bounds, o, ox, oy, oz, ix, iy, iz, tMax)
+                : entryIgnoringNaN(bounds, o, ox, oy, oz, ix, iy, iz, tMax);
+    }
+
+    private static double entryWithoutNaN(double[] bounds, int o, double ox, double oy, double oz,
+                                          double ix, double iy, double iz, double tMax) {
+        double x0 = (bounds[o] - ox) * ix, x1 = (bounds[o + 3] - ox) * ix;
+        double y0 = (bounds[o + 1] - oy) * iy, y1 = (bounds[o + 4] - oy) * iy;
+        double z0 = (bounds[o + 2] - oz) * iz, z1 = (bounds[o + 5] - oz) * iz;
+        double nearX = ix >= 0 ? x0 : x1, farX = ix >= 0 ? x1 : x0;
+        double nearY = iy >= 0 ? y0 : y1, farY = iy >= 0 ? y1 : y0;
+        double nearZ = iz >= 0 ? z0 : z1, farZ = iz >= 0 ? z1 : z0;
+        double tNear = Math.max(Math.max(nearX, nearY), Math.max(nearZ, 0.0));
+        double tFar = Math.min(Math.min(farX * FAR_WIDENING, farY * FAR_WIDENING),
+                Math.min(farZ * FAR_WIDENING, tMax));
+        return tNear <= tFar ? tNear : Double.NaN;
+    }
+
+    /** The comparisons of the class comment: a NaN distance fails its comparison and so is ignored. */
+    private static double entryIgnoringNaN(double[] bounds, int o, double ox, double oy, double oz,
+                                           double ix, double iy, double iz, double tMax) {
         double tNear = 0, tFar = tMax;
         double near, far;
         if (ix >= 0) {
@@ -80,5 +134,11 @@ public final class Slab {
     public static boolean hits(double[] bounds, int o, double ox, double oy, double oz,
                                double ix, double iy, double iz, double tMax) {
         return !Double.isNaN(entry(bounds, o, ox, oy, oz, ix, iy, iz, tMax));
+    }
+
+    /** {@link #hits(double[], int, double, double, double, double, double, double, double)} with {@link #nanFree} given. */
+    public static boolean hits(double[] bounds, int o, double ox, double oy, double oz,
+                               double ix, double iy, double iz, boolean nanFree, double tMax) {
+        return !Double.isNaN(entry(bounds, o, ox, oy, oz, ix, iy, iz, nanFree, tMax));
     }
 }

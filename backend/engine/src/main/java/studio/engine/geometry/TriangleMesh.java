@@ -188,6 +188,7 @@ public final class TriangleMesh implements Shape {
         double okz = component(kz, ray.ox, ray.oy, ray.oz);
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+        boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
         boolean negX = dx < 0, negY = dy < 0, negZ = dz < 0;
 
         double[] nb = nodeBounds;
@@ -196,7 +197,7 @@ public final class TriangleMesh implements Shape {
         int sp = 0, node = 0, bestTri = -1;
         double best = tMax;
         while (true) {
-            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, best)) {
+            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, nanFree, best)) {
                 int o = 3 * node;
                 int count = links[o + 1];
                 if (count < 0) {
@@ -247,6 +248,7 @@ public final class TriangleMesh implements Shape {
         double okz = component(kz, ray.ox, ray.oy, ray.oz);
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+        boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
 
         // Any hit will do, so no order and no stack: a missed node, or a finished leaf, escapes
         // to the node after its subtree.
@@ -255,7 +257,7 @@ public final class TriangleMesh implements Shape {
         int node = 0, end = nodeCount;
         while (node < end) {
             int o = 3 * node;
-            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, tMax)) {
+            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, nanFree, tMax)) {
                 int count = links[o + 1];
                 if (count < 0) {
                     node++;

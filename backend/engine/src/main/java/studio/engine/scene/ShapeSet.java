@@ -171,6 +171,7 @@ public final class ShapeSet {
         }
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
+        boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
         double[] nb = nodeBounds;
         int[] links = nodeLinks;
         double[] spheres = leafSpheres;
@@ -179,7 +180,7 @@ public final class ShapeSet {
         int sp = 0, node = 0;
         // Any shape may still win a tie up to best*(1+TIE), so nodes are culled only beyond that.
         double cull = winner == Integer.MAX_VALUE ? tMax : Math.min(tMax, best * (1 + Scene.TIE));
-        double entry = Slab.entry(nb, 0, ox, oy, oz, ix, iy, iz, cull);
+        double entry = Slab.entry(nb, 0, ox, oy, oz, ix, iy, iz, nanFree, cull);
         while (true) {
             if (entry <= cull) {
                 int o = 3 * node;
@@ -188,8 +189,8 @@ public final class ShapeSet {
                     // both children's boxes are tested here: the nearer is visited first, the other
                     // waits on the stack with its entry distance, and a child the ray misses is never pushed
                     int left = node + 1, right = links[o];
-                    double inLeft = Slab.entry(nb, 6 * left, ox, oy, oz, ix, iy, iz, cull);
-                    double inRight = Slab.entry(nb, 6 * right, ox, oy, oz, ix, iy, iz, cull);
+                    double inLeft = Slab.entry(nb, 6 * left, ox, oy, oz, ix, iy, iz, nanFree, cull);
+                    double inRight = Slab.entry(nb, 6 * right, ox, oy, oz, ix, iy, iz, nanFree, cull);
                     boolean hitLeft = inLeft <= cull, hitRight = inRight <= cull; // a miss is NaN: false
                     if (hitLeft && hitRight) {
                         boolean leftFirst = inLeft <= inRight;
@@ -248,13 +249,14 @@ public final class ShapeSet {
         }
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
+        boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
         double[] nb = nodeBounds;
         int[] links = nodeLinks;
         double[] spheres = leafSpheres;
         int node = 0, end = nodeCount;
         while (node < end) {
             int o = 3 * node;
-            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, tMax)) {
+            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, nanFree, tMax)) {
                 int count = links[o + 1];
                 if (count < 0) {
                     node++;

@@ -137,4 +137,59 @@ class SlabTest {
         }
         assertTrue(hits > 1_000 && hits < 99_000, "both outcomes are exercised: " + hits + " hits");
     }
+
+    @Test
+    @DisplayName("for rays without NaN distances the min/max path gives the comparisons' entry to the bit, "
+            + "on 200,000 rays that start on box planes, graze an edge, or carry tiny and huge components")
+    void minMaxPathGivesTheComparisonsEntryBitForBit() {
+        Random random = new Random(8);
+        double[] box = new double[6];
+        int hits = 0, onPlane = 0, grazing = 0;
+        for (int i = 0; i < 200_000; i++) {
+            double scale = Math.pow(10, random.nextInt(13) - 6);
+            for (int a = 0; a < 3; a++) {
+                double lo = scale * random.nextGaussian(), hi = lo + (random.nextInt(8) == 0 ? 0 : scale * random.nextDouble());
+                box[a] = lo;
+                box[a + 3] = hi;
+            }
+            double[] o = new double[3], inv = new double[3];
+            for (int a = 0; a < 3; a++) {
+                int kind = random.nextInt(6);
+                // on the min or max plane (distance +-0), at the box's centre, or anywhere around it
+                o[a] = kind == 0 ? box[a] : kind == 1 ? box[a + 3] : kind == 2 ? (box[a] + box[a + 3]) / 2
+                        : 4 * scale * random.nextGaussian();
+                onPlane += kind < 2 ? 1 : 0;
+                double d = random.nextGaussian() * Math.pow(10, random.nextInt(9) - 4);
+                inv[a] = 1 / (d == 0 ? 1 : d);
+            }
+            if (random.nextInt(4) == 0) {
+                // aimed at a point on an edge (x and y on a max plane): in or out is decided by the widening
+                double s = scale * (0.5 + 10 * random.nextDouble());
+                double[] edge = {box[3], box[4], box[2] + (box[5] - box[2]) * random.nextDouble()};
+                for (int a = 0; a < 3; a++) {
+                    o[a] = edge[a] - s / inv[a];
+                }
+                grazing++;
+            }
+            assertTrue(Slab.nanFree(o[0], o[1], o[2], inv[0], inv[1], inv[2]));
+            double tMax = random.nextInt(3) == 0 ? Double.POSITIVE_INFINITY : 10 * scale * random.nextDouble();
+            double branchy = Slab.entry(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], false, tMax);
+            double minMax = Slab.entry(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], true, tMax);
+            assertEquals(Double.doubleToRawLongBits(branchy), Double.doubleToRawLongBits(minMax), "ray " + i);
+            hits += Double.isNaN(branchy) ? 0 : 1;
+        }
+        assertTrue(hits > 20_000 && hits < 180_000 && onPlane > 50_000 && grazing > 40_000,
+                hits + " hits, " + onPlane + " origins on planes, " + grazing + " grazing rays");
+    }
+
+    @Test
+    void raysWithAZeroOrInfiniteDirectionComponentOrAnInfiniteOriginAreNotNaNFree() {
+        assertTrue(Slab.nanFree(0, 0, 0, 1, -2, 3));
+        assertFalse(Slab.nanFree(0, 0, 0, 1 / 0.0, 1, 1), "d.x = 0");
+        assertFalse(Slab.nanFree(0, 0, 0, 1, 1 / -0.0, 1), "d.y = -0");
+        assertFalse(Slab.nanFree(0, 0, 0, 1, 1, 1 / 1e-320), "d.z subnormal: 1/d.z overflows");
+        assertFalse(Slab.nanFree(0, 0, 0, 1, 1, 1 / Double.POSITIVE_INFINITY), "d.z infinite: 1/d.z = 0");
+        assertFalse(Slab.nanFree(Double.NEGATIVE_INFINITY, 0, 0, 1, 1, 1));
+        assertFalse(Slab.nanFree(0, Double.NaN, 0, 1, 1, 1));
+    }
 }
