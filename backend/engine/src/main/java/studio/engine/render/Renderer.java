@@ -111,8 +111,31 @@ public final class Renderer {
      */
     public static RenderResult render(Scene scene, RenderSettings settings, RenderListener listener,
                                      BooleanSupplier cancelled) {
+        return render(scene, settings, new Film(settings.width(), settings.height()), PixelLattice.ALL, null,
+                listener, cancelled);
+    }
+
+    /**
+     * Renders only the pixels of {@code pixels} that are not on {@code except} (null: none
+     * excepted) into {@code film}, which has the settings' size; the film's other pixels are left
+     * as they are. Each pixel comes out as in a whole render, so rendering nested lattices one
+     * after the other (see {@link PixelLattice}) fills the film with the whole render's pixels.
+     * Only for fixed sampling: adaptive sampling with sobol judges a pixel by its neighbours.
+     * Cancelled as {@link #render(Scene, RenderSettings, RenderListener, BooleanSupplier)} is.
+     *
+     * @throws IllegalArgumentException if the settings are adaptive (and the lattice is not every
+     *                                  pixel), or the film's size is not the settings'
+     */
+    public static RenderResult render(Scene scene, RenderSettings settings, Film film, PixelLattice pixels,
+                                     PixelLattice except, RenderListener listener, BooleanSupplier cancelled) {
+        if (film.width() != settings.width() || film.height() != settings.height()) {
+            throw new IllegalArgumentException("the film is " + film.width() + "x" + film.height()
+                    + ", the settings " + settings.width() + "x" + settings.height());
+        }
+        if (settings.adaptive() && (!pixels.equals(PixelLattice.ALL) || except != null)) {
+            throw new IllegalArgumentException("adaptive sampling renders every pixel");
+        }
         long start = System.nanoTime();
-        Film film = new Film(settings.width(), settings.height());
         int tileSize = tileSize(settings.width(), settings.height(), settings.effectiveThreads());
         List<TileRect> tiles = tiles(settings.width(), settings.height(), tileSize);
         // adaptive sampling with sobol is progressive (see TileWorker#progressiveTile)
@@ -139,7 +162,7 @@ public final class Renderer {
                         }
                         TileWorker worker = workers.get();
                         long raysBefore = worker.integrator.rays, samplesBefore = worker.samples;
-                        long bad = worker.render(film, tile);
+                        long bad = worker.render(film, tile, pixels, except);
                         rays.add(worker.integrator.rays - raysBefore);
                         samples.add(worker.samples - samplesBefore);
                         nonFinite.add(bad);
@@ -251,14 +274,21 @@ public final class Renderer {
             seed = settings.seed();
         }
 
-        /** Renders one tile into the film; returns how many samples came out non-finite. */
-        long render(Film film, TileRect tile) {
+        /**
+         * Renders the tile's pixels on {@code pixels} and not on {@code except} (null: none) into
+         * the film; returns how many samples came out non-finite.
+         */
+        long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except) {
             if (borders != null) {
                 return progressiveTile(film, tile);
             }
             long bad = 0;
-            for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
-                for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
+            int step = pixels.step();
+            for (int y = pixels.first(tile.y()); y < tile.y() + tile.height(); y += step) {
+                for (int x = pixels.first(tile.x()); x < tile.x() + tile.width(); x += step) {
+                    if (except != null && except.contains(x, y)) {
+                        continue;
+                    }
                     random.reset(x, y, seed);
                     bad += threshold <= 0 ? fixedPixel(film, x, y) : adaptivePixel(film, x, y);
                 }
