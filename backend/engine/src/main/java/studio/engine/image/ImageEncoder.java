@@ -59,14 +59,15 @@ public final class ImageEncoder {
         int w = lattice.count(film.width()), h = lattice.count(film.height());
         BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
-        for (int y = 0; y < h; y++) {
+        IntStream rows = IntStream.range(0, h);
+        (w * (long) h >= PARALLEL_PIXELS ? rows.parallel() : rows).forEach(y -> {
             int fy = offset + y * step;
             for (int x = 0; x < w; x++) {
                 int fx = offset + x * step;
                 pixels[y * w + x] = Srgb.toByte(film.get(fx, fy, 0)) << 16 | Srgb.toByte(film.get(fx, fy, 1)) << 8
                         | Srgb.toByte(film.get(fx, fy, 2));
             }
-        }
+        });
         return image;
     }
 
