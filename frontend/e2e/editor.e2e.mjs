@@ -118,6 +118,29 @@ try {
     await page.screenshot({ path: `${out}result.png` });
   });
 
+  await step('a render of an older scene says "Out of date" and offers to render again', async () => {
+    const hex = page.getByLabel('Color hex', { exact: true });
+    await hex.fill('#f00');
+    await hex.press('Enter');
+    await page.getByText('Out of date', { exact: true }).waitFor({ timeout: 5000 });
+    await page.getByRole('button', { name: 'Render again' }).waitFor();
+    expect((await hex.inputValue()) === '#ff0000', `#f00 was not read as #ff0000: ${await hex.inputValue()}`);
+  });
+
+  await step('a refused value stays with its reason beside the field until it is fixed', async () => {
+    const radius = page.getByLabel('Radius');
+    const before = await radius.inputValue();
+    await radius.fill('-1');
+    await radius.press('Enter');
+    expect((await radius.inputValue()) === '-1', 'the refused value was reverted silently');
+    expect((await radius.getAttribute('aria-invalid')) === 'true', 'the refused radius is not aria-invalid');
+    const why = await radius.evaluate((el) => document.getElementById(el.getAttribute('aria-describedby'))?.textContent);
+    expect(why === 'must be greater than 0', `the reason beside the field is "${why}"`);
+    await radius.press('Escape');
+    expect((await radius.inputValue()) === before, 'Escape did not revert the radius');
+    expect((await radius.getAttribute('aria-invalid')) === null, 'the reverted radius is still invalid');
+  });
+
   await step('a camera looking straight down its up vector is refused, with the error by the field', async () => {
     await page.getByRole('button', { name: 'Camera', exact: true }).first().click();
     for (const [axis, value] of [['x', '0'], ['y', '10'], ['z', '0']]) {
@@ -133,7 +156,7 @@ try {
     await page.getByTestId('render-button').click();
     const summary = page.getByTestId('error-summary');
     await summary.waitFor({ timeout: 15000 });
-    expect((await summary.innerText()).includes('camera.up'), 'the summary does not name camera.up');
+    expect((await summary.innerText()).includes('Camera › Up'), 'the summary does not name Camera › Up');
     const byField = page.locator('.field-error', { hasText: 'parallel' });
     await byField.first().waitFor({ timeout: 5000 });
     await byField.first().scrollIntoViewIfNeeded();
@@ -146,7 +169,7 @@ try {
     const canvas = view.getByTestId('ray-traced-canvas');
     const summary = view.getByTestId('error-summary');
     await summary.waitFor({ timeout: 15000 });
-    expect((await summary.innerText()).includes('camera.up'), 'the live view does not name camera.up');
+    expect((await summary.innerText()).includes('Camera › Up'), 'the live view does not name Camera › Up');
 
     // an up vector across the view: the scene renders, coarse to fine, and the problem goes
     for (const [axis, value] of [['y', '0'], ['z', '-1']]) {
@@ -195,6 +218,21 @@ try {
     await page.screenshot({ path: `${out}ray-traced.png` });
     await page.getByRole('button', { name: 'Camera view' }).click();
     await view.waitFor({ state: 'detached', timeout: 5000 });
+  });
+
+  await step('an opened file with fov 0 is flagged before Render; New clears its errors and the last render', async () => {
+    const bad = { name: 'bad-fov', camera: { fov: 0 }, objects: [{ type: 'sphere', radius: 1 }] };
+    await page.getByTestId('open-scene').setInputFiles({ name: 'bad-fov.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(bad)) });
+    await page.getByRole('button', { name: 'Camera', exact: true }).first().click();
+    const fov = page.getByLabel('Field of view (°)');
+    await until(async () => (await fov.getAttribute('aria-invalid')) === 'true', 'fov 0 is not flagged before Render');
+    const problems = page.getByTestId('problem-list');
+    expect((await problems.innerText()).includes('Camera › Field of view: must be greater than 0'), `problem list: ${await problems.innerText()}`);
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByRole('button', { name: 'Camera', exact: true }).first().click();
+    await until(async () => (await fov.getAttribute('aria-invalid')) === null, 'the new scene still flags the old fov');
+    expect(await problems.count() === 0, 'the problem list survived New');
+    expect(await page.getByTestId('download-link').count() === 0, 'the old render\'s download survived New');
   });
 
   await step('no uncaught errors in the page', async () => {

@@ -1,6 +1,6 @@
-import { lazy, Suspense, useState } from 'react';
+import { lazy, Suspense, useCallback, useState } from 'react';
 import type { FetchFn } from './api/client';
-import { FieldErrorsProvider, type FieldErrors } from './components/fieldErrors';
+import { FieldErrorsProvider } from './components/fieldErrors';
 import { Inspector } from './components/Inspector';
 import { JsonTab } from './components/JsonTab';
 import { ProblemList } from './components/ProblemList';
@@ -8,6 +8,8 @@ import { RenderPanel } from './render/RenderPanel';
 import { Toolbar } from './components/Toolbar';
 import { useEditorShortcuts } from './hooks/useEditorShortcuts';
 import { useMeshFiles } from './hooks/useMeshes';
+import { useSceneErrors } from './hooks/useSceneErrors';
+import type { Scene } from './model/types';
 import { useSceneStore } from './store/sceneStore';
 import { SideView } from './views/SideView';
 import { TopView } from './views/TopView';
@@ -29,9 +31,16 @@ const Preview3D = lazy(() => import('./views/Preview3D').then((m) => ({ default:
  */
 export function App({ fetchFn }: AppProps) {
   const [message, setMessage] = useState<string | null>(null);
-  const [fieldErrors, setFieldErrors] = useState<FieldErrors>({});
+  const fieldErrors = useSceneErrors();
   const [tab, setTab] = useState<CentreTab>('preview');
   const scene = useSceneStore((s) => s.scene);
+  const documentId = useSceneStore((s) => s.documentId);
+  const report = useSceneStore((s) => s.reportServerErrors);
+  const onRenderErrors = useCallback((errors: Record<string, string>, sent: unknown) => report('render', sent as Scene, errors), [report]);
+  const onLiveErrors = useCallback(
+    (errors: Record<string, string>) => report('live', useSceneStore.getState().preview ?? useSceneStore.getState().scene, errors),
+    [report],
+  );
   useEditorShortcuts();
   useMeshFiles(fetchFn);
 
@@ -64,14 +73,14 @@ export function App({ fetchFn }: AppProps) {
             </div>
             <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
               <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
-                <Preview3D shown={tab === 'preview'} onFieldErrors={setFieldErrors} />
+                <Preview3D shown={tab === 'preview'} onFieldErrors={onLiveErrors} />
               </Suspense>
             </div>
             <div role="tabpanel" id="panel-json" aria-labelledby="tab-json" hidden={tab !== 'json'} className="tab-panel">
               {tab === 'json' && <JsonTab />}
             </div>
             <div className="studio-render">
-              <RenderPanel scene={scene} onFieldErrors={setFieldErrors} fetchFn={fetchFn} />
+              <RenderPanel key={documentId} scene={scene} onFieldErrors={onRenderErrors} fetchFn={fetchFn} />
             </div>
           </div>
           <div className="studio-inspector">

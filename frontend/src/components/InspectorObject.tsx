@@ -25,13 +25,14 @@ export function InspectorObject({ index }: InspectorObjectProps) {
   if (!object) return null;
   const r = resolveObject(object);
   const path = `objects[${index}]`;
-  const vector = (field: string, label: string, value: Vec3, hint: string, min?: number, step = 0.1) => (
+  const vector = (field: string, label: string, value: Vec3, hint: string, min?: number, step = 0.1, minExclusive = false) => (
     <VectorField
       label={label}
       path={`${path}.${field}`}
       value={value}
       hint={hint}
       min={min}
+      minExclusive={minExclusive}
       step={step}
       onCommit={(v) => setField(index, field, v)}
     />
@@ -49,7 +50,8 @@ export function InspectorObject({ index }: InspectorObjectProps) {
             label="Radius"
             path={`${path}.radius`}
             value={r.radius}
-            min={0.001}
+            min={0}
+            minExclusive
             step={0.05}
             hint="Radius in metres (greater than 0)"
             onCommit={(v) => setField(index, 'radius', v)}
@@ -59,7 +61,7 @@ export function InspectorObject({ index }: InspectorObjectProps) {
       {r.type === 'box' && (
         <>
           {vector('center', 'Center', r.center, 'Centre of the box (metres)')}
-          {vector('size', 'Size', r.size, 'Full edge lengths along the box’s own x, y, z (metres)', 0.001)}
+          {vector('size', 'Size', r.size, 'Full edge lengths along the box’s own x, y, z (metres)', 0, 0.1, true)}
           {vector('rotation', 'Rotation', r.rotation, 'Degrees about x, y, z, applied in order XYZ (as three.js)', undefined, 5)}
         </>
       )}

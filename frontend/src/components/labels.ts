@@ -1,6 +1,6 @@
 /** Display names and tooltips shared by the inspector, the outline, the toolbar and the views. */
 import type { MeshState } from '../model/meshCache';
-import type { MaterialType, ObjectType } from '../model/types';
+import type { MaterialType, ObjectType, Scene } from '../model/types';
 
 export const OBJECT_LABELS: Record<ObjectType, string> = { sphere: 'Sphere', box: 'Box', plane: 'Plane', mesh: 'Mesh' };
 
@@ -41,6 +41,12 @@ export const OVERRIDE_FIELDS: Record<string, { label: string; min: number; max: 
 /** "Sphere 2 · mirror" style name of an object. */
 export function objectName(type: ObjectType, index: number): string {
   return `${OBJECT_LABELS[type]} ${index + 1}`;
+}
+
+/** How an object is named in messages: `Sphere 2` (later, by its own name when it has one). */
+export function objectLabel(scene: Scene, index: number): string {
+  const object = scene.objects[index];
+  return object ? objectName(object.type, index) : `Object ${index + 1}`;
 }
 
 /** "4,800 triangles", "1 triangle". */

@@ -1,7 +1,9 @@
-import { useCallback } from 'react';
+import { useCallback, useState } from 'react';
 import type { FetchFn } from '../api/client';
 import type { EventSourceFactory } from '../api/jobs';
+import { sameJson } from '../model/sameJson';
 import { ErrorSummary, toFieldErrorMap } from './ErrorSummary';
+import { fieldWordsOf } from './fieldWordsOf';
 import { RenderControls } from './RenderControls';
 import { RenderNotice } from './RenderNotice';
 import { RenderProgress } from './RenderProgress';
@@ -16,9 +18,9 @@ export interface RenderPanelProps {
   scene: unknown;
   /**
    * Receives the server's field errors as `{field: message}` (fields by JSON path, e.g.
-   * `objects[2].radius`) when it rejects the scene, and `{}` when a later render starts.
+   * `objects[2].radius`) with the scene it refused, and `{}` when a later render starts.
    */
-  onFieldErrors: (errors: Record<string, string>) => void;
+  onFieldErrors: (errors: Record<string, string>, scene: unknown) => void;
   /** The fetch for the job API; the browser's by default, a mock in tests. */
   fetchFn?: FetchFn;
   /** Opens the progress stream; `new EventSource(url)` by default, a fake in tests. */
@@ -27,21 +29,26 @@ export interface RenderPanelProps {
 
 /**
  * Renders the scene as a server job: Render and Cancel, progress with elapsed time, tiles on a
- * canvas as they finish, then the image with its statistics and a Download link.
+ * canvas as they finish, then the image with its statistics and a Download link. A render of a
+ * scene that has changed since says "Out of date" and offers to render again.
  */
 export function RenderPanel({ scene, onFieldErrors, fetchFn, eventSourceFactory }: RenderPanelProps) {
   const render = useRenderJob({ fetchFn, eventSourceFactory });
   const { start, cancel, phase, job, image, error } = render;
+  const [sent, setSent] = useState<{ scene: unknown } | null>(null);
 
   const onRender = useCallback(async () => {
+    setSent({ scene });
     const outcome = await start(scene);
-    if (outcome.kind === 'started') onFieldErrors({});
+    if (outcome.kind === 'started') onFieldErrors({}, scene);
     else if (outcome.kind === 'rejected' && outcome.error.status === 400) {
-      onFieldErrors(toFieldErrorMap(outcome.error.errors));
+      onFieldErrors(toFieldErrorMap(outcome.error.errors), scene);
     }
   }, [start, scene, onFieldErrors]);
 
   const rejected = error?.status === 400 ? error : null;
+  const outOfDate = sent !== null && phase !== 'idle' && phase !== 'starting' && !sameJson(sent.scene, scene);
+  const words = fieldWordsOf(sent?.scene);
   return (
     <section className="render-panel" aria-label="Render">
       <RenderControls
@@ -53,7 +60,15 @@ export function RenderPanel({ scene, onFieldErrors, fetchFn, eventSourceFactory 
       {phase !== 'idle' && (
         <RenderProgress phase={phase} progress={render.progress} elapsedMillis={render.elapsedMillis} />
       )}
-      {rejected && <ErrorSummary title={rejected.title} detail={rejected.detail} errors={rejected.errors} />}
+      {outOfDate && (
+        <p className="render-stale" role="status" data-testid="render-out-of-date">
+          <strong>Out of date</strong> — the scene has changed since this render.{' '}
+          <button type="button" className="small" onClick={() => void onRender()}>
+            Render again
+          </button>
+        </p>
+      )}
+      {rejected && <ErrorSummary title={rejected.title} detail={rejected.detail} errors={rejected.errors} {...words} />}
       <RenderNotice error={rejected ? null : error} job={job} />
       <TileCanvas
         canvasRef={render.canvasRef}
@@ -61,7 +76,7 @@ export function RenderPanel({ scene, onFieldErrors, fetchFn, eventSourceFactory 
         height={job?.height ?? 0}
         hidden={!job || image !== null}
       />
-      {image && <RenderResult image={image} />}
+      {image && <RenderResult image={image} stale={outOfDate} />}
     </section>
   );
 }

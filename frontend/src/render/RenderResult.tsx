@@ -5,16 +5,19 @@ import type { FinishedImage } from './useRenderJob';
 export interface RenderResultProps {
   /** The finished image; its URL is owned by the render hook. */
   image: FinishedImage;
+  /** The scene has changed since: the image is dimmed (the panel says so in words). */
+  stale?: boolean;
 }
 
 /** The finished image with its size, render time, rays per second and a Download link. */
-export function RenderResult({ image }: RenderResultProps) {
+export function RenderResult({ image, stale = false }: RenderResultProps) {
   return (
-    <figure className="render-result">
+    <figure className={stale ? 'render-result is-stale' : 'render-result'}>
       <div className="render-frame">
         <img
           src={image.url}
-          alt={`Rendered image ${image.filename}`}
+          alt="Rendered image"
+          title={image.filename}
           width={image.width || undefined}
           height={image.height || undefined}
           data-testid="render-image"

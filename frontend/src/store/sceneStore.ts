@@ -21,6 +21,7 @@ import type {
   Scene,
   Vec3,
 } from '../model/types';
+import type { FieldErrors } from '../model/standingErrors';
 import { push, redo, undo, type Timeline } from './history';
 import { loadSavedScene, saveScene } from './persistence';
 
@@ -31,6 +32,16 @@ export interface ViewState {
 }
 
 export type ViewKind = 'top' | 'side';
+
+/** Who reported a server refusal: a Render, or the live ray-traced view. */
+export type ErrorSource = 'render' | 'live';
+
+/** The server's field errors for one scene it refused, kept with that scene to tell when each is fixed. */
+export interface ServerErrors {
+  /** The scene as it was sent. */
+  scene: Scene;
+  errors: FieldErrors;
+}
 
 export interface SceneState {
   /** The committed scene (what undo/redo, save and render use). */
@@ -48,7 +59,13 @@ export interface SceneState {
   gridSize: number;
   /** Bumped when a whole new scene arrives: the views zoom to fit it. */
   fitRequest: number;
+  /** Bumped by New, Open and Examples: what belonged to the previous scene (errors, renders) goes. */
+  documentId: number;
+  /** The server's latest refusal from each source; null when it has none (cleared by a new document). */
+  serverErrors: Record<ErrorSource, ServerErrors | null>;
 
+  /** Records (or, with `{}`, clears) a source's field errors for the scene it sent. */
+  reportServerErrors(source: ErrorSource, scene: Scene, errors: FieldErrors): void;
   loadScene(scene: Scene): void;
   newScene(): void;
   /** Replaces the scene but keeps the selection where it still exists (the JSON tab). */
@@ -97,10 +114,18 @@ export const DEFAULT_VIEWS: Record<ViewKind, ViewState> = {
   side: { zoom: 40, pan: [0, 1.5] },
 };
 
-type Data = Pick<SceneState, 'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest'>;
+type Data = Pick<
+  SceneState,
+  'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest' | 'documentId' | 'serverErrors'
+>;
+
+const NO_SERVER_ERRORS: Record<ErrorSource, ServerErrors | null> = { render: null, live: null };
 
 function initialData(scene: Scene): Data {
-  return { scene, past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1 };
+  return {
+    scene, past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1,
+    documentId: 1, serverErrors: NO_SERVER_ERRORS,
+  };
 }
 
 /** The selection if it still names something in the scene, else none. */
@@ -132,13 +157,18 @@ export const useSceneStore = create<SceneState>()((set, get) => {
   return {
     ...initialData(loadSavedScene() ?? structuredClone(STARTER_SCENE)),
 
+    reportServerErrors: (source, scene, errors) => {
+      const report = Object.keys(errors).length === 0 ? null : { scene, errors };
+      if (report === null && get().serverErrors[source] === null) return;
+      set({ serverErrors: { ...get().serverErrors, [source]: report } });
+    },
     loadScene: (scene) => {
       commit(() => structuredClone(scene), () => null);
-      set({ fitRequest: get().fitRequest + 1 });
+      set({ fitRequest: get().fitRequest + 1, documentId: get().documentId + 1, serverErrors: NO_SERVER_ERRORS });
     },
     newScene: () => {
       commit(() => blankScene(), () => null);
-      set({ fitRequest: get().fitRequest + 1 });
+      set({ fitRequest: get().fitRequest + 1, documentId: get().documentId + 1, serverErrors: NO_SERVER_ERRORS });
     },
     setScene: (scene) => commit(() => structuredClone(scene)),
     setName: (name) => commit((s) => ({ ...s, name })),
