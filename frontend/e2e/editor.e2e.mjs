@@ -118,13 +118,39 @@ try {
     await page.screenshot({ path: `${out}result.png` });
   });
 
+  await step('the image is the centre: a whole render with Render in reach at 1024x768 and 1440x900; a full-size viewer at 1:1', async () => {
+    for (const [width, height] of [[1024, 768], [1440, 900]]) {
+      await page.setViewportSize({ width, height });
+      await page.getByRole('tab', { name: 'Image' }).click();
+      const image = page.getByRole('img', { name: 'Rendered image', exact: true });
+      await image.waitFor();
+      await until(async () => {
+        const box = await image.boundingBox();
+        return box && box.x >= 0 && box.y >= 0 && box.x + box.width <= width && box.y + box.height <= height && box.width >= width * 0.45;
+      }, async () => `at ${width}x${height} the image is not whole and large: ${JSON.stringify(await image.boundingBox())}`);
+      const render = await page.getByTestId('render-button').boundingBox();
+      expect(render && render.y >= 0 && render.y + render.height <= height, `Render is out of reach at ${width}x${height}`);
+      await page.screenshot({ path: `${out}stage-${width}x${height}.png` });
+    }
+    await page.getByRole('button', { name: 'Full size' }).click();
+    const viewer = page.getByRole('dialog', { name: /Full-size image/ });
+    await viewer.waitFor();
+    await viewer.getByRole('button', { name: '1:1' }).click();
+    const scale = Number(await viewer.getByRole('img').getAttribute('data-scale'));
+    expect(Math.abs(scale - 1) < 1e-9, `1:1 shows ${scale} device pixels an image pixel`);
+    await page.keyboard.press('Escape');
+    await viewer.waitFor({ state: 'detached' });
+    await page.setViewportSize({ width: 1440, height: 1000 });
+    await page.getByRole('tab', { name: '3D preview' }).click();
+  });
+
   await step('a render of an older scene says "Out of date" and offers to render again', async () => {
     const hex = page.getByLabel('Color hex', { exact: true });
-    await hex.fill('#f00');
+    await hex.fill('#8cf');
     await hex.press('Enter');
     await page.getByText('Out of date', { exact: true }).waitFor({ timeout: 5000 });
     await page.getByRole('button', { name: 'Render again' }).waitFor();
-    expect((await hex.inputValue()) === '#ff0000', `#f00 was not read as #ff0000: ${await hex.inputValue()}`);
+    expect((await hex.inputValue()) === '#88ccff', `#8cf was not read as #88ccff: ${await hex.inputValue()}`);
   });
 
   await step('a refused value stays with its reason beside the field until it is fixed', async () => {
@@ -164,6 +190,7 @@ try {
   });
 
   await step('the Ray traced view names the same refused field, then renders, and follows a drag in the top view', async () => {
+    await page.getByRole('tab', { name: '3D preview' }).click();
     await page.getByRole('button', { name: 'Ray traced' }).click();
     const view = page.getByTestId('ray-traced-view');
     const canvas = view.getByTestId('ray-traced-canvas');

@@ -56,6 +56,20 @@ describe('App', () => {
     expect(within(screen.getByTestId('top-view')).getAllByTestId(/^object-/)).toHaveLength(STARTER_SCENE.objects.length);
   }, 20_000);
 
+  it('hides and shows the 2D views and the inspector, and follows the window until the user chooses', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    const views = screen.getByTestId('top-view').closest('.studio-views')!;
+    const shown = window.innerWidth >= 1280;
+    expect(views.hasAttribute('hidden')).toBe(!shown);
+    await user.click(screen.getByRole('button', { name: '2D views' }));
+    expect(views.hasAttribute('hidden')).toBe(shown);
+    act(() => window.dispatchEvent(new Event('resize')));
+    expect(views.hasAttribute('hidden')).toBe(shown); // the user's choice stands
+    await user.click(screen.getByRole('button', { name: 'Inspector' }));
+    expect(screen.getByRole('complementary', { name: 'Inspector', hidden: true }).closest('.studio-inspector')).toHaveAttribute('hidden');
+  });
+
   it('adds a sphere, selected in both views and the inspector; Undo and Redo buttons', async () => {
     const user = userEvent.setup();
     await renderApp();

@@ -199,6 +199,17 @@ describe('RenderPanel', () => {
     expect(screen.queryByText('Out of date')).toBeNull();
   });
 
+  it('opens the finished image in the full-size viewer; the image is named "Rendered image"', async () => {
+    const { startRender, user } = setup();
+    const source = await startRender();
+    act(() => source.emit('end', statusJson({ state: 'done', progress: 1 })));
+    expect(await screen.findByRole('img', { name: 'Rendered image' })).toBeInTheDocument();
+    await user.click(screen.getByRole('button', { name: 'Full size' }));
+    expect(screen.getByRole('dialog', { name: 'Full-size image still-life.png' })).toBeInTheDocument();
+    await user.click(screen.getByRole('button', { name: 'Close' }));
+    expect(screen.queryByRole('dialog')).toBeNull();
+  });
+
   it('says when to retry if the server is busy', async () => {
     const fetchFn = mockServer({
       'POST /api/jobs': () =>
