@@ -262,6 +262,23 @@ try {
     expect(await page.getByTestId('download-link').count() === 0, 'the old render\'s download survived New');
   });
 
+  await step('objects have stable labels and can be renamed; the name is kept in the scene', async () => {
+    await page.getByTestId('add-box').click();
+    await page.getByTestId('add-sphere').click();
+    const name = page.getByTestId('inspector-object').getByLabel('Name', { exact: true });
+    await name.fill('ball');
+    await name.press('Enter');
+    const outline = page.getByRole('navigation', { name: 'Scene contents' });
+    await outline.getByRole('button', { name: /Sphere "ball"/ }).waitFor();
+    await outline.getByRole('button', { name: /^Box 1/ }).click();
+    await page.getByRole('button', { name: 'Delete', exact: true }).click();
+    await outline.getByRole('button', { name: /Sphere "ball"/ }).waitFor();
+    await page.getByRole('tab', { name: 'JSON' }).click();
+    const text = await page.getByLabel('Scene JSON').inputValue();
+    expect(/"name": "ball"/.test(text), 'the name is not in the scene JSON');
+    await page.getByRole('tab', { name: '3D preview' }).click();
+  });
+
   await step('no uncaught errors in the page', async () => {
     expect(pageErrors.length === 0, `page errors: ${pageErrors.join('\n')}`);
   });

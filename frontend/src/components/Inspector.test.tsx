@@ -1,4 +1,4 @@
-import { fireEvent, render, screen, within } from '@testing-library/react';
+import { act, fireEvent, render, screen, within } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { describe, expect, it } from 'vitest';
 import type { Scene } from '../model/types';
@@ -66,6 +66,29 @@ describe('Inspector', () => {
     expect(radius).toHaveValue(0.5);
     expect(radius).not.toHaveAttribute('aria-invalid');
     expect(screen.queryByText('must be greater than 0')).toBeNull();
+  });
+
+  it('renames an object in the inspector and in the list; deleting another keeps its label', async () => {
+    const user = userEvent.setup();
+    resetSceneStore({ objects: [{ type: 'box' }, { type: 'sphere' }] });
+    store().select({ kind: 'object', index: 1 });
+    render(<Inspector />);
+    expect(screen.getByRole('heading', { name: 'Sphere 2' })).toBeInTheDocument();
+    await user.type(within(screen.getByTestId('inspector-object')).getByLabelText('Name'), 'ball{Enter}');
+    expect(store().scene.objects[1]).toEqual({ type: 'sphere', name: 'ball' });
+    expect(screen.getByRole('heading', { name: 'Sphere "ball"' })).toBeInTheDocument();
+    await user.dblClick(screen.getByRole('button', { name: /^Box 1/ }));
+    await user.type(screen.getByLabelText('New name for Box 1'), 'crate{Enter}');
+    expect(store().scene.objects[0]).toEqual({ type: 'box', name: 'crate' });
+    act(() => store().select({ kind: 'object', index: 1 }));
+    await user.clear(within(screen.getByTestId('inspector-object')).getByLabelText('Name'));
+    await user.keyboard('{Enter}');
+    expect(store().scene.objects[1]).toEqual({ type: 'sphere' });
+    act(() => {
+      store().select({ kind: 'object', index: 0 });
+      store().deleteSelected();
+    });
+    expect(screen.getByRole('button', { name: /^Sphere 2/ })).toBeInTheDocument();
   });
 
   it('refuses a width over the limit and says why, until it is fixed', async () => {

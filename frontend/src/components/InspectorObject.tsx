@@ -6,7 +6,8 @@ import { InspectorMaterial } from './InspectorMaterial';
 import { InspectorMesh } from './InspectorMesh';
 import { NumberField } from './fields/NumberField';
 import { VectorField } from './fields/VectorField';
-import { OBJECT_HINTS, objectName } from './labels';
+import { TextField } from './fields/TextField';
+import { labelOf, OBJECT_HINTS } from './labels';
 
 /** Props of {@link InspectorObject}. */
 export interface InspectorObjectProps {
@@ -41,8 +42,16 @@ export function InspectorObject({ index }: InspectorObjectProps) {
     setPreview(edits.setMaterial(useSceneStore.getState().scene, index, material));
 
   return (
-    <section className="inspector-section" aria-label={`${objectName(r.type, index)} properties`} data-testid="inspector-object">
-      <h3 title={OBJECT_HINTS[r.type]}>{objectName(r.type, index)}</h3>
+    <section className="inspector-section" aria-label={`${labelOf(object, index)} properties`} data-testid="inspector-object">
+      <h3 title={OBJECT_HINTS[r.type]}>{labelOf(object, index)}</h3>
+      <TextField
+        label="Name"
+        path={`${path}.name`}
+        value={object.name ?? ''}
+        maxLength={200}
+        hint="Your name for it, kept in the file (the renderer ignores it); empty for none"
+        onCommit={(name) => setField(index, 'name', name.trim() === '' ? undefined : name.trim())}
+      />
       {r.type === 'sphere' && (
         <>
           {vector('center', 'Center', r.center, 'Centre of the sphere (metres)')}

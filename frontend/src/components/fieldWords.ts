@@ -5,7 +5,8 @@
  */
 import { pathSteps } from '../model/standingErrors';
 import type { Scene } from '../model/types';
-import { objectLabel } from './labels';
+import { sceneLights } from '../model/defaults';
+import { lightLabel, objectLabel } from './labels';
 import { OVERRIDE_FIELDS } from './labels';
 
 const AXES = ['x', 'y', 'z'];
@@ -47,7 +48,7 @@ export function describeField(scene: Scene, path: string): string {
   if (head === 'objects' && typeof index === 'number') {
     words = [objectLabel(scene, index), ...stepWords('object', steps.slice(2))];
   } else if (head === 'lights' && typeof index === 'number') {
-    words = [`Light ${index + 1}`, ...stepWords('light', steps.slice(2))];
+    words = [lightLabel(sceneLights(scene), index), ...stepWords('light', steps.slice(2))];
   } else if (head === 'camera' || head === 'image' || head === 'render') {
     words = [String(head[0]).toUpperCase() + String(head).slice(1), ...stepWords(String(head), steps.slice(1))];
   } else if (path === '') {

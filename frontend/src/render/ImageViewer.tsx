@@ -30,9 +30,14 @@ export function ImageViewer({ url, width, height, name, onClose }: ImageViewerPr
   // Fit once the area is laid out, and again for another image.
   useEffect(fit, [width, height]);
   useEffect(() => {
-    const onKey = (e: KeyboardEvent) => e.key === 'Escape' && onClose();
-    window.addEventListener('keydown', onKey);
-    return () => window.removeEventListener('keydown', onKey);
+    // Escape is the viewer's alone while it is open (the editor's own Escape clears the selection).
+    const onKey = (e: KeyboardEvent) => {
+      if (e.key !== 'Escape') return;
+      e.stopPropagation();
+      onClose();
+    };
+    window.addEventListener('keydown', onKey, true);
+    return () => window.removeEventListener('keydown', onKey, true);
   }, [onClose]);
   const centre = () => ({ x: size().w / 2, y: size().h / 2 });
   const onWheel = (e: WheelEvent) => {

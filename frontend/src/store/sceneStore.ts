@@ -5,6 +5,7 @@
  */
 import { create } from 'zustand';
 import { blankScene, sceneLights } from '../model/defaults';
+import { carryIds } from '../model/identity';
 import { sameJson } from '../model/sameJson';
 import * as edits from '../model/edits';
 import type { DragTarget, Selection } from '../model/selection';
@@ -123,7 +124,7 @@ const NO_SERVER_ERRORS: Record<ErrorSource, ServerErrors | null> = { render: nul
 
 function initialData(scene: Scene): Data {
   return {
-    scene, past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1,
+    scene: carryIds(null, scene), past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1,
     documentId: 1, serverErrors: NO_SERVER_ERRORS,
   };
 }
@@ -139,9 +140,10 @@ const sameScene = (a: Scene, b: Scene) => sameJson(a, b);
 
 export const useSceneStore = create<SceneState>()((set, get) => {
   /** The single write path: one edit, one history entry (none if nothing changed). */
-  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection) => {
+  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection, newDocument = false) => {
     const { scene, past, future, selection: current } = get();
-    const next = edit(scene);
+    // a new document numbers its objects afresh; an edit carries the ids on
+    const next = carryIds(newDocument ? null : scene, edit(scene));
     if (sameScene(next, scene)) {
       set({ preview: null });
       return;
@@ -163,11 +165,11 @@ export const useSceneStore = create<SceneState>()((set, get) => {
       set({ serverErrors: { ...get().serverErrors, [source]: report } });
     },
     loadScene: (scene) => {
-      commit(() => structuredClone(scene), () => null);
+      commit(() => structuredClone(scene), () => null, true);
       set({ fitRequest: get().fitRequest + 1, documentId: get().documentId + 1, serverErrors: NO_SERVER_ERRORS });
     },
     newScene: () => {
-      commit(() => blankScene(), () => null);
+      commit(() => blankScene(), () => null, true);
       set({ fitRequest: get().fitRequest + 1, documentId: get().documentId + 1, serverErrors: NO_SERVER_ERRORS });
     },
     setScene: (scene) => commit(() => structuredClone(scene)),
@@ -201,8 +203,8 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     moveTarget: (target, to) => commit((s) => edits.moveTarget(s, target, to)),
     select: (selection) => set({ selection: keepValid(get().scene, selection) }),
 
-    setPreview: (preview) => set({ preview }),
-    dragTo: (target, to) => set({ preview: edits.moveTarget(get().scene, target, to) }),
+    setPreview: (preview) => set({ preview: preview && carryIds(get().scene, preview) }),
+    dragTo: (target, to) => set({ preview: carryIds(get().scene, edits.moveTarget(get().scene, target, to)) }),
     commitPreview: () => {
       const { preview } = get();
       if (preview) commit(() => preview);
