@@ -118,6 +118,55 @@ try {
     await page.screenshot({ path: `${out}result.png` });
   });
 
+  await step('the image is the centre: a whole render with Render in reach at 1024x768 and 1440x900; a full-size viewer at 1:1', async () => {
+    for (const [width, height] of [[1024, 768], [1440, 900]]) {
+      await page.setViewportSize({ width, height });
+      await page.getByRole('tab', { name: 'Image' }).click();
+      const image = page.getByRole('img', { name: 'Rendered image', exact: true });
+      await image.waitFor();
+      await until(async () => {
+        const box = await image.boundingBox();
+        return box && box.x >= 0 && box.y >= 0 && box.x + box.width <= width && box.y + box.height <= height && box.width >= width * 0.45;
+      }, async () => `at ${width}x${height} the image is not whole and large: ${JSON.stringify(await image.boundingBox())}`);
+      const render = await page.getByTestId('render-button').boundingBox();
+      expect(render && render.y >= 0 && render.y + render.height <= height, `Render is out of reach at ${width}x${height}`);
+      await page.screenshot({ path: `${out}stage-${width}x${height}.png` });
+    }
+    await page.getByRole('button', { name: 'Full size' }).click();
+    const viewer = page.getByRole('dialog', { name: /Full-size image/ });
+    await viewer.waitFor();
+    await viewer.getByRole('button', { name: '1:1' }).click();
+    const scale = Number(await viewer.getByRole('img').getAttribute('data-scale'));
+    expect(Math.abs(scale - 1) < 1e-9, `1:1 shows ${scale} device pixels an image pixel`);
+    await page.keyboard.press('Escape');
+    await viewer.waitFor({ state: 'detached' });
+    await page.setViewportSize({ width: 1440, height: 1000 });
+    await page.getByRole('tab', { name: '3D preview' }).click();
+  });
+
+  await step('a render of an older scene says "Out of date" and offers to render again', async () => {
+    const hex = page.getByLabel('Color hex', { exact: true });
+    await hex.fill('#8cf');
+    await hex.press('Enter');
+    await page.getByText('Out of date', { exact: true }).waitFor({ timeout: 5000 });
+    await page.getByRole('button', { name: 'Render again' }).waitFor();
+    expect((await hex.inputValue()) === '#88ccff', `#8cf was not read as #88ccff: ${await hex.inputValue()}`);
+  });
+
+  await step('a refused value stays with its reason beside the field until it is fixed', async () => {
+    const radius = page.getByLabel('Radius');
+    const before = await radius.inputValue();
+    await radius.fill('-1');
+    await radius.press('Enter');
+    expect((await radius.inputValue()) === '-1', 'the refused value was reverted silently');
+    expect((await radius.getAttribute('aria-invalid')) === 'true', 'the refused radius is not aria-invalid');
+    const why = await radius.evaluate((el) => document.getElementById(el.getAttribute('aria-describedby'))?.textContent);
+    expect(why === 'must be greater than 0', `the reason beside the field is "${why}"`);
+    await radius.press('Escape');
+    expect((await radius.inputValue()) === before, 'Escape did not revert the radius');
+    expect((await radius.getAttribute('aria-invalid')) === null, 'the reverted radius is still invalid');
+  });
+
   await step('a camera looking straight down its up vector is refused, with the error by the field', async () => {
     await page.getByRole('button', { name: 'Camera', exact: true }).first().click();
     for (const [axis, value] of [['x', '0'], ['y', '10'], ['z', '0']]) {
@@ -133,7 +182,7 @@ try {
     await page.getByTestId('render-button').click();
     const summary = page.getByTestId('error-summary');
     await summary.waitFor({ timeout: 15000 });
-    expect((await summary.innerText()).includes('camera.up'), 'the summary does not name camera.up');
+    expect((await summary.innerText()).includes('Camera › Up'), 'the summary does not name Camera › Up');
     const byField = page.locator('.field-error', { hasText: 'parallel' });
     await byField.first().waitFor({ timeout: 5000 });
     await byField.first().scrollIntoViewIfNeeded();
@@ -141,12 +190,13 @@ try {
   });
 
   await step('the Ray traced view names the same refused field, then renders, and follows a drag in the top view', async () => {
+    await page.getByRole('tab', { name: '3D preview' }).click();
     await page.getByRole('button', { name: 'Ray traced' }).click();
     const view = page.getByTestId('ray-traced-view');
     const canvas = view.getByTestId('ray-traced-canvas');
     const summary = view.getByTestId('error-summary');
     await summary.waitFor({ timeout: 15000 });
-    expect((await summary.innerText()).includes('camera.up'), 'the live view does not name camera.up');
+    expect((await summary.innerText()).includes('Camera › Up'), 'the live view does not name Camera › Up');
 
     // an up vector across the view: the scene renders, coarse to fine, and the problem goes
     for (const [axis, value] of [['y', '0'], ['z', '-1']]) {
@@ -195,6 +245,38 @@ try {
     await page.screenshot({ path: `${out}ray-traced.png` });
     await page.getByRole('button', { name: 'Camera view' }).click();
     await view.waitFor({ state: 'detached', timeout: 5000 });
+  });
+
+  await step('an opened file with fov 0 is flagged before Render; New clears its errors and the last render', async () => {
+    const bad = { name: 'bad-fov', camera: { fov: 0 }, objects: [{ type: 'sphere', radius: 1 }] };
+    await page.getByTestId('open-scene').setInputFiles({ name: 'bad-fov.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(bad)) });
+    await page.getByRole('button', { name: 'Camera', exact: true }).first().click();
+    const fov = page.getByLabel('Field of view (°)');
+    await until(async () => (await fov.getAttribute('aria-invalid')) === 'true', 'fov 0 is not flagged before Render');
+    const problems = page.getByTestId('problem-list');
+    expect((await problems.innerText()).includes('Camera › Field of view: must be greater than 0'), `problem list: ${await problems.innerText()}`);
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByRole('button', { name: 'Camera', exact: true }).first().click();
+    await until(async () => (await fov.getAttribute('aria-invalid')) === null, 'the new scene still flags the old fov');
+    expect(await problems.count() === 0, 'the problem list survived New');
+    expect(await page.getByTestId('download-link').count() === 0, 'the old render\'s download survived New');
+  });
+
+  await step('objects have stable labels and can be renamed; the name is kept in the scene', async () => {
+    await page.getByTestId('add-box').click();
+    await page.getByTestId('add-sphere').click();
+    const name = page.getByTestId('inspector-object').getByLabel('Name', { exact: true });
+    await name.fill('ball');
+    await name.press('Enter');
+    const outline = page.getByRole('navigation', { name: 'Scene contents' });
+    await outline.getByRole('button', { name: /Sphere "ball"/ }).waitFor();
+    await outline.getByRole('button', { name: /^Box 1/ }).click();
+    await page.getByRole('button', { name: 'Delete', exact: true }).click();
+    await outline.getByRole('button', { name: /Sphere "ball"/ }).waitFor();
+    await page.getByRole('tab', { name: 'JSON' }).click();
+    const text = await page.getByLabel('Scene JSON').inputValue();
+    expect(/"name": "ball"/.test(text), 'the name is not in the scene JSON');
+    await page.getByRole('tab', { name: '3D preview' }).click();
   });
 
   await step('no uncaught errors in the page', async () => {

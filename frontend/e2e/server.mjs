@@ -14,9 +14,12 @@ export function freePort() {
   });
 }
 
-/** Runs `java -jar jar` on a free port; resolves once /actuator/health says UP. */
+/**
+ * Runs `java -jar jar` on a free port (or on $E2E_PORT, for a machine where only some ports may be
+ * used); resolves once /actuator/health says UP.
+ */
 export async function startServer(jar, { timeoutMs = 90_000 } = {}) {
-  const port = await freePort();
+  const port = process.env.E2E_PORT ? Number(process.env.E2E_PORT) : await freePort();
   const java = process.env.JAVA_HOME ? `${process.env.JAVA_HOME}/bin/java` : 'java';
   const child = spawn(java, ['-jar', jar, `--server.port=${port}`], { stdio: ['ignore', 'pipe', 'pipe'] });
   let log = '';

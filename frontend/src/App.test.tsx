@@ -56,6 +56,20 @@ describe('App', () => {
     expect(within(screen.getByTestId('top-view')).getAllByTestId(/^object-/)).toHaveLength(STARTER_SCENE.objects.length);
   }, 20_000);
 
+  it('hides and shows the 2D views and the inspector, and follows the window until the user chooses', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    const views = screen.getByTestId('top-view').closest('.studio-views')!;
+    const shown = window.innerWidth >= 1280;
+    expect(views.hasAttribute('hidden')).toBe(!shown);
+    await user.click(screen.getByRole('button', { name: '2D views' }));
+    expect(views.hasAttribute('hidden')).toBe(shown);
+    act(() => window.dispatchEvent(new Event('resize')));
+    expect(views.hasAttribute('hidden')).toBe(shown); // the user's choice stands
+    await user.click(screen.getByRole('button', { name: 'Inspector' }));
+    expect(screen.getByRole('complementary', { name: 'Inspector', hidden: true }).closest('.studio-inspector')).toHaveAttribute('hidden');
+  });
+
   it('adds a sphere, selected in both views and the inspector; Undo and Redo buttons', async () => {
     const user = userEvent.setup();
     await renderApp();
@@ -190,12 +204,39 @@ describe('App', () => {
     const bad = () => new Response(JSON.stringify(problem), { status: 400, headers: { 'Content-Type': 'application/problem+json' } });
     await renderApp(mockServer({ 'POST /api/jobs': bad, 'POST /api/render': bad }));
     await user.click(screen.getByRole('button', { name: 'Render' }));
-    const list = await screen.findByRole('region', { name: 'Problems found by the server' });
-    expect(list).toHaveTextContent('objects[1].radius must be greater than 0');
+    const list = await screen.findByRole('region', { name: 'Problems' });
+    expect(list).toHaveTextContent('Sphere 2 › Radius: must be greater than 0');
     expect(screen.getByLabelText('Width (px)')).toHaveAccessibleDescription('must be at most 4096');
-    await user.click(within(list).getByRole('button', { name: 'objects[1].radius' }));
+    expect(screen.getByLabelText('Width (px)')).toHaveAttribute('aria-invalid', 'true');
+    await user.click(within(list).getByRole('button', { name: 'Sphere 2 › Radius' }));
     expect(store().selection).toEqual({ kind: 'object', index: 1 });
-    expect(screen.getByLabelText('Radius')).toHaveAccessibleDescription('must be greater than 0');
+    const radius = screen.getByLabelText('Radius');
+    expect(radius).toHaveAccessibleDescription('must be greater than 0');
+    expect(radius).toHaveAttribute('aria-invalid', 'true');
+
+    // an error goes as soon as its field changes; the others stay
+    await user.clear(radius);
+    await user.type(radius, '0.7{Enter}');
+    expect(radius).not.toHaveAttribute('aria-invalid');
+    expect(list).not.toHaveTextContent('Radius');
+    expect(list).toHaveTextContent('Image › Width: must be at most 4096');
+
+    // New forgets the old scene's errors
+    await user.click(screen.getByRole('button', { name: 'New' }));
+    expect(screen.queryByRole('region', { name: 'Problems' })).toBeNull();
+    expect(screen.getByLabelText('Width (px)')).not.toHaveAttribute('aria-invalid');
+  });
+
+  it('warns before Render about what the server would refuse: an opened radius of -1, Up along the view', async () => {
+    await renderApp();
+    act(() => store().loadScene({ camera: { position: [0, 5, 0], lookAt: [0, 0, 0], up: [0, 1, 0] }, objects: [{ type: 'sphere', radius: -1 }] }));
+    const list = await screen.findByRole('region', { name: 'Problems' });
+    expect(list).toHaveTextContent('Sphere 1 › Radius: must be greater than 0');
+    expect(list).toHaveTextContent("Camera › Up: is parallel to the view direction (Look at − Position); the camera's roll is undefined");
+    expect(screen.getByLabelText('Up y')).toHaveAttribute('aria-invalid', 'true');
+    act(() => store().setCamera({ up: [0, 0, -1] }));
+    expect(list).not.toHaveTextContent('Camera');
+    expect(screen.getByLabelText('Up y')).not.toHaveAttribute('aria-invalid');
   });
 
   it('adds a mesh from an OBJ file: inline at the origin, about 2 m across, selected, one undo step', async () => {

@@ -1,6 +1,6 @@
-import { lazy, Suspense, useState } from 'react';
+import { lazy, Suspense, useCallback, useState } from 'react';
 import type { FetchFn } from './api/client';
-import { FieldErrorsProvider, type FieldErrors } from './components/fieldErrors';
+import { FieldErrorsProvider } from './components/fieldErrors';
 import { Inspector } from './components/Inspector';
 import { JsonTab } from './components/JsonTab';
 import { ProblemList } from './components/ProblemList';
@@ -8,6 +8,9 @@ import { RenderPanel } from './render/RenderPanel';
 import { Toolbar } from './components/Toolbar';
 import { useEditorShortcuts } from './hooks/useEditorShortcuts';
 import { useMeshFiles } from './hooks/useMeshes';
+import { useSceneErrors } from './hooks/useSceneErrors';
+import { usePanels } from './hooks/usePanels';
+import type { Scene } from './model/types';
 import { useSceneStore } from './store/sceneStore';
 import { SideView } from './views/SideView';
 import { TopView } from './views/TopView';
@@ -18,32 +21,51 @@ export interface AppProps {
   fetchFn?: FetchFn;
 }
 
-type CentreTab = 'preview' | 'json';
+type StageTab = 'preview' | 'render' | 'json';
 
 // three.js is most of the page's weight: load the preview in its own chunk.
 const Preview3D = lazy(() => import('./views/Preview3D').then((m) => ({ default: m.Preview3D })));
 
 /**
- * The scene editor: toolbar on top; top and side views on the left; the 3D preview (or the
- * JSON text) in the centre with the render area below; the inspector on the right.
+ * The scene editor, built around the image: the toolbar on top; in the centre the stage (the 3D
+ * preview or live ray-traced view, the final render, or the JSON) with Render and Cancel always in
+ * its bar; the top and side views on the left and the inspector on the right, each of which can be
+ * hidden (the views start hidden on narrow windows).
  */
 export function App({ fetchFn }: AppProps) {
   const [message, setMessage] = useState<string | null>(null);
-  const [fieldErrors, setFieldErrors] = useState<FieldErrors>({});
-  const [tab, setTab] = useState<CentreTab>('preview');
+  const fieldErrors = useSceneErrors();
+  const [tab, setTab] = useState<StageTab>('preview');
+  const [panels, setPanels] = usePanels();
   const scene = useSceneStore((s) => s.scene);
+  const documentId = useSceneStore((s) => s.documentId);
+  const report = useSceneStore((s) => s.reportServerErrors);
+  const onRenderErrors = useCallback((errors: Record<string, string>, sent: unknown) => report('render', sent as Scene, errors), [report]);
+  const onLiveErrors = useCallback(
+    (errors: Record<string, string>) => report('live', useSceneStore.getState().preview ?? useSceneStore.getState().scene, errors),
+    [report],
+  );
+  const showRender = useCallback(() => setTab('render'), []);
   useEditorShortcuts();
   useMeshFiles(fetchFn);
 
-  const tabButton = (id: CentreTab, label: string) => (
+  const tabButton = (id: StageTab, label: string) => (
     <button type="button" role="tab" id={`tab-${id}`} aria-selected={tab === id} aria-controls={`panel-${id}`} onClick={() => setTab(id)}>
       {label}
     </button>
   );
+  const tabs = (
+    <div role="tablist" aria-label="Stage" className="tabs">
+      {tabButton('preview', '3D preview')}
+      {tabButton('render', 'Image')}
+      {tabButton('json', 'JSON')}
+    </div>
+  );
+  const layout = `studio-main${panels.views ? '' : ' no-views'}${panels.inspector ? '' : ' no-inspector'}`;
   return (
     <FieldErrorsProvider errors={fieldErrors}>
       <div className="studio">
-        <Toolbar fetchFn={fetchFn} onMessage={setMessage} />
+        <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} />
         {message && (
           <div className="studio-message" role="alert">
             <pre>{message}</pre>
@@ -52,29 +74,32 @@ export function App({ fetchFn }: AppProps) {
             </button>
           </div>
         )}
-        <main className="studio-main">
-          <div className="studio-views">
+        <main className={layout}>
+          <div className="studio-views" hidden={!panels.views}>
             <TopView />
             <SideView />
           </div>
           <div className="studio-centre">
-            <div role="tablist" aria-label="Centre panel" className="tabs">
-              {tabButton('preview', '3D preview')}
-              {tabButton('json', 'JSON')}
-            </div>
-            <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
-              <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
-                <Preview3D shown={tab === 'preview'} onFieldErrors={setFieldErrors} />
-              </Suspense>
-            </div>
-            <div role="tabpanel" id="panel-json" aria-labelledby="tab-json" hidden={tab !== 'json'} className="tab-panel">
-              {tab === 'json' && <JsonTab />}
-            </div>
-            <div className="studio-render">
-              <RenderPanel scene={scene} onFieldErrors={setFieldErrors} fetchFn={fetchFn} />
-            </div>
+            <RenderPanel
+              key={documentId}
+              scene={scene}
+              onFieldErrors={onRenderErrors}
+              fetchFn={fetchFn}
+              tabs={tabs}
+              showingRender={tab === 'render'}
+              onRenderStarted={showRender}
+            >
+              <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
+                <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
+                  <Preview3D shown={tab === 'preview'} onFieldErrors={onLiveErrors} />
+                </Suspense>
+              </div>
+              <div role="tabpanel" id="panel-json" aria-labelledby="tab-json" hidden={tab !== 'json'} className="tab-panel">
+                {tab === 'json' && <JsonTab />}
+              </div>
+            </RenderPanel>
           </div>
-          <div className="studio-inspector">
+          <div className="studio-inspector" hidden={!panels.inspector}>
             <ProblemList />
             <Inspector />
           </div>

@@ -1,4 +1,4 @@
-import { fireEvent, render, screen, within } from '@testing-library/react';
+import { act, fireEvent, render, screen, within } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { describe, expect, it } from 'vitest';
 import type { Scene } from '../model/types';
@@ -46,18 +46,82 @@ describe('Inspector', () => {
     expect(store().past).toHaveLength(2);
   });
 
-  it('refuses text that is not a valid number and reverts it', async () => {
+  it('refuses a value out of range: it stays with its reason beside the field until Escape reverts it', async () => {
     const user = userEvent.setup();
     resetSceneStore(SCENE);
     store().select({ kind: 'object', index: 0 });
     render(<Inspector />);
     const radius = screen.getByLabelText('Radius');
     await user.clear(radius);
-    await user.type(radius, '-2');
-    expect(screen.getByText('must be at least 0.001')).toHaveClass('field-error');
+    await user.type(radius, '-1');
     await user.keyboard('{Enter}');
     expect(store().past).toHaveLength(0);
+    expect(radius).toHaveValue(-1);
+    expect(radius).toHaveAttribute('aria-invalid', 'true');
+    expect(radius).toHaveAccessibleDescription('must be greater than 0');
+    await user.tab();
+    expect(radius).toHaveAccessibleDescription('must be greater than 0');
+    await user.click(radius);
+    await user.keyboard('{Escape}');
     expect(radius).toHaveValue(0.5);
+    expect(radius).not.toHaveAttribute('aria-invalid');
+    expect(screen.queryByText('must be greater than 0')).toBeNull();
+  });
+
+  it('renames an object in the inspector and in the list; deleting another keeps its label', async () => {
+    const user = userEvent.setup();
+    resetSceneStore({ objects: [{ type: 'box' }, { type: 'sphere' }] });
+    store().select({ kind: 'object', index: 1 });
+    render(<Inspector />);
+    expect(screen.getByRole('heading', { name: 'Sphere 2' })).toBeInTheDocument();
+    await user.type(within(screen.getByTestId('inspector-object')).getByLabelText('Name'), 'ball{Enter}');
+    expect(store().scene.objects[1]).toEqual({ type: 'sphere', name: 'ball' });
+    expect(screen.getByRole('heading', { name: 'Sphere "ball"' })).toBeInTheDocument();
+    await user.dblClick(screen.getByRole('button', { name: /^Box 1/ }));
+    await user.type(screen.getByLabelText('New name for Box 1'), 'crate{Enter}');
+    expect(store().scene.objects[0]).toEqual({ type: 'box', name: 'crate' });
+    act(() => store().select({ kind: 'object', index: 1 }));
+    await user.clear(within(screen.getByTestId('inspector-object')).getByLabelText('Name'));
+    await user.keyboard('{Enter}');
+    expect(store().scene.objects[1]).toEqual({ type: 'sphere' });
+    act(() => {
+      store().select({ kind: 'object', index: 0 });
+      store().deleteSelected();
+    });
+    expect(screen.getByRole('button', { name: /^Sphere 2/ })).toBeInTheDocument();
+  });
+
+  it('refuses a width over the limit and says why, until it is fixed', async () => {
+    const user = userEvent.setup();
+    resetSceneStore(SCENE);
+    render(<Inspector />);
+    const width = screen.getByLabelText('Width (px)');
+    await user.clear(width);
+    await user.type(width, '8000{Enter}');
+    expect(width).toHaveAccessibleDescription('must be at most 4096');
+    await user.clear(width);
+    await user.type(width, '1024{Enter}');
+    expect(store().scene.image?.width).toBe(1024);
+    expect(width).not.toHaveAttribute('aria-invalid');
+  });
+
+  it('takes #f00 and ff0000 as colours and explains why "red" is refused', async () => {
+    const user = userEvent.setup();
+    resetSceneStore(SCENE);
+    render(<Inspector />);
+    const hex = screen.getByLabelText('Background hex');
+    await user.clear(hex);
+    await user.type(hex, '#f00{Enter}');
+    expect(store().scene.background).toBe('#ff0000');
+    await user.clear(hex);
+    await user.type(hex, '00ff00{Enter}');
+    expect(store().scene.background).toBe('#00ff00');
+    await user.clear(hex);
+    await user.type(hex, 'red{Enter}');
+    expect(store().scene.background).toBe('#00ff00');
+    expect(hex).toHaveValue('red');
+    expect(hex).toHaveAttribute('aria-invalid', 'true');
+    expect(hex).toHaveAccessibleDescription('must be a hex colour such as #ff8800 or #f80');
   });
 
   it('changes the material kind and shows only that kind’s overrides', async () => {
@@ -94,7 +158,7 @@ describe('Inspector', () => {
     expect(screen.getByLabelText('Light position z')).toHaveValue(3);
     await user.click(screen.getByLabelText('Falls off with distance (1/d²)'));
     expect(store().scene.lights?.[0].falloff).toBe(true);
-    for (const path of ['camera.position[0]', 'camera.lookAt[2]', 'camera.up[1]', 'camera.fov', 'name', 'background', 'ambient', 'image.width', 'image.height', 'image.format', 'image.quality', 'render.sampler', 'render.samples', 'render.maxDepth', 'render.seed', 'render.adaptive']) {
+    for (const path of ['camera.position[0]', 'camera.lookAt[2]', 'camera.up[1]', 'camera.fov', 'name', 'background', 'ambient', 'image.width', 'image.height', 'image.format', 'render.sampler', 'render.samples', 'render.maxDepth', 'render.seed', 'render.adaptive']) {
       expect(field(path)).toBeInTheDocument();
     }
     const width = screen.getByLabelText('Width (px)');

@@ -24,8 +24,10 @@ export function InspectorCamera({ active = false }: InspectorCameraProps) {
         label="Field of view (°)"
         path="camera.fov"
         value={r.fov}
-        min={0.1}
-        max={179.9}
+        min={0}
+        minExclusive
+        max={180}
+        maxExclusive
         step={1}
         hint="Vertical field of view in degrees, as three.js (smaller zooms in)"
         onCommit={(v) => setCamera({ fov: v })}

@@ -4,7 +4,9 @@ import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { CheckboxField } from './fields/CheckboxField';
 import { ColorField } from './fields/ColorField';
 import { NumberField } from './fields/NumberField';
+import { TextField } from './fields/TextField';
 import { VectorField } from './fields/VectorField';
+import { labelOf } from './labels';
 
 /** Props of {@link InspectorLight}. */
 export interface InspectorLightProps {
@@ -23,8 +25,16 @@ export function InspectorLight({ index }: InspectorLightProps) {
   const r = resolveLight(light);
   const path = `lights[${index}]`;
   return (
-    <section className="inspector-section" aria-label={`Light ${index + 1} properties`} data-testid="inspector-light">
-      <h3>Light {index + 1}</h3>
+    <section className="inspector-section" aria-label={`${labelOf(light, index)} properties`} data-testid="inspector-light">
+      <h3>{labelOf(light, index)}</h3>
+      <TextField
+        label="Name"
+        path={`${path}.name`}
+        value={light.name ?? ''}
+        maxLength={200}
+        hint="Your name for it, kept in the file (the renderer ignores it); empty for none"
+        onCommit={(name) => setField(index, 'name', name.trim() === '' ? undefined : name.trim())}
+      />
       <VectorField
         label="Light position"
         path={`${path}.position`}

@@ -44,7 +44,7 @@ describe('Inspector for a mesh', () => {
     expect(store().past).toHaveLength(1);
     await user.clear(scale);
     await user.type(scale, '0');
-    expect(screen.getByText('must be at least 0.000001')).toHaveClass('field-error');
+    expect(screen.getByText('must be greater than 0')).toHaveClass('field-error');
   });
 
   it('explains an OBJ it cannot read, naming the line', () => {

@@ -41,7 +41,8 @@ export function InspectorMesh({ index, mesh }: InspectorMeshProps) {
         label="Scale"
         path={`${path}.scale`}
         value={mesh.scale}
-        min={0.000001}
+        min={0}
+        minExclusive
         step={0.1}
         hint="Uniform scale of the OBJ’s coordinates (greater than 0)"
         onCommit={(v) => setField(index, 'scale', v)}

@@ -6,7 +6,8 @@ import { InspectorMaterial } from './InspectorMaterial';
 import { InspectorMesh } from './InspectorMesh';
 import { NumberField } from './fields/NumberField';
 import { VectorField } from './fields/VectorField';
-import { OBJECT_HINTS, objectName } from './labels';
+import { TextField } from './fields/TextField';
+import { labelOf, OBJECT_HINTS } from './labels';
 
 /** Props of {@link InspectorObject}. */
 export interface InspectorObjectProps {
@@ -25,13 +26,14 @@ export function InspectorObject({ index }: InspectorObjectProps) {
   if (!object) return null;
   const r = resolveObject(object);
   const path = `objects[${index}]`;
-  const vector = (field: string, label: string, value: Vec3, hint: string, min?: number, step = 0.1) => (
+  const vector = (field: string, label: string, value: Vec3, hint: string, min?: number, step = 0.1, minExclusive = false) => (
     <VectorField
       label={label}
       path={`${path}.${field}`}
       value={value}
       hint={hint}
       min={min}
+      minExclusive={minExclusive}
       step={step}
       onCommit={(v) => setField(index, field, v)}
     />
@@ -40,8 +42,16 @@ export function InspectorObject({ index }: InspectorObjectProps) {
     setPreview(edits.setMaterial(useSceneStore.getState().scene, index, material));
 
   return (
-    <section className="inspector-section" aria-label={`${objectName(r.type, index)} properties`} data-testid="inspector-object">
-      <h3 title={OBJECT_HINTS[r.type]}>{objectName(r.type, index)}</h3>
+    <section className="inspector-section" aria-label={`${labelOf(object, index)} properties`} data-testid="inspector-object">
+      <h3 title={OBJECT_HINTS[r.type]}>{labelOf(object, index)}</h3>
+      <TextField
+        label="Name"
+        path={`${path}.name`}
+        value={object.name ?? ''}
+        maxLength={200}
+        hint="Your name for it, kept in the file (the renderer ignores it); empty for none"
+        onCommit={(name) => setField(index, 'name', name.trim() === '' ? undefined : name.trim())}
+      />
       {r.type === 'sphere' && (
         <>
           {vector('center', 'Center', r.center, 'Centre of the sphere (metres)')}
@@ -49,7 +59,8 @@ export function InspectorObject({ index }: InspectorObjectProps) {
             label="Radius"
             path={`${path}.radius`}
             value={r.radius}
-            min={0.001}
+            min={0}
+            minExclusive
             step={0.05}
             hint="Radius in metres (greater than 0)"
             onCommit={(v) => setField(index, 'radius', v)}
@@ -59,7 +70,7 @@ export function InspectorObject({ index }: InspectorObjectProps) {
       {r.type === 'box' && (
         <>
           {vector('center', 'Center', r.center, 'Centre of the box (metres)')}
-          {vector('size', 'Size', r.size, 'Full edge lengths along the box’s own x, y, z (metres)', 0.001)}
+          {vector('size', 'Size', r.size, 'Full edge lengths along the box’s own x, y, z (metres)', 0, 0.1, true)}
           {vector('rotation', 'Rotation', r.rotation, 'Degrees about x, y, z, applied in order XYZ (as three.js)', undefined, 5)}
         </>
       )}

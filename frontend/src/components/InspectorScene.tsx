@@ -48,7 +48,9 @@ export function InspectorScene() {
           ]}
           onCommit={(format) => s.setImage({ format: format as ImageFormat })}
         />
-        <NumberField label="JPEG quality" path="image.quality" value={r.image.quality} min={0} max={1} step={0.01} hint="0 to 1; only used for JPEG" onCommit={(quality) => s.setImage({ quality })} />
+        {r.image.format === 'jpg' && (
+          <NumberField label="JPEG quality" path="image.quality" value={r.image.quality} min={0} max={1} step={0.01} hint="0 to 1 (JPEG only)" onCommit={(quality) => s.setImage({ quality })} />
+        )}
       </fieldset>
       <fieldset className="inspector-group">
         <legend>Render</legend>
@@ -62,7 +64,7 @@ export function InspectorScene() {
             s.setRender(sampler === 'regular' ? { sampler, adaptive: 0 } : { sampler: sampler as SamplerName })
           }
         />
-        <NumberField label="Samples per pixel" path="render.samples" value={r.render.samples} integer min={1} step={1} hint="More samples: smoother edges, slower. With adaptive sampling: the most a pixel takes" onCommit={(samples) => s.setRender({ samples })} />
+        <NumberField label="Samples per pixel" path="render.samples" value={r.render.samples} integer min={1} max={1024} step={1} hint="More samples: smoother edges, slower. With adaptive sampling: the most a pixel takes" onCommit={(samples) => s.setRender({ samples })} />
         <NumberField
           label="Adaptive threshold"
           path="render.adaptive"
@@ -73,7 +75,7 @@ export function InspectorScene() {
           hint="0: off. Otherwise a pixel stops taking samples (at least 4 with sobol, 8 with the others) once its estimated relative error is below this; 0.05 by default, smaller is smoother and slower; not with the regular sampler"
           onCommit={(adaptive) => s.setRender({ adaptive })}
         />
-        <NumberField label="Max depth" path="render.maxDepth" value={r.render.maxDepth} integer min={0} step={1} hint="Reflection/refraction bounces" onCommit={(maxDepth) => s.setRender({ maxDepth })} />
+        <NumberField label="Max depth" path="render.maxDepth" value={r.render.maxDepth} integer min={0} max={16} step={1} hint="Reflection/refraction bounces" onCommit={(maxDepth) => s.setRender({ maxDepth })} />
         <NumberField label="Seed" path="render.seed" value={r.render.seed} integer step={1} hint="Varies the noise pattern; the same seed gives the same image" onCommit={(seed) => s.setRender({ seed })} />
       </fieldset>
     </section>

@@ -1,26 +1,59 @@
-import { sceneLights } from '../model/defaults';
+import { useState } from 'react';
+import { resolveMaterial, sceneLights } from '../model/defaults';
+import { idOf } from '../model/identity';
 import { sameSelection, type Selection } from '../model/selection';
-import { resolveMaterial } from '../model/defaults';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { useMeshLookup } from '../hooks/useMeshes';
-import { MATERIAL_LABELS, meshName, objectName } from './labels';
+import { labelOf, MATERIAL_LABELS, meshName } from './labels';
 
-/** A clickable list of everything in the scene: objects, lights, the camera and its target. */
+/**
+ * A clickable list of everything in the scene: objects and lights (by name, or kind and stable
+ * number), the camera and its target. Double-click (or F2 on) an object or light to rename it.
+ */
 export function SceneOutline() {
   const scene = useSceneStore(selectDisplayScene);
   const selection = useSceneStore((s) => s.selection);
   const select = useSceneStore((s) => s.select);
   const meshes = useMeshLookup();
-  const item = (key: string, label: string, target: Selection, detail?: string) => {
+  const [renaming, setRenaming] = useState<string | null>(null);
+  const rename = (target: Selection, name: string) => {
+    const s = useSceneStore.getState();
+    const value = name.trim() === '' ? undefined : name.trim();
+    if (target?.kind === 'object') s.setObjectField(target.index, 'name', value);
+    if (target?.kind === 'light') s.setLightField(target.index, 'name', value);
+    setRenaming(null);
+  };
+  const item = (key: string, label: string, target: Selection, detail?: string, name?: string) => {
     const selected = sameSelection(selection, target);
+    if (renaming === key) {
+      return (
+        <li key={key}>
+          <input
+            className="outline-rename"
+            aria-label={`New name for ${label}`}
+            defaultValue={name ?? ''}
+            maxLength={200}
+            autoFocus
+            onBlur={(e) => rename(target, e.currentTarget.value)}
+            onKeyDown={(e) => {
+              if (e.key === 'Enter') rename(target, e.currentTarget.value);
+              if (e.key === 'Escape') setRenaming(null);
+            }}
+          />
+        </li>
+      );
+    }
+    const renamable = target?.kind === 'object' || target?.kind === 'light';
     return (
       <li key={key}>
         <button
           type="button"
           className={selected ? 'outline-item is-selected' : 'outline-item'}
           aria-pressed={selected}
-          title={`Select ${label}`}
+          title={renamable ? `Select ${label} (double-click or F2 to rename)` : `Select ${label}`}
           onClick={() => select(selected ? null : target)}
+          onDoubleClick={() => renamable && setRenaming(key)}
+          onKeyDown={(e) => e.key === 'F2' && renamable && setRenaming(key)}
         >
           {label}
           {detail && <span className="outline-item__detail">{detail}</span>}
@@ -28,18 +61,19 @@ export function SceneOutline() {
       </li>
     );
   };
+  const lights = sceneLights(scene);
   return (
     <nav className="scene-outline" aria-label="Scene contents">
       <h3>Objects ({scene.objects.length})</h3>
       {scene.objects.length === 0 && <p className="hint">No objects yet: use Add sphere, box, plane or mesh.</p>}
       <ul>
         {scene.objects.map((o, i) =>
-          item(`o${i}`, o.type === 'mesh' ? meshName(i, meshes(o)) : objectName(o.type, i), { kind: 'object', index: i }, MATERIAL_LABELS[resolveMaterial(o.material).type]),
+          item(idOf(o) ?? `o${i}`, o.type === 'mesh' ? meshName(labelOf(o, i), meshes(o)) : labelOf(o, i), { kind: 'object', index: i }, MATERIAL_LABELS[resolveMaterial(o.material).type], o.name),
         )}
       </ul>
       <h3>Lights</h3>
       <ul>
-        {sceneLights(scene).map((_, i) => item(`l${i}`, `Light ${i + 1}`, { kind: 'light', index: i }, scene.lights ? undefined : 'default'))}
+        {lights.map((l, i) => item(idOf(l) ?? `l${i}`, labelOf(l, i), { kind: 'light', index: i }, scene.lights ? undefined : 'default', l.name))}
         {item('camera', 'Camera', { kind: 'camera' })}
         {item('target', 'Camera target', { kind: 'target' })}
       </ul>

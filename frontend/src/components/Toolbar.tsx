@@ -4,6 +4,7 @@ import { useSceneExamples } from '../hooks/useSceneExamples';
 import { sceneFileName, sceneFileText } from '../model/files';
 import type { ObjectType } from '../model/types';
 import { describeErrors, validateScene } from '../model/validate';
+import type { Panels } from '../layout';
 import { useSceneStore } from '../store/sceneStore';
 import { AddMeshButton } from './AddMeshButton';
 import { ExamplesMenu } from './ExamplesMenu';
@@ -16,12 +17,15 @@ export interface ToolbarProps {
   fetchFn?: FetchFn;
   /** Shows a message to the user (an error opening a file or an example), or clears it with null. */
   onMessage: (message: string | null) => void;
+  /** Which side panels are shown, and the way to show or hide them; no toggles without it. */
+  panels?: Panels;
+  onPanels?: (panels: Panels) => void;
 }
 
 const ADDABLE: ObjectType[] = ['sphere', 'box', 'plane'];
 
 /** The top bar: file (New, Open, Save, Examples), edit (Undo, Redo, Duplicate, Delete), add, snapping. */
-export function Toolbar({ fetchFn, onMessage }: ToolbarProps) {
+export function Toolbar({ fetchFn, onMessage, panels, onPanels }: ToolbarProps) {
   const s = useSceneStore.getState();
   const canUndo = useSceneStore((st) => st.past.length > 0);
   const canRedo = useSceneStore((st) => st.future.length > 0);
@@ -90,6 +94,16 @@ export function Toolbar({ fetchFn, onMessage }: ToolbarProps) {
           + Light
         </button>
       </div>
+      {panels && onPanels && (
+        <div className="toolbar__group" aria-label="Panels">
+          <button type="button" aria-pressed={panels.views} onClick={() => onPanels({ ...panels, views: !panels.views })} title="Show or hide the top and side views">
+            2D views
+          </button>
+          <button type="button" aria-pressed={panels.inspector} onClick={() => onPanels({ ...panels, inspector: !panels.inspector })} title="Show or hide the inspector">
+            Inspector
+          </button>
+        </div>
+      )}
       <div className="toolbar__group" aria-label="Grid">
         <label className="toolbar__check" title="Dragged things land on grid points">
           <input type="checkbox" checked={snap} onChange={(e) => s.setSnap(e.target.checked)} /> Snap to grid

@@ -5,9 +5,9 @@
  * in an element of class `field-error`.
  */
 import { createContext, useContext, type ReactNode } from 'react';
+import type { FieldErrors } from '../model/standingErrors';
 
-/** Messages by scene JSON path. */
-export type FieldErrors = Record<string, string>;
+export type { FieldErrors };
 
 const FieldErrorsContext = createContext<FieldErrors>({});
 

@@ -1,6 +1,7 @@
 /** Display names and tooltips shared by the inspector, the outline, the toolbar and the views. */
 import type { MeshState } from '../model/meshCache';
-import type { MaterialType, ObjectType } from '../model/types';
+import { idNumber, idOf } from '../model/identity';
+import type { Light, MaterialType, ObjectType, Scene, SceneObject } from '../model/types';
 
 export const OBJECT_LABELS: Record<ObjectType, string> = { sphere: 'Sphere', box: 'Box', plane: 'Plane', mesh: 'Mesh' };
 
@@ -43,13 +44,35 @@ export function objectName(type: ObjectType, index: number): string {
   return `${OBJECT_LABELS[type]} ${index + 1}`;
 }
 
+/**
+ * How an object is named everywhere: by the user's name (`Sphere "ball"`), else by its kind and the
+ * number of its stable id (`Sphere 2`, which deleting another object does not change).
+ */
+export function objectLabel(scene: Scene, index: number): string {
+  const object = scene.objects[index];
+  return object ? labelOf(object, index) : `Object ${index + 1}`;
+}
+
+/** An object's or light's label: its name in quotes after its kind, or its kind and id number. */
+export function labelOf(item: SceneObject | Light, index: number): string {
+  const kind = item.type === 'point' ? 'Light' : OBJECT_LABELS[item.type];
+  if (item.name) return `${kind} "${item.name}"`;
+  return `${kind} ${idNumber(idOf(item)) ?? index + 1}`;
+}
+
+/** A light's label (`Light 1`, `Light "key"`). */
+export function lightLabel(lights: Light[], index: number): string {
+  const light = lights[index];
+  return light ? labelOf(light, index) : `Light ${index + 1}`;
+}
+
 /** "4,800 triangles", "1 triangle". */
 export function triangleCountLabel(count: number): string {
   return `${count.toLocaleString('en-US')} ${count === 1 ? 'triangle' : 'triangles'}`;
 }
 
 /** A mesh's name with what is known of its triangles: "Mesh 3 (4,800 triangles)", "Mesh 3 (loading…)". */
-export function meshName(index: number, state: MeshState): string {
+export function meshName(label: string, state: MeshState): string {
   const detail = state.status === 'ready' ? triangleCountLabel(state.mesh.triangleCount) : state.status === 'loading' ? 'loading…' : 'OBJ error';
-  return `${objectName('mesh', index)} (${detail})`;
+  return `${label} (${detail})`;
 }

@@ -3,6 +3,7 @@ import { JobApiError } from '../api/jobs';
 import { useElementSize } from '../hooks/useElementSize';
 import { imageAspect } from '../model/defaults';
 import { ErrorSummary } from '../render/ErrorSummary';
+import { fieldWordsOf } from '../render/fieldWordsOf';
 import { RenderNotice } from '../render/RenderNotice';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import type { ImageDecoder } from './framePainter';
@@ -39,7 +40,7 @@ export function RayTracedView({ onFieldErrors, socketFactory, decodeImage }: Ray
       {problem && (
         <div className="live-view__problem">
           {problem.status === 400 ? (
-            <ErrorSummary title={problem.title} detail={problem.detail} errors={problem.errors} />
+            <ErrorSummary title={problem.title} detail={problem.detail} errors={problem.errors} {...fieldWordsOf(scene)} />
           ) : (
             <RenderNotice error={new JobApiError(problem)} job={null} />
           )}

@@ -44,7 +44,7 @@ export const LIGHT_DEFAULTS: ResolvedLight = {
 };
 
 /** The geometry defaults of each object kind (a mesh's `obj` or `file` has none: one is required). */
-export const OBJECT_DEFAULTS: { [T in ObjectType]: Required<Omit<ObjectOf<T>, 'material' | MeshSourceField>> } = {
+export const OBJECT_DEFAULTS: { [T in ObjectType]: Required<Omit<ObjectOf<T>, 'material' | MeshSourceField | 'name'>> } = {
   sphere: { type: 'sphere', center: [0, 1, 0], radius: 1 },
   box: { type: 'box', center: [0, 0.5, 0], size: [1, 1, 1], rotation: [0, 0, 0] },
   plane: { type: 'plane', point: [0, 0, 0], normal: [0, 1, 0] },

@@ -72,6 +72,8 @@ export type MaterialOf<T extends MaterialType> = Extract<Material, { type: T }>;
 
 export interface Sphere {
   type: 'sphere';
+  /** The user's name for it (the engine ignores it). */
+  name?: string;
   center?: Vec3;
   radius?: number;
   material?: Material;
@@ -80,6 +82,8 @@ export interface Sphere {
 /** A box: centre, full edge lengths, rotation in degrees about x, y, z (three.js order XYZ). */
 export interface Box {
   type: 'box';
+  /** The user's name for it (the engine ignores it). */
+  name?: string;
   center?: Vec3;
   size?: Vec3;
   rotation?: Vec3;
@@ -89,6 +93,8 @@ export interface Box {
 /** An infinite plane through `point` with the given normal (any non-zero length). */
 export interface Plane {
   type: 'plane';
+  /** The user's name for it (the engine ignores it). */
+  name?: string;
   point?: Vec3;
   normal?: Vec3;
   material?: Material;
@@ -102,6 +108,8 @@ export interface Plane {
  */
 export interface MeshObject {
   type: 'mesh';
+  /** The user's name for it (the engine ignores it). */
+  name?: string;
   obj?: string;
   file?: string;
   position?: Vec3;
@@ -121,6 +129,8 @@ export type ObjectOf<T extends ObjectType> = Extract<SceneObject, { type: T }>;
 /** A point light; without `falloff` its irradiance does not depend on distance. */
 export interface PointLight {
   type: 'point';
+  /** The user's name for it (the engine ignores it). */
+  name?: string;
   position?: Vec3;
   color?: Color;
   intensity?: number;
@@ -182,12 +192,12 @@ type Complete<T> = { [K in keyof T]-?: Exclude<T[K], undefined> };
 
 export type ResolvedMaterial = { [T in MaterialType]: Complete<MaterialOf<T>> }[MaterialType];
 export type ResolvedObject = {
-  [T in ObjectType]: Complete<Omit<ObjectOf<T>, 'material' | MeshSourceField>> &
-    Pick<ObjectOf<T>, Extract<keyof ObjectOf<T>, MeshSourceField>> & { material: ResolvedMaterial };
+  [T in ObjectType]: Complete<Omit<ObjectOf<T>, 'material' | MeshSourceField | 'name'>> &
+    Pick<ObjectOf<T>, Extract<keyof ObjectOf<T>, MeshSourceField | 'name'>> & { material: ResolvedMaterial };
 }[ObjectType];
 /** A resolved object of one kind, e.g. `ResolvedObjectOf<'mesh'>`. */
 export type ResolvedObjectOf<T extends ObjectType> = Extract<ResolvedObject, { type: T }>;
-export type ResolvedLight = Complete<PointLight>;
+export type ResolvedLight = Complete<Omit<PointLight, 'name'>> & Pick<PointLight, 'name'>;
 
 /** A scene with every default filled in (for display; files keep what the user wrote). */
 export interface ResolvedScene {
@@ -213,10 +223,10 @@ function fieldsOf<T>() {
 }
 
 export const OBJECT_FIELDS = {
-  sphere: fieldsOf<Sphere>()(['type', 'center', 'radius', 'material']),
-  box: fieldsOf<Box>()(['type', 'center', 'size', 'rotation', 'material']),
-  plane: fieldsOf<Plane>()(['type', 'point', 'normal', 'material']),
-  mesh: fieldsOf<MeshObject>()(['type', 'obj', 'file', 'position', 'scale', 'rotation', 'material']),
+  sphere: fieldsOf<Sphere>()(['type', 'name', 'center', 'radius', 'material']),
+  box: fieldsOf<Box>()(['type', 'name', 'center', 'size', 'rotation', 'material']),
+  plane: fieldsOf<Plane>()(['type', 'name', 'point', 'normal', 'material']),
+  mesh: fieldsOf<MeshObject>()(['type', 'name', 'obj', 'file', 'position', 'scale', 'rotation', 'material']),
 } as const;
 
 export const MATERIAL_FIELDS = {
@@ -229,7 +239,7 @@ export const MATERIAL_FIELDS = {
 } as const;
 
 export const LIGHT_FIELDS = {
-  point: fieldsOf<PointLight>()(['type', 'position', 'color', 'intensity', 'falloff']),
+  point: fieldsOf<PointLight>()(['type', 'name', 'position', 'color', 'intensity', 'falloff']),
 } as const;
 
 export const SCENE_FIELDS = fieldsOf<Scene>()([

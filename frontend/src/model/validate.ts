@@ -127,13 +127,13 @@ const material = byType(
 );
 const objectChecks = {
   type, center: vector, radius: number, size: vector, rotation: vector, point: vector, normal: vector, material,
-  obj: string, file: string, position: vector, scale: positive,
+  obj: string, file: string, position: vector, scale: positive, name: string,
 };
 const object = byType({
   ...Object.fromEntries(Object.entries(OBJECT_FIELDS).map(([k, f]) => [k, record(f, objectChecks)])),
   mesh: all(record(OBJECT_FIELDS.mesh, objectChecks), meshSource),
 });
-const light = byType({ point: record(LIGHT_FIELDS.point, { type, position: vector, color, intensity: number, falloff: boolean }) });
+const light = byType({ point: record(LIGHT_FIELDS.point, { type, name: string, position: vector, color, intensity: number, falloff: boolean }) });
 
 const scene = record(SCENE_FIELDS, {
   version: integer,

@@ -8,26 +8,32 @@ export interface ErrorSummaryProps {
   detail?: string;
   /** The invalid fields, by JSON path. */
   errors: FieldError[];
+  /** A field's name in the editor's words (`Sphere 1 › Radius`); the path itself by default. */
+  describe?: (field: string) => string;
+  /** A message in the editor's words; unchanged by default. */
+  plain?: (message: string) => string;
 }
 
-/** The summary of a rejected scene: one line per invalid field ("field — message"). */
-export function ErrorSummary({ title, detail, errors }: ErrorSummaryProps) {
+const same = (text: string) => text;
+
+/** The summary of a rejected scene: one line per invalid field ("Sphere 1 › Radius: message", the path as a tooltip). */
+export function ErrorSummary({ title, detail, errors, describe = same, plain = same }: ErrorSummaryProps) {
   const heading =
     errors.length === 0 ? title : `${title}: ${errors.length} ${errors.length === 1 ? 'problem' : 'problems'}`;
   return (
     <div className="error-summary" role="alert" data-testid="error-summary">
       <strong>{heading}</strong>
-      {errors.length === 0 && detail && <p>{detail}</p>}
+      {errors.length === 0 && detail && <p>{plain(detail)}</p>}
       {errors.length > 0 && (
         <ul>
           {errors.map((error, index) => (
             <li key={`${error.field}-${index}`}>
               {error.field ? (
                 <>
-                  <code>{error.field}</code> — {error.message}
+                  <span className="error-summary__field" title={error.field}>{describe(error.field)}</span>: {plain(error.message)}
                 </>
               ) : (
-                error.message
+                plain(error.message)
               )}
             </li>
           ))}

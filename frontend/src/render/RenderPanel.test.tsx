@@ -40,7 +40,7 @@ function calls(fetchFn: ReturnType<typeof mockServer>, method: string, url: stri
 
 function setup(fetchFn = mockServer()) {
   const streams = fakeEventSources();
-  const onFieldErrors = vi.fn<(errors: Record<string, string>) => void>();
+  const onFieldErrors = vi.fn<(errors: Record<string, string>, scene: unknown) => void>();
   const user = userEvent.setup();
   const view = render(
     <RenderPanel scene={SCENE} onFieldErrors={onFieldErrors} fetchFn={fetchFn} eventSourceFactory={streams.factory} />,
@@ -76,7 +76,7 @@ describe('RenderPanel', () => {
     expect(posts).toHaveLength(1);
     expect(JSON.parse(String(posts[0][1]?.body))).toEqual(SCENE);
     expect(source.url).toBe('/api/jobs/k3j/events');
-    expect(onFieldErrors).toHaveBeenCalledWith({});
+    expect(onFieldErrors).toHaveBeenCalledWith({}, SCENE);
     expect(screen.getByTestId('render-progress')).toHaveAttribute('aria-valuenow', '0');
     expect(screen.getByTestId('cancel-button')).toBeInTheDocument();
   });
@@ -141,16 +141,18 @@ describe('RenderPanel', () => {
     expect(onFieldErrors).toHaveBeenCalledWith({
       'objects[0].radius': 'must be greater than 0',
       'camera.up': 'must not be a zero-length vector',
-    });
+    }, SCENE);
     expect(summary).toHaveTextContent('Invalid scene: 2 problems');
-    expect(summary).toHaveTextContent('objects[0].radius — must be greater than 0');
-    expect(summary).toHaveTextContent('camera.up — must not be a zero-length vector');
+    // in the inspector's words, the JSON path as a tooltip
+    expect(summary).toHaveTextContent('Sphere 1 › Radius: must be greater than 0');
+    expect(summary).toHaveTextContent('Camera › Up: must not be a zero-length vector');
+    expect(screen.getByText('Sphere 1 › Radius')).toHaveAttribute('title', 'objects[0].radius');
     expect(screen.queryByTestId('render-progress')).not.toBeInTheDocument();
     expect(streams.opened).toHaveLength(0);
 
     reject = false;
     await user.click(screen.getByTestId('render-button'));
-    await waitFor(() => expect(onFieldErrors).toHaveBeenLastCalledWith({}));
+    await waitFor(() => expect(onFieldErrors).toHaveBeenLastCalledWith({}, SCENE));
     expect(screen.queryByTestId('error-summary')).not.toBeInTheDocument();
   });
 
@@ -176,6 +178,36 @@ describe('RenderPanel', () => {
     expect(screen.getByRole('progressbar')).toHaveAttribute('aria-valuenow', '100');
     expect(screen.getByTestId('render-canvas')).not.toBeVisible();
     expect(screen.queryByTestId('cancel-button')).not.toBeInTheDocument();
+  });
+
+  it('says "Out of date" once the scene differs from the one rendered, and renders again on request', async () => {
+    const { startRender, fetchFn, view, onFieldErrors, streams } = setup();
+    const source = await startRender();
+    act(() => source.emit('end', statusJson({ state: 'done', progress: 1 })));
+    await screen.findByTestId('render-image');
+    expect(screen.queryByText('Out of date')).toBeNull();
+    const changed = { ...SCENE, objects: [{ type: 'sphere', radius: 2 }] };
+    view.rerender(<RenderPanel scene={changed} onFieldErrors={onFieldErrors} fetchFn={fetchFn} eventSourceFactory={streams.factory} />);
+    expect(screen.getByText('Out of date')).toBeVisible();
+    expect(screen.getByRole('img', { name: 'Rendered image' })).toBeInTheDocument();
+    await userEvent.setup().click(screen.getByRole('button', { name: 'Render again' }));
+    await waitFor(() => expect(calls(fetchFn, 'POST', '/api/jobs')).toHaveLength(2));
+    expect(JSON.parse(String(calls(fetchFn, 'POST', '/api/jobs')[1][1]?.body))).toEqual(changed);
+    expect(screen.queryByText('Out of date')).toBeNull();
+    // the same scene again (a new but equal value) is not out of date
+    view.rerender(<RenderPanel scene={structuredClone(changed)} onFieldErrors={onFieldErrors} fetchFn={fetchFn} eventSourceFactory={streams.factory} />);
+    expect(screen.queryByText('Out of date')).toBeNull();
+  });
+
+  it('opens the finished image in the full-size viewer; the image is named "Rendered image"', async () => {
+    const { startRender, user } = setup();
+    const source = await startRender();
+    act(() => source.emit('end', statusJson({ state: 'done', progress: 1 })));
+    expect(await screen.findByRole('img', { name: 'Rendered image' })).toBeInTheDocument();
+    await user.click(screen.getByRole('button', { name: 'Full size' }));
+    expect(screen.getByRole('dialog', { name: 'Full-size image still-life.png' })).toBeInTheDocument();
+    await user.click(screen.getByRole('button', { name: 'Close' }));
+    expect(screen.queryByRole('dialog')).toBeNull();
   });
 
   it('says when to retry if the server is busy', async () => {

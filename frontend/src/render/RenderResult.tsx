@@ -5,19 +5,26 @@ import type { FinishedImage } from './useRenderJob';
 export interface RenderResultProps {
   /** The finished image; its URL is owned by the render hook. */
   image: FinishedImage;
+  /** The scene has changed since: the image is dimmed (the panel says so in words). */
+  stale?: boolean;
+  /** Opens the zoomable full-size viewer; no button without it. */
+  onViewFullSize?: () => void;
 }
 
 /** The finished image with its size, render time, rays per second and a Download link. */
-export function RenderResult({ image }: RenderResultProps) {
+export function RenderResult({ image, stale = false, onViewFullSize }: RenderResultProps) {
   return (
-    <figure className="render-result">
+    <figure className={stale ? 'render-result is-stale' : 'render-result'}>
       <div className="render-frame">
         <img
           src={image.url}
-          alt={`Rendered image ${image.filename}`}
+          alt="Rendered image"
+          title={image.filename}
           width={image.width || undefined}
           height={image.height || undefined}
           data-testid="render-image"
+          onClick={onViewFullSize}
+          style={onViewFullSize ? { cursor: 'zoom-in' } : undefined}
         />
       </div>
       <figcaption className="render-result__meta" data-testid="render-stats">
@@ -28,6 +35,11 @@ export function RenderResult({ image }: RenderResultProps) {
         )}
         <span>{formatMillis(image.renderMillis)}</span>
         {image.raysPerSecond !== null && <span>{formatRate(image.raysPerSecond)}</span>}
+        {onViewFullSize && (
+          <button type="button" onClick={onViewFullSize} title="Open the image at full size: wheel to zoom, drag to pan, 1:1 for one image pixel per screen pixel">
+            Full size
+          </button>
+        )}
         <a className="button" href={image.url} download={image.filename} data-testid="download-link">
           Download {image.filename}
         </a>

@@ -211,4 +211,20 @@ describe('sceneStore', () => {
       expect((store().scene.objects[3] as { obj: string }).obj).toBe(obj);
     });
   });
+
+  it('forgets the server’s errors of the previous scene on New and on loading a scene, not on an edit', () => {
+    const judged = store().scene;
+    store().reportServerErrors('render', judged, { 'camera.fov': 'must be greater than 0' });
+    store().reportServerErrors('live', judged, { 'render.samples': 'over the budget' });
+    store().setAmbient(0.2);
+    expect(store().serverErrors.render?.errors).toEqual({ 'camera.fov': 'must be greater than 0' });
+    const document = store().documentId;
+    store().newScene();
+    expect(store().serverErrors).toEqual({ render: null, live: null });
+    expect(store().documentId).toBe(document + 1);
+    store().reportServerErrors('render', store().scene, { 'camera.fov': 'x' });
+    store().loadScene({ objects: [] });
+    expect(store().serverErrors.render).toBeNull();
+    expect(store().documentId).toBe(document + 2);
+  });
 });

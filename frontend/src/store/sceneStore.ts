@@ -5,6 +5,7 @@
  */
 import { create } from 'zustand';
 import { blankScene, sceneLights } from '../model/defaults';
+import { carryIds } from '../model/identity';
 import { sameJson } from '../model/sameJson';
 import * as edits from '../model/edits';
 import type { DragTarget, Selection } from '../model/selection';
@@ -21,6 +22,7 @@ import type {
   Scene,
   Vec3,
 } from '../model/types';
+import type { FieldErrors } from '../model/standingErrors';
 import { push, redo, undo, type Timeline } from './history';
 import { loadSavedScene, saveScene } from './persistence';
 
@@ -31,6 +33,16 @@ export interface ViewState {
 }
 
 export type ViewKind = 'top' | 'side';
+
+/** Who reported a server refusal: a Render, or the live ray-traced view. */
+export type ErrorSource = 'render' | 'live';
+
+/** The server's field errors for one scene it refused, kept with that scene to tell when each is fixed. */
+export interface ServerErrors {
+  /** The scene as it was sent. */
+  scene: Scene;
+  errors: FieldErrors;
+}
 
 export interface SceneState {
   /** The committed scene (what undo/redo, save and render use). */
@@ -48,7 +60,13 @@ export interface SceneState {
   gridSize: number;
   /** Bumped when a whole new scene arrives: the views zoom to fit it. */
   fitRequest: number;
+  /** Bumped by New, Open and Examples: what belonged to the previous scene (errors, renders) goes. */
+  documentId: number;
+  /** The server's latest refusal from each source; null when it has none (cleared by a new document). */
+  serverErrors: Record<ErrorSource, ServerErrors | null>;
 
+  /** Records (or, with `{}`, clears) a source's field errors for the scene it sent. */
+  reportServerErrors(source: ErrorSource, scene: Scene, errors: FieldErrors): void;
   loadScene(scene: Scene): void;
   newScene(): void;
   /** Replaces the scene but keeps the selection where it still exists (the JSON tab). */
@@ -97,10 +115,18 @@ export const DEFAULT_VIEWS: Record<ViewKind, ViewState> = {
   side: { zoom: 40, pan: [0, 1.5] },
 };
 
-type Data = Pick<SceneState, 'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest'>;
+type Data = Pick<
+  SceneState,
+  'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest' | 'documentId' | 'serverErrors'
+>;
+
+const NO_SERVER_ERRORS: Record<ErrorSource, ServerErrors | null> = { render: null, live: null };
 
 function initialData(scene: Scene): Data {
-  return { scene, past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1 };
+  return {
+    scene: carryIds(null, scene), past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1,
+    documentId: 1, serverErrors: NO_SERVER_ERRORS,
+  };
 }
 
 /** The selection if it still names something in the scene, else none. */
@@ -114,9 +140,10 @@ const sameScene = (a: Scene, b: Scene) => sameJson(a, b);
 
 export const useSceneStore = create<SceneState>()((set, get) => {
   /** The single write path: one edit, one history entry (none if nothing changed). */
-  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection) => {
+  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection, newDocument = false) => {
     const { scene, past, future, selection: current } = get();
-    const next = edit(scene);
+    // a new document numbers its objects afresh; an edit carries the ids on
+    const next = carryIds(newDocument ? null : scene, edit(scene));
     if (sameScene(next, scene)) {
       set({ preview: null });
       return;
@@ -132,13 +159,18 @@ export const useSceneStore = create<SceneState>()((set, get) => {
   return {
     ...initialData(loadSavedScene() ?? structuredClone(STARTER_SCENE)),
 
+    reportServerErrors: (source, scene, errors) => {
+      const report = Object.keys(errors).length === 0 ? null : { scene, errors };
+      if (report === null && get().serverErrors[source] === null) return;
+      set({ serverErrors: { ...get().serverErrors, [source]: report } });
+    },
     loadScene: (scene) => {
-      commit(() => structuredClone(scene), () => null);
-      set({ fitRequest: get().fitRequest + 1 });
+      commit(() => structuredClone(scene), () => null, true);
+      set({ fitRequest: get().fitRequest + 1, documentId: get().documentId + 1, serverErrors: NO_SERVER_ERRORS });
     },
     newScene: () => {
-      commit(() => blankScene(), () => null);
-      set({ fitRequest: get().fitRequest + 1 });
+      commit(() => blankScene(), () => null, true);
+      set({ fitRequest: get().fitRequest + 1, documentId: get().documentId + 1, serverErrors: NO_SERVER_ERRORS });
     },
     setScene: (scene) => commit(() => structuredClone(scene)),
     setName: (name) => commit((s) => ({ ...s, name })),
@@ -171,8 +203,8 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     moveTarget: (target, to) => commit((s) => edits.moveTarget(s, target, to)),
     select: (selection) => set({ selection: keepValid(get().scene, selection) }),
 
-    setPreview: (preview) => set({ preview }),
-    dragTo: (target, to) => set({ preview: edits.moveTarget(get().scene, target, to) }),
+    setPreview: (preview) => set({ preview: preview && carryIds(get().scene, preview) }),
+    dragTo: (target, to) => set({ preview: carryIds(get().scene, edits.moveTarget(get().scene, target, to)) }),
     commitPreview: () => {
       const { preview } = get();
       if (preview) commit(() => preview);

@@ -2,7 +2,7 @@ import { resolveObject } from '../model/defaults';
 import type { MeshState } from '../model/meshCache';
 import { boxFootprint, planeToSvg, worldToSvg, type ViewKind, type ViewTransform } from '../model/projection';
 import type { SceneObject } from '../model/types';
-import { MATERIAL_LABELS, meshName, objectName } from '../components/labels';
+import { labelOf, MATERIAL_LABELS, meshName } from '../components/labels';
 import { MeshGlyph } from './MeshGlyph';
 import { PlaneGlyph } from './PlaneGlyph';
 
@@ -27,7 +27,7 @@ export interface ObjectGlyphProps {
  */
 export function ObjectGlyph({ kind, t, object, index, selected, hatchId, meshState = { status: 'loading' } }: ObjectGlyphProps) {
   const r = resolveObject(object);
-  const name = r.type === 'mesh' ? meshName(index, meshState) : objectName(r.type, index);
+  const name = r.type === 'mesh' ? meshName(labelOf(object, index), meshState) : labelOf(object, index);
   const common = {
     'data-testid': `object-${index}`,
     'data-kind': r.type,
@@ -53,7 +53,7 @@ export function ObjectGlyph({ kind, t, object, index, selected, hatchId, meshSta
     return (
       <g {...common}>
         {title}
-        <MeshGlyph kind={kind} t={t} mesh={r} state={meshState} label={objectName('mesh', index)} color={fill} />
+        <MeshGlyph kind={kind} t={t} mesh={r} state={meshState} label={labelOf(object, index)} color={fill} />
       </g>
     );
   }

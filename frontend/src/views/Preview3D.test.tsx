@@ -96,7 +96,7 @@ describe('Preview3D', () => {
     );
     const summary = within(screen.getByTestId('ray-traced-view')).getByTestId('error-summary');
     expect(summary).toHaveTextContent('Invalid scene: 1 problem');
-    expect(summary).toHaveTextContent('camera.up — must not be parallel to the view direction');
+    expect(summary).toHaveTextContent('Camera › Up: must not be parallel to the view direction');
     expect(onFieldErrors).toHaveBeenLastCalledWith({ 'camera.up': 'must not be parallel to the view direction' });
   });
 });

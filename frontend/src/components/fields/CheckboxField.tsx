@@ -18,7 +18,7 @@ export function CheckboxField({ label, path, checked, onCommit, hint }: Checkbox
   const error = useFieldError(path);
   return (
     <div className="field field--checkbox" title={hint}>
-      <input id={id} type="checkbox" checked={checked} data-field={path} onChange={(e) => onCommit(e.target.checked)} />
+      <input id={id} type="checkbox" checked={checked} data-field={path} aria-invalid={error ? true : undefined} onChange={(e) => onCommit(e.target.checked)} />
       <label htmlFor={id}>{label}</label>
       <FieldErrorMessage id={`${id}-error`} message={error} path={path} />
     </div>

@@ -3,6 +3,20 @@ import { FieldErrorMessage, useFieldError } from '../fieldErrors';
 
 const HEX = /^#[0-9a-fA-F]{6}$/;
 
+/**
+ * A typed colour as the scene writes it (`#rrggbb`, lower case): `#f00`, `f00`, `FF0000` and
+ * `#ff0000` are all red; anything else is null.
+ */
+export function parseHexColor(text: string): string | null {
+  const m = /^#?([0-9a-fA-F]{3}|[0-9a-fA-F]{6})$/.exec(text.trim());
+  if (!m) return null;
+  const digits = m[1].length === 3 ? [...m[1]].map((d) => d + d).join('') : m[1];
+  return `#${digits.toLowerCase()}`;
+}
+
+/** Why a typed colour is refused (it stays in the box with this message until fixed or reverted). */
+export const COLOR_FORMAT_MESSAGE = 'must be a hex colour such as #ff8800 or #f80';
+
 /** Props of {@link ColorField}. */
 export interface ColorFieldProps {
   /** Accessible label of the swatch; the text box is labelled "`label` hex". */
@@ -42,11 +56,12 @@ export function ColorField({ label, path, value, onCommit, onPreview, onPreviewE
   }, []);
 
   const commitText = () => {
-    if (HEX.test(text)) {
-      if (text.toLowerCase() !== value.toLowerCase()) onCommit(text.toLowerCase());
-    } else setText(value);
+    const color = parseHexColor(text);
+    if (color === null) return; // stays, with its reason, until fixed or reverted (Escape)
+    setText(color);
+    if (color !== value.toLowerCase()) onCommit(color);
   };
-  const localError = HEX.test(text) ? undefined : 'must be #rrggbb';
+  const localError = parseHexColor(text) === null ? COLOR_FORMAT_MESSAGE : undefined;
   const message = localError ?? serverError;
   return (
     <div className="field field--color" title={hint}>
@@ -58,6 +73,7 @@ export function ColorField({ label, path, value, onCommit, onPreview, onPreviewE
           type="color"
           value={HEX.test(value) ? value.toLowerCase() : '#000000'}
           data-field={path}
+          aria-invalid={message ? true : undefined}
           onChange={(event) => onPreview?.(event.target.value)}
           onBlur={() => onPreviewEnd?.()}
         />
@@ -67,13 +83,16 @@ export function ColorField({ label, path, value, onCommit, onPreview, onPreviewE
           aria-label={`${label} hex`}
           data-field={path}
           value={text}
-          maxLength={7}
+          maxLength={9}
           spellCheck={false}
           aria-invalid={message ? true : undefined}
           aria-describedby={message ? `${id}-error` : undefined}
           onChange={(event) => setText(event.target.value)}
           onBlur={commitText}
-          onKeyDown={(event) => event.key === 'Enter' && commitText()}
+          onKeyDown={(event) => {
+            if (event.key === 'Enter') commitText();
+            if (event.key === 'Escape') setText(value);
+          }}
         />
       </div>
       <FieldErrorMessage id={`${id}-error`} message={message} path={path} />

@@ -12,6 +12,12 @@ export interface NumberFieldProps {
   onCommit: (value: number) => void;
   min?: number;
   max?: number;
+  /** `min` itself is refused (a radius must be greater than 0). */
+  minExclusive?: boolean;
+  /** `max` itself is refused (a field of view must be less than 180). */
+  maxExclusive?: boolean;
+  /** Marks the input invalid for an error shown elsewhere (a vector's own message under its three inputs). */
+  invalid?: boolean;
   /** Spinner step; also the arrow-key step. */
   step?: number;
   /** Whole numbers only. */
@@ -25,25 +31,30 @@ export interface NumberFieldProps {
 /**
  * A numeric input that keeps what the user types until they press Enter or leave the field,
  * then commits it once (so typing "1.25" is one undo step). Escape reverts. Out-of-range or
- * non-numeric text is flagged and not committed.
+ * non-numeric text is not committed: it stays in the field, marked invalid with the reason beside
+ * it, until it is fixed or reverted (Escape, or a new value from elsewhere such as Undo).
  */
-export function NumberField({ label, path, value, onCommit, min, max, step = 0.1, integer = false, hint, compact }: NumberFieldProps) {
+export function NumberField(props: NumberFieldProps) {
+  const { label, path, value, onCommit, step = 0.1, hint, compact, invalid = false } = props;
   const id = useId();
   const shown = formatNumber(value);
   const [draft, setDraft] = useState(shown);
   const [editing, setEditing] = useState(false);
   const serverError = useFieldError(path);
+  // A new value from elsewhere (undo, a drag, another field) replaces whatever the field held.
   useEffect(() => {
-    if (!editing) setDraft(shown);
-  }, [shown, editing]);
+    setDraft(shown);
+    setEditing(false);
+  }, [shown]);
 
-  const localError = check(draft, integer, min, max);
+  const localError = check(draft, props);
+  const refused = !editing && localError !== undefined;
 
   const commitText = (text: string) => {
     setEditing(false);
-    const error = check(text, integer, min, max);
-    if (error) setDraft(shown);
-    else if (text.trim() !== shown && Number(text) !== value) onCommit(Number(text));
+    if (check(text, props)) return; // stays, with its reason, until fixed or reverted
+    if (text.trim() !== shown && Number(text) !== value) onCommit(Number(text));
+    else setDraft(shown);
   };
   const commit = () => commitText(draft);
   const onKeyDown = (event: KeyboardEvent<HTMLInputElement>) => {
@@ -53,7 +64,7 @@ export function NumberField({ label, path, value, onCommit, min, max, step = 0.1
       setDraft(shown);
     }
   };
-  const message = (editing ? localError : undefined) ?? serverError;
+  const message = (editing || refused ? localError : undefined) ?? serverError;
   return (
     <div className={compact ? 'field field--compact' : 'field'} title={hint}>
       <label htmlFor={id}>{compact ?? label}</label>
@@ -62,11 +73,11 @@ export function NumberField({ label, path, value, onCommit, min, max, step = 0.1
         type="number"
         inputMode="decimal"
         step={step}
-        min={min}
-        max={max}
+        min={props.min}
+        max={props.max}
         value={draft}
         aria-label={compact ? label : undefined}
-        aria-invalid={message ? true : undefined}
+        aria-invalid={message || invalid ? true : undefined}
         aria-describedby={message ? `${id}-error` : undefined}
         data-field={path}
         onChange={(event) => {
@@ -85,13 +96,15 @@ export function NumberField({ label, path, value, onCommit, min, max, step = 0.1
   );
 }
 
-/** Why a typed text is not an acceptable value, or undefined when it is. */
-function check(text: string, integer: boolean, min?: number, max?: number): string | undefined {
+type Bounds = Pick<NumberFieldProps, 'integer' | 'min' | 'max' | 'minExclusive' | 'maxExclusive'>;
+
+/** Why a typed text is not an acceptable value, or undefined when it is (the server's wording). */
+export function check(text: string, { integer, min, max, minExclusive, maxExclusive }: Bounds): string | undefined {
   const n = text.trim() === '' ? NaN : Number(text);
-  if (!Number.isFinite(n)) return 'must be a number';
+  if (!Number.isFinite(n)) return `"${text}" is not a number`;
   if (integer && !Number.isInteger(n)) return 'must be a whole number';
-  if (min !== undefined && n < min) return `must be at least ${min}`;
-  if (max !== undefined && n > max) return `must be at most ${max}`;
+  if (min !== undefined && (minExclusive ? n <= min : n < min)) return minExclusive ? `must be greater than ${min}` : `must be at least ${min}`;
+  if (max !== undefined && (maxExclusive ? n >= max : n > max)) return maxExclusive ? `must be less than ${max}` : `must be at most ${max}`;
   return undefined;
 }
 

@@ -16,11 +16,13 @@ export interface VectorFieldProps {
   step?: number;
   /** Lower bound of every component (e.g. sizes must be positive). */
   min?: number;
+  /** `min` itself is refused. */
+  minExclusive?: boolean;
   hint?: string;
 }
 
 /** Three numeric inputs in a row for one [x, y, z] value. */
-export function VectorField({ label, path, value, onCommit, step = 0.1, min, hint }: VectorFieldProps) {
+export function VectorField({ label, path, value, onCommit, step = 0.1, min, minExclusive, hint }: VectorFieldProps) {
   const groupError = useFieldError(path);
   const errorId = `${path}-error`;
   return (
@@ -36,6 +38,8 @@ export function VectorField({ label, path, value, onCommit, step = 0.1, min, hin
             value={value[i]}
             step={step}
             min={min}
+            minExclusive={minExclusive}
+            invalid={groupError !== undefined}
             onCommit={(v) => {
               const next: Vec3 = [...value];
               next[i] = v;

@@ -15,6 +15,7 @@ import javax.imageio.stream.ImageOutputStream;
 
 import studio.engine.math.Srgb;
 import studio.engine.render.Film;
+import studio.engine.render.PixelLattice;
 import studio.engine.render.TileRect;
 
 /** Encodes a linear-light film as an 8-bit sRGB PNG or JPEG: the only place sRGB encoding happens. */
@@ -42,6 +43,27 @@ public final class ImageEncoder {
             int fy = region.y() + y;
             for (int x = 0; x < w; x++) {
                 int fx = region.x() + x;
+                pixels[y * w + x] = Srgb.toByte(film.get(fx, fy, 0)) << 16 | Srgb.toByte(film.get(fx, fy, 1)) << 8
+                        | Srgb.toByte(film.get(fx, fy, 2));
+            }
+        });
+        return image;
+    }
+
+    /**
+     * The film's pixels on a lattice as an image of their own, {@code lattice.count(width)} x
+     * {@code lattice.count(height)}: pixel (i, j) is the film's (offset + i step, offset + j step).
+     */
+    public static BufferedImage toImage(Film film, PixelLattice lattice) {
+        int step = lattice.step(), offset = lattice.offset();
+        int w = lattice.count(film.width()), h = lattice.count(film.height());
+        BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+        IntStream rows = IntStream.range(0, h);
+        (w * (long) h >= PARALLEL_PIXELS ? rows.parallel() : rows).forEach(y -> {
+            int fy = offset + y * step;
+            for (int x = 0; x < w; x++) {
+                int fx = offset + x * step;
                 pixels[y * w + x] = Srgb.toByte(film.get(fx, fy, 0)) << 16 | Srgb.toByte(film.get(fx, fy, 1)) << 8
                         | Srgb.toByte(film.get(fx, fy, 2));
             }

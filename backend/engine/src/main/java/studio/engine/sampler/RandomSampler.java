@@ -2,7 +2,7 @@ package studio.engine.sampler;
 
 /**
  * Independent uniform samples over the pixel: unbiased and alias-free, but with no stratification
- * its error on edges falls only like N^-1/2 (STABILITY SAM-02).
+ * its error on edges falls only like N^-1/2 (robustness case SAM-02).
  */
 public record RandomSampler(int samplesPerPixel) implements Sampler {
 

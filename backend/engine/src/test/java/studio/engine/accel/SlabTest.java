@@ -9,7 +9,7 @@ import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 
-/** STABILITY NUM-06: the BVH's ray/box test keeps flat boxes and rays that only touch an edge. */
+/** Robustness case NUM-06: the BVH's ray/box test keeps flat boxes and rays that only touch an edge. */
 class SlabTest {
 
     private static boolean hits(double[] box, double ox, double oy, double oz, double dx, double dy, double dz,

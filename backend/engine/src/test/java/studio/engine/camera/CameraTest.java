@@ -110,7 +110,7 @@ class CameraTest {
 
     @Test
     void upNearlyParallelToTheViewDirectionGivesAnOrthonormalBasisAndSeesTheSphere() {
-        // STABILITY CAM-01, with up tilted by 1e-6 rad instead of exactly parallel
+        // robustness case CAM-01, with up tilted by 1e-6 rad instead of exactly parallel
         Camera nearlyParallel = new Camera(new Vec3(0, 10, 0), Vec3.ZERO, new Vec3(1e-6, 1, 0), 30);
         Camera sideways = new Camera(new Vec3(0, 10, 0), Vec3.ZERO, new Vec3(0, 0, -1), 30);
         Vec3 u = nearlyParallel.right(), v = nearlyParallel.upward(), w = nearlyParallel.backward();
@@ -126,7 +126,7 @@ class CameraTest {
 
         assertEquals(1.0, film.get(16, 16, 0), 0.0, "the centre pixel shows the sphere");
         assertEquals(spherePixels(reference), spherePixels(film));
-        assertEquals(121, spherePixels(film), "sphere pixels (STABILITY CAM-01 measured 121)");
+        assertEquals(121, spherePixels(film), "sphere pixels (robustness case CAM-01 measured 121)");
     }
 
     private static Film renderUnitSphere(Camera camera) {
@@ -163,7 +163,7 @@ class CameraTest {
 
     @Test
     void tinyFieldOfViewFarFromTheOriginKeepsEveryColumnDistinctAndEvenlySpaced() {
-        // STABILITY CAM-03 a: fov 1e-3 degrees, 512 columns, camera at 1e9 (and 1e8) looking 1000 units down -z
+        // robustness case CAM-03 a: fov 1e-3 degrees, 512 columns, camera at 1e9 (and 1e8) looking 1000 units down -z
         for (double at : new double[] {1e9, 1e8}) {
             Camera camera = new Camera(new Vec3(at, at, at), new Vec3(at, at, at - 1000), Y, 1e-3);
             Set<Vec3> directions = new HashSet<>();
@@ -184,7 +184,7 @@ class CameraTest {
 
     @Test
     void nearlyStraightFieldOfViewPutsTheEdgeColumnAt89Point9499Degrees() {
-        // STABILITY CAM-03 b: fov 179.9, 512 x 512; the last column's centre is at ndc 511/512
+        // robustness case CAM-03 b: fov 179.9, 512 x 512; the last column's centre is at ndc 511/512
         Camera camera = new Camera(Vec3.ZERO, new Vec3(0, 0, -1), Y, 179.9);
         Vec3 axis = new Vec3(0, 0, -1);
         double expected = Math.toDegrees(Math.atan(511.0 / 512 * Math.tan(Math.toRadians(89.95))));

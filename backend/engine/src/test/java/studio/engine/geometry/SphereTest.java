@@ -96,7 +96,7 @@ class SphereTest {
 
     @Test
     void sphereTangentRayEitherMissesOrTouchesAtTheTangentPoint() {
-        // disc is exactly 0 here (STABILITY NUM-03 b)
+        // disc is exactly 0 here (robustness case NUM-03 b)
         Sphere sphere = new Sphere(new Vec3(0, 0, -5), 1);
         Hit hit = new Hit();
 

@@ -22,7 +22,7 @@ import studio.engine.sampler.RegularSampler;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 
-/** The intersection-level cases of /shared/STABILITY.md (NUM-01, -03, -04, -07, -10) with their exact inputs. */
+/** The intersection-level cases of docs/robustness.md (NUM-01, -03, -04, -07, -10) with their exact inputs. */
 class StabilityIntersectionTest {
 
     /** NUM-01 / NUM-03: a ray from the origin passing at perpendicular distance p from the centre (0,0,-dist). */

@@ -13,7 +13,9 @@ import javax.imageio.ImageIO;
 
 import org.junit.jupiter.api.Test;
 
+import studio.engine.math.Srgb;
 import studio.engine.render.Film;
+import studio.engine.render.PixelLattice;
 
 class ImageEncoderTest {
 
@@ -35,6 +37,30 @@ class ImageEncoderTest {
         assertRgb(3, 255, 0, image.getRGB(2, 0));
         assertRgb(255, 0, 0, image.getRGB(0, 1));
         assertRgb(0, 0, 0, image.getRGB(1, 1));
+    }
+
+    @Test
+    void aLatticesImageHoldsTheFilmsPixelsOnItOnly() {
+        Film film = new Film(10, 7);
+        for (int y = 0; y < 7; y++) {
+            for (int x = 0; x < 10; x++) {
+                film.set(x, y, x / 10.0, y / 10.0, 1);
+            }
+        }
+
+        BufferedImage image = ImageEncoder.toImage(film, new PixelLattice(4, 2));
+
+        assertEquals(2, image.getWidth(), "columns 2 and 6");
+        assertEquals(2, image.getHeight(), "rows 2 and 6");
+        for (int j = 0; j < 2; j++) {
+            for (int i = 0; i < 2; i++) {
+                int x = 2 + 4 * i, y = 2 + 4 * j;
+                assertRgb(Srgb.toByte(x / 10.0), Srgb.toByte(y / 10.0), 255, image.getRGB(i, j));
+            }
+        }
+        BufferedImage whole = ImageEncoder.toImage(film, PixelLattice.ALL);
+        assertEquals(10, whole.getWidth());
+        assertRgb(Srgb.toByte(0.9), Srgb.toByte(0.6), 255, whole.getRGB(9, 6));
     }
 
     @Test

@@ -7,7 +7,7 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
-/** STABILITY OPT-01 and OPT-02: exact Fresnel reflectance near the critical angle and at normal incidence. */
+/** Robustness case OPT-01 and OPT-02: exact Fresnel reflectance near the critical angle and at normal incidence. */
 class FresnelTest {
 
     private static final double GLASS = 1.5;

@@ -32,11 +32,11 @@ import studio.engine.scene.SceneObject;
 class AdaptiveSamplingTest {
 
     private static final Vec3 UP = new Vec3(0, 1, 0);
-    private static final int MIN = Renderer.MIN_BATCHES * Renderer.BATCH;
+    private static final int MIN = BatchAdaptiveSampling.MIN_BATCHES * BatchAdaptiveSampling.BATCH;
 
     /** The fewest samples a pixel takes: the base samples with sobol, two batches with the others. */
     private static int minimum(String sampler) {
-        return sampler.equals("sobol") ? Renderer.BASE : MIN;
+        return sampler.equals("sobol") ? ProgressiveSobolSampling.BASE : MIN;
     }
 
     /** A white, unlit sphere of radius 1 at the origin on a black background, lit by nothing. */
@@ -160,7 +160,7 @@ class AdaptiveSamplingTest {
             }
         }
         double mean = single.meanSamplesPerPixel();
-        assertTrue(mean > Renderer.BASE && mean < 64, "mean samples per pixel " + mean);
+        assertTrue(mean > ProgressiveSobolSampling.BASE && mean < 64, "mean samples per pixel " + mean);
     }
 
     @Test
@@ -169,7 +169,7 @@ class AdaptiveSamplingTest {
         Scene scene = flatSphere(new Camera(new Vec3(0, 0, 4), Vec3.ZERO, UP, 40));
         for (int threads = 1; threads <= 3; threads++) {
             RenderResult result = Renderer.render(scene, settings(150, 110, Sampler.of("sobol", 64), 0.05, threads));
-            assertTrue(result.meanSamplesPerPixel() > Renderer.BASE, "the edge is refined");
+            assertTrue(result.meanSamplesPerPixel() > ProgressiveSobolSampling.BASE, "the edge is refined");
             assertEquals(result.samplesTaken(), result.raysTraced(), threads + " threads");
         }
     }
@@ -185,7 +185,7 @@ class AdaptiveSamplingTest {
         RenderResult result = Renderer.render(halfWhite, settings(8, 4, Sampler.of("sobol", 64), 0.05, 1));
 
         // the refined pixels' halves then agree and their samples have no range: they stop at 2 x BASE
-        assertEquals(Renderer.BASE * 6 * 4 + 2 * Renderer.BASE * 2 * 4, result.samplesTaken());
+        assertEquals(ProgressiveSobolSampling.BASE * 6 * 4 + 2 * ProgressiveSobolSampling.BASE * 2 * 4, result.samplesTaken());
         assertEquals(1.0, result.film().get(3, 1, 0), 0.0);
         assertEquals(0.0, result.film().get(4, 1, 0), 0.0);
     }

@@ -24,7 +24,7 @@ import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 
 /**
- * STABILITY OPT-01: refraction, total internal reflection and energy at a glass interface, and a glass cube
+ * Robustness case OPT-01: refraction, total internal reflection and energy at a glass interface, and a glass cube
  * render in which most first exits are totally reflected. The interface is the plane y = 0 with glass
  * (n = 1.5) below it; flat red above and flat green below show where the light went.
  */

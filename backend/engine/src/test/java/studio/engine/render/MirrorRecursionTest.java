@@ -19,7 +19,7 @@ import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 
 /**
- * STABILITY OPT-03: a ray between two parallel mirrors. Each hit adds 0.1 (ambient 1 times diffuse 0.1) and
+ * Robustness case OPT-03: a ray between two parallel mirrors. Each hit adds 0.1 (ambient 1 times diffuse 0.1) and
  * reflects half, so the value is the geometric sum 0.1 * (1 - 0.5^(D+1)) / 0.5 over the D + 1 hits.
  */
 class MirrorRecursionTest {

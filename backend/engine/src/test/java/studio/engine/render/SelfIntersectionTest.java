@@ -26,7 +26,7 @@ import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 
 /**
- * STABILITY section B. Scene S: plane y=0, unit sphere resting on it at (0,1,0), point light at (3,6,2)
+ * Robustness section "Self-intersection" (docs/robustness.md). Scene S: plane y=0, unit sphere resting on it at (0,1,0), point light at (3,6,2)
  * without fall-off, camera (0,3,6) looking at (0,0.5,0), fov 50, 128 x 128, one sample at each pixel centre.
  * Every position p becomes s*p + T. The shadow state of each pixel is worked out analytically; "acne" is a
  * lit pixel rendered shadowed, a "leak" a shadowed pixel rendered lit, counted on interior pixels: those whose
@@ -134,7 +134,7 @@ class SelfIntersectionTest {
                 }
             }
         }
-        assertEquals(803, facing, "light-facing sphere pixels (STABILITY SELF-05 counts 803)");
+        assertEquals(803, facing, "light-facing sphere pixels (robustness case SELF-05 counts 803)");
         assertEquals(0, dark, "light-facing sphere pixels with no direct light, of " + facing);
     }
 

@@ -19,7 +19,7 @@ import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 
 /**
- * STABILITY IMG-01: 1x1 and 1xN images. Pixel centres are (i + 0.5) / W with a double aspect ratio, so
+ * Robustness case IMG-01: 1x1 and 1xN images. Pixel centres are (i + 0.5) / W with a double aspect ratio, so
  * nothing divides by W - 1 or truncates W / H. Camera (0,0,5) looking at the origin, fov 30.
  */
 class TinyImageTest {

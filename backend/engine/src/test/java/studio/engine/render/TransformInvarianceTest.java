@@ -24,9 +24,9 @@ import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 
 /**
- * Beyond STABILITY section B: a scene of tilted and curved surfaces (a rotated box, a tilted
+ * Beyond the robustness section "Self-intersection" (docs/robustness.md): a scene of tilted and curved surfaces (a rotated box, a tilted
  * plane, a glass sphere, a mirror sphere, a metal box resting on the plane, three lights) moved
- * by T and scaled by s renders the same image. STABILITY F2 warns that axis-aligned surfaces hide
+ * by T and scaled by s renders the same image. docs/robustness.md notes that axis-aligned surfaces hide
  * translation acne, so every surface here is tilted or curved. Failure modes caught: shadow acne
  * or leaks on tilted faces (offset too small or too large for the scale), refraction rays
  * re-hitting the surface they leave (glass turns dark), mirror rays self-intersecting.

@@ -209,7 +209,7 @@ class SamplerTest {
 
     @Test
     void multiJitteredSamplerHasOneSamplePerCellAndPerNarrowRowAndColumnIn1000Of1000Patterns() {
-        // N = 16: a 4 x 4 grid and 16 narrow rows and columns (STABILITY SAM-01); then other shapes of grid
+        // N = 16: a 4 x 4 grid and 16 narrow rows and columns (robustness case SAM-01); then other shapes of grid
         int[][] shapes = {{16, 4, 4}, {12, 3, 4}, {32, 4, 8}, {7, 1, 7}, {64, 8, 8}};
         PixelRandom random = new PixelRandom();
         for (int[] shape : shapes) {

@@ -9,7 +9,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * STABILITY SAM-01 and SAM-02, at the sampler level: the error of a pixel's estimate of a known coverage.
+ * Robustness case SAM-01 and SAM-02, at the sampler level: the error of a pixel's estimate of a known coverage.
  * Regular grids alias on stripes finer than the grid (documented); the random samplers do not. On edges the
  * error of stratified samplers (jittered, multi-jittered, Sobol) falls like N^-3/4, of random ones like N^-1/2.
  */
@@ -36,7 +36,7 @@ class SamplingErrorTest {
 
     @Test
     void regularGridShowsMoireBandsOnStripesOfPeriod026() {
-        // documented behaviour: slow beats between the grid and the stripes (STABILITY SAM-01 measured 0.077)
+        // documented behaviour: slow beats between the grid and the stripes (robustness case SAM-01 measured 0.077)
         double rms = stripeBlockErrorRms(new RegularSampler(16), 0.26);
         assertTrue(rms > 0.03, "regular 8x8 block-mean error RMS " + rms);
     }

@@ -23,7 +23,7 @@ import studio.engine.render.Renderer;
 import studio.engine.sampler.RegularSampler;
 
 /**
- * STABILITY NUM-12: the plane y=0 and the top face of the box [-1,1]x[-1,0]x[-1,1] coincide. Hits within
+ * Robustness case NUM-12: the plane y=0 and the top face of the box [-1,1]x[-1,0]x[-1,1] coincide. Hits within
  * {@link Scene#TIE} of each other are a tie and the first-declared object wins, every time.
  */
 class SceneTieRuleTest {

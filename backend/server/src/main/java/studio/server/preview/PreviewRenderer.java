@@ -12,8 +12,8 @@ import org.springframework.http.ProblemDetail;
 import org.springframework.web.ErrorResponse;
 
 import studio.engine.image.ImageEncoder;
-import studio.engine.render.RenderListener;
-import studio.engine.render.RenderResult;
+import studio.engine.render.Film;
+import studio.engine.render.RenderSettings;
 import studio.server.render.RenderBudget;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
@@ -75,34 +75,45 @@ final class PreviewRenderer {
     }
 
     /**
-     * Renders one pass and encodes it as a frame message.
+     * Reserves the render memory of the film (and the scene's share) that passes with these
+     * settings render into.
      *
-     * @return the frame, or null if the render memory is taken right now
+     * @return the reservation, or null if the render memory is taken right now
+     * @throws InvalidSceneException if it could never fit the render memory
+     */
+    MemoryBudget.Reservation reserve(CompiledScene scene, RenderSettings settings) {
+        return budget.reserve(passScene(scene, settings));
+    }
+
+    /**
+     * Renders one pass into {@code film} (of the pass's settings, its memory reserved by
+     * {@link #reserve}) and encodes the pass's pixels as a frame message.
+     *
      * @throws studio.engine.render.RenderCancelledException when {@code superseded} turns true first
      * @throws studio.server.render.RenderTimeExceededException past the render time budget
      */
-    byte[] render(CompiledScene scene, PreviewPass pass, long revision, long receivedNanos,
+    byte[] render(CompiledScene scene, PreviewPass pass, Film film, long revision, long receivedNanos,
                   BooleanSupplier superseded) {
-        CompiledScene passScene = new CompiledScene(scene.scene(), pass.settings(), "png", 1, scene.fileStem());
-        try (MemoryBudget.Reservation memory = budget.reserve(passScene)) {
-            if (memory == null) {
-                return null;
-            }
-            RenderResult result = budget.render(passScene, RenderListener.NONE, superseded);
+        budget.render(passScene(scene, pass.settings()), film, pass.pixels(), pass.except(), superseded);
+        try {
             ByteArrayOutputStream image = new ByteArrayOutputStream();
-            var pixels = ImageEncoder.toImage(result.film());
+            var pixels = ImageEncoder.toImage(film, pass.pixels());
             if (pass.last()) {
                 ImageEncoder.writePng(pixels, image);
             } else {
                 ImageEncoder.writeJpeg(pixels, COARSE_QUALITY, image);
             }
-            PreviewFrame frame = new PreviewFrame(revision, pass.number(), pass.settings().width(),
-                    pass.settings().height(), pass.settings().sampler().samplesPerPixel(), pass.last(),
-                    pass.last() ? "png" : "jpeg", (System.nanoTime() - receivedNanos) / 1_000_000);
+            PreviewFrame frame = new PreviewFrame(revision, pass.number(), pass.frameWidth(), pass.frameHeight(),
+                    pass.settings().sampler().samplesPerPixel(), pass.last(), pass.last() ? "png" : "jpeg",
+                    (System.nanoTime() - receivedNanos) / 1_000_000);
             return frame.encode(image.toByteArray());
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    private static CompiledScene passScene(CompiledScene scene, RenderSettings settings) {
+        return new CompiledScene(scene.scene(), settings, "png", 1, scene.fileStem());
     }
 
     /** {@code {"revision": n, "problem": {...}}} for an invalid message or scene. */

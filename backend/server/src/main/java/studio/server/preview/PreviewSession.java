@@ -9,11 +9,13 @@ import java.util.concurrent.atomic.AtomicReference;
 import org.springframework.http.HttpStatus;
 import org.springframework.web.ErrorResponseException;
 
+import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
 import studio.server.render.RenderTimeExceededException;
 import studio.server.scene.CompiledScene;
 import studio.server.scene.InvalidSceneException;
 import studio.server.system.IntakeMemory;
+import studio.server.system.MemoryBudget;
 
 /**
  * One live view: the newest revision a client sent and the work of showing it. Messages only
@@ -139,34 +141,50 @@ final class PreviewSession {
         } finally {
             next.memory().close(); // the passes reserve their own render memory, which counts the scene
         }
-        for (PreviewPass pass : PreviewPass.plan(scene.settings())) {
-            // the first, coarsest pass is shown even if a newer revision is waiting: it costs little
-            // next to reading the scene, and in a drag over a scene that takes longer to read than
-            // the drag's steps, every revision would otherwise be dropped unseen until the drag stops
-            boolean first = pass.number() == 1;
-            if (!first && superseded()) {
-                return;
+        Film film = null;
+        MemoryBudget.Reservation filmMemory = null;
+        try {
+            for (PreviewPass pass : PreviewPass.plan(scene.settings())) {
+                // the first, coarsest pass is shown even if a newer revision is waiting: it costs little
+                // next to reading the scene, and in a drag over a scene that takes longer to read than
+                // the drag's steps, every revision would otherwise be dropped unseen until the drag stops
+                boolean first = pass.number() == 1;
+                if (!first && superseded()) {
+                    return;
+                }
+                byte[] frame;
+                try {
+                    if (film == null || pass.except() == null) {
+                        // a new film (the mosaic's, then the target's): its memory first
+                        if (filmMemory != null) {
+                            filmMemory.close();
+                        }
+                        filmMemory = renderer.reserve(scene, pass.settings());
+                        if (filmMemory == null) {
+                            output.text(renderer.problem(request.revision(), HttpStatus.SERVICE_UNAVAILABLE,
+                                    "Service Unavailable", BUSY));
+                            return;
+                        }
+                        film = new Film(pass.settings().width(), pass.settings().height());
+                    }
+                    frame = renderer.render(scene, pass, film, request.revision(), next.receivedNanos(),
+                            first ? this::closed : this::superseded);
+                } catch (RenderCancelledException e) {
+                    return;
+                } catch (RenderTimeExceededException e) {
+                    output.text(renderer.problem(request.revision(), HttpStatus.UNPROCESSABLE_CONTENT,
+                            "Render time budget exceeded", e.getMessage()));
+                    return;
+                } catch (InvalidSceneException e) {
+                    output.text(renderer.problem(request.revision(), e)); // it could never fit the render memory
+                    return;
+                }
+                output.frame(frame);
             }
-            byte[] frame;
-            try {
-                frame = renderer.render(scene, pass, request.revision(), next.receivedNanos(),
-                        first ? this::closed : this::superseded);
-            } catch (RenderCancelledException e) {
-                return;
-            } catch (RenderTimeExceededException e) {
-                output.text(renderer.problem(request.revision(), HttpStatus.UNPROCESSABLE_CONTENT,
-                        "Render time budget exceeded", e.getMessage()));
-                return;
-            } catch (InvalidSceneException e) {
-                output.text(renderer.problem(request.revision(), e)); // it could never fit the render memory
-                return;
+        } finally {
+            if (filmMemory != null) {
+                filmMemory.close();
             }
-            if (frame == null) {
-                output.text(renderer.problem(request.revision(), HttpStatus.SERVICE_UNAVAILABLE, "Service Unavailable",
-                        BUSY));
-                return;
-            }
-            output.frame(frame);
         }
     }
 }

@@ -2,7 +2,10 @@ package studio.server.render;
 
 import java.time.Duration;
 import java.util.function.BooleanSupplier;
+import java.util.function.Function;
 
+import studio.engine.render.Film;
+import studio.engine.render.PixelLattice;
 import studio.engine.render.RenderCancelledException;
 import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
@@ -80,10 +83,27 @@ public final class RenderBudget {
      * @throws RenderTimeExceededException if the budget ran out first
      */
     public RenderResult render(CompiledScene scene, RenderListener listener, BooleanSupplier cancelled) {
+        return withinTime(cancelled, stop -> Renderer.render(scene.scene(), scene.settings(), listener, stop));
+    }
+
+    /**
+     * Renders the pixels of {@code pixels} not on {@code except} into {@code film} (see
+     * {@link Renderer#render(studio.engine.scene.Scene, studio.engine.render.RenderSettings, Film,
+     * PixelLattice, PixelLattice, RenderListener, BooleanSupplier)}) within the time budget.
+     *
+     * @throws RenderCancelledException    if {@code cancelled} turned true first
+     * @throws RenderTimeExceededException if the budget ran out first
+     */
+    public RenderResult render(CompiledScene scene, Film film, PixelLattice pixels, PixelLattice except,
+                               BooleanSupplier cancelled) {
+        return withinTime(cancelled, stop -> Renderer.render(scene.scene(), scene.settings(), film, pixels, except,
+                RenderListener.NONE, stop));
+    }
+
+    private RenderResult withinTime(BooleanSupplier cancelled, Function<BooleanSupplier, RenderResult> render) {
         long deadline = System.nanoTime() + maxTime.toNanos();
         try {
-            return Renderer.render(scene.scene(), scene.settings(), listener,
-                    () -> cancelled.getAsBoolean() || System.nanoTime() - deadline > 0);
+            return render.apply(() -> cancelled.getAsBoolean() || System.nanoTime() - deadline > 0);
         } catch (RenderCancelledException e) {
             if (!cancelled.getAsBoolean() && System.nanoTime() - deadline > 0) {
                 throw new RenderTimeExceededException(maxTime);

@@ -5,12 +5,14 @@ import java.util.List;
 import com.fasterxml.jackson.annotation.JsonSubTypes;
 import com.fasterxml.jackson.annotation.JsonTypeInfo;
 
+import org.hibernate.validator.constraints.CodePointLength;
+
 import jakarta.validation.constraints.DecimalMax;
 import jakarta.validation.constraints.NotNull;
 import jakarta.validation.constraints.Pattern;
 import jakarta.validation.constraints.PositiveOrZero;
 
-/** A light; {@code type} names its kind. */
+/** A light; {@code type} names its kind; an optional {@code name} is the editor's, ignored by the engine. */
 @JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "type")
 @JsonSubTypes({@JsonSubTypes.Type(value = LightDto.Point.class, name = "point")})
 public sealed interface LightDto {
@@ -20,6 +22,7 @@ public sealed interface LightDto {
             @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
             @Pattern(regexp = SceneDto.COLOR, message = SceneDto.COLOR_MESSAGE) String color,
             @PositiveOrZero @DecimalMax("1e6") @Finite Double intensity,
-            Boolean falloff) implements LightDto {
+            Boolean falloff,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements LightDto {
     }
 }

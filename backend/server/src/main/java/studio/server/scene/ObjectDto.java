@@ -5,12 +5,17 @@ import java.util.List;
 import com.fasterxml.jackson.annotation.JsonSubTypes;
 import com.fasterxml.jackson.annotation.JsonTypeInfo;
 
+import org.hibernate.validator.constraints.CodePointLength;
+
 import jakarta.validation.Valid;
 import jakarta.validation.constraints.NotNull;
 import jakarta.validation.constraints.Pattern;
 import jakarta.validation.constraints.Positive;
 
-/** A scene object; {@code type} names its kind. */
+/**
+ * A scene object; {@code type} names its kind. Each may carry a {@code name} the user gave it in the editor;
+ * the engine ignores it (it is the editor's, kept in the file so a scene reopens with its names).
+ */
 @JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "type")
 @JsonSubTypes({
         @JsonSubTypes.Type(value = ObjectDto.Sphere.class, name = "sphere"),
@@ -24,7 +29,8 @@ public sealed interface ObjectDto {
     record Sphere(
             @Vector List<@NotNull(message = "must be a number") @Finite Double> center,
             @Positive @Finite Double radius,
-            @Valid MaterialDto material) implements ObjectDto {
+            @Valid MaterialDto material,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
     }
 
     /** A box: centre, full size along its own axes, rotation in degrees about x, y, z (order XYZ, as three.js). */
@@ -32,14 +38,16 @@ public sealed interface ObjectDto {
             @Vector List<@NotNull(message = "must be a number") @Finite Double> center,
             @Vector List<@NotNull(message = "must be a number") @Positive @Finite Double> size,
             @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
-            @Valid MaterialDto material) implements ObjectDto {
+            @Valid MaterialDto material,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
     }
 
     /** An infinite plane through {@code point} with the given normal (need not be unit length). */
     record Plane(
             @Vector List<@NotNull(message = "must be a number") @Finite Double> point,
             @Vector @NonZeroVector List<@NotNull(message = "must be a number") @Finite Double> normal,
-            @Valid MaterialDto material) implements ObjectDto {
+            @Valid MaterialDto material,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
     }
 
     /**
@@ -54,6 +62,7 @@ public sealed interface ObjectDto {
             @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
             @Positive @Finite Double scale,
             @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
-            @Valid MaterialDto material) implements ObjectDto {
+            @Valid MaterialDto material,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
     }
 }

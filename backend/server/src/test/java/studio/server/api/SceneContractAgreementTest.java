@@ -121,7 +121,11 @@ class SceneContractAgreementTest {
                         + "{'type':'sphere','material':{'type':'glass','ior':4,'specular':1}}]}"),
                 edge("a light at the largest intensity with fall-off",
                         "{'lights':[{'type':'point','intensity':1e6,'falloff':true}],'objects':[]}"),
-                edge("JPEG at quality 0", "{'image':{'format':'jpg','quality':0},'objects':[]}"));
+                edge("JPEG at quality 0", "{'image':{'format':'jpg','quality':0},'objects':[]}"),
+                edge("objects and lights named by the editor, up to 200 characters",
+                        "{'lights':[{'type':'point','name':'key light'}],'objects':[{'type':'sphere','name':'ball'},"
+                                + "{'type':'box','name':''},{'type':'plane','name':'floor'},"
+                                + "{'type':'mesh','file':'meshes/torus-knot.obj','name':'" + "\uD83D\uDE00".repeat(200) + "'}]}"));
     }
 
     /** One scene per kind of violation: (what is wrong, the scene with single quotes, the field the server names). */
@@ -168,6 +172,10 @@ class SceneContractAgreementTest {
                 invalid("adaptive threshold above 1", "{'render':{'adaptive':1.5},'objects':[]}", "render.adaptive"),
                 invalid("version 2", "{'version':2,'objects':[]}", "version"),
                 invalid("name over 200 characters", "{'name':'" + "n".repeat(201) + "','objects':[]}", "name"),
+                invalid("an object's name over 200 characters", object("{'type':'sphere','name':'" + "n".repeat(201) + "'}"),
+                        "objects[0].name"),
+                invalid("a light's name that is not a string", "{'lights':[{'type':'point','name':7}],'objects':[]}",
+                        "lights[0].name"),
                 invalid("light intensity above 1e6", "{'lights':[{'type':'point','intensity':2e6}],'objects':[]}",
                         "lights[0].intensity"),
                 invalid("negative light intensity", "{'lights':[{'type':'point','intensity':-1}],'objects':[]}",

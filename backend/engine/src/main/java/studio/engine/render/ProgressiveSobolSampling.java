@@ -1,0 +1,185 @@
+package studio.engine.render;
+
+import studio.engine.sampler.PixelRandom;
+import studio.engine.sampler.SobolSampler;
+
+/**
+ * Adaptive sampling with the {@code sobol} sampler: one scrambled Sobol sequence per pixel, walked
+ * in two passes over each tile. First every pixel takes {@value #BASE} samples, and so does a
+ * one-pixel ring around the tile (the ring's samples are the same its own tiles take; with
+ * {@link TileBorders} tiles on one machine share them instead of tracing them twice). A pixel then
+ * stops at {@value #BASE} if all 36 base samples of its 3 x 3 neighbourhood agree: per channel c,
+ * (largest - smallest of them) / {@value #BASE} &lt;= L, with L from the pixel's own means (see
+ * {@link TileSampling#limitOf}). Looking at the neighbours finds the thin edges, shadow slivers and
+ * specks that the pixel's own four samples miss but a neighbour's catch. Otherwise the pixel walks
+ * on along its sequence, doubling: after n = 2^k samples the means A_c of the first and B_c of the
+ * second n/2 samples are both estimates from a stratified (0, k-1, 2)-net, and the pixel stops when
+ * <pre>
+ *     for every c: max(|A_c - B_c| / 2, R_c) &lt;= L
+ * </pre>
+ * (R_c the samples' range in channel c over n: two halves of a few stratified samples can agree by
+ * chance on an edge) else at N. Independent batches would lose the stratification (their error
+ * falls like N^-1/2); halves of one sequence keep it, so the estimate and the image both improve
+ * like a fixed-count Sobol pattern. Every decision reads only samples seeded by pixel, so the image
+ * is the same at any thread count, and whichever worker renders which tile.
+ */
+final class ProgressiveSobolSampling implements TileSampling {
+
+    /** The samples every pixel takes before it is judged. */
+    public static final int BASE = 4;
+    /** The largest tile with its one-pixel ring. */
+    private static final int RING_TILE = RenderSettings.TILE_SIZE + 2;
+
+    private final SampleTracer tracer;
+    /** Where tiles share their edge pixels' base samples, or null: each tile traces its ring itself. */
+    private final TileBorders borders;
+    private final StopSignal stop;
+    private final SobolSampler.Sequence sequence = new SobolSampler.Sequence();
+    private final PixelRandom random = new PixelRandom();
+    /** Each base pixel's sum and per-channel range, over a tile and its ring. */
+    private final double[] baseSum = new double[3 * RING_TILE * RING_TILE];
+    private final double[] baseMin = new double[3 * RING_TILE * RING_TILE], baseMax = new double[3 * RING_TILE * RING_TILE];
+    private final double[] xs, ys;
+    private final int max, width, height;
+    private final long seed;
+    private final double threshold;
+    private long samples;
+
+    ProgressiveSobolSampling(RenderSettings settings, SampleTracer tracer, TileBorders borders, StopSignal stop) {
+        this.tracer = tracer;
+        this.borders = borders;
+        this.stop = stop;
+        max = settings.sampler().samplesPerPixel();
+        xs = new double[max];
+        ys = new double[max];
+        width = settings.width();
+        height = settings.height();
+        seed = settings.seed();
+        threshold = settings.adaptiveThreshold();
+    }
+
+    @Override
+    public long samples() {
+        return samples;
+    }
+
+    /**
+     * First every pixel of the tile and of its ring takes {@value #BASE} samples (whichever tile
+     * takes an edge pixel's first leaves them in the borders for the other); then each pixel of the
+     * tile stops there if all base samples of its 3 x 3 neighbourhood agree, else walks on.
+     */
+    @Override
+    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except) {
+        int x0 = Math.max(0, tile.x() - 1), y0 = Math.max(0, tile.y() - 1);
+        int x1 = Math.min(width, tile.x() + tile.width() + 1), y1 = Math.min(height, tile.y() + tile.height() + 1);
+        int stride = x1 - x0;
+        int base = Math.min(max, BASE);
+        SampleTracer t = tracer;
+        long bad = 0;
+        for (int y = y0; y < y1; y++) {
+            for (int x = x0; x < x1; x++) {
+                int i = (y - y0) * stride + x - x0;
+                int entry = borders == null ? -1 : borders.entryOf(x, y);
+                long badHere = entry < 0 ? -1 : borders.loadOrClaim(entry, baseSum, baseMin, baseMax, 3 * i, stop);
+                if (badHere < 0) {
+                    random.reset(x, y, seed);
+                    sequence.seed(random);
+                    sequence.fill(0, base, xs, ys);
+                    t.resetRange();
+                    try {
+                        badHere = t.trace(x, y, xs, ys, 0, base);
+                    } catch (RuntimeException | Error e) {
+                        if (entry >= 0) {
+                            borders.abandon(entry);
+                        }
+                        throw e;
+                    }
+                    baseSum[3 * i] = t.sumR;
+                    baseSum[3 * i + 1] = t.sumG;
+                    baseSum[3 * i + 2] = t.sumB;
+                    baseMin[3 * i] = t.minR; baseMin[3 * i + 1] = t.minG; baseMin[3 * i + 2] = t.minB;
+                    baseMax[3 * i] = t.maxR; baseMax[3 * i + 1] = t.maxG; baseMax[3 * i + 2] = t.maxB;
+                    if (entry >= 0) {
+                        borders.store(entry, baseSum, baseMin, baseMax, 3 * i, (int) badHere);
+                    }
+                }
+                if (tile.contains(x, y)) {
+                    bad += badHere;
+                }
+            }
+        }
+        for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
+            for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
+                int i = (y - y0) * stride + x - x0;
+                double r = baseSum[3 * i] / base, g = baseSum[3 * i + 1] / base, b = baseSum[3 * i + 2] / base;
+                double limit = TileSampling.limitOf(threshold, Math.max(r, Math.max(g, b)));
+                if (base >= max || neighbourhoodStep(i, stride, x - x0, y - y0, x1 - x0, y1 - y0, base) <= limit) {
+                    samples += base;
+                    film.set(x, y, r, g, b);
+                } else {
+                    bad += refinePixel(film, x, y, i, base);
+                }
+            }
+        }
+        return bad;
+    }
+
+    /**
+     * The step one base sample makes in a mean, across pixel i's 3 x 3 neighbourhood: the range of
+     * all their base samples in the channel where it is widest, over {@code base}.
+     */
+    private double neighbourhoodStep(int i, int stride, int cx, int cy, int w, int h, int base) {
+        double loR = Double.POSITIVE_INFINITY, loG = loR, loB = loR;
+        double hiR = Double.NEGATIVE_INFINITY, hiG = hiR, hiB = hiR;
+        int nx0 = Math.max(0, cx - 1), nx1 = Math.min(w - 1, cx + 1);
+        for (int ny = Math.max(0, cy - 1); ny <= Math.min(h - 1, cy + 1); ny++) {
+            int row = i + (ny - cy) * stride - cx;
+            for (int nx = nx0; nx <= nx1; nx++) {
+                int j = 3 * (row + nx);
+                loR = Math.min(loR, baseMin[j]);
+                loG = Math.min(loG, baseMin[j + 1]);
+                loB = Math.min(loB, baseMin[j + 2]);
+                hiR = Math.max(hiR, baseMax[j]);
+                hiG = Math.max(hiG, baseMax[j + 1]);
+                hiB = Math.max(hiB, baseMax[j + 2]);
+            }
+        }
+        return Math.max(hiR - loR, Math.max(hiG - loG, hiB - loB)) / base;
+    }
+
+    /** Walks on along pixel i's sequence from its {@code base} samples, doubling, until the halves agree or the maximum is reached. */
+    private long refinePixel(Film film, int x, int y, int i, int base) {
+        SampleTracer t = tracer;
+        random.reset(x, y, seed);
+        sequence.seed(random);
+        t.minR = baseMin[3 * i]; t.minG = baseMin[3 * i + 1]; t.minB = baseMin[3 * i + 2];
+        t.maxR = baseMax[3 * i]; t.maxG = baseMax[3 * i + 1]; t.maxB = baseMax[3 * i + 2];
+        double totalR = baseSum[3 * i], totalG = baseSum[3 * i + 1], totalB = baseSum[3 * i + 2];
+        long bad = 0;
+        int taken = base;
+        while (taken < max) {
+            double firstR = totalR, firstG = totalG, firstB = totalB;
+            int half = taken, target = Math.min(max, taken * 2);
+            sequence.fill(taken, target - taken, xs, ys);
+            bad += t.trace(x, y, xs, ys, taken, target - taken);
+            totalR += t.sumR;
+            totalG += t.sumG;
+            totalB += t.sumB;
+            taken = target;
+            if (taken < max && half * 2 == taken) {
+                double dR = Math.abs(firstR - (totalR - firstR)) / half;
+                double dG = Math.abs(firstG - (totalG - firstG)) / half;
+                double dB = Math.abs(firstB - (totalB - firstB)) / half;
+                double mean = Math.max(totalR, Math.max(totalG, totalB)) / taken;
+                double limit = TileSampling.limitOf(threshold, mean);
+                double step = t.widestRange() / taken;
+                if (Math.max(dR, Math.max(dG, dB)) / 2 <= limit && step <= limit) {
+                    break;
+                }
+            }
+        }
+        samples += taken;
+        film.set(x, y, totalR / taken, totalG / taken, totalB / taken);
+        return bad;
+    }
+}

@@ -1,0 +1,88 @@
+package studio.engine.render;
+
+import studio.engine.camera.Camera;
+import studio.engine.geometry.Ray;
+import studio.engine.scene.Scene;
+
+/**
+ * Traces a pixel's camera samples, one worker's: a pattern's samples in, their sum and each
+ * channel's smallest and largest finite value out. Non-finite samples are dropped and counted.
+ * Every sampling strategy traces through one of these; it reads the render's stop signal before
+ * every sample.
+ */
+final class SampleTracer {
+
+    private final Integrator integrator;
+    private final Camera camera;
+    private final StopSignal stop;
+    private final Ray cameraRay = new Ray();
+    private final int width, height;
+    private final double aspect;
+    /** The radiance summed over the last call of {@link #trace}. */
+    double sumR, sumG, sumB;
+    /** The smallest and largest finite sample values per channel since the last {@link #resetRange}. */
+    double minR, minG, minB, maxR, maxG, maxB;
+
+    SampleTracer(Scene scene, RenderSettings settings, StopSignal stop) {
+        this.stop = stop;
+        integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight());
+        camera = scene.camera();
+        width = settings.width();
+        height = settings.height();
+        aspect = (double) width / height;
+    }
+
+    /** Rays traced so far. */
+    long rays() {
+        return integrator.rays;
+    }
+
+    void resetRange() {
+        minR = minG = minB = Double.POSITIVE_INFINITY;
+        maxR = maxG = maxB = Double.NEGATIVE_INFINITY;
+    }
+
+    /** The widest channel's range of the samples since {@link #resetRange}. */
+    double widestRange() {
+        return Math.max(maxR - minR, Math.max(maxG - minG, maxB - minB));
+    }
+
+    /**
+     * Traces samples first .. first + count - 1 of the pattern in xs, ys (offsets within pixel
+     * (x, y)); sums them into sumR/G/B and widens the range.
+     *
+     * @return how many came out non-finite
+     * @throws RenderCancelledException once the render's stop signal is raised
+     */
+    long trace(int x, int y, double[] xs, double[] ys, int first, int count) {
+        long bad = 0;
+        double r = 0, g = 0, b = 0;
+        for (int s = first; s < first + count; s++) {
+            stop.check();
+            double ndcX = 2 * (x + xs[s]) / width - 1;
+            double ndcY = 1 - 2 * (y + ys[s]) / height;
+            Ray ray = camera.ray(ndcX, ndcY, aspect, cameraRay);
+            // Each sample starts with throughput 1: culling by the sample's share of the pixel
+            // (1/N) would drop every weak reflection at high sample counts, a bias, not noise.
+            integrator.trace(ray, 0, 1.0);
+            double cr = integrator.r(), cg = integrator.g(), cb = integrator.b();
+            if (Double.isFinite(cr) && Double.isFinite(cg) && Double.isFinite(cb)) {
+                r += cr;
+                g += cg;
+                b += cb;
+                minR = Math.min(minR, cr);
+                minG = Math.min(minG, cg);
+                minB = Math.min(minB, cb);
+                maxR = Math.max(maxR, cr);
+                maxG = Math.max(maxG, cg);
+                maxB = Math.max(maxB, cb);
+            } else {
+                bad++;
+            }
+        }
+        sumR = r;
+        sumG = g;
+        sumB = b;
+        return bad;
+    }
+}
