@@ -3,7 +3,7 @@ package studio.engine.accel;
 import studio.engine.math.Fp;
 
 /**
- * The robust ray/box test of BVH traversal (STABILITY NUM-06; Williams et al. 2005, Ize 2013, pbrt):
+ * The robust ray/box test of BVH traversal (robustness case NUM-06, docs/robustness.md; Williams et al. 2005, Ize 2013, pbrt):
  * the near and far planes of each slab are picked by the sign of the inverse direction, so a zero
  * direction component gives ±infinity; the NaN of 0*infinity (origin exactly on a slab plane) is
  * ignored by the comparisons, which counts the ray as inside that slab. Comparisons are

@@ -22,7 +22,7 @@ import studio.engine.mesh.MeshData;
  * ray runs along z, and the three edge functions decide. The permutation and shear are worked out
  * once per ray; an edge shared by two triangles gives each of them exactly the negated edge
  * function, and edge functions of zero count as inside for both, so no ray slips through a shared
- * edge (STABILITY NUM-08). Like pbrt, a hit counts only if t exceeds its own rounding bound.
+ * edge (robustness case NUM-08, docs/robustness.md). Like pbrt, a hit counts only if t exceeds its own rounding bound.
  *
  * <p>The reported normal is the geometric one, oriented by the winding (outward for
  * counter-clockwise triangles seen from outside, as in OBJ), or with vertex normals their
@@ -277,7 +277,7 @@ public final class TriangleMesh implements Shape {
 
     /**
      * The nearest hit by testing every triangle, without the BVH: the reference the BVH is
-     * checked against (tests, STABILITY NUM-06).
+     * checked against (tests, robustness case NUM-06, docs/robustness.md).
      */
     boolean intersectEachTriangle(Ray ray, double tMax, Hit hit) {
         double dx = ray.dx, dy = ray.dy, dz = ray.dz;

@@ -11,7 +11,7 @@ import studio.engine.geometry.Sphere;
 /**
  * A scene's shapes in declaration order, searched for the nearest hit under the tie rule: of hits
  * within {@link Scene#TIE} of each other the first-declared shape wins, so coincident surfaces
- * never speckle (STABILITY NUM-12).
+ * never speckle (robustness case NUM-12, docs/robustness.md).
  *
  * <p>Up to {@value #LINEAR_MAX} shapes are tested one after the other; larger scenes put their
  * bounded shapes (spheres, boxes, meshes) into a {@link Bvh} and test unbounded planes beside it.
