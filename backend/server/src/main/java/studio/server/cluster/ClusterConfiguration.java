@@ -14,6 +14,11 @@ import org.springframework.core.type.AnnotatedTypeMetadata;
 import com.hazelcast.config.Config;
 import com.hazelcast.core.HazelcastInstance;
 
+import studio.server.job.JobCluster;
+import studio.server.scene.SceneCompiler;
+import studio.server.system.MemoryBudget;
+import studio.server.system.StudioProperties;
+
 /**
  * The cluster: with {@code studio.cluster.members} set, a Hazelcast {@link Config} from which
  * Spring Boot's Hazelcast support starts the embedded member; without, nothing (a cluster of one).
@@ -26,6 +31,18 @@ class ClusterConfiguration {
     @Conditional(MembersConfigured.class)
     Config hazelcastConfig(ClusterProperties cluster) {
         return MemberConfig.of(cluster);
+    }
+
+    /** Jobs in the cluster's maps, rendered by every member's tile workers (as many as a render's threads). */
+    @Bean(destroyMethod = "close")
+    @Conditional(MembersConfigured.class)
+    JobCluster clusterJobs(HazelcastInstance member, SceneCompiler compiler, MemoryBudget memory,
+                           StudioProperties properties) {
+        int threads = properties.renderThreads() > 0 ? properties.renderThreads()
+                : Runtime.getRuntime().availableProcessors();
+        TileWorkers workers = new TileWorkers(member, new JobScenes(member.getMap(ClusterMaps.SCENES), compiler, memory),
+                threads);
+        return new ClusterJobs(member, compiler, workers, properties.renderThreads());
     }
 
     @Bean

@@ -13,7 +13,12 @@ import org.springframework.boot.test.context.runner.ApplicationContextRunner;
 import com.hazelcast.core.Hazelcast;
 import com.hazelcast.core.HazelcastInstance;
 
+import org.springframework.boot.context.properties.EnableConfigurationProperties;
+
 import studio.server.Await;
+import studio.server.scene.SceneCompiler;
+import studio.server.system.MemoryBudget;
+import studio.server.system.StudioProperties;
 
 /**
  * The member Spring Boot's Hazelcast support starts from studio.cluster.*: none without members, a
@@ -23,7 +28,13 @@ class ClusterMemberTest {
 
     private final ApplicationContextRunner context = new ApplicationContextRunner()
             .withConfiguration(AutoConfigurations.of(HazelcastAutoConfiguration.class))
-            .withUserConfiguration(ClusterConfiguration.class);
+            .withUserConfiguration(ClusterConfiguration.class, Properties.class)
+            .withBean(SceneCompiler.class, () -> SceneCompiler.standalone(TestMember.VALIDATION::getValidator))
+            .withBean(MemoryBudget.class, MemoryBudget::unlimited);
+
+    @EnableConfigurationProperties(StudioProperties.class)
+    static class Properties {
+    }
 
     @Test
     void startsNoMemberWithoutMembers() {
