@@ -32,6 +32,10 @@ final class JobPublisher implements JobListener {
     private final Supplier<byte[]> image;
     /** {@code x,y} of tiles whose events are in the ring buffer already (a job taken over). */
     private final Set<String> published;
+    /** When the job table last had this job's progress (System.nanoTime). */
+    private long progressWritten;
+    /** Progress is written to the job table at most this often: a status read through another member lags by as much. */
+    static final long PROGRESS_MILLIS = 250;
 
     JobPublisher(String id, String owner, int tileSize, IMap<String, JobRecord> jobs, IMap<String, byte[]> images,
                  Ringbuffer<JobEvent> events, Supplier<JobStatus> current, Supplier<byte[]> image, Set<String> published) {
@@ -62,7 +66,11 @@ final class JobPublisher implements JobListener {
             return;
         }
         events.add(tile);
-        jobs.set(id, new JobRecord(current.get(), owner, tileSize)); // the progress, for status through any member
+        long now = System.nanoTime();
+        if (now - progressWritten > PROGRESS_MILLIS * 1_000_000) {
+            progressWritten = now;
+            jobs.set(id, new JobRecord(current.get(), owner, tileSize)); // the progress, for status through any member
+        }
     }
 
     @Override

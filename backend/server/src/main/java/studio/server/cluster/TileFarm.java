@@ -41,12 +41,21 @@ import studio.server.scene.CompiledScene;
  */
 final class TileFarm {
 
+    private static final org.slf4j.Logger log = org.slf4j.LoggerFactory.getLogger(TileFarm.class);
+
     /** A tile that failed or was lost with its member this often fails its job. */
     static final int MAX_ATTEMPTS = 3;
     /** The coordinator looks for results this often, and for the cancel and the deadline. */
     static final long POLL_MILLIS = 100;
     /** The coordinator looks for tiles lost with their members this often (and at once when one leaves). */
     static final long LOST_CHECK_MILLIS = 1_000;
+    /**
+     * When no tile has arrived for this long, the coordinator reads the tiles it has not heard of from
+     * the job's tile map (map events are not delivered reliably while partitions move after a member
+     * died) and queues again every tile that is neither done, nor claimed by a live member, nor in the
+     * queue (a member killed in the middle of committing its take): such a tile costs at most this long.
+     */
+    static final long STALL_MILLIS = 5_000;
 
     private final HazelcastInstance member;
     private final TileWorkers workers;
@@ -74,11 +83,13 @@ final class TileFarm {
     /**
      * Renders the job's tiles on the cluster's members.
      *
-     * @param stop turns true on cancel or at the job's deadline
+     * @param resumed true for a job taken over: some of its tiles may be queued, claimed or done already
+     * @param stop    turns true on cancel or at the job's deadline
      * @throws RenderCancelledException once {@code stop} is true
      * @throws JobFailedException       when a tile failed {@value #MAX_ATTEMPTS} times
      */
-    RenderResult render(String jobId, CompiledScene scene, int tileSize, RenderListener listener, BooleanSupplier stop) {
+    RenderResult render(String jobId, CompiledScene scene, int tileSize, boolean resumed, RenderListener listener,
+                        BooleanSupplier stop) {
         long start = System.nanoTime();
         int width = scene.settings().width(), height = scene.settings().height();
         List<TileRect> tiles = Renderer.tiles(width, height, tileSize);
@@ -90,27 +101,49 @@ final class TileFarm {
         Map<String, Integer> count = counts.computeIfAbsent(jobId, id -> new ConcurrentHashMap<>());
         Assembly assembly = new Assembly(tiles, new Film(width, height), listener, count);
         try {
+            List<TileResult> failed = new ArrayList<>();
             for (TileResult result : results.values()) {
                 assembly.accept(result);
+                if (result.failed()) {
+                    failed.add(result); // its coordinator died before it could retry it
+                }
+            }
+            for (TileResult result : failed) {
+                if (!assembly.done.get(result.index())) {
+                    retry(jobId, tiles, results, result.index(), result.attempt(), result.error());
+                }
             }
             Set<String> alive = alive();
             List<TileTask> todo = new ArrayList<>();
-            Map<Integer, TileClaim> claimed = Map.copyOf(claims);
+            Map<Integer, TileClaim> claimed = resumed ? Map.copyOf(claims) : Map.of();
+            BitSet queued = resumed ? queued(jobId) : new BitSet();
             for (int i = 0; i < tiles.size(); i++) {
                 TileClaim claim = claimed.get(i);
-                if (!assembly.done.get(i) && (claim == null || !alive.contains(claim.member()))) {
+                if (!assembly.done.get(i) && !queued.get(i) && (claim == null || !alive.contains(claim.member()))) {
                     todo.add(new TileTask(jobId, i, claim == null ? 0 : claim.attempt() + 1));
                 }
             }
             queue.addAll(todo);
             long seenLeft = membersLeft;
             long nextCheck = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(LOST_CHECK_MILLIS);
+            long lastArrival = System.nanoTime();
             while (assembly.doneCount < tiles.size()) {
                 if (stop.getAsBoolean()) {
                     throw new RenderCancelledException();
                 }
                 TileResult result = arrived.poll(POLL_MILLIS, TimeUnit.MILLISECONDS);
+                if (result == null && System.nanoTime() - lastArrival > TimeUnit.MILLISECONDS.toNanos(STALL_MILLIS)) {
+                    lastArrival = System.nanoTime();
+                    for (TileResult missed : unheard(results, tiles.size(), assembly.done)) {
+                        assembly.accept(missed);
+                        if (missed.failed() && !assembly.done.get(missed.index())) {
+                            retry(jobId, tiles, results, missed.index(), missed.attempt(), missed.error());
+                        }
+                    }
+                    requeueMissing(jobId, tiles.size(), claims, assembly.done);
+                }
                 if (result != null) {
+                    lastArrival = System.nanoTime();
                     assembly.accept(result);
                     if (result.failed() && !assembly.done.get(result.index())) {
                         retry(jobId, tiles, results, result.index(), result.attempt(), result.error());
@@ -141,12 +174,50 @@ final class TileFarm {
         counts.remove(jobId);
     }
 
+    /** The job's tiles in the queue now (a job taken over: its first member queued them). */
+    private BitSet queued(String jobId) {
+        BitSet queued = new BitSet();
+        for (TileTask task : queue) {
+            if (task.jobId().equals(jobId)) {
+                queued.set(task.index());
+            }
+        }
+        return queued;
+    }
+
     private Set<String> alive() {
         Set<String> alive = new HashSet<>();
         for (Member each : member.getCluster().getMembers()) {
             alive.add(each.getUuid().toString());
         }
         return alive;
+    }
+
+    /** The results in the job's tile map of tiles not done here. */
+    private static java.util.Collection<TileResult> unheard(IMap<Integer, TileResult> results, int count, BitSet done) {
+        Set<Integer> open = new HashSet<>();
+        for (int i = done.nextClearBit(0); i < count; i = done.nextClearBit(i + 1)) {
+            open.add(i);
+        }
+        return results.getAll(open).values();
+    }
+
+    /** Queues the tiles that are neither done, nor claimed by a live member, nor queued. */
+    private void requeueMissing(String jobId, int count, IMap<Integer, TileClaim> claims, BitSet done) {
+        Set<String> alive = alive();
+        Map<Integer, TileClaim> claimed = Map.copyOf(claims);
+        BitSet queued = queued(jobId);
+        List<TileTask> missing = new ArrayList<>();
+        for (int i = 0; i < count; i++) {
+            TileClaim claim = claimed.get(i);
+            if (!done.get(i) && !queued.get(i) && (claim == null || !alive.contains(claim.member()))) {
+                missing.add(new TileTask(jobId, i, claim == null ? 0 : claim.attempt() + 1));
+            }
+        }
+        if (!missing.isEmpty()) {
+            log.info("job {}: {} tiles were neither done, claimed nor queued; queued again", jobId, missing.size());
+            queue.addAll(missing);
+        }
     }
 
     /** Queues again the tiles claimed by members that have left. */

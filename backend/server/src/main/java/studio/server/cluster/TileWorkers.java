@@ -2,6 +2,8 @@ package studio.server.cluster;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
 
 import org.slf4j.Logger;
@@ -11,6 +13,7 @@ import com.hazelcast.collection.IQueue;
 import com.hazelcast.core.HazelcastInstance;
 import com.hazelcast.map.IMap;
 import com.hazelcast.transaction.TransactionContext;
+import com.hazelcast.transaction.TransactionOptions;
 
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
@@ -34,6 +37,14 @@ final class TileWorkers implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(TileWorkers.class);
     /** A worker with nothing to do asks the queue again after this long: the bound of every wait. */
     static final long POLL_MILLIS = 500;
+    /** A job's state is asked of the job table at most this often per member (not for every tile). */
+    static final long JOB_CHECK_MILLIS = 1_000;
+    /** Take and claim: one phase suffices, as a member lost mid-commit leaves its claims to be re-queued anyway. */
+    private static final TransactionOptions TAKE = new TransactionOptions()
+            .setTransactionType(TransactionOptions.TransactionType.ONE_PHASE);
+
+    private record JobCheck(JobRecord job, long atNanos) {
+    }
 
     private final HazelcastInstance member;
     private final String address;
@@ -41,6 +52,7 @@ final class TileWorkers implements AutoCloseable {
     private final IQueue<TileTask> queue;
     private final IMap<String, JobRecord> jobs;
     private final List<Worker> workers = new ArrayList<>();
+    private final Map<String, JobCheck> checked = new ConcurrentHashMap<>();
     private volatile boolean running = true;
 
     TileWorkers(HazelcastInstance member, JobScenes scenes, int threads) {
@@ -107,14 +119,21 @@ final class TileWorkers implements AutoCloseable {
                     continue;
                 }
                 if (task != null) {
-                    render(task);
+                    try {
+                        render(task);
+                    } catch (RuntimeException e) {
+                        // the member is going (its claim, if any, is re-queued by the job's coordinator)
+                        if (running && member.getLifecycleService().isRunning()) {
+                            log.warn("could not report a tile to the cluster: {}", e.toString());
+                        }
+                    }
                 }
             }
         }
 
         /** Takes a task and claims it in one transaction, waiting at most {@value #POLL_MILLIS} ms. */
         private TileTask take() {
-            TransactionContext transaction = member.newTransactionContext();
+            TransactionContext transaction = member.newTransactionContext(TAKE);
             transaction.beginTransaction();
             try {
                 TileTask task = transaction.<TileTask>getQueue(ClusterMaps.TILE_QUEUE)
@@ -139,13 +158,11 @@ final class TileWorkers implements AutoCloseable {
         private void render(TileTask task) {
             IMap<Integer, TileResult> results = member.getMap(ClusterMaps.tiles(task.jobId()));
             IMap<Integer, TileClaim> claims = member.getMap(ClusterMaps.claims(task.jobId()));
-            JobRecord job = jobs.get(task.jobId());
-            if (job == null || job.status().state().isFinal() || results.containsKey(task.index())) {
-                // the job ended (its other tasks are dropped as they come), or the tile is a duplicate
-                claims.delete(task.index());
-                if (job == null || job.status().state().isFinal()) {
-                    scenes.forget(task.jobId());
-                }
+            JobRecord job = job(task.jobId());
+            if (job == null || job.status().state().isFinal()) {
+                // the job ended: its other tasks are dropped as they come
+                claims.deleteAsync(task.index());
+                scenes.forget(task.jobId());
                 return;
             }
             try {
@@ -169,9 +186,10 @@ final class TileWorkers implements AutoCloseable {
                         }
                     }
                 }
-                results.set(task.index(), new TileResult(task.index(), task.attempt(), rgb, worker.rays() - rays,
-                        worker.samples() - samples, nonFinite, address, null));
-                claims.delete(task.index());
+                // not waited for: the next tile starts now; if this member dies first, its claim is still there
+                results.setAsync(task.index(), new TileResult(task.index(), task.attempt(), rgb, worker.rays() - rays,
+                        worker.samples() - samples, nonFinite, address, null))
+                        .thenRun(() -> claims.deleteAsync(task.index()));
             } catch (RenderCancelledException e) {
                 handBack(task, claims); // shutting down: another member takes it
             } catch (MemoryBusyException e) {
@@ -192,6 +210,22 @@ final class TileWorkers implements AutoCloseable {
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
+        }
+
+        /** The job's record, asked of the job table at most every {@value #JOB_CHECK_MILLIS} ms. */
+        private JobRecord job(String id) {
+            long now = System.nanoTime();
+            JobCheck check = checked.get(id);
+            if (check == null || now - check.atNanos() > TimeUnit.MILLISECONDS.toNanos(JOB_CHECK_MILLIS)) {
+                JobRecord job = jobs.get(id);
+                if (job == null || job.status().state().isFinal()) {
+                    checked.remove(id);
+                    return job;
+                }
+                check = new JobCheck(job, now);
+                checked.put(id, check);
+            }
+            return check.job();
         }
 
         private void handBack(TileTask task, IMap<Integer, TileClaim> claims) {

@@ -175,7 +175,7 @@ class ClusterJobsTest {
     void aTileThatKeepsFailingFailsTheJobNamingTheTile() throws Exception {
         start(2);
         String id = submit(members.get(0));
-        Await.until("the job to run", WAIT_MILLIS, () -> members.get(1).jobs.status(id).state() == JobState.RUNNING);
+        Await.until("the job to run", WAIT_MILLIS, () -> members.get(0).jobs.status(id).state() == JobState.RUNNING);
 
         // the last tile, rendered last, fails at its last attempt as a worker reports it
         int last = TILES - 1;
