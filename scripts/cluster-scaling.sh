@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Scaling on one machine: the same job rendered by one member pinned to core 0, then by two members pinned to
 # cores 0 and 1 (taskset), each run alternated ROUNDS times; prints each job's render time (its status's
-# elapsedMillis) and the tile counts per member. Default job: scenes/glass-pattern.json at 960x720, 36 samples.
+# elapsedMillis), the tile counts per member and the CPU time each member's JVM used during the job (on a
+# machine shared with other work the wall time says little; the CPU time says what the cluster costs). Default job: scenes/glass-pattern.json at 960x720, 36 samples.
 #
 #   scripts/cluster-scaling.sh [--rounds 2] [--http-port 8290] [--cluster-port 5790]
 set -euo pipefail
@@ -56,8 +57,12 @@ start() {
   pids+=($!)
 }
 
+# CPU seconds (user + system) the process has used
+cpu() { awk '{ printf "%.2f", ($14 + $15) / 100 }' "/proc/$1/stat"; }
+
 run_job() {
-  local id
+  local id before=()
+  for pid in "${pids[@]}"; do before+=("$(cpu "$pid")"); done
   id="$(curl -fsS -H 'Content-Type: application/json' --data-binary "@$work/scene.json" "http://127.0.0.1:$http/api/jobs" \
     | field "['id']")"
   done_() { [[ "$(curl -fsS "http://127.0.0.1:$http/api/jobs/$id" | field "['state']")" =~ ^(done|failed|cancelled)$ ]]; }
@@ -66,6 +71,11 @@ run_job() {
 import json, sys
 s = json.load(sys.stdin)
 print('  %s in %.1f s, tiles per member %s' % (s['state'], s['elapsedMillis'] / 1000, s.get('workers', '-')))"
+  local i=0
+  for pid in "${pids[@]}"; do
+    echo "  member $i: $(python3 -c "print('%.1f' % ($(cpu "$pid") - ${before[$i]}))") s of CPU during the job"
+    i=$((i + 1))
+  done
 }
 
 members="127.0.0.1:$cluster,127.0.0.1:$((cluster + 1))"
