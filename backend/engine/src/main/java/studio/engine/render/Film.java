@@ -2,19 +2,36 @@ package studio.engine.render;
 
 /**
  * The linear-light framebuffer: one RGB triple of doubles per pixel, row-major from the top-left.
- * Non-finite values never get in: {@link #set} rejects them and counts them instead.
+ * Non-finite values never get in: {@link #set} rejects them and counts them instead. A film holds
+ * a whole image, or only one tile of it ({@link #ofTile}), addressed in the image's coordinates
+ * either way: a worker that renders one tile for another machine needs the tile's 24 KB (32x32),
+ * not the whole image's 200 MB (4K).
  */
 public final class Film {
 
     private final int width, height;
+    /** The image coordinates of this film's top-left pixel. */
+    private final int x0, y0;
     private final double[] rgb;
 
     public Film(int width, int height) {
+        this(0, 0, width, height);
+    }
+
+    private Film(int x0, int y0, int width, int height) {
+        this.x0 = x0;
+        this.y0 = y0;
         this.width = width;
         this.height = height;
         this.rgb = new double[3 * width * height];
     }
 
+    /** A film of the tile's pixels only, addressed in the image's coordinates. */
+    public static Film ofTile(TileRect tile) {
+        return new Film(tile.x(), tile.y(), tile.width(), tile.height());
+    }
+
+    /** The width of the pixels this film holds (the image's, unless it holds one tile). */
     public int width() {
         return width;
     }
@@ -25,7 +42,7 @@ public final class Film {
 
     /** Stores a pixel; returns false (and stores black) if any component is NaN or infinite. */
     public boolean set(int x, int y, double r, double g, double b) {
-        int i = 3 * (y * width + x);
+        int i = 3 * ((y - y0) * width + x - x0);
         if (Double.isFinite(r) && Double.isFinite(g) && Double.isFinite(b)) {
             rgb[i] = r;
             rgb[i + 1] = g;
@@ -38,6 +55,6 @@ public final class Film {
 
     /** Component c (0 red, 1 green, 2 blue) of pixel (x, y), in linear light. */
     public double get(int x, int y, int c) {
-        return rgb[3 * (y * width + x) + c];
+        return rgb[3 * ((y - y0) * width + x - x0) + c];
     }
 }

@@ -149,14 +149,14 @@ public final class Renderer {
      * {@value #TILES_PER_THREAD} tiles per thread: with few tiles, the one that holds most of the work
      * (the edges, under adaptive sampling) would finish alone while the other threads wait.
      */
-    static int tileSize(int width, int height, int threads) {
+    public static int tileSize(int width, int height, int threads) {
         int size = RenderSettings.TILE_SIZE;
         long tiles = (long) ((width + size - 1) / size) * ((height + size - 1) / size);
         return tiles < (long) TILES_PER_THREAD * threads ? size / 2 : size;
     }
 
     /** The image cut into tiles of at most size x size, row by row from the top left. */
-    static List<TileRect> tiles(int width, int height, int size) {
+    public static List<TileRect> tiles(int width, int height, int size) {
         List<TileRect> tiles = new ArrayList<>();
         for (int y = 0; y < height; y += size) {
             for (int x = 0; x < width; x += size) {

@@ -71,6 +71,47 @@ class TileRendererTest {
     }
 
     @Test
+    void anotherTilingGivesTheWholeRenderUnderEachStrategy() {
+        for (double threshold : new double[] {0, 0.05}) {
+            for (RenderSettings settings : List.of(
+                    new RenderSettings(70, 50, new JitteredSampler(16), 6, 2, 11, 1.0 / 1024, threshold),
+                    new RenderSettings(70, 50, new SobolSampler(16), 6, 2, 11, 1.0 / 1024, threshold))) {
+                RenderResult whole = Renderer.render(SCENE, settings); // 16-pixel tiles
+                Film apart = new Film(70, 50);
+                for (TileRect tile : Renderer.tiles(70, 50, 24)) {
+                    new TileRenderer(SCENE, settings).render(apart, tile);
+                }
+                for (int y = 0; y < 50; y++) {
+                    for (int x = 0; x < 70; x++) {
+                        for (int c = 0; c < 3; c++) {
+                            assertEquals(whole.film().get(x, y, c), apart.get(x, y, c), 0.0,
+                                    settings.sampler() + " adaptive " + threshold + ", pixel " + x + "," + y);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void aTileRenderedIntoAFilmOfItsOwnHasTheWholeRendersPixels() {
+        RenderSettings settings = new RenderSettings(70, 50, new SobolSampler(16), 6, 2, 11, 1.0 / 1024, 0.05);
+        RenderResult whole = Renderer.render(SCENE, settings);
+        for (TileRect tile : Renderer.tiles(70, 50, 16)) {
+            Film own = Film.ofTile(tile);
+            new TileRenderer(SCENE, settings).render(own, tile);
+            assertEquals(tile.width(), own.width());
+            for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
+                for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
+                    for (int c = 0; c < 3; c++) {
+                        assertEquals(whole.film().get(x, y, c), own.get(x, y, c), 0.0, "pixel " + x + "," + y);
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
     void aStoppedWorkerStopsWithinASample() {
         RenderSettings settings = new RenderSettings(32, 32, new JitteredSampler(4), 6, 1, 11, 1.0 / 1024, 0);
         TileRenderer worker = new TileRenderer(SCENE, settings);

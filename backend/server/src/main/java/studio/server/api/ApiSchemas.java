@@ -73,7 +73,9 @@ final class ApiSchemas {
                 "height": { "type": "integer", "minimum": 1 },
                 "fileName": { "type": "string" },
                 "mediaType": { "type": "string", "enum": ["image/png", "image/jpeg"] },
-                "error": { "type": ["string", "null"], "description": "why it failed or was cancelled, else null" }
+                "error": { "type": ["string", "null"], "description": "why it failed or was cancelled, else null" },
+                "workers": { "type": "object", "additionalProperties": { "type": "integer", "minimum": 0 },
+                             "description": "in a cluster: the tiles each member (host:port) rendered; absent in a cluster of one" }
               },
               "required": ["id", "state", "progress", "elapsedMillis", "raysPerSecond", "width", "height",
                            "fileName", "mediaType", "error"],

@@ -39,8 +39,9 @@ class JobController {
     ResponseEntity<JobStatus> start(@RequestBody(required = false) byte[] scene, HttpServletRequest request) {
         jobs.checkRoom();
         IntakeMemory intake = IntakeMemory.of(request);
-        CompiledScene compiled = compiler.compile(scene != null ? scene : new byte[0], intake);
-        JobStatus status = jobs.submit(compiled, intake);
+        byte[] json = scene != null ? scene : new byte[0];
+        CompiledScene compiled = compiler.compile(json, intake);
+        JobStatus status = jobs.submit(compiled, json, intake);
         return ResponseEntity.accepted().location(URI.create("/api/jobs/" + status.id())).body(status);
     }
 

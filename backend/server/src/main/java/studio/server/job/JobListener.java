@@ -4,7 +4,7 @@ package studio.server.job;
  * Hears one job's events, in order, on a thread of the job service's sender pool: never on a render
  * thread and never with the job's lock held, so a listener may write to a slow connection.
  */
-interface JobListener {
+public interface JobListener {
 
     void status(JobStatus status);
 

@@ -38,6 +38,7 @@ public final class JobService implements Drainable, AutoCloseable {
     /** Delivers events to listeners (see {@link JobSubscription}): a thread per subscription while it has news. */
     private final ExecutorService senders;
     private final Map<String, RenderJob> jobs = new ConcurrentHashMap<>();
+    private final JobCluster cluster;
 
     /** Listeners (event streams) at once, over all jobs; each holds a sender thread while it has news. */
     static final int MAX_LISTENERS = 256;
@@ -52,7 +53,16 @@ public final class JobService implements Drainable, AutoCloseable {
      * @param shutdownGrace on shutdown, how long running jobs may go on before they are cancelled
      */
     public JobService(JobSettings settings, RenderBudget budget, Duration shutdownGrace) {
+        this(settings, budget, shutdownGrace, JobCluster.SINGLE);
+    }
+
+    /**
+     * @param cluster where jobs' tiles are rendered and who else sees them ({@link JobCluster#SINGLE}:
+     *                this member only)
+     */
+    public JobService(JobSettings settings, RenderBudget budget, Duration shutdownGrace, JobCluster cluster) {
         this.settings = settings;
+        this.cluster = cluster;
         this.budget = budget;
         this.shutdownGrace = shutdownGrace;
         AtomicInteger threads = new AtomicInteger();
@@ -76,6 +86,7 @@ public final class JobService implements Drainable, AutoCloseable {
             t.setDaemon(true);
             return t;
         });
+        cluster.start(this::resume);
     }
 
     /**
@@ -105,6 +116,14 @@ public final class JobService implements Drainable, AutoCloseable {
 
     /** As {@link #submit(CompiledScene)}; the request's {@code intake} hands its memory over to the job's. */
     public JobStatus submit(CompiledScene scene, IntakeMemory intake) {
+        return submit(scene, null, intake);
+    }
+
+    /**
+     * As {@link #submit(CompiledScene, IntakeMemory)}, with the JSON the scene was compiled from: in a
+     * cluster it travels to the members that render the job's tiles.
+     */
+    public JobStatus submit(CompiledScene scene, byte[] sceneJson, IntakeMemory intake) {
         checkRoom();
         CompiledScene withThreads = new CompiledScene(scene.scene(),
                 scene.settings().withThreads(settings.renderThreads()), scene.format(), scene.quality(),
@@ -113,11 +132,23 @@ public final class JobService implements Drainable, AutoCloseable {
         if (memory == null) {
             throw new JobQueueFullException(retryAfterSeconds(), "the server's render memory is taken by other jobs");
         }
-        RenderJob job = new RenderJob(UUID.randomUUID().toString().replace("-", ""), withThreads, budget, memory);
+        return start(UUID.randomUUID().toString().replace("-", ""), withThreads, sceneJson, memory, false);
+    }
+
+    private JobStatus start(String id, CompiledScene scene, byte[] sceneJson, MemoryBudget.Reservation memory,
+                            boolean resumed) {
+        RenderJob job = new RenderJob(id, scene, budget, memory,
+                (compiled, listener, cancelled) -> cluster.render(id, compiled, budget, listener, cancelled),
+                () -> cluster.workers(id));
         jobs.put(job.id(), job);
+        JobListener publisher = cluster.accepted(id, sceneJson, job::status, job::image, resumed);
+        if (publisher != null) {
+            job.subscribe(publisher, senders, true);
+        }
         try {
             executor.execute(job);
         } catch (RejectedExecutionException e) {
+            job.fail("the server is shutting down");
             jobs.remove(job.id());
             job.release();
             throw new JobQueueFullException(retryAfterSeconds());
@@ -125,14 +156,37 @@ public final class JobService implements Drainable, AutoCloseable {
         return job.status();
     }
 
+    /**
+     * Takes over the job of a member that died (see {@link JobCluster.Takeover}): it runs here from
+     * now on, even beyond the queue's length (it was accepted already), its memory taken even if the
+     * budget is full (refusing it would lose the job).
+     */
+    void resume(String id, CompiledScene compiled, byte[] sceneJson) {
+        if (jobs.containsKey(id)) {
+            return;
+        }
+        CompiledScene withThreads = new CompiledScene(compiled.scene(),
+                compiled.settings().withThreads(settings.renderThreads()), compiled.format(), compiled.quality(),
+                compiled.fileStem());
+        MemoryBudget.Reservation memory = budget.memory().forceReserve(
+                studio.server.render.RenderMemory.estimate(withThreads));
+        start(id, withThreads, sceneJson, memory, true);
+    }
+
     public JobStatus status(String id) {
-        RenderJob job = job(id);
+        RenderJob job = jobs.get(id);
+        if (job == null) {
+            return known(cluster.status(id), id);
+        }
         job.touch();
         return job.status();
     }
 
     public JobStatus cancel(String id) {
-        RenderJob job = job(id);
+        RenderJob job = jobs.get(id);
+        if (job == null) {
+            return known(cluster.cancel(id), id);
+        }
         JobStatus status = job.cancel();
         if (status.state() == JobState.CANCELLED) {
             executor.remove(job);
@@ -142,10 +196,17 @@ public final class JobService implements Drainable, AutoCloseable {
 
     /** The finished image with its job's status. */
     public JobImage image(String id) {
-        RenderJob job = job(id);
-        job.touch();
-        byte[] image = job.image();
-        JobStatus status = job.status();
+        RenderJob job = jobs.get(id);
+        byte[] image;
+        JobStatus status;
+        if (job != null) {
+            job.touch();
+            image = job.image();
+            status = job.status();
+        } else {
+            status = known(cluster.status(id), id);
+            image = status.state() == JobState.DONE ? cluster.image(id) : null;
+        }
         if (image == null) {
             throw new JobNotDoneException(id, status.state());
         }
@@ -162,7 +223,13 @@ public final class JobService implements Drainable, AutoCloseable {
      * @throws JobQueueFullException when {@value #MAX_LISTENERS} listeners are subscribed already
      */
     void subscribe(String id, JobListener listener) {
-        RenderJob job = job(id);
+        RenderJob job = jobs.get(id);
+        if (job == null) {
+            if (!cluster.subscribe(id, listener, senders)) {
+                throw new JobNotFoundException(id);
+            }
+            return;
+        }
         int listeners = 0;
         for (RenderJob each : jobs.values()) {
             listeners += each.subscriptionCount();
@@ -221,6 +288,13 @@ public final class JobService implements Drainable, AutoCloseable {
         }
     }
 
+    private static JobStatus known(JobStatus status, String id) {
+        if (status == null) {
+            throw new JobNotFoundException(id);
+        }
+        return status;
+    }
+
     RenderJob job(String id) {
         RenderJob job = jobs.get(id);
         if (job == null) {
@@ -250,7 +324,8 @@ public final class JobService implements Drainable, AutoCloseable {
                 job.heartbeat(); // lets event streams notice clients that went away
             }
             if (!state.isFinal() && !job.hasListeners()
-                    && now - job.lastSeenNanos() > settings.abandonAfter().toNanos()) {
+                    && now - job.lastSeenNanos() > settings.abandonAfter().toNanos()
+                    && System.currentTimeMillis() - cluster.lastSeenMillis(job.id()) > settings.abandonAfter().toMillis()) {
                 job.cancel();
                 executor.remove(job);
             }
@@ -266,6 +341,7 @@ public final class JobService implements Drainable, AutoCloseable {
     private void drop(RenderJob job) {
         jobs.remove(job.id());
         job.release();
+        cluster.dropped(job.id());
     }
 
     /** Jobs known right now, finished ones included (for tests and metrics). */
@@ -314,7 +390,7 @@ public final class JobService implements Drainable, AutoCloseable {
         while (System.nanoTime() - deadlineNanos < 0) {
             boolean heard = true;
             for (RenderJob job : jobs.values()) {
-                heard &= !job.state().isFinal() || !job.hasListeners();
+                heard &= !job.state().isFinal() || !job.hasSubscriptions();
             }
             if (heard) {
                 return;

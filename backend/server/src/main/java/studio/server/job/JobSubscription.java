@@ -24,6 +24,8 @@ final class JobSubscription {
     }
 
     final JobListener listener;
+    /** The cluster's listener, not a client's. */
+    final boolean internal;
     private final RenderJob job;
     private final Executor sender;
     private final AtomicBoolean scheduled = new AtomicBoolean();
@@ -46,8 +48,9 @@ final class JobSubscription {
     /** True if it left because it fell behind. */
     volatile boolean dropped;
 
-    JobSubscription(JobListener listener, RenderJob job, Executor sender) {
+    JobSubscription(JobListener listener, RenderJob job, Executor sender, boolean internal) {
         this.listener = listener;
+        this.internal = internal;
         this.job = job;
         this.sender = sender;
     }

@@ -6,14 +6,18 @@ import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Base64;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
 
 import javax.imageio.ImageIO;
 
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
+import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
 import studio.engine.render.TileRect;
 import studio.server.render.ImageFiles;
@@ -35,12 +39,21 @@ final class RenderJob implements Runnable {
     /** At most this many events of the log go to a listener in one pass of its sender. */
     static final int DELIVERY_BATCH = 64;
 
+    /** How the job's tiles get rendered: on this member's pool, or by the cluster's members. */
+    @FunctionalInterface
+    interface Render {
+        RenderResult render(CompiledScene scene, RenderListener listener, BooleanSupplier cancelled);
+    }
+
     private final String id;
     /** Null once the job is final. */
     private CompiledScene scene;
     private final int width, height;
     private final String fileName, mediaType;
     private final RenderBudget budget;
+    private final Render render;
+    /** The tiles each member rendered (in a cluster), else null. */
+    private final Supplier<Map<String, Integer>> workers;
     /** The render's memory while it is queued or running; then the image's, until the job is dropped. */
     private MemoryBudget.Reservation memory;
     private final AtomicBoolean cancelRequested = new AtomicBoolean();
@@ -62,7 +75,14 @@ final class RenderJob implements Runnable {
     private volatile long lastSeenNanos = System.nanoTime();
 
     RenderJob(String id, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory) {
+        this(id, scene, budget, memory, budget::render, () -> null);
+    }
+
+    RenderJob(String id, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory, Render render,
+              Supplier<Map<String, Integer>> workers) {
         this.id = id;
+        this.render = render;
+        this.workers = workers;
         this.scene = scene;
         this.width = scene.settings().width();
         this.height = scene.settings().height();
@@ -93,7 +113,7 @@ final class RenderJob implements Runnable {
             broadcastStatus();
         }
         try {
-            RenderResult result = budget.render(scene, this::tileFinished, cancelRequested::get);
+            RenderResult result = render.render(scene, this::tileFinished, cancelRequested::get);
             byte[] bytes = ImageFiles.encode(result.film(), scene.format(), scene.quality());
             synchronized (this) {
                 image = bytes;
@@ -104,7 +124,7 @@ final class RenderJob implements Runnable {
             synchronized (this) {
                 finish(JobState.CANCELLED, cancelReason);
             }
-        } catch (RenderTimeExceededException e) {
+        } catch (RenderTimeExceededException | JobFailedException e) {
             synchronized (this) {
                 finish(JobState.FAILED, e.getMessage());
             }
@@ -174,8 +194,16 @@ final class RenderJob implements Runnable {
      * and last the end.
      */
     synchronized JobSubscription subscribe(JobListener listener, Executor sender) {
+        return subscribe(listener, sender, false);
+    }
+
+    /**
+     * As {@link #subscribe(JobListener, Executor)}; an {@code internal} listener (the one that tells
+     * the cluster) is no client: it does not count as one watching the job.
+     */
+    synchronized JobSubscription subscribe(JobListener listener, Executor sender, boolean internal) {
         touch();
-        JobSubscription subscription = new JobSubscription(listener, this, sender);
+        JobSubscription subscription = new JobSubscription(listener, this, sender, internal);
         subscription.first = status();
         subscription.joinedAt = log.size();
         subscription.next = state.isFinal() ? log.size() : 0;
@@ -255,7 +283,7 @@ final class RenderJob implements Runnable {
     synchronized boolean unsubscribeLast(JobListener listener) {
         JobSubscription subscription = subscriptionOf(listener);
         boolean removed = subscription != null && detach(subscription);
-        return removed && subscriptions.isEmpty() && !state.isFinal();
+        return removed && subscriptionCount() == 0 && !state.isFinal();
     }
 
     private JobSubscription subscriptionOf(JobListener listener) {
@@ -281,11 +309,22 @@ final class RenderJob implements Runnable {
         }
     }
 
+    /** The clients' subscriptions (not the cluster's). */
     synchronized int subscriptionCount() {
-        return subscriptions.size();
+        int count = 0;
+        for (JobSubscription subscription : subscriptions) {
+            count += subscription.internal ? 0 : 1;
+        }
+        return count;
     }
 
+    /** Whether a client (not the cluster) watches the job. */
     synchronized boolean hasListeners() {
+        return subscriptionCount() > 0;
+    }
+
+    /** Whether any subscription, the cluster's too, has yet to hear the end. */
+    synchronized boolean hasSubscriptions() {
         return !subscriptions.isEmpty();
     }
 
@@ -304,7 +343,7 @@ final class RenderJob implements Runnable {
         long end = endNanos != 0 ? endNanos : System.nanoTime();
         long elapsed = startNanos != 0 ? (end - startNanos) / 1_000_000 : 0;
         return new JobStatus(id, state, state == JobState.DONE ? 1.0 : progress, elapsed, raysPerSecond,
-                width, height, fileName, mediaType, error);
+                width, height, fileName, mediaType, error, workers.get());
     }
 
     synchronized JobState state() {

@@ -100,7 +100,14 @@ public final class RenderBudget {
                 RenderListener.NONE, stop));
     }
 
-    private RenderResult withinTime(BooleanSupplier cancelled, Function<BooleanSupplier, RenderResult> render) {
+    /**
+     * Runs {@code render} (given a condition that turns true on cancel or at the deadline) within
+     * the time budget: a render of tiles that other machines render, too.
+     *
+     * @throws RenderCancelledException    if {@code cancelled} turned true first
+     * @throws RenderTimeExceededException if the budget ran out first
+     */
+    public RenderResult withinTime(BooleanSupplier cancelled, Function<BooleanSupplier, RenderResult> render) {
         long deadline = System.nanoTime() + maxTime.toNanos();
         try {
             return render.apply(() -> cancelled.getAsBoolean() || System.nanoTime() - deadline > 0);

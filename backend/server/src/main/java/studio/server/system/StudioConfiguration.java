@@ -2,12 +2,14 @@ package studio.server.system;
 
 import java.util.List;
 
+import org.springframework.beans.factory.ObjectProvider;
 import org.springframework.boot.context.properties.EnableConfigurationProperties;
 import org.springframework.boot.web.servlet.FilterRegistrationBean;
 import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
 
 import jakarta.validation.Validator;
+import studio.server.job.JobCluster;
 import studio.server.job.JobService;
 import studio.server.render.RenderBudget;
 import studio.server.render.RenderService;
@@ -56,9 +58,11 @@ class StudioConfiguration {
         return new RenderService(compiler, properties.concurrentRenders(), properties.renderThreads(), budget);
     }
 
+    /** In a cluster, with the cluster's jobs (studio.server.cluster); else with this member's only. */
     @Bean(destroyMethod = "close")
-    JobService jobService(StudioProperties properties, RenderBudget budget) {
-        return new JobService(properties.jobSettings(), budget, properties.jobs().shutdownGrace());
+    JobService jobService(StudioProperties properties, RenderBudget budget, ObjectProvider<JobCluster> cluster) {
+        return new JobService(properties.jobSettings(), budget, properties.jobs().shutdownGrace(),
+                cluster.getIfAvailable(() -> JobCluster.SINGLE));
     }
 
     @Bean

@@ -77,6 +77,9 @@ class RenderApiTest {
     @Autowired
     MockMvc mvc;
 
+    @Autowired
+    org.springframework.context.ApplicationContext context;
+
     @LocalServerPort
     int port;
 
@@ -395,6 +398,16 @@ class RenderApiTest {
         mvc.perform(get("/actuator/health"))
                 .andExpect(status().isOk())
                 .andExpect(jsonPath("$.status").value("UP"));
+    }
+
+    @Test
+    void healthShowsAClusterOfOneThatStartedNoMember() throws Exception {
+        mvc.perform(get("/actuator/health/cluster"))
+                .andExpect(status().isOk())
+                .andExpect(jsonPath("$.status").value("UP"))
+                .andExpect(jsonPath("$.details.members").value(1))
+                .andExpect(jsonPath("$.details.member").value("none"));
+        assertThat(context.getBeanNamesForType(com.hazelcast.core.HazelcastInstance.class)).isEmpty();
     }
 
     @Test

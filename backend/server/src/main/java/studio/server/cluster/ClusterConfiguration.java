@@ -1,0 +1,63 @@
+package studio.server.cluster;
+
+import org.springframework.beans.factory.ObjectProvider;
+import org.springframework.boot.context.properties.EnableConfigurationProperties;
+import org.springframework.boot.context.properties.bind.Bindable;
+import org.springframework.boot.context.properties.bind.Binder;
+import org.springframework.context.annotation.Bean;
+import org.springframework.context.annotation.Condition;
+import org.springframework.context.annotation.ConditionContext;
+import org.springframework.context.annotation.Conditional;
+import org.springframework.context.annotation.Configuration;
+import org.springframework.core.type.AnnotatedTypeMetadata;
+
+import com.hazelcast.config.Config;
+import com.hazelcast.core.HazelcastInstance;
+
+import studio.server.job.JobCluster;
+import studio.server.scene.SceneCompiler;
+import studio.server.system.MemoryBudget;
+import studio.server.system.StudioProperties;
+
+/**
+ * The cluster: with {@code studio.cluster.members} set, a Hazelcast {@link Config} from which
+ * Spring Boot's Hazelcast support starts the embedded member; without, nothing (a cluster of one).
+ */
+@Configuration(proxyBeanMethods = false)
+@EnableConfigurationProperties(ClusterProperties.class)
+class ClusterConfiguration {
+
+    @Bean
+    @Conditional(MembersConfigured.class)
+    Config hazelcastConfig(ClusterProperties cluster) {
+        return MemberConfig.of(cluster);
+    }
+
+    /** Jobs in the cluster's maps, rendered by every member's tile workers (as many as a render's threads). */
+    @Bean(destroyMethod = "close")
+    @Conditional(MembersConfigured.class)
+    JobCluster clusterJobs(HazelcastInstance member, SceneCompiler compiler, MemoryBudget memory,
+                           StudioProperties properties) {
+        int threads = properties.renderThreads() > 0 ? properties.renderThreads()
+                : Runtime.getRuntime().availableProcessors();
+        TileWorkers workers = new TileWorkers(member, new JobScenes(member.getMap(ClusterMaps.SCENES), compiler, memory),
+                threads);
+        return new ClusterJobs(member, compiler, workers, properties.renderThreads());
+    }
+
+    @Bean
+    ClusterHealth clusterHealthIndicator(ObjectProvider<HazelcastInstance> member) {
+        return new ClusterHealth(member.getIfAvailable());
+    }
+
+    /** True when studio.cluster.members names at least one member. */
+    static final class MembersConfigured implements Condition {
+
+        @Override
+        public boolean matches(ConditionContext context, AnnotatedTypeMetadata metadata) {
+            return Binder.get(context.getEnvironment()).bind("studio.cluster.members", Bindable.listOf(String.class))
+                    .map(members -> members.stream().anyMatch(member -> !member.isBlank()))
+                    .orElse(false);
+        }
+    }
+}

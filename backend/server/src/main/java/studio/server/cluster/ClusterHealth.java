@@ -1,0 +1,36 @@
+package studio.server.cluster;
+
+import org.springframework.boot.health.contributor.Health;
+import org.springframework.boot.health.contributor.HealthIndicator;
+
+import com.hazelcast.core.HazelcastInstance;
+
+/**
+ * The cluster in GET /actuator/health/cluster: how many members it has, this member's address and
+ * the cluster's name. Without configured members the service is a cluster of one that started no
+ * Hazelcast member ({@code "member": "none"}).
+ */
+final class ClusterHealth implements HealthIndicator {
+
+    /** Null in a cluster of one. */
+    private final HazelcastInstance member;
+
+    ClusterHealth(HazelcastInstance member) {
+        this.member = member;
+    }
+
+    @Override
+    public Health health() {
+        if (member == null) {
+            return Health.up().withDetail("members", 1).withDetail("member", "none").build();
+        }
+        if (!member.getLifecycleService().isRunning()) {
+            return Health.down().withDetail("members", 0).withDetail("reason", "the member has shut down").build();
+        }
+        return Health.up()
+                .withDetail("members", member.getCluster().getMembers().size())
+                .withDetail("member", ClusterNames.address(member.getCluster().getLocalMember()))
+                .withDetail("name", member.getConfig().getClusterName())
+                .build();
+    }
+}

@@ -1,0 +1,304 @@
+package studio.server.cluster;
+
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
+import java.util.UUID;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executor;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import com.hazelcast.cluster.Member;
+import com.hazelcast.cluster.MembershipEvent;
+import com.hazelcast.cluster.MembershipListener;
+import com.hazelcast.core.HazelcastInstance;
+import com.hazelcast.map.IMap;
+import com.hazelcast.map.listener.EntryAddedListener;
+import com.hazelcast.ringbuffer.ReadResultSet;
+import com.hazelcast.ringbuffer.Ringbuffer;
+
+import studio.engine.render.RenderListener;
+import studio.engine.render.RenderResult;
+import studio.engine.render.Renderer;
+import studio.server.job.JobCluster;
+import studio.server.job.JobEvent;
+import studio.server.job.JobListener;
+import studio.server.job.JobState;
+import studio.server.job.JobStatus;
+import studio.server.job.TileEvent;
+import studio.server.render.RenderBudget;
+import studio.server.scene.CompiledScene;
+import studio.server.scene.SceneCompiler;
+
+/**
+ * Jobs in a cluster of several members (see {@link JobCluster}): the job table, scenes, images and
+ * event logs live in the cluster's maps and ring buffers, each with a backup; a job's tiles are
+ * rendered by every member ({@link TileFarm}, {@link TileWorkers}); any member serves any job's
+ * status, events, image and cancel; and when a member leaves, the others take over its unfinished
+ * jobs: of those that try, the one whose {@link TakeOver} succeeds runs the job from the tiles done.
+ */
+public final class ClusterJobs implements JobCluster, AutoCloseable {
+
+    private static final Logger log = LoggerFactory.getLogger(ClusterJobs.class);
+    /** Besides on every member's departure, orphaned jobs are looked for this often. */
+    static final long ORPHAN_CHECK_SECONDS = 5;
+    /**
+     * The cluster's tiles are this large when the image has at least {@value #MIN_LARGE_TILES} of
+     * them. Each tile costs a few round trips between members (take and claim it, put its result,
+     * log its event), a few milliseconds each on a busy machine: with 32x32 tiles of a 960x720 glass
+     * scene at 36 samples (50 ms of rendering each on one core), two members pinned to a core each
+     * took as long as one.
+     */
+    static final int LARGE_TILE = 64;
+    static final int MIN_LARGE_TILES = 64;
+
+    private final HazelcastInstance member;
+    private final String memberId;
+    private final SceneCompiler compiler;
+    private final TileWorkers workers;
+    private final TileFarm farm;
+    private final int renderThreads;
+    private final IMap<String, JobRecord> jobs;
+    private final IMap<String, byte[]> scenes;
+    private final IMap<String, byte[]> images;
+    private final IMap<String, String> cancels;
+    private final IMap<String, Long> seen;
+    /** Jobs whose cancel was asked for through another member. */
+    private final Set<String> cancelRequested = ConcurrentHashMap.newKeySet();
+    /** Jobs this member took over and has not rendered yet: their tiles may be queued already. */
+    private final Set<String> adopted = ConcurrentHashMap.newKeySet();
+    private final ScheduledExecutorService background;
+    private volatile Takeover takeover;
+    private UUID membershipRegistration, cancelRegistration;
+
+    /** @param renderThreads threads per render, 0 for all cores: fixes a job's tiling, as on one member */
+    ClusterJobs(HazelcastInstance member, SceneCompiler compiler, TileWorkers workers, int renderThreads) {
+        this.member = member;
+        this.memberId = member.getCluster().getLocalMember().getUuid().toString();
+        this.compiler = compiler;
+        this.workers = workers;
+        this.farm = new TileFarm(member, workers);
+        this.renderThreads = renderThreads;
+        this.jobs = member.getMap(ClusterMaps.JOBS);
+        this.scenes = member.getMap(ClusterMaps.SCENES);
+        this.images = member.getMap(ClusterMaps.IMAGES);
+        this.cancels = member.getMap(ClusterMaps.CANCELS);
+        this.seen = member.getMap(ClusterMaps.SEEN);
+        this.background = Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "cluster-jobs");
+            t.setDaemon(true);
+            return t;
+        });
+    }
+
+    @Override
+    public void start(Takeover takeover) {
+        this.takeover = takeover;
+        cancelRegistration = cancels.addEntryListener(
+                (EntryAddedListener<String, String>) event -> cancelRequested.add(event.getKey()), false);
+        membershipRegistration = member.getCluster().addMembershipListener(new MembershipListener() {
+            @Override
+            public void memberAdded(MembershipEvent event) {
+            }
+
+            @Override
+            public void memberRemoved(MembershipEvent event) {
+                farm.memberLeft();
+                background.execute(ClusterJobs.this::adoptOrphans);
+            }
+        });
+        background.scheduleWithFixedDelay(this::adoptOrphans, ORPHAN_CHECK_SECONDS, ORPHAN_CHECK_SECONDS,
+                TimeUnit.SECONDS);
+        workers.start();
+    }
+
+    @Override
+    public RenderResult render(String id, CompiledScene scene, RenderBudget budget, RenderListener listener,
+                               BooleanSupplier cancelled) {
+        JobRecord job = jobs.get(id);
+        int tileSize = job != null ? job.tileSize() : tileSize(scene.settings().width(), scene.settings().height());
+        boolean resumed = adopted.remove(id);
+        return budget.withinTime(() -> cancelled.getAsBoolean() || cancelRequested.contains(id),
+                stop -> farm.render(id, scene, tileSize, resumed, listener, stop));
+    }
+
+    /**
+     * The cluster's tiling: {@value #LARGE_TILE}-pixel tiles when there are enough of them, else this
+     * member's own (see {@link Renderer#tileSize}). The image is the same whatever the tiling: each
+     * pixel is seeded from itself.
+     */
+    private int tileSize(int width, int height) {
+        long large = (long) ((width + LARGE_TILE - 1) / LARGE_TILE) * ((height + LARGE_TILE - 1) / LARGE_TILE);
+        return large >= MIN_LARGE_TILES ? LARGE_TILE : Renderer.tileSize(width, height,
+                renderThreads > 0 ? renderThreads : Runtime.getRuntime().availableProcessors());
+    }
+
+    @Override
+    public Map<String, Integer> workers(String id) {
+        return farm.workers(id);
+    }
+
+    @Override
+    public JobListener accepted(String id, byte[] sceneJson, Supplier<JobStatus> status, Supplier<byte[]> image,
+                                boolean resumed) {
+        Ringbuffer<JobEvent> events = member.getRingbuffer(ClusterMaps.events(id));
+        JobStatus now = status.get();
+        int tileSize;
+        Set<String> published = ConcurrentHashMap.newKeySet();
+        if (resumed) {
+            JobRecord job = jobs.get(id);
+            tileSize = job != null ? job.tileSize() : tileSize(now.width(), now.height());
+            published.addAll(publishedTiles(events));
+        } else {
+            tileSize = tileSize(now.width(), now.height());
+            scenes.set(id, sceneJson);
+            jobs.set(id, new JobRecord(now, memberId, tileSize));
+        }
+        return new JobPublisher(id, memberId, tileSize, jobs, images, events, status, image, published);
+    }
+
+    /** The tiles whose events a job's ring buffer holds. */
+    private static Set<String> publishedTiles(Ringbuffer<JobEvent> events) {
+        Set<String> tiles = new HashSet<>();
+        long next = events.headSequence(), tail = events.tailSequence();
+        while (next <= tail) {
+            ReadResultSet<JobEvent> batch = events.readManyAsync(next, 0, 1000, null).toCompletableFuture().join();
+            if (batch.size() == 0) {
+                break;
+            }
+            for (JobEvent event : batch) {
+                if (event instanceof TileEvent tile) {
+                    tiles.add(JobPublisher.key(tile));
+                }
+            }
+            next = batch.getNextSequenceToReadFrom();
+        }
+        return tiles;
+    }
+
+    @Override
+    public JobStatus status(String id) {
+        JobRecord job = jobs.get(id);
+        if (job == null) {
+            return null;
+        }
+        seen.setAsync(id, System.currentTimeMillis());
+        return job.status();
+    }
+
+    @Override
+    public byte[] image(String id) {
+        seen.setAsync(id, System.currentTimeMillis());
+        return images.get(id);
+    }
+
+    @Override
+    public JobStatus cancel(String id) {
+        JobRecord job = jobs.get(id);
+        if (job == null) {
+            return null;
+        }
+        if (!job.status().state().isFinal()) {
+            cancels.set(id, "cancelled", 1, TimeUnit.HOURS);
+        }
+        return job.status();
+    }
+
+    @Override
+    public boolean subscribe(String id, JobListener listener, Executor sender) {
+        JobRecord job = jobs.get(id);
+        if (job == null) {
+            return false;
+        }
+        seen.setAsync(id, System.currentTimeMillis());
+        new RemoteJobStream(id, jobs, member.getRingbuffer(ClusterMaps.events(id)), listener, sender).start(job);
+        return true;
+    }
+
+    @Override
+    public long lastSeenMillis(String id) {
+        Long millis = seen.get(id);
+        return millis != null ? millis : 0;
+    }
+
+    @Override
+    public void dropped(String id) {
+        jobs.delete(id);
+        scenes.delete(id);
+        images.delete(id);
+        cancels.delete(id);
+        seen.delete(id);
+        member.getRingbuffer(ClusterMaps.events(id)).destroy();
+        cancelRequested.remove(id);
+        farm.forget(id);
+    }
+
+    /** Takes over the unfinished jobs whose member has left, those this member wins. */
+    void adoptOrphans() {
+        Takeover resume = takeover;
+        if (resume == null || !member.getLifecycleService().isRunning()) {
+            return;
+        }
+        try {
+            Set<String> alive = new HashSet<>();
+            for (Member each : member.getCluster().getMembers()) {
+                alive.add(each.getUuid().toString());
+            }
+            for (Map.Entry<String, JobRecord> entry : jobs.entrySet()) {
+                JobRecord job = entry.getValue();
+                if (job.status().state().isFinal() || alive.contains(job.owner())) {
+                    continue;
+                }
+                String id = entry.getKey();
+                if (Boolean.TRUE.equals(jobs.executeOnKey(id, new TakeOver(job.owner(), memberId)))) {
+                    adopt(id, job, resume);
+                }
+            }
+        } catch (RuntimeException e) {
+            log.warn("could not look for jobs of members that left: {}", e.toString());
+        }
+    }
+
+    private void adopt(String id, JobRecord job, Takeover resume) {
+        try {
+            byte[] json = scenes.get(id);
+            if (json == null) {
+                throw new IllegalStateException("its scene is gone");
+            }
+            CompiledScene scene = compiler.compile(json);
+            adopted.add(id);
+            resume.resume(id, scene, json);
+            log.info("took over job {} from a member that left", id);
+        } catch (RuntimeException e) {
+            adopted.remove(id);
+            log.warn("could not take over job {}: {}", id, e.toString());
+            JobStatus was = job.status();
+            JobStatus failed = new JobStatus(id, JobState.FAILED, was.progress(), was.elapsedMillis(), null, was.width(),
+                    was.height(), was.fileName(), was.mediaType(), "the member running the job left the cluster, and "
+                    + "no other could take it over", was.workers());
+            jobs.set(id, new JobRecord(failed, memberId, job.tileSize()));
+            member.<JobEvent>getRingbuffer(ClusterMaps.events(id)).add(failed);
+        }
+    }
+
+    @Override
+    public void close() {
+        background.shutdownNow();
+        workers.close();
+        if (member.getLifecycleService().isRunning()) {
+            try {
+                member.getCluster().removeMembershipListener(membershipRegistration);
+                cancels.removeEntryListener(cancelRegistration);
+            } catch (RuntimeException e) {
+                // the member is going anyway
+            }
+        }
+    }
+}

@@ -1,0 +1,56 @@
+package studio.server.cluster;
+
+/**
+ * The names of the cluster's data structures. Each is kept with one backup on another member
+ * (Hazelcast's default, set explicitly in {@link MemberConfig}), so the loss of any one member
+ * loses none of it.
+ */
+final class ClusterMaps {
+
+    /** Job id to {@link JobRecord}: the job table every member serves from. */
+    static final String JOBS = "studio-jobs";
+    /** Job id to the scene's JSON, meshes inline: what a member compiles once per job. */
+    static final String SCENES = "studio-scenes";
+    /** Job id to the finished image's bytes. */
+    static final String IMAGES = "studio-images";
+    /** Job id to the reason of a cancel asked for through a member that does not run the job. */
+    static final String CANCELS = "studio-cancels";
+    /** Job id to when a client last asked about it through another member (epoch millis). */
+    static final String SEEN = "studio-seen";
+    /** The {@link TileTask}s every member's workers take from, all jobs' in the order queued. */
+    static final String TILE_QUEUE = "studio-tile-queue";
+
+    private static final String TILES = "studio-tiles-";
+    private static final String CLAIMS = "studio-claims-";
+    private static final String EVENTS = "studio-events-";
+
+    private ClusterMaps() {
+    }
+
+    /** Tile index to {@link TileResult}: the job's finished tiles. */
+    static String tiles(String jobId) {
+        return TILES + jobId;
+    }
+
+    /** Tile index to {@link TileClaim}: the tiles a worker has taken and not finished yet. */
+    static String claims(String jobId) {
+        return CLAIMS + jobId;
+    }
+
+    /** The ring buffer of the job's {@link studio.server.job.JobEvent}s: its event log, cluster-wide. */
+    static String events(String jobId) {
+        return EVENTS + jobId;
+    }
+
+    static String tilesPattern() {
+        return TILES + "*";
+    }
+
+    static String claimsPattern() {
+        return CLAIMS + "*";
+    }
+
+    static String eventsPattern() {
+        return EVENTS + "*";
+    }
+}

@@ -1,0 +1,84 @@
+package studio.server.cluster;
+
+import java.util.Set;
+import java.util.function.Supplier;
+
+import com.hazelcast.map.IMap;
+import com.hazelcast.ringbuffer.Ringbuffer;
+
+import studio.server.job.JobEvent;
+import studio.server.job.JobListener;
+import studio.server.job.JobState;
+import studio.server.job.JobStatus;
+import studio.server.job.TileEvent;
+
+/**
+ * Tells the cluster about a job this member runs: it is the job's own subscriber (on the job
+ * service's sender threads, off the job's lock and the render threads), and writes each status to
+ * the job table, each event to the job's ring buffer (its event log, which any member's event
+ * streams read) and, at the end, the image to the image map before the end event, so that a client
+ * that hears the end through any member can fetch the image. A job taken over from a member that
+ * died skips the tile events its first member published already.
+ */
+final class JobPublisher implements JobListener {
+
+    private final String id;
+    private final String owner;
+    private final int tileSize;
+    private final IMap<String, JobRecord> jobs;
+    private final IMap<String, byte[]> images;
+    private final Ringbuffer<JobEvent> events;
+    private final Supplier<JobStatus> current;
+    private final Supplier<byte[]> image;
+    /** {@code x,y} of tiles whose events are in the ring buffer already (a job taken over). */
+    private final Set<String> published;
+    /** When the job table last had this job's progress (System.nanoTime). */
+    private long progressWritten;
+    /** Progress is written to the job table at most this often: a status read through another member lags by as much. */
+    static final long PROGRESS_MILLIS = 250;
+
+    JobPublisher(String id, String owner, int tileSize, IMap<String, JobRecord> jobs, IMap<String, byte[]> images,
+                 Ringbuffer<JobEvent> events, Supplier<JobStatus> current, Supplier<byte[]> image, Set<String> published) {
+        this.id = id;
+        this.owner = owner;
+        this.tileSize = tileSize;
+        this.jobs = jobs;
+        this.images = images;
+        this.events = events;
+        this.current = current;
+        this.image = image;
+        this.published = published;
+    }
+
+    static String key(TileEvent tile) {
+        return tile.x() + "," + tile.y();
+    }
+
+    @Override
+    public void status(JobStatus status) {
+        jobs.set(id, new JobRecord(status, owner, tileSize));
+        events.add(status);
+    }
+
+    @Override
+    public void tile(TileEvent tile) {
+        if (published.remove(key(tile))) {
+            return;
+        }
+        events.add(tile);
+        long now = System.nanoTime();
+        if (now - progressWritten > PROGRESS_MILLIS * 1_000_000) {
+            progressWritten = now;
+            jobs.set(id, new JobRecord(current.get(), owner, tileSize)); // the progress, for status through any member
+        }
+    }
+
+    @Override
+    public void end(JobStatus status) {
+        if (status.state() == JobState.DONE) {
+            images.set(id, image.get());
+        }
+        jobs.set(id, new JobRecord(status, owner, tileSize));
+        events.add(status);
+    }
+}

@@ -1,0 +1,100 @@
+package studio.server.job;
+
+import java.util.Map;
+import java.util.concurrent.Executor;
+import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
+
+import studio.engine.render.RenderListener;
+import studio.engine.render.RenderResult;
+import studio.server.render.RenderBudget;
+import studio.server.scene.CompiledScene;
+
+/**
+ * Where a job's tiles are rendered and who else sees the job. In a cluster of one ({@link #SINGLE},
+ * every default here) the member that accepted a job renders it on its own pool and is the only one
+ * that knows it. In a cluster (studio.server.cluster) the job's tiles are tasks every member pulls,
+ * and its status, event log and image are in the cluster's maps, so that any member serves it and
+ * another member takes it over ({@link Takeover}) when the one that accepted it dies.
+ */
+public interface JobCluster {
+
+    /** A cluster of one: nothing leaves this member. */
+    JobCluster SINGLE = new JobCluster() {
+    };
+
+    /** What a member does to take over the job of a member that died. */
+    @FunctionalInterface
+    interface Takeover {
+        /**
+         * Runs the job here from now on.
+         *
+         * @param scene compiled from {@code sceneJson}, the JSON the job was accepted with
+         */
+        void resume(String id, CompiledScene scene, byte[] sceneJson);
+    }
+
+    /** Called once by the job service, which takes over jobs through {@code takeover}. */
+    default void start(Takeover takeover) {
+    }
+
+    /**
+     * Renders the job's tiles within the budget's time, calling the listener for each finished tile
+     * (on the calling thread or a render thread, never holding a lock of the listener's).
+     */
+    default RenderResult render(String id, CompiledScene scene, RenderBudget budget, RenderListener listener,
+                                BooleanSupplier cancelled) {
+        return budget.render(scene, listener, cancelled);
+    }
+
+    /** The tiles each member has rendered for a job of this member, or null in a cluster of one. */
+    default Map<String, Integer> workers(String id) {
+        return null;
+    }
+
+    /**
+     * A job was accepted (or taken over) here: the cluster learns of it before its id is answered.
+     *
+     * @param status  the job's status now
+     * @param image   the job's image once it is done
+     * @param resumed true for a job taken over from a member that died: its events so far were published
+     * @return a listener that keeps the cluster told of the job's events, or null
+     */
+    default JobListener accepted(String id, byte[] sceneJson, Supplier<JobStatus> status, Supplier<byte[]> image,
+                                 boolean resumed) {
+        return null;
+    }
+
+    /** The status of a job another member runs, or null if the cluster knows no such job. */
+    default JobStatus status(String id) {
+        return null;
+    }
+
+    /** The image of another member's job, or null if it has none (yet). */
+    default byte[] image(String id) {
+        return null;
+    }
+
+    /** Asks the member that runs the job to cancel it; its status, or null if the cluster knows no such job. */
+    default JobStatus cancel(String id) {
+        return null;
+    }
+
+    /**
+     * Subscribes a listener to another member's job; its events are delivered through {@code sender}.
+     *
+     * @return false if the cluster knows no such job
+     */
+    default boolean subscribe(String id, JobListener listener, Executor sender) {
+        return false;
+    }
+
+    /** When anyone in the cluster last asked about the job (epoch millis), or 0 if not known. */
+    default long lastSeenMillis(String id) {
+        return 0;
+    }
+
+    /** This member dropped a finished job: the cluster forgets it too. */
+    default void dropped(String id) {
+    }
+}

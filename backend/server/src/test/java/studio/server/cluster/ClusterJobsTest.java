@@ -1,0 +1,208 @@
+package studio.server.cluster;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.UUID;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.Executors;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+import studio.engine.render.Renderer;
+import studio.server.Await;
+import studio.server.job.JobListener;
+import studio.server.job.JobState;
+import studio.server.job.JobStatus;
+import studio.server.job.TileEvent;
+import studio.server.render.ImageFiles;
+import studio.server.scene.CompiledScene;
+import studio.server.scene.SceneCompiler;
+import studio.server.system.IntakeMemory;
+
+/**
+ * Several members in one JVM, on loopback: a job accepted by one member is served by every member
+ * (status, events, image, cancel), its tiles are rendered by all of them, its image is the bytes
+ * one machine's render gives, and it ends done with those bytes when a worker, or the member that
+ * accepted it, dies mid-render, or a worker leaves gracefully.
+ */
+class ClusterJobsTest {
+
+    /** A glass scene of 20 tiles (32x32 at one thread per member), about two seconds of work on one core. */
+    static final String SCENE = """
+            {"name": "cluster-test", "image": {"width": 160, "height": 120, "format": "png"},
+             "camera": {"position": [0, 1.2, 5], "lookAt": [0, 0.5, 0]},
+             "render": {"sampler": "jittered", "samples": 24, "maxDepth": 8, "seed": 7},
+             "objects": [{"type": "sphere", "center": [-0.6, 0.5, 0], "radius": 0.5, "material": {"type": "glass"}},
+                         {"type": "sphere", "center": [0.6, 0.5, 0], "radius": 0.5, "material": {"type": "mirror"}},
+                         {"type": "plane"}]}
+            """;
+    static final long WAIT_MILLIS = 60_000;
+    static final int TILES = Renderer.tiles(160, 120, Renderer.tileSize(160, 120, 1)).size();
+
+    private static byte[] oneMachine;
+
+    private final List<TestMember> members = new ArrayList<>();
+    private final String name = "test-" + UUID.randomUUID();
+
+    @BeforeAll
+    static void renderOnOneMachine() {
+        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator)
+                .compile(SCENE.getBytes(StandardCharsets.UTF_8));
+        oneMachine = ImageFiles.encode(Renderer.render(scene.scene(), scene.settings()).film(), scene.format(),
+                scene.quality());
+    }
+
+    @AfterEach
+    void stopMembers() {
+        for (TestMember member : members) {
+            member.kill();
+        }
+    }
+
+    private void start(int count) throws Exception {
+        int[] ports = new int[count];
+        for (int i = 0; i < count; i++) {
+            ports[i] = 5790 + i;
+        }
+        for (int port : ports) {
+            members.add(new TestMember(name, port, ports));
+        }
+        for (TestMember member : members) {
+            assertThat(member.hazelcast.getCluster().getMembers()).hasSize(count);
+        }
+        // every partition's backup in place: a member killed before then may take data with it
+        Await.until("the cluster to be safe", WAIT_MILLIS,
+                () -> members.stream().allMatch(member -> member.hazelcast.getPartitionService().isClusterSafe()));
+    }
+
+    private String submit(TestMember member) {
+        byte[] json = SCENE.getBytes(StandardCharsets.UTF_8);
+        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(json);
+        return member.jobs.submit(scene, json, IntakeMemory.NONE).id();
+    }
+
+    private static JobStatus awaitFinal(TestMember member, String id) throws Exception {
+        Await.until("job " + id + " to end, seen through " + member.address, WAIT_MILLIS,
+                () -> member.jobs.status(id).state().isFinal());
+        return member.jobs.status(id);
+    }
+
+    private static int tilesOf(JobStatus status, TestMember member) {
+        return status.workers() == null ? 0 : status.workers().getOrDefault(member.address, 0);
+    }
+
+    @Test
+    void anyMemberServesAJobThatEveryMemberRendersToOneMachinesBytes() throws Exception {
+        start(3);
+        TestMember accepting = members.get(0), other = members.get(1);
+        String id = submit(accepting);
+
+        List<Object> events = new CopyOnWriteArrayList<>();
+        assertThat(other.cluster.subscribe(id, recorder(events), Executors.newSingleThreadExecutor())).isTrue();
+        JobStatus done = awaitFinal(members.get(2), id);
+
+        assertThat(done.state()).isEqualTo(JobState.DONE);
+        assertThat(awaitFinal(other, id).state()).isEqualTo(JobState.DONE);
+        assertThat(other.jobs.image(id).bytes()).isEqualTo(oneMachine);
+        assertThat(members.get(2).jobs.image(id).bytes()).isEqualTo(oneMachine);
+        assertThat(done.workers().values().stream().mapToInt(Integer::intValue).sum()).isEqualTo(TILES);
+        assertThat(done.workers()).containsOnlyKeys(members.stream().map(member -> member.address).toList());
+        Await.until("the event stream through another member to end", WAIT_MILLIS,
+                () -> !events.isEmpty() && events.get(events.size() - 1) instanceof String);
+        assertThat(events.stream().filter(TileEvent.class::isInstance)).hasSize(TILES);
+        assertThat(events.get(events.size() - 1)).isEqualTo("end done");
+    }
+
+    @Test
+    void aCancelThroughAnotherMemberStopsTheJob() throws Exception {
+        start(2);
+        String id = submit(members.get(0));
+        Await.until("the job to run", WAIT_MILLIS, () -> members.get(1).jobs.status(id).state() == JobState.RUNNING);
+
+        members.get(1).jobs.cancel(id);
+
+        assertThat(awaitFinal(members.get(1), id).state()).isEqualTo(JobState.CANCELLED);
+    }
+
+    @Test
+    void aWorkerKilledMidRenderLosesNoTile() throws Exception {
+        start(3);
+        TestMember accepting = members.get(0), worker = members.get(2);
+        String id = submit(accepting);
+        Await.until("the worker to render a tile", WAIT_MILLIS, () -> tilesOf(accepting.jobs.status(id), worker) > 0);
+        assertThat(accepting.jobs.status(id).state()).isEqualTo(JobState.RUNNING);
+
+        worker.kill();
+
+        assertThat(awaitFinal(members.get(1), id).state()).isEqualTo(JobState.DONE);
+        assertThat(members.get(1).jobs.image(id).bytes()).isEqualTo(oneMachine);
+    }
+
+    @Test
+    void anotherMemberTakesOverTheJobOfTheAcceptingMemberKilledMidRender() throws Exception {
+        start(3);
+        TestMember accepting = members.get(0), reader = members.get(1);
+        String id = submit(accepting);
+        Await.until("a few tiles", WAIT_MILLIS, () -> accepting.jobs.status(id).progress() > 0.05);
+
+        accepting.kill();
+
+        JobStatus end = awaitFinal(reader, id);
+        assertThat(end.state()).as(end.error() == null ? "" : end.error()).isEqualTo(JobState.DONE);
+        assertThat(reader.jobs.image(id).bytes()).isEqualTo(oneMachine);
+        assertThat(members.get(2).jobs.image(id).bytes()).isEqualTo(oneMachine);
+    }
+
+    @Test
+    void aWorkerLeavingGracefullyHandsItsTilesBack() throws Exception {
+        start(2);
+        TestMember accepting = members.get(0), worker = members.get(1);
+        String id = submit(accepting);
+        Await.until("the worker to render a tile", WAIT_MILLIS, () -> tilesOf(accepting.jobs.status(id), worker) > 0);
+
+        worker.close();
+
+        assertThat(awaitFinal(accepting, id).state()).isEqualTo(JobState.DONE);
+        assertThat(accepting.jobs.image(id).bytes()).isEqualTo(oneMachine);
+    }
+
+    @Test
+    void aTileThatKeepsFailingFailsTheJobNamingTheTile() throws Exception {
+        start(2);
+        String id = submit(members.get(0));
+        Await.until("the job to run", WAIT_MILLIS, () -> members.get(0).jobs.status(id).state() == JobState.RUNNING);
+
+        // the last tile, rendered last, fails at its last attempt as a worker reports it
+        int last = TILES - 1;
+        members.get(1).hazelcast.getMap(ClusterMaps.tiles(id)).set(last,
+                TileResult.failed(new TileTask(id, last, TileFarm.MAX_ATTEMPTS - 1), "test", "a worker failed"));
+
+        JobStatus end = awaitFinal(members.get(1), id);
+        assertThat(end.state()).isEqualTo(JobState.FAILED);
+        assertThat(end.error()).isEqualTo("the tile at 128,96 failed 3 times; the last time: a worker failed");
+    }
+
+    private static JobListener recorder(List<Object> events) {
+        return new JobListener() {
+            @Override
+            public void status(JobStatus status) {
+                events.add(status);
+            }
+
+            @Override
+            public void tile(TileEvent tile) {
+                events.add(tile);
+            }
+
+            @Override
+            public void end(JobStatus status) {
+                events.add("end " + status.state().json());
+            }
+        };
+    }
+}
