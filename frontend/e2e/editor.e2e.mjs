@@ -51,6 +51,8 @@ try {
   const page = await browser.newPage({ viewport: { width: 1440, height: 1000 } });
   const pageErrors = [];
   page.on('pageerror', (error) => pageErrors.push(String(error)));
+  const missing = [];
+  page.on('response', (response) => { if (response.status() === 404) missing.push(response.url()); });
   console.log(`browser test against ${server.base}`);
 
   await step('the editor opens with its views, preview and inspector', async () => {
@@ -66,6 +68,29 @@ try {
     const sphere = page.getByTestId('top-view').locator('[data-kind="sphere"]').last();
     await sphere.waitFor();
     expect((await sphere.getAttribute('data-selected')) === 'true', 'the new sphere is not selected');
+  });
+
+  await step('a new sphere stands on the floor clear of the camera target: grabbed at its centre, it moves', async () => {
+    expect(Number(await page.getByLabel('Center y').inputValue()) === 1, 'the new sphere (radius 1) does not rest on the floor');
+    const lookAt = async () => {
+      await page.getByRole('button', { name: 'Camera', exact: true }).first().click();
+      const v = await Promise.all(['x', 'y', 'z'].map((a) => page.getByLabel(`Look at ${a}`).inputValue()));
+      await page.getByTestId('top-view').locator('[data-kind="sphere"]').last().click();
+      return v.join(',');
+    };
+    const targetBefore = await lookAt();
+    const centerX = page.getByLabel('Center x');
+    const x0 = Number(await centerX.inputValue());
+    const box = await page.getByTestId('top-view').locator('[data-kind="sphere"]').last().boundingBox();
+    const x = box.x + box.width / 2, y = box.y + box.height / 2;
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let i = 1; i <= 6; i++) await page.mouse.move(x + 6 * i, y);
+    await page.mouse.up();
+    expect(Number(await centerX.inputValue()) > x0, 'the sphere did not move when grabbed at its centre');
+    expect((await lookAt()) === targetBefore, 'grabbing the sphere moved the camera target');
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => Number(await centerX.inputValue()) === x0, 'undo did not put the sphere back');
   });
 
   let xBefore;
@@ -277,6 +302,53 @@ try {
     const text = await page.getByLabel('Scene JSON').inputValue();
     expect(/"name": "ball"/.test(text), 'the name is not in the scene JSON');
     await page.getByRole('tab', { name: '3D preview' }).click();
+  });
+
+  await step('smaller things: arrow nudges save no float noise; mirror drops the plastic colour; long numbers fit; Escape closes Examples; the orbit view resets', async () => {
+    await page.getByRole('tab', { name: '3D preview' }).click();
+    await page.getByTestId('add-sphere').click();
+    await page.getByLabel('Grid size in metres').selectOption('0.1');
+    const sphere = page.getByTestId('top-view').locator('[data-selected="true"]');
+    await sphere.focus();
+    for (let i = 0; i < 7; i++) await page.keyboard.press('ArrowLeft');
+    for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowUp');
+    await page.getByRole('tab', { name: 'JSON' }).click();
+    const json = await page.getByLabel('Scene JSON').inputValue();
+    expect(!/\d\.\d{12,}/.test(json), `float noise saved: ${json.match(/-?\d+\.\d{12,}/)?.[0]}`);
+    // the JSON editor takes the stage's height, not nine lines
+    const editor = await page.getByLabel('Scene JSON').boundingBox();
+    const stage = await page.locator('#panel-json').boundingBox();
+    expect(editor.height > stage.height * 0.6, `the JSON editor is ${editor.height} px of a ${stage.height} px stage`);
+    await page.getByRole('tab', { name: '3D preview' }).click();
+
+    await page.getByLabel('Material type').selectOption('plastic');
+    const hex = page.getByLabel('Color hex', { exact: true });
+    await hex.fill('#cc2222');
+    await hex.press('Enter');
+    await page.getByLabel('Material type').selectOption('mirror');
+    await until(async () => (await hex.inputValue()) === '#ffffff', async () => `a mirror kept the plastic's colour ${await hex.inputValue()}`);
+
+    await page.setViewportSize({ width: 1024, height: 768 });
+    if (!(await page.getByLabel('Center x').isVisible())) await page.getByRole('button', { name: 'Inspector', exact: true }).click();
+    const cx = page.getByLabel('Center x');
+    await cx.fill('100000.004');
+    await cx.press('Enter');
+    const fit = await cx.evaluate((el) => ({ value: el.value, scroll: el.scrollWidth, client: el.clientWidth }));
+    expect(fit.value === '100000.004' && fit.scroll <= fit.client, `100000.004 does not fit its field: ${JSON.stringify(fit)}`);
+    await page.screenshot({ path: `${out}narrow-fields-1024.png` });
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await page.setViewportSize({ width: 1440, height: 1000 });
+
+    await page.getByText('Examples', { exact: true }).click();
+    const list = page.getByRole('list', { name: 'Example scenes' });
+    await list.waitFor();
+    await page.keyboard.press('Escape');
+    await list.waitFor({ state: 'hidden', timeout: 2000 });
+
+    await page.getByRole('button', { name: 'Orbit view' }).click();
+    await page.getByRole('button', { name: 'Reset view' }).click();
+    await page.getByRole('button', { name: 'Camera view' }).click();
+    expect(!missing.some((url) => url.includes('favicon')), `the favicon is a 404: ${missing.join(', ')}`);
   });
 
   await step('no uncaught errors in the page', async () => {

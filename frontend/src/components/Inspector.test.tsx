@@ -25,6 +25,16 @@ function field(path: string): HTMLElement {
 }
 
 describe('Inspector', () => {
+  it('sizes a narrow vector input by the length of its text, so 100000.004 shows whole', () => {
+    resetSceneStore({ objects: [{ type: 'sphere', center: [100000.004, 1, 2] }] });
+    store().select({ kind: 'object', index: 0 });
+    render(<Inspector />);
+    const x = screen.getByLabelText('Center x') as HTMLInputElement;
+    expect(x.value).toBe('100000.004');
+    expect(x.style.getPropertyValue('--chars')).toBe('10');
+    expect((screen.getByLabelText('Center y') as HTMLInputElement).style.getPropertyValue('--chars')).toBe('4');
+  });
+
   it('edits the selected object: typing commits once on Enter, one undo step', async () => {
     const user = userEvent.setup();
     resetSceneStore(SCENE);
@@ -133,7 +143,7 @@ describe('Inspector', () => {
     expect(type).toHaveAttribute('data-field', 'objects[0].material.type');
     expect(screen.getByLabelText('Shininess')).toHaveValue(60);
     await user.selectOptions(type, 'glass');
-    expect(store().scene.objects[0].material).toEqual({ type: 'glass', color: '#cc3333' });
+    expect(store().scene.objects[0].material).toEqual({ type: 'glass' }); // a red plastic's colour is no glass tint
     expect(screen.getByLabelText('Index of refraction')).toHaveValue(1.5);
     expect(screen.queryByLabelText('Diffuse')).toBeNull();
     await user.clear(screen.getByLabelText('Color hex'));

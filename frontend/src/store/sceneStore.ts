@@ -6,6 +6,7 @@
 import { create } from 'zustand';
 import { blankScene, sceneLights } from '../model/defaults';
 import { carryIds } from '../model/identity';
+import { roundEdit } from '../model/rounding';
 import { sameJson } from '../model/sameJson';
 import * as edits from '../model/edits';
 import type { DragTarget, Selection } from '../model/selection';
@@ -78,7 +79,7 @@ export interface SceneState {
   setRender(patch: Partial<RenderSettings>): void;
   setCamera(patch: Partial<CameraSettings>): void;
   addObject(kind: ObjectType): void;
-  /** Adds a mesh of inline OBJ text at the origin with a uniform scale, selected (one history entry). */
+  /** Adds a mesh of inline OBJ text with a uniform scale, resting on the floor in front of the camera, selected (one history entry). */
   addMesh(obj: string, scale: number): void;
   /** Replaces a mesh's triangles by inline OBJ text (its `file`, if any, goes). */
   setMeshObj(index: number, obj: string): void;
@@ -140,10 +141,11 @@ const sameScene = (a: Scene, b: Scene) => sameJson(a, b);
 
 export const useSceneStore = create<SceneState>()((set, get) => {
   /** The single write path: one edit, one history entry (none if nothing changed). */
-  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection, newDocument = false) => {
+  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection, newDocument = false, exact = newDocument) => {
     const { scene, past, future, selection: current } = get();
-    // a new document numbers its objects afresh; an edit carries the ids on
-    const next = carryIds(newDocument ? null : scene, edit(scene));
+    // a new document numbers its objects afresh; an edit carries the ids on. The numbers an edit
+    // writes are saved rounded; a file or the JSON text keeps the digits it was written with.
+    const next = carryIds(newDocument ? null : scene, exact ? edit(scene) : roundEdit(scene, edit(scene)));
     if (sameScene(next, scene)) {
       set({ preview: null });
       return;
@@ -172,7 +174,7 @@ export const useSceneStore = create<SceneState>()((set, get) => {
       commit(() => blankScene(), () => null, true);
       set({ fitRequest: get().fitRequest + 1, documentId: get().documentId + 1, serverErrors: NO_SERVER_ERRORS });
     },
-    setScene: (scene) => commit(() => structuredClone(scene)),
+    setScene: (scene) => commit(() => structuredClone(scene), undefined, false, true),
     setName: (name) => commit((s) => ({ ...s, name })),
     setBackground: (background) => commit((s) => ({ ...s, background })),
     setAmbient: (ambient) => commit((s) => ({ ...s, ambient })),
@@ -203,8 +205,8 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     moveTarget: (target, to) => commit((s) => edits.moveTarget(s, target, to)),
     select: (selection) => set({ selection: keepValid(get().scene, selection) }),
 
-    setPreview: (preview) => set({ preview: preview && carryIds(get().scene, preview) }),
-    dragTo: (target, to) => set({ preview: carryIds(get().scene, edits.moveTarget(get().scene, target, to)) }),
+    setPreview: (preview) => set({ preview: preview && carryIds(get().scene, roundEdit(get().scene, preview)) }),
+    dragTo: (target, to) => set({ preview: carryIds(get().scene, roundEdit(get().scene, edits.moveTarget(get().scene, target, to))) }),
     commitPreview: () => {
       const { preview } = get();
       if (preview) commit(() => preview);

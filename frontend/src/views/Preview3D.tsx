@@ -95,6 +95,11 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
           {viewButton('orbit', 'Orbit view', 'Look around freely: drag to orbit, wheel to zoom, right-drag to pan')}
           {viewButton('raytraced', 'Ray traced', 'See the server’s render, refined live as you edit')}
         </div>
+        {view === 'orbit' && (
+          <button type="button" className="small" onClick={() => engine.current?.resetOrbit()} title="Look through the render camera again">
+            Reset view
+          </button>
+        )}
       </header>
       {view === 'raytraced' && shown && <RayTracedView onFieldErrors={onFieldErrors} socketFactory={socketFactory} />}
       <div className="preview3d__viewport" ref={host} data-testid="preview-3d" data-mode={view} hidden={view === 'raytraced'}>

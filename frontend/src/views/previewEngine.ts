@@ -28,6 +28,12 @@ import { MaterialCache } from './previewMaterials';
 
 export type PreviewMode = 'camera' | 'orbit';
 
+/**
+ * OrbitControls' speeds, below its defaults (1, 1, 1): with them a drag across the view turned it
+ * by more than a full circle and one wheel notch zoomed by 5%, which users found hard to aim.
+ */
+export const ORBIT_SPEEDS = { rotateSpeed: 0.45, zoomSpeed: 0.5, panSpeed: 0.6 } as const;
+
 const SELECTED = 0x4ea1ff;
 
 export class PreviewEngine {
@@ -61,6 +67,7 @@ export class PreviewEngine {
     pmrem.dispose();
     this.controls = new OrbitControls(this.orbitCamera, this.canvas);
     this.controls.enabled = false;
+    Object.assign(this.controls, ORBIT_SPEEDS);
     this.controls.addEventListener('change', () => this.requestRender());
   }
 
@@ -108,14 +115,19 @@ export class PreviewEngine {
   setMode(mode: PreviewMode): void {
     this.mode = mode;
     this.controls.enabled = mode === 'orbit';
-    if (mode === 'orbit' && !this.orbitPlaced && this.last) {
-      this.orbitPlaced = true;
-      this.orbitCamera.position.copy(this.renderCamera.position);
-      this.orbitCamera.up.copy(this.renderCamera.up);
-      this.controls.target.set(...this.last.camera.lookAt);
-      this.controls.update();
-    }
+    if (mode === 'orbit' && !this.orbitPlaced) this.resetOrbit();
     if (this.last) this.update(this.last);
+  }
+
+  /** Puts the orbit camera back where the render camera is, looking at its target. */
+  resetOrbit(): void {
+    if (!this.last) return;
+    this.orbitPlaced = true;
+    this.orbitCamera.position.copy(this.renderCamera.position);
+    this.orbitCamera.up.copy(this.renderCamera.up);
+    this.controls.target.set(...this.last.camera.lookAt);
+    this.controls.update();
+    this.requestRender();
   }
 
   /** The container's size; in camera mode the canvas is letterboxed to the image aspect. */
