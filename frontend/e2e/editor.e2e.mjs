@@ -4,6 +4,7 @@
 // Usage: node e2e/editor.e2e.mjs path/to/studio.jar   (screenshots go to frontend/test-output/)
 import { mkdirSync } from 'node:fs';
 import { chromium } from 'playwright-core';
+import { PerspectiveCamera, Vector3 } from 'three';
 import { startServer } from './server.mjs';
 
 const jar = process.argv[2];
@@ -37,6 +38,28 @@ async function until(condition, message, timeoutMs = 5000) {
     if (Date.now() > end) throw new Error(typeof message === 'function' ? await message() : message);
     await new Promise((resolve) => setTimeout(resolve, 25));
   }
+}
+
+/** The scene as the JSON tab shows it (the tab is left as it was found). */
+async function sceneOf(page) {
+  const back = await page.getByRole('tab', { selected: true }).innerText();
+  await page.getByRole('tab', { name: 'JSON' }).click();
+  const scene = JSON.parse(await page.getByLabel('Scene JSON').inputValue());
+  await page.getByRole('tab', { name: back }).click();
+  return scene;
+}
+
+/** Where a world point shows in the 3D preview's camera view, in page pixels (the render camera, as three.js frames it). */
+async function previewPixel(page, scene, point) {
+  const box = await page.getByTestId('preview-3d').locator('canvas').boundingBox();
+  const c = scene.camera ?? {};
+  const camera = new PerspectiveCamera(c.fov ?? 50, box.width / box.height, 0.01, 1e4);
+  camera.position.set(...(c.position ?? [0, 2, 8]));
+  camera.up.set(...(c.up ?? [0, 1, 0]));
+  camera.lookAt(new Vector3(...(c.lookAt ?? [0, 0, 0])));
+  camera.updateMatrixWorld();
+  const ndc = new Vector3(...point).project(camera);
+  return { x: box.x + ((ndc.x + 1) / 2) * box.width, y: box.y + ((1 - ndc.y) / 2) * box.height };
 }
 
 const server = await startServer(jar);
@@ -349,6 +372,49 @@ try {
     await page.getByRole('button', { name: 'Reset view' }).click();
     await page.getByRole('button', { name: 'Camera view' }).click();
     expect(!missing.some((url) => url.includes('favicon')), `the favicon is a 404: ${missing.join(', ')}`);
+  });
+
+  await step('3D: a click selects, the move handle drags it as one undo step, R scales, F frames', async () => {
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByTestId('add-sphere').click();
+    await page.keyboard.press('Escape');
+    const scene = await sceneOf(page);
+    const centre = scene.objects[0].center;
+    const at = await previewPixel(page, scene, centre);
+    await page.mouse.click(at.x, at.y);
+    const centerX = page.getByLabel('Center x');
+    await centerX.waitFor({ timeout: 3000 });
+    const x0 = Number(await centerX.inputValue());
+    expect(x0 === centre[0], `clicking the sphere in 3D did not select it (${x0})`);
+
+    // the move handle's centre drags in the view's plane
+    await page.mouse.move(at.x, at.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 10; i++) await page.mouse.move(at.x + 8 * i, at.y);
+    await page.mouse.up();
+    await until(async () => Number(await centerX.inputValue()) > x0 + 0.3, async () => `the move handle did not move the sphere: x ${await centerX.inputValue()}`);
+    const moved = await sceneOf(page);
+    expect(!/\d\.\d{4,}/.test(JSON.stringify(moved.objects[0].center)), `the handles saved unrounded values ${JSON.stringify(moved.objects[0].center)}`);
+    await page.screenshot({ path: `${out}handles-move.png` });
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => Number(await centerX.inputValue()) === x0, 'one undo did not take the whole handle drag back');
+
+    await page.keyboard.press('r');
+    expect((await page.getByRole('button', { name: 'Scale' }).getAttribute('aria-pressed')) === 'true', 'R did not choose the scale handles');
+    const radius = page.getByLabel('Radius');
+    await page.mouse.move(at.x + 4, at.y - 4);
+    await page.mouse.down();
+    for (let i = 1; i <= 10; i++) await page.mouse.move(at.x + 4 + 3 * i, at.y - 4 - 3 * i);
+    await page.mouse.up();
+    await until(async () => { const r = Number(await radius.inputValue()); return r > 1 && r <= 10; },
+      async () => `the scale handle made the radius ${await radius.inputValue()}`);
+    await page.screenshot({ path: `${out}handles-scale.png` });
+    await page.keyboard.press('w');
+
+    await page.keyboard.press('f');
+    await until(async () => (await page.getByRole('button', { name: 'Orbit view' }).getAttribute('aria-pressed')) === 'true', 'F did not frame the selection in the orbit view');
+    await page.screenshot({ path: `${out}frame-selection.png` });
+    await page.getByRole('button', { name: 'Camera view' }).click();
   });
 
   await step('no uncaught errors in the page', async () => {

@@ -118,6 +118,12 @@ export function setObjectField<K extends string>(scene: Scene, index: number, fi
   return { ...scene, objects };
 }
 
+/** Puts another object in an object's place (the 3D view's handles change several fields at once). */
+export function replaceObject(scene: Scene, index: number, object: SceneObject): Scene {
+  if (!scene.objects[index]) return scene;
+  return { ...scene, objects: scene.objects.map((o, i) => (i === index ? object : o)) };
+}
+
 /** The field that says where an object is: a sphere's or box's centre, a plane's point, a mesh's position. */
 export function anchorField(type: ObjectType): 'center' | 'point' | 'position' {
   return type === 'plane' ? 'point' : type === 'mesh' ? 'position' : 'center';

@@ -9,6 +9,7 @@ import { carryIds } from '../model/identity';
 import { roundEdit } from '../model/rounding';
 import { sameJson } from '../model/sameJson';
 import * as edits from '../model/edits';
+import type { GizmoMode } from '../model/gizmo';
 import type { DragTarget, Selection } from '../model/selection';
 import { STARTER_SCENE } from '../model/starterScene';
 import type {
@@ -21,6 +22,7 @@ import type {
   PointLight,
   RenderSettings,
   Scene,
+  SceneObject,
   Vec3,
 } from '../model/types';
 import type { FieldErrors } from '../model/standingErrors';
@@ -109,6 +111,14 @@ export interface SceneState {
   setGridSize(size: number): void;
   /** Asks both plan views to zoom to the whole scene. */
   requestFit(): void;
+  /** Which handles the 3D view shows on the selection (W move, E rotate, R scale). */
+  gizmo: GizmoMode;
+  setGizmo(mode: GizmoMode): void;
+  /** Bumped by F: the 3D view frames the selection. */
+  frameRequest: number;
+  requestFrame(): void;
+  /** Replaces one object (the 3D view's handles); one history entry. */
+  replaceObject(index: number, object: SceneObject): void;
 }
 
 export const DEFAULT_VIEWS: Record<ViewKind, ViewState> = {
@@ -118,7 +128,7 @@ export const DEFAULT_VIEWS: Record<ViewKind, ViewState> = {
 
 type Data = Pick<
   SceneState,
-  'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest' | 'documentId' | 'serverErrors'
+  'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest' | 'documentId' | 'serverErrors' | 'gizmo' | 'frameRequest'
 >;
 
 const NO_SERVER_ERRORS: Record<ErrorSource, ServerErrors | null> = { render: null, live: null };
@@ -126,7 +136,7 @@ const NO_SERVER_ERRORS: Record<ErrorSource, ServerErrors | null> = { render: nul
 function initialData(scene: Scene): Data {
   return {
     scene: carryIds(null, scene), past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1,
-    documentId: 1, serverErrors: NO_SERVER_ERRORS,
+    documentId: 1, serverErrors: NO_SERVER_ERRORS, gizmo: 'translate', frameRequest: 0,
   };
 }
 
@@ -219,6 +229,9 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     setSnap: (snap) => set({ snap }),
     setGridSize: (gridSize) => set({ gridSize: gridSize > 0 ? gridSize : get().gridSize }),
     requestFit: () => set({ fitRequest: get().fitRequest + 1 }),
+    setGizmo: (gizmo) => set({ gizmo }),
+    requestFrame: () => set({ frameRequest: get().frameRequest + 1 }),
+    replaceObject: (index, object) => commit((s) => edits.replaceObject(s, index, object)),
   };
 });
 

@@ -41,6 +41,17 @@ describe('Preview3D', () => {
     expect(screen.getByRole('button', { name: 'Orbit view' })).toHaveAttribute('aria-pressed', 'true');
   });
 
+  it('shows which handles W, E, R chose, and chooses them by click too', async () => {
+    const user = userEvent.setup();
+    render(<Preview3D />);
+    const group = screen.getByRole('group', { name: '3D handles' });
+    expect(within(group).getByRole('button', { name: 'Move' })).toHaveAttribute('aria-pressed', 'true');
+    act(() => store().setGizmo('rotate'));
+    expect(within(group).getByRole('button', { name: 'Rotate' })).toHaveAttribute('aria-pressed', 'true');
+    await user.click(within(group).getByRole('button', { name: 'Scale' }));
+    expect(store().gizmo).toBe('scale');
+  });
+
   it('offers Reset view in the orbit view only, and orbits slower than OrbitControls by default', async () => {
     const user = userEvent.setup();
     render(<Preview3D />);

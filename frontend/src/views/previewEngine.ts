@@ -22,7 +22,11 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
+import { frameBall, type GizmoMode, type GizmoPose } from '../model/gizmo';
+import type { DragTarget } from '../model/selection';
+import type { Vec3 } from '../model/types';
 import { applyRenderCamera, letterbox, type ThreeSceneDescriptor } from '../model/toThree';
+import { PreviewHandles, type HandleCallbacks } from './previewHandles';
 import { MeshGeometryCache } from './previewGeometries';
 import { MaterialCache } from './previewMaterials';
 
@@ -53,9 +57,11 @@ export class PreviewEngine {
   private size = { width: 1, height: 1 };
   private last: ThreeSceneDescriptor | null = null;
   private frame = 0;
+  private readonly pickables: Mesh[] = [];
+  private readonly handles: PreviewHandles;
 
   /** Throws when WebGL 2 is not available. */
-  constructor() {
+  constructor(callbacks: Pick<HandleCallbacks, 'onPick' | 'onPose' | 'onRelease'> = { onPick: () => {}, onPose: () => {}, onRelease: () => {} }) {
     if (!webgl2Available()) throw new Error('WebGL 2 is not available');
     this.renderer = new WebGLRenderer({ antialias: true });
     this.renderer.setPixelRatio(Math.min(2, globalThis.devicePixelRatio || 1));
@@ -69,6 +75,13 @@ export class PreviewEngine {
     this.controls.enabled = false;
     Object.assign(this.controls, ORBIT_SPEEDS);
     this.controls.addEventListener('change', () => this.requestRender());
+    this.handles = new PreviewHandles(this.canvas, this.scene, this.renderCamera, () => this.pickables, {
+      ...callbacks,
+      onChange: () => this.requestRender(),
+      onDragging: (dragging) => {
+        this.controls.enabled = !dragging && this.mode === 'orbit';
+      },
+    });
   }
 
   /** Rebuilds the preview's content from a descriptor (cheap for editor-sized scenes). */
@@ -76,6 +89,7 @@ export class PreviewEngine {
     this.last = d;
     for (const item of this.disposables.splice(0)) item.dispose();
     this.content.clear();
+    this.pickables.length = 0;
     this.scene.background = new Color(d.background);
     this.content.add(new AmbientLight(0xffffff, d.ambient));
     for (const m of d.meshes) {
@@ -86,6 +100,8 @@ export class PreviewEngine {
       mesh.scale.set(...m.scale);
       if (m.geometry === 'plane') mesh.quaternion.set(...m.quaternion);
       else mesh.rotation.set(m.rotation[0], m.rotation[1], m.rotation[2], 'XYZ');
+      mesh.userData.target = { kind: 'object', index: m.index } satisfies DragTarget;
+      this.pickables.push(mesh);
       this.content.add(mesh);
       if (m.selected && m.geometry !== 'plane') this.addHelper(new BoxHelper(mesh, SELECTED));
     }
@@ -100,6 +116,8 @@ export class PreviewEngine {
       const marker = new Mesh(this.geometries.marker, markerMaterial);
       marker.position.set(...l.position);
       marker.scale.setScalar(d.extent * (l.selected ? 0.008 : 0.005));
+      marker.userData.target = { kind: 'light', index: l.index } satisfies DragTarget;
+      this.pickables.unshift(marker); // a light inside an object is still found
       this.content.add(marker);
     }
     applyRenderCamera(this.renderCamera, d.camera);
@@ -112,9 +130,32 @@ export class PreviewEngine {
     this.layout();
   }
 
+  /** Shows the handles of `mode` at `pose` on the selection, or none (null). */
+  setHandles(pose: GizmoPose | null, mode: GizmoMode, modes: GizmoMode[]): void {
+    this.handles.attach(pose, mode, modes);
+    this.requestRender();
+  }
+
+  /** True while a handle is dragged. */
+  get dragging(): boolean {
+    return this.handles.dragging;
+  }
+
+  /** Turns the orbit camera on a ball (the selection's extent) so that it fills the view. */
+  frameOn(center: Vec3, radius: number): void {
+    const to = frameBall(center, radius, this.orbitCamera.fov, this.orbitCamera.position.toArray() as Vec3);
+    this.orbitPlaced = true;
+    this.orbitCamera.position.set(...to.position);
+    this.controls.target.set(...to.target);
+    this.orbitCamera.far = Math.max(this.orbitCamera.far, 10 * radius);
+    this.controls.update();
+    this.requestRender();
+  }
+
   setMode(mode: PreviewMode): void {
     this.mode = mode;
     this.controls.enabled = mode === 'orbit';
+    this.handles.setCamera(mode === 'orbit' ? this.orbitCamera : this.renderCamera);
     if (mode === 'orbit' && !this.orbitPlaced) this.resetOrbit();
     if (this.last) this.update(this.last);
   }
@@ -146,6 +187,7 @@ export class PreviewEngine {
 
   dispose(): void {
     cancelAnimationFrame(this.frame);
+    this.handles.dispose();
     for (const item of this.disposables.splice(0)) item.dispose();
     this.controls.dispose();
     this.materials.dispose();
