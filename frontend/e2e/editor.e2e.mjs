@@ -16,7 +16,10 @@ const out = new URL('../test-output/', import.meta.url).pathname;
 mkdirSync(out, { recursive: true });
 
 const results = [];
+// E2E_ONLY=words runs the opening step and those whose names contain the words (while working on one)
+const only = process.env.E2E_ONLY;
 async function step(name, body) {
+  if (only && results.length > 0 && !name.includes(only)) return;
   const started = Date.now();
   try {
     await body();
@@ -51,6 +54,8 @@ async function sceneOf(page) {
 
 /** Where a world point shows in the 3D preview's camera view, in page pixels (the render camera, as three.js frames it). */
 async function previewPixel(page, scene, point) {
+  // opening a scene mounts a new preview: wait for its canvas
+  await page.getByTestId('preview-3d').locator('canvas').waitFor();
   const box = await page.getByTestId('preview-3d').locator('canvas').boundingBox();
   const c = scene.camera ?? {};
   const camera = new PerspectiveCamera(c.fov ?? 50, box.width / box.height, 0.01, 1e4);
@@ -61,6 +66,30 @@ async function previewPixel(page, scene, point) {
   const ndc = new Vector3(...point).project(camera);
   return { x: box.x + ((ndc.x + 1) / 2) * box.width, y: box.y + ((1 - ndc.y) / 2) * box.height };
 }
+
+/** Opens a scene as a user opens a file. */
+async function openScene(page, scene) {
+  await page.getByTestId('open-scene').setInputFiles({ name: `${scene.name}.json`, mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(scene)) });
+}
+
+/** The 3D preview's pixels [r, g, b] at page points, read from its canvas once a frame is drawn. */
+async function previewColours(page, points) {
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+  const canvas = page.getByTestId('preview-3d').locator('canvas');
+  const box = await canvas.boundingBox();
+  return canvas.evaluate((c, { points, box }) => {
+    const copy = document.createElement('canvas');
+    copy.width = c.width;
+    copy.height = c.height;
+    const g = copy.getContext('2d');
+    g.drawImage(c, 0, 0);
+    return points.map(({ x, y }) => {
+      const px = Math.round(((x - box.x) / box.width) * c.width), py = Math.round(((y - box.y) / box.height) * c.height);
+      return Array.from(g.getImageData(px, py, 1, 1).data.slice(0, 3));
+    });
+  }, { points, box });
+}
+const brightness = ([r, g, b]) => r + g + b;
 
 const server = await startServer(jar);
 const browser = await chromium.launch({
@@ -415,6 +444,63 @@ try {
     await until(async () => (await page.getByRole('button', { name: 'Orbit view' }).getAttribute('aria-pressed')) === 'true', 'F did not frame the selection in the orbit view');
     await page.screenshot({ path: `${out}frame-selection.png` });
     await page.getByRole('button', { name: 'Camera view' }).click();
+  });
+
+  await step('the preview shows what the render will: shadows, a mirror reflecting the scene, glass visible; extreme values leave the rest of the picture', async () => {
+    const honest = {
+      name: 'honest', background: '#101418',
+      camera: { position: [0, 2.5, 8], lookAt: [0, 0.8, 0], fov: 45 },
+      lights: [{ type: 'point', position: [4, 7, 3], intensity: 1 }],
+      objects: [
+        { type: 'plane', point: [0, 0, 0], normal: [0, 1, 0], material: { type: 'chalk', color: '#d04030' } },
+        { type: 'sphere', center: [-2.2, 1, 0], radius: 1, material: { type: 'plastic', color: '#3070d0' } },
+        { type: 'sphere', center: [0, 1, 0], radius: 1, material: { type: 'mirror' } },
+        { type: 'sphere', center: [2.2, 1, 0], radius: 1, material: { type: 'glass' } },
+      ],
+    };
+    await page.getByRole('tab', { name: '3D preview' }).click();
+    await page.setViewportSize({ width: 1440, height: 900 });
+    await openScene(page, honest);
+    await page.keyboard.press('Escape');
+    await page.waitForTimeout(300); // the lazily built shadow maps and cube maps settle within a frame or two
+    // shadow: the floor where the light's ray through the blue sphere's centre lands, against the floor as far on the other side
+    const L = honest.lights[0].position, C = honest.objects[1].center;
+    const t = L[1] / (L[1] - C[1]);
+    const shadow = [L[0] + t * (C[0] - L[0]), 0, L[2] + t * (C[2] - L[2])];
+    const lit = [2 * C[0] - shadow[0] + 0.0, 0, 2 * C[2] - shadow[2] + 2.5];
+    await page.screenshot({ path: `${out}preview-honest.png` });
+    const [inShadow, inLight] = await previewColours(page, [await previewPixel(page, honest, shadow), await previewPixel(page, honest, lit)]);
+    expect(brightness(inShadow) < 0.75 * brightness(inLight), `no shadow: ${inShadow} in the shadow, ${inLight} in the light`);
+    // the mirror's lower part shows the red floor (before it showed a grey made-up room)
+    const [mirrorLow] = await previewColours(page, [await previewPixel(page, honest, [0, 0.25, 0.9])]);
+    expect(mirrorLow[0] > mirrorLow[1] + 30 && mirrorLow[0] > mirrorLow[2] + 30, `the mirror does not reflect the red floor: ${mirrorLow}`);
+    // glass: its disc differs from the picture without it
+    const glassPoints = [];
+    for (let i = -3; i <= 3; i++) for (let j = -3; j <= 3; j++) glassPoints.push(await previewPixel(page, honest, [2.2 + i * 0.25, 1 + j * 0.25, 0.5]));
+    const withGlass = await previewColours(page, glassPoints);
+    await page.screenshot({ path: `${out}preview-honest.png` });
+    await openScene(page, { ...honest, objects: honest.objects.slice(0, 3) });
+    const withoutGlass = await previewColours(page, glassPoints);
+    const change = withGlass.reduce((sum, p, i) => sum + Math.abs(brightness(p) - brightness(withoutGlass[i])), 0) / withGlass.length / 3;
+    expect(change > 8, `the glass sphere is nearly invisible: mean change ${change.toFixed(1)} levels`);
+
+    // a sphere at x = 1e300 and a 179.9 degree lens: the floor and the other spheres are still drawn
+    const floorAt = await previewPixel(page, honest, [-1, 0, 2]);
+    await openScene(page, { ...honest, objects: [...honest.objects, { type: 'sphere', center: [1e300, 1, 0], material: { type: 'chalk' } }] });
+    const [floorWithFar] = await previewColours(page, [floorAt]);
+    expect(floorWithFar[0] > floorWithFar[2] + 30, `a sphere at 1e300 blanked the floor: ${floorWithFar}`);
+    await page.screenshot({ path: `${out}preview-extreme-1e300.png` });
+    const wide = { ...honest, camera: { ...honest.camera, fov: 179.9 } };
+    await openScene(page, wide);
+    await page.screenshot({ path: `${out}preview-extreme-fov.png` });
+    if (pageErrors.length) throw new Error(pageErrors.join('\n'));
+    // at 179.9 degrees what a 45-degree lens sees is a thin band; the floor right under the camera fills the bottom
+    const canvasBox = await page.getByTestId('preview-3d').locator('canvas').boundingBox();
+    const bottom = { x: canvasBox.x + canvasBox.width / 2, y: canvasBox.y + canvasBox.height * 0.93 };
+    const wideColours = await previewColours(page, [await previewPixel(page, wide, [0, 0, 3]), bottom]);
+    for (const c of wideColours) expect(c[0] > c[2] + 30, `fov 179.9 lost the floor: ${JSON.stringify(wideColours)}`);
+    await page.screenshot({ path: `${out}preview-extreme-fov.png` });
+    await page.setViewportSize({ width: 1440, height: 1000 });
   });
 
   await step('no uncaught errors in the page', async () => {

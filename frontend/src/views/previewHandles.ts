@@ -62,6 +62,11 @@ export class PreviewHandles {
     return this.controls.dragging;
   }
 
+  /** What must not appear in reflections: the handles. */
+  helpers(): Object3D[] {
+    return [this.controls.getHelper()];
+  }
+
   setCamera(camera: Camera): void {
     this.controls.camera = camera;
   }
