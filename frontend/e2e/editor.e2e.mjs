@@ -100,7 +100,9 @@ const browser = await chromium.launch({
 });
 let exitCode = 0;
 try {
-  const page = await browser.newPage({ viewport: { width: 1440, height: 1000 } });
+  // one context, so that a second tab shares the clipboard (and storage) as a browser's tabs do
+  const context = await browser.newContext({ viewport: { width: 1440, height: 1000 } });
+  const page = await context.newPage();
   const pageErrors = [];
   page.on('pageerror', (error) => pageErrors.push(String(error)));
   const missing = [];
@@ -501,6 +503,48 @@ try {
     for (const c of wideColours) expect(c[0] > c[2] + 30, `fov 179.9 lost the floor: ${JSON.stringify(wideColours)}`);
     await page.screenshot({ path: `${out}preview-extreme-fov.png` });
     await page.setViewportSize({ width: 1440, height: 1000 });
+  });
+
+  await step('copy in one tab, paste in another: Ctrl+C / Ctrl+V carry the selection as scene JSON', async () => {
+    await page.context().grantPermissions(['clipboard-read', 'clipboard-write'], { origin: server.base });
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByTestId('add-box').click();
+    const name = page.getByTestId('inspector-object').getByLabel('Name', { exact: true });
+    await name.fill('crate');
+    await name.press('Enter');
+    await name.evaluate((el) => el.blur());
+    await page.keyboard.press('Control+c');
+    const copied = await page.evaluate(() => navigator.clipboard.readText());
+    expect(JSON.parse(copied).objects?.[0]?.name === 'crate', `the clipboard holds ${copied.slice(0, 120)}`);
+    const other = await page.context().newPage();
+    try {
+      await other.goto(server.base);
+      await other.getByTestId('top-view').waitFor();
+      await other.getByRole('button', { name: 'New', exact: true }).click();
+      await other.locator('body').focus();
+      await other.keyboard.press('Control+v');
+      // headless Chromium sends no paste event for Ctrl+V: hand the page the system clipboard's text as the browser would
+      await other.evaluate(async () => {
+        if (document.querySelectorAll('[data-kind="box"]').length > 0) return;
+        const data = new DataTransfer();
+        data.setData('text/plain', await navigator.clipboard.readText());
+        document.body.dispatchEvent(new ClipboardEvent('paste', { clipboardData: data, bubbles: true, cancelable: true }));
+      });
+      await other.getByRole('navigation', { name: 'Scene contents' }).getByRole('button', { name: /Box "crate"/ }).waitFor({ timeout: 5000 });
+      await other.screenshot({ path: `${out}pasted-in-second-tab.png` });
+    } finally {
+      await other.close();
+    }
+    // and into its own scene, beside the original, as one undo step
+    await page.evaluate(async () => {
+      const data = new DataTransfer();
+      data.setData('text/plain', await navigator.clipboard.readText());
+      document.body.dispatchEvent(new ClipboardEvent('paste', { clipboardData: data, bubbles: true, cancelable: true }));
+    });
+    const outline = page.getByRole('navigation', { name: 'Scene contents' });
+    await until(async () => (await outline.getByRole('button', { name: /Box "crate"/ }).count()) === 2, 'pasting into the same scene did not add a second crate');
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => (await outline.getByRole('button', { name: /Box "crate"/ }).count()) === 1, 'one undo did not take the paste back');
   });
 
   await step('no uncaught errors in the page', async () => {

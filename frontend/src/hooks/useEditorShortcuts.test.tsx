@@ -29,4 +29,32 @@ describe('editor shortcuts', () => {
     expect(store().frameRequest).toBe(frames + 1);
     input.remove();
   });
+
+  it('copies the selection as scene JSON and pastes it back as one undo step, not inside a field', () => {
+    renderHook(() => useEditorShortcuts());
+    store().select({ kind: 'object', index: 1 });
+    const data = new Map<string, string>();
+    const clipboardData = { setData: (t: string, v: string) => data.set(t, v), getData: (t: string) => data.get(t) ?? '' };
+    const copy = new Event('copy', { cancelable: true }) as ClipboardEvent;
+    Object.defineProperty(copy, 'clipboardData', { value: clipboardData });
+    document.dispatchEvent(copy);
+    expect(copy.defaultPrevented).toBe(true);
+    expect(JSON.parse(data.get('text/plain')!).objects).toEqual([store().scene.objects[1]]);
+
+    const count = store().scene.objects.length;
+    const paste = new Event('paste', { cancelable: true }) as ClipboardEvent;
+    Object.defineProperty(paste, 'clipboardData', { value: clipboardData });
+    document.dispatchEvent(paste);
+    expect(store().scene.objects).toHaveLength(count + 1);
+    expect(store().selection).toEqual({ kind: 'object', index: count });
+    expect(store().past).toHaveLength(1);
+
+    const input = document.createElement('input');
+    document.body.appendChild(input);
+    const inField = new Event('paste', { bubbles: true, cancelable: true }) as ClipboardEvent;
+    Object.defineProperty(inField, 'clipboardData', { value: clipboardData });
+    input.dispatchEvent(inField);
+    expect(store().scene.objects).toHaveLength(count + 1);
+    input.remove();
+  });
 });

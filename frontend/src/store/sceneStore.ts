@@ -5,6 +5,7 @@
  */
 import { create } from 'zustand';
 import { blankScene, sceneLights } from '../model/defaults';
+import { pasteText } from '../model/clipboard';
 import { carryIds } from '../model/identity';
 import { roundEdit } from '../model/rounding';
 import { sameJson } from '../model/sameJson';
@@ -117,6 +118,8 @@ export interface SceneState {
   /** Bumped by F: the 3D view frames the selection. */
   frameRequest: number;
   requestFrame(): void;
+  /** Adds the objects and lights of pasted scene JSON (one history entry), selecting the first; false if the text is no scene. */
+  pasteText(text: string): boolean;
   /** Replaces one object (the 3D view's handles); one history entry. */
   replaceObject(index: number, object: SceneObject): void;
 }
@@ -231,6 +234,11 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     requestFit: () => set({ fitRequest: get().fitRequest + 1 }),
     setGizmo: (gizmo) => set({ gizmo }),
     requestFrame: () => set({ frameRequest: get().frameRequest + 1 }),
+    pasteText: (text) => {
+      const pasted = pasteText(get().scene, text);
+      if (pasted) commit(() => pasted.scene, () => pasted.selection);
+      return pasted !== null;
+    },
     replaceObject: (index, object) => commit((s) => edits.replaceObject(s, index, object)),
   };
 });
