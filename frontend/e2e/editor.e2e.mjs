@@ -547,6 +547,24 @@ try {
     await until(async () => (await outline.getByRole('button', { name: /Box "crate"/ }).count()) === 1, 'one undo did not take the paste back');
   });
 
+  await step('undo history survives a reload', async () => {
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByTestId('add-sphere').click();
+    await page.getByTestId('add-box').click();
+    const outline = page.getByRole('navigation', { name: 'Scene contents' });
+    await outline.getByRole('button', { name: /^Box 2/ }).waitFor();
+    await page.reload();
+    await page.getByTestId('top-view').waitFor();
+    await outline.getByRole('button', { name: /^Box 2/ }).waitFor();
+    const undo = page.getByRole('button', { name: 'Undo' });
+    expect(!(await undo.isDisabled()), 'Undo is disabled after a reload');
+    await undo.click();
+    await until(async () => (await outline.getByRole('button', { name: /^Box/ }).count()) === 0, 'undo after the reload did not take the box back');
+    await outline.getByRole('button', { name: /^Sphere 1/ }).waitFor();
+    await page.getByRole('button', { name: 'Redo' }).click();
+    await outline.getByRole('button', { name: /^Box/ }).waitFor();
+  });
+
   await step('no uncaught errors in the page', async () => {
     expect(pageErrors.length === 0, `page errors: ${pageErrors.join('\n')}`);
   });

@@ -28,6 +28,7 @@ import type {
 } from '../model/types';
 import type { FieldErrors } from '../model/standingErrors';
 import { push, redo, undo, type Timeline } from './history';
+import { loadHistory, saveHistory } from './historyStorage';
 import { loadSavedScene, saveScene } from './persistence';
 
 /** Zoom (SVG pixels per metre) and pan (the world point at the view's centre) of one view. */
@@ -251,9 +252,16 @@ export function resetSceneStore(scene: Scene = STARTER_SCENE): void {
   useSceneStore.setState(initialData(structuredClone(scene)));
 }
 
-/** Saves every committed scene to localStorage (call once at start-up). */
+/**
+ * Saves every committed scene to localStorage and the undo history to sessionStorage, after
+ * taking back the history a reload left for the same scene (call once at start-up).
+ */
 export function persistSceneStore(): () => void {
+  const { scene } = useSceneStore.getState();
+  const { past, future } = loadHistory(scene);
+  if (past.length > 0 || future.length > 0) useSceneStore.setState({ past, future });
   return useSceneStore.subscribe((state, previous) => {
     if (state.scene !== previous.scene) saveScene(state.scene);
+    if (state.past !== previous.past || state.future !== previous.future) saveHistory(state.scene, state.past, state.future);
   });
 }
