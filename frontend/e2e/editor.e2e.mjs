@@ -565,6 +565,27 @@ try {
     await outline.getByRole('button', { name: /^Box/ }).waitFor();
   });
 
+  await step('resolution presets with an aspect lock, and the ? panel of shortcuts', async () => {
+    await page.keyboard.press('Escape');
+    await page.getByLabel('Size preset').selectOption({ label: '1280 × 720 (HD)' });
+    const width = page.getByLabel('Width (px)'), height = page.getByLabel('Height (px)');
+    await until(async () => (await height.inputValue()) === '720', 'the HD preset did not set 1280x720');
+    await page.getByLabel(/Lock aspect ratio/).check();
+    await width.fill('1920');
+    await width.press('Enter');
+    await until(async () => (await height.inputValue()) === '1080', async () => `the locked height is ${await height.inputValue()}`);
+    await page.getByLabel('Size preset').selectOption({ label: '1024 × 1024 (square)' });
+    await until(async () => (await width.inputValue()) === '1024' && (await height.inputValue()) === '1024', 'the square preset did not apply');
+    await page.evaluate(() => document.activeElement?.blur()); // typing ? in a field stays typing
+    await page.keyboard.press('?');
+    const help = page.getByRole('dialog', { name: 'Keyboard shortcuts' });
+    await help.waitFor();
+    expect((await help.innerText()).includes('W / E / R'), 'the panel does not list W / E / R');
+    await page.screenshot({ path: `${out}shortcuts.png` });
+    await page.keyboard.press('Escape');
+    await help.waitFor({ state: 'detached' });
+  });
+
   await step('no uncaught errors in the page', async () => {
     expect(pageErrors.length === 0, `page errors: ${pageErrors.join('\n')}`);
   });

@@ -161,6 +161,22 @@ describe('App', () => {
     expect(JSON.parse(await blob.text())).toEqual(STARTER_SCENE);
   });
 
+  it('shows the keyboard shortcuts on ? and on the toolbar button; Escape closes them', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    await user.keyboard('?');
+    const dialog = screen.getByRole('dialog', { name: 'Keyboard shortcuts' });
+    expect(dialog).toHaveTextContent('Move / rotate / scale handles in the 3D preview');
+    expect(dialog).toHaveTextContent('Ctrl+C / Ctrl+V');
+    await user.keyboard('{Escape}');
+    expect(screen.queryByRole('dialog', { name: 'Keyboard shortcuts' })).toBeNull();
+    store().select({ kind: 'camera' });
+    await user.click(screen.getByRole('button', { name: 'Keyboard shortcuts' }));
+    expect(screen.getByRole('dialog', { name: 'Keyboard shortcuts' })).toBeInTheDocument();
+    await user.keyboard('{Escape}');
+    expect(store().selection).toEqual({ kind: 'camera' }); // Escape closed the panel only
+  });
+
   it('loads an example from the gallery, and New starts a blank scene', async () => {
     const user = userEvent.setup();
     const fetchFn = mockServer();

@@ -25,6 +25,21 @@ function field(path: string): HTMLElement {
 }
 
 describe('Inspector', () => {
+  it('sets the image size from a preset, and keeps its aspect with the lock (one undo step each)', async () => {
+    const user = userEvent.setup();
+    render(<Inspector />);
+    await user.selectOptions(screen.getByLabelText('Size preset'), '1280 × 720 (HD)');
+    expect(store().scene.image).toMatchObject({ width: 1280, height: 720 });
+    expect(store().past).toHaveLength(1);
+    await user.click(screen.getByLabelText(/Lock aspect ratio/));
+    const width = screen.getByLabelText('Width (px)');
+    await user.clear(width);
+    await user.type(width, '1920{Enter}');
+    expect(store().scene.image).toMatchObject({ width: 1920, height: 1080 });
+    expect(store().past).toHaveLength(2);
+    expect(screen.getByLabelText('Size preset')).toHaveValue('2');
+  });
+
   it('sizes a narrow vector input by the length of its text, so 100000.004 shows whole', () => {
     resetSceneStore({ objects: [{ type: 'sphere', center: [100000.004, 1, 2] }] });
     store().select({ kind: 'object', index: 0 });

@@ -1,4 +1,4 @@
-import { useEffect } from 'react';
+import { useEffect, useRef } from 'react';
 import { copyText } from '../model/clipboard';
 import type { GizmoMode } from '../model/gizmo';
 import { useSceneStore } from '../store/sceneStore';
@@ -23,10 +23,13 @@ const GIZMO_KEYS: Record<string, GizmoMode> = { w: 'translate', e: 'rotate', r: 
  * Keyboard shortcuts of the editor: Ctrl/Cmd+Z undo, Ctrl/Cmd+Shift+Z and Ctrl+Y redo,
  * Delete/Backspace deletes the selection, Ctrl/Cmd+D duplicates it, Escape clears it; W, E, R pick
  * the 3D handles (move, rotate, scale), F frames the selection in the 3D view; Ctrl/Cmd+C and
- * Ctrl/Cmd+V copy and paste the selection as scene JSON through the system clipboard.
+ * Ctrl/Cmd+V copy and paste the selection as scene JSON through the system clipboard; `?` calls
+ * `onHelp` (the shortcuts panel).
  * Ignored while focus is in an input, so typing is never hijacked.
  */
-export function useEditorShortcuts(): void {
+export function useEditorShortcuts(onHelp?: () => void): void {
+  const help = useRef(onHelp);
+  help.current = onHelp;
   useEffect(() => {
     const onKeyDown = (event: KeyboardEvent) => {
       if (inField(event.target) || event.altKey) return;
@@ -50,6 +53,7 @@ export function useEditorShortcuts(): void {
       else if (!mod && event.key === 'Escape') s.select(null);
       else if (!mod && !event.shiftKey && GIZMO_KEYS[key]) s.setGizmo(GIZMO_KEYS[key]);
       else if (!mod && !event.shiftKey && key === 'f') s.requestFrame();
+      else if (!mod && event.key === '?' && help.current) help.current();
       else handled = false;
       if (handled) event.preventDefault();
     };
