@@ -211,6 +211,12 @@ try {
       expect(render && render.y >= 0 && render.y + render.height <= height, `Render is out of reach at ${width}x${height}`);
       await page.screenshot({ path: `${out}stage-${width}x${height}.png` });
     }
+    // at 1920x1080 the image fills the stage: drawn larger than its own 800x600
+    await page.setViewportSize({ width: 1920, height: 1080 });
+    const image = page.getByRole('img', { name: 'Rendered image', exact: true });
+    await until(async () => (await image.evaluate((img) => Math.min(img.clientWidth / img.naturalWidth, img.clientHeight / img.naturalHeight))) > 1.2,
+      async () => `at 1920x1080 the image is drawn at ${await image.evaluate((img) => Math.min(img.clientWidth / img.naturalWidth, img.clientHeight / img.naturalHeight))} of its size`);
+    await page.screenshot({ path: `${out}stage-1920x1080.png` });
     await page.getByRole('button', { name: 'Full size' }).click();
     const viewer = page.getByRole('dialog', { name: /Full-size image/ });
     await viewer.waitFor();
