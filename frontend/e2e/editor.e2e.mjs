@@ -4,6 +4,7 @@
 // Usage: node e2e/editor.e2e.mjs path/to/studio.jar   (screenshots go to frontend/test-output/)
 import { mkdirSync } from 'node:fs';
 import { chromium } from 'playwright-core';
+import { PerspectiveCamera, Vector3 } from 'three';
 import { startServer } from './server.mjs';
 
 const jar = process.argv[2];
@@ -15,7 +16,10 @@ const out = new URL('../test-output/', import.meta.url).pathname;
 mkdirSync(out, { recursive: true });
 
 const results = [];
+// E2E_ONLY=words runs the opening step and those whose names contain the words (while working on one)
+const only = process.env.E2E_ONLY;
 async function step(name, body) {
+  if (only && results.length > 0 && !name.includes(only)) return;
   const started = Date.now();
   try {
     await body();
@@ -39,6 +43,54 @@ async function until(condition, message, timeoutMs = 5000) {
   }
 }
 
+/** The scene as the JSON tab shows it (the tab is left as it was found). */
+async function sceneOf(page) {
+  const back = await page.getByRole('tab', { selected: true }).innerText();
+  await page.getByRole('tab', { name: 'JSON' }).click();
+  const scene = JSON.parse(await page.getByLabel('Scene JSON').inputValue());
+  await page.getByRole('tab', { name: back }).click();
+  return scene;
+}
+
+/** Where a world point shows in the 3D preview's camera view, in page pixels (the render camera, as three.js frames it). */
+async function previewPixel(page, scene, point) {
+  // opening a scene mounts a new preview: wait for its canvas
+  await page.getByTestId('preview-3d').locator('canvas').waitFor();
+  const box = await page.getByTestId('preview-3d').locator('canvas').boundingBox();
+  const c = scene.camera ?? {};
+  const camera = new PerspectiveCamera(c.fov ?? 50, box.width / box.height, 0.01, 1e4);
+  camera.position.set(...(c.position ?? [0, 2, 8]));
+  camera.up.set(...(c.up ?? [0, 1, 0]));
+  camera.lookAt(new Vector3(...(c.lookAt ?? [0, 0, 0])));
+  camera.updateMatrixWorld();
+  const ndc = new Vector3(...point).project(camera);
+  return { x: box.x + ((ndc.x + 1) / 2) * box.width, y: box.y + ((1 - ndc.y) / 2) * box.height };
+}
+
+/** Opens a scene as a user opens a file. */
+async function openScene(page, scene) {
+  await page.getByTestId('open-scene').setInputFiles({ name: `${scene.name}.json`, mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(scene)) });
+}
+
+/** The 3D preview's pixels [r, g, b] at page points, read from its canvas once a frame is drawn. */
+async function previewColours(page, points) {
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+  const canvas = page.getByTestId('preview-3d').locator('canvas');
+  const box = await canvas.boundingBox();
+  return canvas.evaluate((c, { points, box }) => {
+    const copy = document.createElement('canvas');
+    copy.width = c.width;
+    copy.height = c.height;
+    const g = copy.getContext('2d');
+    g.drawImage(c, 0, 0);
+    return points.map(({ x, y }) => {
+      const px = Math.round(((x - box.x) / box.width) * c.width), py = Math.round(((y - box.y) / box.height) * c.height);
+      return Array.from(g.getImageData(px, py, 1, 1).data.slice(0, 3));
+    });
+  }, { points, box });
+}
+const brightness = ([r, g, b]) => r + g + b;
+
 const server = await startServer(jar);
 const browser = await chromium.launch({
   executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
@@ -48,9 +100,13 @@ const browser = await chromium.launch({
 });
 let exitCode = 0;
 try {
-  const page = await browser.newPage({ viewport: { width: 1440, height: 1000 } });
+  // one context, so that a second tab shares the clipboard (and storage) as a browser's tabs do
+  const context = await browser.newContext({ viewport: { width: 1440, height: 1000 } });
+  const page = await context.newPage();
   const pageErrors = [];
   page.on('pageerror', (error) => pageErrors.push(String(error)));
+  const missing = [];
+  page.on('response', (response) => { if (response.status() === 404) missing.push(response.url()); });
   console.log(`browser test against ${server.base}`);
 
   await step('the editor opens with its views, preview and inspector', async () => {
@@ -66,6 +122,29 @@ try {
     const sphere = page.getByTestId('top-view').locator('[data-kind="sphere"]').last();
     await sphere.waitFor();
     expect((await sphere.getAttribute('data-selected')) === 'true', 'the new sphere is not selected');
+  });
+
+  await step('a new sphere stands on the floor clear of the camera target: grabbed at its centre, it moves', async () => {
+    expect(Number(await page.getByLabel('Center y').inputValue()) === 1, 'the new sphere (radius 1) does not rest on the floor');
+    const lookAt = async () => {
+      await page.getByRole('button', { name: 'Camera', exact: true }).first().click();
+      const v = await Promise.all(['x', 'y', 'z'].map((a) => page.getByLabel(`Look at ${a}`).inputValue()));
+      await page.getByTestId('top-view').locator('[data-kind="sphere"]').last().click();
+      return v.join(',');
+    };
+    const targetBefore = await lookAt();
+    const centerX = page.getByLabel('Center x');
+    const x0 = Number(await centerX.inputValue());
+    const box = await page.getByTestId('top-view').locator('[data-kind="sphere"]').last().boundingBox();
+    const x = box.x + box.width / 2, y = box.y + box.height / 2;
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let i = 1; i <= 6; i++) await page.mouse.move(x + 6 * i, y);
+    await page.mouse.up();
+    expect(Number(await centerX.inputValue()) > x0, 'the sphere did not move when grabbed at its centre');
+    expect((await lookAt()) === targetBefore, 'grabbing the sphere moved the camera target');
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => Number(await centerX.inputValue()) === x0, 'undo did not put the sphere back');
   });
 
   let xBefore;
@@ -132,6 +211,12 @@ try {
       expect(render && render.y >= 0 && render.y + render.height <= height, `Render is out of reach at ${width}x${height}`);
       await page.screenshot({ path: `${out}stage-${width}x${height}.png` });
     }
+    // at 1920x1080 the image fills the stage: drawn larger than its own 800x600
+    await page.setViewportSize({ width: 1920, height: 1080 });
+    const image = page.getByRole('img', { name: 'Rendered image', exact: true });
+    await until(async () => (await image.evaluate((img) => Math.min(img.clientWidth / img.naturalWidth, img.clientHeight / img.naturalHeight))) > 1.2,
+      async () => `at 1920x1080 the image is drawn at ${await image.evaluate((img) => Math.min(img.clientWidth / img.naturalWidth, img.clientHeight / img.naturalHeight))} of its size`);
+    await page.screenshot({ path: `${out}stage-1920x1080.png` });
     await page.getByRole('button', { name: 'Full size' }).click();
     const viewer = page.getByRole('dialog', { name: /Full-size image/ });
     await viewer.waitFor();
@@ -277,6 +362,234 @@ try {
     const text = await page.getByLabel('Scene JSON').inputValue();
     expect(/"name": "ball"/.test(text), 'the name is not in the scene JSON');
     await page.getByRole('tab', { name: '3D preview' }).click();
+  });
+
+  await step('smaller things: arrow nudges save no float noise; mirror drops the plastic colour; long numbers fit; Escape closes Examples; the orbit view resets', async () => {
+    await page.getByRole('tab', { name: '3D preview' }).click();
+    await page.getByTestId('add-sphere').click();
+    await page.getByLabel('Grid size in metres').selectOption('0.1');
+    const sphere = page.getByTestId('top-view').locator('[data-selected="true"]');
+    await sphere.focus();
+    for (let i = 0; i < 7; i++) await page.keyboard.press('ArrowLeft');
+    for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowUp');
+    await page.getByRole('tab', { name: 'JSON' }).click();
+    const json = await page.getByLabel('Scene JSON').inputValue();
+    expect(!/\d\.\d{12,}/.test(json), `float noise saved: ${json.match(/-?\d+\.\d{12,}/)?.[0]}`);
+    // the JSON editor takes the stage's height, not nine lines
+    const editor = await page.getByLabel('Scene JSON').boundingBox();
+    const stage = await page.locator('#panel-json').boundingBox();
+    expect(editor.height > stage.height * 0.6, `the JSON editor is ${editor.height} px of a ${stage.height} px stage`);
+    await page.getByRole('tab', { name: '3D preview' }).click();
+
+    await page.getByLabel('Material type').selectOption('plastic');
+    const hex = page.getByLabel('Color hex', { exact: true });
+    await hex.fill('#cc2222');
+    await hex.press('Enter');
+    await page.getByLabel('Material type').selectOption('mirror');
+    await until(async () => (await hex.inputValue()) === '#ffffff', async () => `a mirror kept the plastic's colour ${await hex.inputValue()}`);
+
+    await page.setViewportSize({ width: 1024, height: 768 });
+    if (!(await page.getByLabel('Center x').isVisible())) await page.getByRole('button', { name: 'Inspector', exact: true }).click();
+    const cx = page.getByLabel('Center x');
+    await cx.fill('100000.004');
+    await cx.press('Enter');
+    const fit = await cx.evaluate((el) => ({ value: el.value, scroll: el.scrollWidth, client: el.clientWidth }));
+    expect(fit.value === '100000.004' && fit.scroll <= fit.client, `100000.004 does not fit its field: ${JSON.stringify(fit)}`);
+    await page.screenshot({ path: `${out}narrow-fields-1024.png` });
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await page.setViewportSize({ width: 1440, height: 1000 });
+
+    await page.getByText('Examples', { exact: true }).click();
+    const list = page.getByRole('list', { name: 'Example scenes' });
+    await list.waitFor();
+    await page.keyboard.press('Escape');
+    await list.waitFor({ state: 'hidden', timeout: 2000 });
+
+    await page.getByRole('button', { name: 'Orbit view' }).click();
+    await page.getByRole('button', { name: 'Reset view' }).click();
+    await page.getByRole('button', { name: 'Camera view' }).click();
+    expect(!missing.some((url) => url.includes('favicon')), `the favicon is a 404: ${missing.join(', ')}`);
+  });
+
+  await step('3D: a click selects, the move handle drags it as one undo step, R scales, F frames', async () => {
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByTestId('add-sphere').click();
+    await page.keyboard.press('Escape');
+    const scene = await sceneOf(page);
+    const centre = scene.objects[0].center;
+    const at = await previewPixel(page, scene, centre);
+    await page.mouse.click(at.x, at.y);
+    const centerX = page.getByLabel('Center x');
+    await centerX.waitFor({ timeout: 3000 });
+    const x0 = Number(await centerX.inputValue());
+    expect(x0 === centre[0], `clicking the sphere in 3D did not select it (${x0})`);
+
+    // the move handle's centre drags in the view's plane
+    await page.mouse.move(at.x, at.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 10; i++) await page.mouse.move(at.x + 8 * i, at.y);
+    await page.mouse.up();
+    await until(async () => Number(await centerX.inputValue()) > x0 + 0.3, async () => `the move handle did not move the sphere: x ${await centerX.inputValue()}`);
+    const moved = await sceneOf(page);
+    expect(!/\d\.\d{4,}/.test(JSON.stringify(moved.objects[0].center)), `the handles saved unrounded values ${JSON.stringify(moved.objects[0].center)}`);
+    await page.screenshot({ path: `${out}handles-move.png` });
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => Number(await centerX.inputValue()) === x0, 'one undo did not take the whole handle drag back');
+
+    await page.keyboard.press('r');
+    expect((await page.getByRole('button', { name: 'Scale' }).getAttribute('aria-pressed')) === 'true', 'R did not choose the scale handles');
+    const radius = page.getByLabel('Radius');
+    await page.mouse.move(at.x + 4, at.y - 4);
+    await page.mouse.down();
+    for (let i = 1; i <= 10; i++) await page.mouse.move(at.x + 4 + 3 * i, at.y - 4 - 3 * i);
+    await page.mouse.up();
+    await until(async () => { const r = Number(await radius.inputValue()); return r > 1 && r <= 10; },
+      async () => `the scale handle made the radius ${await radius.inputValue()}`);
+    await page.screenshot({ path: `${out}handles-scale.png` });
+    await page.keyboard.press('w');
+
+    await page.keyboard.press('f');
+    await until(async () => (await page.getByRole('button', { name: 'Orbit view' }).getAttribute('aria-pressed')) === 'true', 'F did not frame the selection in the orbit view');
+    await page.screenshot({ path: `${out}frame-selection.png` });
+    await page.getByRole('button', { name: 'Camera view' }).click();
+  });
+
+  await step('the preview shows what the render will: shadows, a mirror reflecting the scene, glass visible; extreme values leave the rest of the picture', async () => {
+    const honest = {
+      name: 'honest', background: '#101418',
+      camera: { position: [0, 2.5, 8], lookAt: [0, 0.8, 0], fov: 45 },
+      lights: [{ type: 'point', position: [4, 7, 3], intensity: 1 }],
+      objects: [
+        { type: 'plane', point: [0, 0, 0], normal: [0, 1, 0], material: { type: 'chalk', color: '#d04030' } },
+        { type: 'sphere', center: [-2.2, 1, 0], radius: 1, material: { type: 'plastic', color: '#3070d0' } },
+        { type: 'sphere', center: [0, 1, 0], radius: 1, material: { type: 'mirror' } },
+        { type: 'sphere', center: [2.2, 1, 0], radius: 1, material: { type: 'glass' } },
+      ],
+    };
+    await page.getByRole('tab', { name: '3D preview' }).click();
+    await page.setViewportSize({ width: 1440, height: 900 });
+    await openScene(page, honest);
+    await page.keyboard.press('Escape');
+    await page.waitForTimeout(300); // the lazily built shadow maps and cube maps settle within a frame or two
+    // shadow: the floor where the light's ray through the blue sphere's centre lands, against the floor as far on the other side
+    const L = honest.lights[0].position, C = honest.objects[1].center;
+    const t = L[1] / (L[1] - C[1]);
+    const shadow = [L[0] + t * (C[0] - L[0]), 0, L[2] + t * (C[2] - L[2])];
+    const lit = [2 * C[0] - shadow[0] + 0.0, 0, 2 * C[2] - shadow[2] + 2.5];
+    await page.screenshot({ path: `${out}preview-honest.png` });
+    const [inShadow, inLight] = await previewColours(page, [await previewPixel(page, honest, shadow), await previewPixel(page, honest, lit)]);
+    expect(brightness(inShadow) < 0.75 * brightness(inLight), `no shadow: ${inShadow} in the shadow, ${inLight} in the light`);
+    // the mirror's lower part shows the red floor (before it showed a grey made-up room)
+    const [mirrorLow] = await previewColours(page, [await previewPixel(page, honest, [0, 0.25, 0.9])]);
+    expect(mirrorLow[0] > mirrorLow[1] + 30 && mirrorLow[0] > mirrorLow[2] + 30, `the mirror does not reflect the red floor: ${mirrorLow}`);
+    // glass: its disc differs from the picture without it
+    const glassPoints = [];
+    for (let i = -3; i <= 3; i++) for (let j = -3; j <= 3; j++) glassPoints.push(await previewPixel(page, honest, [2.2 + i * 0.25, 1 + j * 0.25, 0.5]));
+    const withGlass = await previewColours(page, glassPoints);
+    await page.screenshot({ path: `${out}preview-honest.png` });
+    await openScene(page, { ...honest, objects: honest.objects.slice(0, 3) });
+    const withoutGlass = await previewColours(page, glassPoints);
+    const change = withGlass.reduce((sum, p, i) => sum + Math.abs(brightness(p) - brightness(withoutGlass[i])), 0) / withGlass.length / 3;
+    expect(change > 8, `the glass sphere is nearly invisible: mean change ${change.toFixed(1)} levels`);
+
+    // a sphere at x = 1e300 and a 179.9 degree lens: the floor and the other spheres are still drawn
+    const floorAt = await previewPixel(page, honest, [-1, 0, 2]);
+    await openScene(page, { ...honest, objects: [...honest.objects, { type: 'sphere', center: [1e300, 1, 0], material: { type: 'chalk' } }] });
+    const [floorWithFar] = await previewColours(page, [floorAt]);
+    expect(floorWithFar[0] > floorWithFar[2] + 30, `a sphere at 1e300 blanked the floor: ${floorWithFar}`);
+    await page.screenshot({ path: `${out}preview-extreme-1e300.png` });
+    const wide = { ...honest, camera: { ...honest.camera, fov: 179.9 } };
+    await openScene(page, wide);
+    await page.screenshot({ path: `${out}preview-extreme-fov.png` });
+    if (pageErrors.length) throw new Error(pageErrors.join('\n'));
+    // at 179.9 degrees what a 45-degree lens sees is a thin band; the floor right under the camera fills the bottom
+    const canvasBox = await page.getByTestId('preview-3d').locator('canvas').boundingBox();
+    const bottom = { x: canvasBox.x + canvasBox.width / 2, y: canvasBox.y + canvasBox.height * 0.93 };
+    const wideColours = await previewColours(page, [await previewPixel(page, wide, [0, 0, 3]), bottom]);
+    for (const c of wideColours) expect(c[0] > c[2] + 30, `fov 179.9 lost the floor: ${JSON.stringify(wideColours)}`);
+    await page.screenshot({ path: `${out}preview-extreme-fov.png` });
+    await page.setViewportSize({ width: 1440, height: 1000 });
+  });
+
+  await step('copy in one tab, paste in another: Ctrl+C / Ctrl+V carry the selection as scene JSON', async () => {
+    await page.context().grantPermissions(['clipboard-read', 'clipboard-write'], { origin: server.base });
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByTestId('add-box').click();
+    const name = page.getByTestId('inspector-object').getByLabel('Name', { exact: true });
+    await name.fill('crate');
+    await name.press('Enter');
+    await name.evaluate((el) => el.blur());
+    await page.keyboard.press('Control+c');
+    const copied = await page.evaluate(() => navigator.clipboard.readText());
+    expect(JSON.parse(copied).objects?.[0]?.name === 'crate', `the clipboard holds ${copied.slice(0, 120)}`);
+    const other = await page.context().newPage();
+    try {
+      await other.goto(server.base);
+      await other.getByTestId('top-view').waitFor();
+      await other.getByRole('button', { name: 'New', exact: true }).click();
+      await other.locator('body').focus();
+      await other.keyboard.press('Control+v');
+      // headless Chromium sends no paste event for Ctrl+V: hand the page the system clipboard's text as the browser would
+      await other.evaluate(async () => {
+        if (document.querySelectorAll('[data-kind="box"]').length > 0) return;
+        const data = new DataTransfer();
+        data.setData('text/plain', await navigator.clipboard.readText());
+        document.body.dispatchEvent(new ClipboardEvent('paste', { clipboardData: data, bubbles: true, cancelable: true }));
+      });
+      await other.getByRole('navigation', { name: 'Scene contents' }).getByRole('button', { name: /Box "crate"/ }).waitFor({ timeout: 5000 });
+      await other.screenshot({ path: `${out}pasted-in-second-tab.png` });
+    } finally {
+      await other.close();
+    }
+    // and into its own scene, beside the original, as one undo step
+    await page.evaluate(async () => {
+      const data = new DataTransfer();
+      data.setData('text/plain', await navigator.clipboard.readText());
+      document.body.dispatchEvent(new ClipboardEvent('paste', { clipboardData: data, bubbles: true, cancelable: true }));
+    });
+    const outline = page.getByRole('navigation', { name: 'Scene contents' });
+    await until(async () => (await outline.getByRole('button', { name: /Box "crate"/ }).count()) === 2, 'pasting into the same scene did not add a second crate');
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => (await outline.getByRole('button', { name: /Box "crate"/ }).count()) === 1, 'one undo did not take the paste back');
+  });
+
+  await step('undo history survives a reload', async () => {
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByTestId('add-sphere').click();
+    await page.getByTestId('add-box').click();
+    const outline = page.getByRole('navigation', { name: 'Scene contents' });
+    await outline.getByRole('button', { name: /^Box 2/ }).waitFor();
+    await page.reload();
+    await page.getByTestId('top-view').waitFor();
+    await outline.getByRole('button', { name: /^Box 2/ }).waitFor();
+    const undo = page.getByRole('button', { name: 'Undo' });
+    expect(!(await undo.isDisabled()), 'Undo is disabled after a reload');
+    await undo.click();
+    await until(async () => (await outline.getByRole('button', { name: /^Box/ }).count()) === 0, 'undo after the reload did not take the box back');
+    await outline.getByRole('button', { name: /^Sphere 1/ }).waitFor();
+    await page.getByRole('button', { name: 'Redo' }).click();
+    await outline.getByRole('button', { name: /^Box/ }).waitFor();
+  });
+
+  await step('resolution presets with an aspect lock, and the ? panel of shortcuts', async () => {
+    await page.keyboard.press('Escape');
+    await page.getByLabel('Size preset').selectOption({ label: '1280 × 720 (HD)' });
+    const width = page.getByLabel('Width (px)'), height = page.getByLabel('Height (px)');
+    await until(async () => (await height.inputValue()) === '720', 'the HD preset did not set 1280x720');
+    await page.getByLabel(/Lock aspect ratio/).check();
+    await width.fill('1920');
+    await width.press('Enter');
+    await until(async () => (await height.inputValue()) === '1080', async () => `the locked height is ${await height.inputValue()}`);
+    await page.getByLabel('Size preset').selectOption({ label: '1024 × 1024 (square)' });
+    await until(async () => (await width.inputValue()) === '1024' && (await height.inputValue()) === '1024', 'the square preset did not apply');
+    await page.evaluate(() => document.activeElement?.blur()); // typing ? in a field stays typing
+    await page.keyboard.press('?');
+    const help = page.getByRole('dialog', { name: 'Keyboard shortcuts' });
+    await help.waitFor();
+    expect((await help.innerText()).includes('W / E / R'), 'the panel does not list W / E / R');
+    await page.screenshot({ path: `${out}shortcuts.png` });
+    await page.keyboard.press('Escape');
+    await help.waitFor({ state: 'detached' });
   });
 
   await step('no uncaught errors in the page', async () => {

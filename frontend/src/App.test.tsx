@@ -161,6 +161,22 @@ describe('App', () => {
     expect(JSON.parse(await blob.text())).toEqual(STARTER_SCENE);
   });
 
+  it('shows the keyboard shortcuts on ? and on the toolbar button; Escape closes them', async () => {
+    const user = userEvent.setup();
+    await renderApp();
+    await user.keyboard('?');
+    const dialog = screen.getByRole('dialog', { name: 'Keyboard shortcuts' });
+    expect(dialog).toHaveTextContent('Move / rotate / scale handles in the 3D preview');
+    expect(dialog).toHaveTextContent('Ctrl+C / Ctrl+V');
+    await user.keyboard('{Escape}');
+    expect(screen.queryByRole('dialog', { name: 'Keyboard shortcuts' })).toBeNull();
+    store().select({ kind: 'camera' });
+    await user.click(screen.getByRole('button', { name: 'Keyboard shortcuts' }));
+    expect(screen.getByRole('dialog', { name: 'Keyboard shortcuts' })).toBeInTheDocument();
+    await user.keyboard('{Escape}');
+    expect(store().selection).toEqual({ kind: 'camera' }); // Escape closed the panel only
+  });
+
   it('loads an example from the gallery, and New starts a blank scene', async () => {
     const user = userEvent.setup();
     const fetchFn = mockServer();
@@ -239,7 +255,7 @@ describe('App', () => {
     expect(screen.getByLabelText('Up y')).not.toHaveAttribute('aria-invalid');
   });
 
-  it('adds a mesh from an OBJ file: inline at the origin, about 2 m across, selected, one undo step', async () => {
+  it('adds a mesh from an OBJ file: inline, on the floor, about 2 m across, selected, one undo step', async () => {
     const user = userEvent.setup();
     await renderApp();
     expect(screen.getByRole('button', { name: 'Add mesh' })).toBeInTheDocument();
@@ -248,7 +264,8 @@ describe('App', () => {
     const obj = gridObj(10, 0.5); // 0.5 m square: scaled by 4
     await user.upload(screen.getByTestId('add-mesh'), new File([obj], 'grid.obj'));
     const index = STARTER_SCENE.objects.length;
-    await waitFor(() => expect(store().scene.objects[index]).toEqual({ type: 'mesh', obj, position: [0, 0, 0], scale: 4, rotation: [0, 0, 0], material: { type: 'plastic', color: '#4f8fd6' } }));
+    await waitFor(() => expect(store().scene.objects[index]).toEqual({ type: 'mesh', obj, position: expect.any(Array), scale: 4, rotation: [0, 0, 0], material: { type: 'plastic', color: '#4f8fd6' } }));
+    expect((store().scene.objects[index] as { position: number[] }).position[1]).toBe(0); // a flat grid lies on the floor
     expect(screen.queryByRole('alert')).toBeNull();
     expect(store().selection).toEqual({ kind: 'object', index });
     expect(store().past).toHaveLength(1);

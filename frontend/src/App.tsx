@@ -5,6 +5,7 @@ import { Inspector } from './components/Inspector';
 import { JsonTab } from './components/JsonTab';
 import { ProblemList } from './components/ProblemList';
 import { RenderPanel } from './render/RenderPanel';
+import { ShortcutsHelp } from './components/ShortcutsHelp';
 import { Toolbar } from './components/Toolbar';
 import { useEditorShortcuts } from './hooks/useEditorShortcuts';
 import { useMeshFiles } from './hooks/useMeshes';
@@ -46,7 +47,9 @@ export function App({ fetchFn }: AppProps) {
     [report],
   );
   const showRender = useCallback(() => setTab('render'), []);
-  useEditorShortcuts();
+  const [help, setHelp] = useState(false);
+  const closeHelp = useCallback(() => setHelp(false), []);
+  useEditorShortcuts(() => setHelp((shown) => !shown));
   useMeshFiles(fetchFn);
 
   const tabButton = (id: StageTab, label: string) => (
@@ -65,7 +68,8 @@ export function App({ fetchFn }: AppProps) {
   return (
     <FieldErrorsProvider errors={fieldErrors}>
       <div className="studio">
-        <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} />
+        <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} />
+        {help && <ShortcutsHelp onClose={closeHelp} />}
         {message && (
           <div className="studio-message" role="alert">
             <pre>{message}</pre>

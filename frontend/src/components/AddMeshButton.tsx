@@ -10,7 +10,8 @@ export interface AddMeshButtonProps {
 }
 
 /**
- * "+ Mesh": picks an OBJ file and adds it as an inline mesh at the origin, scaled so its bounding
+ * "+ Mesh": picks an OBJ file and adds it as an inline mesh resting on the floor in front of the
+ * camera (clear of the others), scaled so its bounding
  * box's largest side is about 2 m, selected; one undo step. A file that is not a usable OBJ is
  * refused with the line of its first problem.
  */
@@ -28,7 +29,7 @@ export function AddMeshButton({ onMessage }: AddMeshButtonProps) {
   return (
     <ObjFileButton
       ariaLabel="Add mesh"
-      title="Add a triangle mesh from a Wavefront OBJ file, at the origin, scaled to about 2 m"
+      title="Add a triangle mesh from a Wavefront OBJ file, on the floor in front of the camera, scaled to about 2 m"
       testId="add-mesh"
       onLoad={add}
       onError={onMessage}

@@ -13,13 +13,25 @@ export interface ExamplesMenuProps {
 /** "Examples ▾": a drop-down gallery of the example scenes in `scenes/`. */
 export function ExamplesMenu({ scenes, loading, onPick }: ExamplesMenuProps) {
   const details = useRef<HTMLDetailsElement>(null);
-  // A press anywhere else closes the menu, as menus do.
+  // A press anywhere else, or Escape, closes the menu, as menus do (Escape hands focus back to its button).
   useEffect(() => {
     const close = (event: PointerEvent) => {
       if (!details.current?.contains(event.target as Node)) details.current?.removeAttribute('open');
     };
+    const escape = (event: KeyboardEvent) => {
+      const menu = details.current;
+      if (event.key !== 'Escape' || !menu?.open) return;
+      menu.removeAttribute('open');
+      menu.querySelector('summary')?.focus();
+      event.preventDefault();
+      event.stopPropagation();
+    };
     document.addEventListener('pointerdown', close);
-    return () => document.removeEventListener('pointerdown', close);
+    document.addEventListener('keydown', escape, true);
+    return () => {
+      document.removeEventListener('pointerdown', close);
+      document.removeEventListener('keydown', escape, true);
+    };
   }, []);
   return (
     <details className="menu" ref={details}>

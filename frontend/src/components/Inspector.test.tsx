@@ -25,6 +25,31 @@ function field(path: string): HTMLElement {
 }
 
 describe('Inspector', () => {
+  it('sets the image size from a preset, and keeps its aspect with the lock (one undo step each)', async () => {
+    const user = userEvent.setup();
+    render(<Inspector />);
+    await user.selectOptions(screen.getByLabelText('Size preset'), '1280 × 720 (HD)');
+    expect(store().scene.image).toMatchObject({ width: 1280, height: 720 });
+    expect(store().past).toHaveLength(1);
+    await user.click(screen.getByLabelText(/Lock aspect ratio/));
+    const width = screen.getByLabelText('Width (px)');
+    await user.clear(width);
+    await user.type(width, '1920{Enter}');
+    expect(store().scene.image).toMatchObject({ width: 1920, height: 1080 });
+    expect(store().past).toHaveLength(2);
+    expect(screen.getByLabelText('Size preset')).toHaveValue('2');
+  });
+
+  it('sizes a narrow vector input by the length of its text, so 100000.004 shows whole', () => {
+    resetSceneStore({ objects: [{ type: 'sphere', center: [100000.004, 1, 2] }] });
+    store().select({ kind: 'object', index: 0 });
+    render(<Inspector />);
+    const x = screen.getByLabelText('Center x') as HTMLInputElement;
+    expect(x.value).toBe('100000.004');
+    expect(x.style.getPropertyValue('--chars')).toBe('10');
+    expect((screen.getByLabelText('Center y') as HTMLInputElement).style.getPropertyValue('--chars')).toBe('4');
+  });
+
   it('edits the selected object: typing commits once on Enter, one undo step', async () => {
     const user = userEvent.setup();
     resetSceneStore(SCENE);
@@ -133,7 +158,7 @@ describe('Inspector', () => {
     expect(type).toHaveAttribute('data-field', 'objects[0].material.type');
     expect(screen.getByLabelText('Shininess')).toHaveValue(60);
     await user.selectOptions(type, 'glass');
-    expect(store().scene.objects[0].material).toEqual({ type: 'glass', color: '#cc3333' });
+    expect(store().scene.objects[0].material).toEqual({ type: 'glass' }); // a red plastic's colour is no glass tint
     expect(screen.getByLabelText('Index of refraction')).toHaveValue(1.5);
     expect(screen.queryByLabelText('Diffuse')).toBeNull();
     await user.clear(screen.getByLabelText('Color hex'));

@@ -2,6 +2,7 @@ import { resolveScene } from '../model/defaults';
 import type { ImageFormat, SamplerName } from '../model/types';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { ColorField } from './fields/ColorField';
+import { ImageSizeFields } from './ImageSizeFields';
 import { NumberField } from './fields/NumberField';
 import { SelectField } from './fields/SelectField';
 import { TextField } from './fields/TextField';
@@ -36,8 +37,7 @@ export function InspectorScene() {
       <NumberField label="Ambient" path="ambient" value={r.ambient} min={0} max={1} step={0.01} hint="Ambient light in [0, 1], times each surface's diffuse colour" onCommit={s.setAmbient} />
       <fieldset className="inspector-group">
         <legend>Image</legend>
-        <NumberField label="Width (px)" path="image.width" value={r.image.width} integer min={1} max={4096} step={1} onCommit={(width) => s.setImage({ width })} />
-        <NumberField label="Height (px)" path="image.height" value={r.image.height} integer min={1} max={4096} step={1} onCommit={(height) => s.setImage({ height })} />
+        <ImageSizeFields size={{ width: r.image.width, height: r.image.height }} onCommit={(size) => s.setImage(size)} />
         <SelectField
           label="Format"
           path="image.format"

@@ -20,12 +20,14 @@ export interface ToolbarProps {
   /** Which side panels are shown, and the way to show or hide them; no toggles without it. */
   panels?: Panels;
   onPanels?: (panels: Panels) => void;
+  /** Shows the keyboard shortcuts (the `?` panel); no button without it. */
+  onHelp?: () => void;
 }
 
 const ADDABLE: ObjectType[] = ['sphere', 'box', 'plane'];
 
 /** The top bar: file (New, Open, Save, Examples), edit (Undo, Redo, Duplicate, Delete), add, snapping. */
-export function Toolbar({ fetchFn, onMessage, panels, onPanels }: ToolbarProps) {
+export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: ToolbarProps) {
   const s = useSceneStore.getState();
   const canUndo = useSceneStore((st) => st.past.length > 0);
   const canRedo = useSceneStore((st) => st.future.length > 0);
@@ -101,6 +103,13 @@ export function Toolbar({ fetchFn, onMessage, panels, onPanels }: ToolbarProps) 
           </button>
           <button type="button" aria-pressed={panels.inspector} onClick={() => onPanels({ ...panels, inspector: !panels.inspector })} title="Show or hide the inspector">
             Inspector
+          </button>
+        </div>
+      )}
+      {onHelp && (
+        <div className="toolbar__group" aria-label="Help">
+          <button type="button" onClick={onHelp} aria-label="Keyboard shortcuts" title="Keyboard shortcuts (?)">
+            ?
           </button>
         </div>
       )}

@@ -28,7 +28,8 @@ describe('edits', () => {
   });
 
   it('changes a material kind keeping only what the new kind takes', () => {
-    expect(changeMaterialType({ type: 'metal', color: '#111111', reflectivity: 0.2, shininess: 9, diffuse: 0.1 }, 'mirror')).toEqual({ type: 'mirror', color: '#111111', reflectivity: 0.2 });
+    expect(changeMaterialType({ type: 'metal', color: '#111111', reflectivity: 0.2, shininess: 9, diffuse: 0.1 }, 'mirror')).toEqual({ type: 'mirror', reflectivity: 0.2 });
+    expect(changeMaterialType({ type: 'metal', color: '#111111', reflectivity: 0.2, shininess: 9, diffuse: 0.1 }, 'plastic')).toEqual({ type: 'plastic', color: '#111111', shininess: 9, diffuse: 0.1 });
     expect(changeMaterialType(undefined, 'glass')).toEqual({ type: 'glass' });
   });
 
@@ -41,6 +42,7 @@ describe('edits', () => {
     const fromFile: Scene = { objects: [{ type: 'mesh', file: 'meshes/a.obj', scale: 2 }] };
     expect(setMeshObj(fromFile, 0, 'v 1 1 1\n').objects[0]).toEqual({ type: 'mesh', obj: 'v 1 1 1\n', scale: 2 });
     expect(setMeshObj(SCENE, 0, 'v 1 1 1\n')).toBe(SCENE); // not a mesh
-    expect(addMesh(SCENE, 'v 0 0 0\n', 4).objects[3]).toMatchObject({ type: 'mesh', obj: 'v 0 0 0\n', scale: 4, position: [0, 0, 0] });
+    expect(addMesh(SCENE, 'v 0 0 0\n', 4).objects[3]).toMatchObject({ type: 'mesh', obj: 'v 0 0 0\n', scale: 4 });
+    expect((addMesh(SCENE, 'v 0 0 0\n', 4).objects[3] as { position: number[] }).position[1]).toBe(0); // on the floor
   });
 });

@@ -3,7 +3,11 @@
  * The store wraps each in a named action that pushes one history entry; drags use the same
  * functions for their transient preview.
  */
-import { newLight, newMesh, newObject, resolveObject, sceneLights, SCENE_DEFAULTS } from './defaults';
+import { newLight, newMesh, newObject, resolveObject, SAMPLE_MESH_OBJ, sceneLights, SCENE_DEFAULTS } from './defaults';
+import { NO_MESHES, type MeshLookup } from './meshCache';
+import { meshBounds, parseObj } from './obj';
+import { placeOnFloor } from './placement';
+import { roundNumber } from './rounding';
 import { objectAnchor } from './projection';
 import type { DragTarget } from './selection';
 import {
@@ -19,18 +23,42 @@ import {
   type SceneObject,
   type Vec3,
 } from './types';
-import { add, normalize, scale } from './vec';
+import { add, length, normalize, scale } from './vec';
 
 /** Distance a duplicate is moved from its original, so both stay visible. */
 export const DUPLICATE_OFFSET: Vec3 = [0.5, 0, 0.5];
 
-export function addObject(scene: Scene, kind: ObjectType): Scene {
-  return { ...scene, objects: [...scene.objects, newObject(kind)] };
+/**
+ * Adds an object of a kind with its defaults, standing on the floor in front of the camera and
+ * clear of the others and of the camera target (see {@link placeOnFloor}); a plane is the floor
+ * itself and stays where its defaults put it.
+ */
+export function addObject(scene: Scene, kind: ObjectType, meshes: MeshLookup = NO_MESHES): Scene {
+  if (kind === 'mesh') return addMesh(scene, SAMPLE_MESH_OBJ, 1, meshes);
+  const object = newObject(kind);
+  if (object.type === 'sphere') object.center = placeOnFloor(scene, object.radius!, object.radius!, meshes);
+  if (object.type === 'box') object.center = placeOnFloor(scene, length(object.size!) / 2, object.size![1] / 2, meshes);
+  return { ...scene, objects: [...scene.objects, object] };
 }
 
-/** Adds a mesh of inline OBJ text at the origin with the given uniform scale. */
-export function addMesh(scene: Scene, obj: string, scale: number): Scene {
-  return { ...scene, objects: [...scene.objects, newMesh(obj, scale)] };
+/**
+ * Adds a mesh of inline OBJ text with the given uniform scale, resting on the floor (its lowest
+ * vertex on it) in front of the camera, clear of the others; at the origin if the text is not a mesh.
+ */
+export function addMesh(scene: Scene, obj: string, scale: number, meshes: MeshLookup = NO_MESHES): Scene {
+  const mesh = newMesh(obj, scale);
+  let parsed;
+  try {
+    parsed = parseObj(obj);
+  } catch {
+    return { ...scene, objects: [...scene.objects, mesh] };
+  }
+  const { min, max } = meshBounds({ scale }, parsed);
+  const half: Vec3 = [(max[0] - min[0]) / 2, (max[1] - min[1]) / 2, (max[2] - min[2]) / 2];
+  const centre = placeOnFloor(scene, Math.hypot(half[0], half[2]), half[1], meshes);
+  // the bounds' centre goes to the spot found; the position is the OBJ origin
+  mesh.position = [centre[0] - (min[0] + max[0]) / 2, centre[1] - half[1] - min[1], centre[2] - (min[2] + max[2]) / 2].map(roundNumber) as Vec3;
+  return { ...scene, objects: [...scene.objects, mesh] };
 }
 
 /** Gives a mesh new inline OBJ text, dropping its `file` (a mesh has exactly one of the two). */
@@ -90,6 +118,12 @@ export function setObjectField<K extends string>(scene: Scene, index: number, fi
   return { ...scene, objects };
 }
 
+/** Puts another object in an object's place (the 3D view's handles change several fields at once). */
+export function replaceObject(scene: Scene, index: number, object: SceneObject): Scene {
+  if (!scene.objects[index]) return scene;
+  return { ...scene, objects: scene.objects.map((o, i) => (i === index ? object : o)) };
+}
+
 /** The field that says where an object is: a sphere's or box's centre, a plane's point, a mesh's position. */
 export function anchorField(type: ObjectType): 'center' | 'point' | 'position' {
   return type === 'plane' ? 'point' : type === 'mesh' ? 'position' : 'center';
@@ -106,12 +140,19 @@ export function setMaterial(scene: Scene, index: number, material: Material): Sc
   return setObjectField(scene, index, 'material', material);
 }
 
+/** Kinds whose colour tints reflected or transmitted light rather than colouring a surface. */
+const TINTED: ReadonlySet<MaterialType> = new Set(['mirror', 'glass']);
+
 /**
- * A material of another kind, keeping the colour and every override the new kind also takes.
+ * A material of another kind, keeping every override the new kind also takes; the colour only
+ * between kinds where it means the same (a surface colour, or a mirror's or glass's tint).
  */
 export function changeMaterialType(material: Material | undefined, type: MaterialType): Material {
   const fields: readonly string[] = MATERIAL_FIELDS[type];
-  const kept = Object.entries(material ?? {}).filter(([k]) => k !== 'type' && fields.includes(k));
+  // A mirror's or glass's colour is a tint of what it reflects or lets through (white: none), a
+  // surface colour is something else: the colour goes over only between kinds where it means the same.
+  const sameColour = TINTED.has(type) === TINTED.has(material?.type ?? 'chalk');
+  const kept = Object.entries(material ?? {}).filter(([k]) => k !== 'type' && fields.includes(k) && (k !== 'color' || sameColour));
   const next = { type, ...Object.fromEntries(kept) } as Material;
   return next;
 }

@@ -1,7 +1,7 @@
 import { BoxGeometry, Euler, Mesh, Quaternion, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { cameraFrame } from './projection';
-import { letterbox, LIGHT_SCALE, makeRenderCamera, meshGeometry, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
+import { letterbox, LIGHT_SCALE, makeRenderCamera, meshGeometry, planeSize, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
 import { MeshCache, type MeshLookup } from './meshCache';
 import { parseObj } from './obj';
 import { TETRAHEDRON_OBJ } from '../test/meshes';
@@ -117,7 +117,7 @@ describe('sceneToThree', () => {
     expect(d.meshes[2].material).toMatchObject({ kind: 'physical', ior: 1.4 });
     expect(d.meshes[2].position[1]).toBeCloseTo(-1);
     expect(d.meshes[3].material).toMatchObject({ kind: 'standard', metalness: 1 });
-    expect(d.meshes[4].material).toEqual({ kind: 'standard', color: '#ffffff', metalness: 1, roughness: 0 });
+    expect(d.meshes[4].material).toEqual({ kind: 'standard', color: '#ffffff', metalness: 1, roughness: 0, reflects: true });
     expect(d.meshes[5].material).toMatchObject({ kind: 'lambert', diffuse: 0.9 });
     expect(d.lights).toEqual([
       { index: 0, position: [1, 2, 3], color: '#ff0000', intensity: 0.5 * LIGHT_SCALE, decay: 2, selected: false },
@@ -219,5 +219,52 @@ describe('meshes in the preview', () => {
     const g = meshGeometry(parsed);
     expect(Array.from(g.index!.array)).toEqual([0, 1, 2]);
     expect(Array.from(g.getAttribute('normal').array)).toEqual(Array.from(parsed.normals!));
+  });
+
+  describe('never shows what the render will not, and survives extreme values', () => {
+    it('gives mirrors, metals and glass the scene to reflect; glass is refractive, not half-transparent', () => {
+      const d = sceneToThree({
+        objects: [
+          {}, {},
+          { type: 'plane', material: { type: 'glass', ior: 1.4 } },
+          { type: 'sphere', material: { type: 'metal' } },
+          { type: 'sphere', material: { type: 'mirror' } },
+          { type: 'sphere', material: { type: 'chalk' } },
+        ].map((o) => ({ type: 'sphere', ...o })) as Scene['objects'],
+      });
+      expect(d.meshes[2].material).toEqual({ kind: 'physical', color: '#ffffff', transmission: 1, ior: 1.4, roughness: 0, reflects: true });
+      expect(d.meshes[3].material).toMatchObject({ reflects: true });
+      expect(d.meshes[4].material).toMatchObject({ reflects: true });
+      expect(d.meshes[5].material).not.toHaveProperty('reflects');
+    });
+
+    it('keeps the floor and a finite depth range with a sphere at x = 1e300', () => {
+      const extreme: Scene = {
+        objects: [
+          { type: 'plane', point: [0, 0, 0], normal: [0, 1, 0] },
+          { type: 'sphere', center: [0, 1, 0] },
+          { type: 'sphere', center: [1e300, 1, 0] },
+        ],
+      };
+      const d = sceneToThree(extreme);
+      expect(d.meshes.map((m) => m.geometry)).toEqual(['plane', 'sphere']);
+      expect(Math.fround(d.camera.far)).toBeLessThan(Infinity);
+      for (const m of d.meshes) for (const v of [...m.position, ...m.scale]) expect(Math.abs(Math.fround(v))).toBeLessThan(1e30);
+      expect(d.extent).toBe(sceneToThree({ objects: extreme.objects.slice(0, 2) }).extent);
+    });
+
+    it('draws the floor past everything a 179.9 degree camera sees', () => {
+      const wide: Scene = { camera: { fov: 179.9 }, objects: [{ type: 'plane', point: [0, 0, 0], normal: [0, 1, 0] }] };
+      const d = sceneToThree(wide);
+      const half = d.meshes[0].scale[0] / 2;
+      // at the far plane's depth the view reaches far * tan(fov / 2) * aspect to the side
+      const side = d.camera.far * Math.tan((179.9 / 2) * (Math.PI / 180)) * d.camera.aspect;
+      expect(half).toBeGreaterThan(side);
+      expect(Number.isFinite(Math.fround(half))).toBe(true);
+      expect(planeSize(100, 50, 1)).toBeGreaterThan(200);
+      // the floor 2 m below the camera, 89.9 degrees off the axis, is nearer in depth than a 45-degree lens's near plane
+      expect(d.camera.near).toBeLessThan(2 * Math.cos((89.9 * Math.PI) / 180) / 2);
+      expect(sceneToThree({ objects: [] }).camera.near).toBeCloseTo(Math.hypot(0, 2, 8) / 1000, 12);
+    });
   });
 });

@@ -17,13 +17,23 @@ import { cross, dot, length, normalize, sub } from './vec';
  */
 export const LIGHT_SCALE = Math.PI;
 
-/** How a material is approximated in the preview. */
+/**
+ * How far the preview reaches, in distances from the camera to its target (10⁵: a scene of
+ * metres seen from metres away reaches 100 km; the depth buffer keeps its precision).
+ */
+export const MAX_REACH = 1e5;
+
+/**
+ * How a material is approximated in the preview. `reflects`: the surface mirrors the scene around
+ * it, so the preview gives it a cube map of the scene taken from where it stands (never a made-up
+ * environment the render would not show).
+ */
 export type MaterialDescriptor =
   | { kind: 'basic'; color: string }
   | { kind: 'lambert'; color: string; diffuse: number }
   | { kind: 'phong'; color: string; diffuse: number; specular: number; shininess: number }
-  | { kind: 'standard'; color: string; metalness: number; roughness: number }
-  | { kind: 'physical'; color: string; transmission: number; opacity: number; ior: number; roughness: number };
+  | { kind: 'standard'; color: string; metalness: number; roughness: number; reflects: true }
+  | { kind: 'physical'; color: string; transmission: number; ior: number; roughness: number; reflects: true };
 
 export interface MeshDescriptor {
   /** Index of the scene object. */
@@ -89,11 +99,12 @@ export function materialToThree(m: ResolvedMaterial): MaterialDescriptor {
     case 'plastic':
       return { kind: 'phong', color: m.color, diffuse: m.diffuse, specular: m.specular, shininess: m.shininess };
     case 'metal':
-      return { kind: 'standard', color: m.color, metalness: 0.5 + 0.5 * m.reflectivity, roughness: shininessToRoughness(m.shininess) };
+      return { kind: 'standard', color: m.color, metalness: 0.5 + 0.5 * m.reflectivity, roughness: shininessToRoughness(m.shininess), reflects: true };
     case 'mirror':
-      return { kind: 'standard', color: m.color, metalness: 1, roughness: 0 };
+      return { kind: 'standard', color: m.color, metalness: 1, roughness: 0, reflects: true };
     case 'glass':
-      return { kind: 'physical', color: m.color, transmission: 1, opacity: 0.5, ior: m.ior, roughness: 0 };
+      // refracts what is behind it (three.js transmission) and reflects its surroundings at grazing angles
+      return { kind: 'physical', color: m.color, transmission: 1, ior: m.ior, roughness: 0, reflects: true };
   }
 }
 
@@ -113,7 +124,7 @@ export function quaternionFromZ(normal: Vec3): [number, number, number, number] 
   return q.map((c) => c / l) as [number, number, number, number];
 }
 
-function meshOf(o: ResolvedObject, index: number, selected: boolean, camera: Vec3, extent: number, meshes: MeshLookup): MeshDescriptor | null {
+function meshOf(o: ResolvedObject, index: number, selected: boolean, camera: Vec3, planeSize: number, meshes: MeshLookup): MeshDescriptor | null {
   const base = { index, selected, material: materialToThree(o.material), rotation: [0, 0, 0] as Vec3, quaternion: [0, 0, 0, 1] as [number, number, number, number] };
   switch (o.type) {
     case 'sphere':
@@ -125,7 +136,7 @@ function meshOf(o: ResolvedObject, index: number, selected: boolean, camera: Vec
       const n = normalize(o.normal);
       const off = dot(sub(camera, o.point), n);
       const near: Vec3 = [camera[0] - off * n[0], camera[1] - off * n[1], camera[2] - off * n[2]];
-      const size = extent * 4;
+      const size = planeSize;
       return { ...base, geometry: 'plane', position: near, scale: [size, size, 1], quaternion: quaternionFromZ(o.normal) };
     }
     case 'mesh': {
@@ -136,6 +147,16 @@ function meshOf(o: ResolvedObject, index: number, selected: boolean, camera: Vec
       return { ...base, geometry: 'mesh', mesh: state.mesh, position: o.position, scale: [s, s, s], rotation: o.rotation.map(toRadians) as Vec3 };
     }
   }
+}
+
+/**
+ * The side of the square an infinite plane is drawn as: its edges must lie outside everything the
+ * camera sees up to the far plane, which at a wide field of view is far to the sides (at 179.9°
+ * 1146 times the depth): a fixed size let the floor's edges show as a wedge.
+ */
+export function planeSize(far: number, fovDegrees: number, aspect: number): number {
+  const tan = Math.tan((Math.min(Math.max(fovDegrees, 1), 179.99) / 2) * (Math.PI / 180));
+  return 2 * far * (1 + tan * Math.max(1, aspect));
 }
 
 /**
@@ -168,21 +189,34 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
   const r = resolveScene(scene);
   const cam = r.camera;
   const targetDistance = Math.max(length(sub(cam.lookAt, cam.position)), 1e-9);
+  // Anything further than this is left out of the preview (a dot at best in the render) and does
+  // not stretch the depth range: one sphere at x = 1e300 made the far plane 4e300 and the floor
+  // quad's corners Infinity as 32-bit floats, which blanked the whole picture, floor included.
+  const horizon = MAX_REACH * targetDistance;
+  const near = (p: Vec3, size = 0) => length(sub(p, cam.position)) + size <= horizon;
   let reach = targetDistance;
+  const within = (d: number) => (d <= horizon ? Math.max(reach, d) : reach);
   for (const o of r.objects) {
-    if (o.type === 'sphere') reach = Math.max(reach, length(sub(o.center, cam.position)) + o.radius);
-    if (o.type === 'box') reach = Math.max(reach, length(sub(o.center, cam.position)) + length(o.size));
+    if (o.type === 'sphere') reach = within(length(sub(o.center, cam.position)) + Math.abs(o.radius));
+    if (o.type === 'box') reach = within(length(sub(o.center, cam.position)) + length(o.size));
     if (o.type === 'mesh') {
       const state = meshes(o);
       if (state.status === 'ready') {
         const { min, max } = meshBounds(o, state.mesh);
         const centre: Vec3 = [(min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2];
-        reach = Math.max(reach, length(sub(centre, cam.position)) + length(sub(max, min)) / 2);
-      } else reach = Math.max(reach, length(sub(o.position, cam.position)));
+        reach = within(length(sub(centre, cam.position)) + length(sub(max, min)) / 2);
+      } else reach = within(length(sub(o.position, cam.position)));
     }
   }
-  for (const l of r.lights) reach = Math.max(reach, length(sub(l.position, cam.position)));
+  for (const l of r.lights) reach = within(length(sub(l.position, cam.position)));
   const extent = reach * 2;
+  const shown = (o: ResolvedObject) => {
+    if (o.type === 'sphere') return near(o.center, Math.abs(o.radius));
+    if (o.type === 'box') return near(o.center, length(o.size));
+    if (o.type === 'mesh') return near(o.position);
+    // a plane far from the camera is drawn where it is nearest; one beyond the horizon is not
+    return Math.abs(dot(sub(cam.position, o.point), normalize(o.normal))) <= horizon;
+  };
   return {
     background: r.background,
     ambient: r.ambient * LIGHT_SCALE,
@@ -192,18 +226,25 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
       up: cam.up,
       fov: cam.fov,
       aspect: r.image.width / r.image.height,
-      near: targetDistance / 1000,
+      // A wide lens sees things beside it at almost no depth: at 179.9 degrees the floor below the
+      // camera is at 1/1000 of its distance in depth, and a near plane of 1/1000 of the target's
+      // distance cut it away (the bottom of the picture was empty). The near plane shrinks with cos(fov / 2).
+      near: (targetDistance / 1000) * Math.min(1, 2 * Math.cos((Math.min(cam.fov, 179.99) / 2) * (Math.PI / 180))),
       far: extent * 4,
     },
-    meshes: r.objects.flatMap((o, i) => meshOf(o, i, selection?.kind === 'object' && selection.index === i, cam.position, extent, meshes) ?? []),
-    lights: r.lights.map((l, i) => ({
-      index: i,
-      position: l.position,
-      color: l.color,
-      intensity: l.intensity * LIGHT_SCALE,
-      decay: l.falloff ? 2 : 0,
-      selected: selection?.kind === 'light' && selection.index === i,
-    })),
+    meshes: r.objects.flatMap((o, i) => (shown(o) ? (meshOf(o, i, selection?.kind === 'object' && selection.index === i, cam.position, planeSize(extent * 4, cam.fov, r.image.width / r.image.height), meshes) ?? []) : [])),
+    lights: r.lights.flatMap((l, i) =>
+      near(l.position)
+        ? [{
+            index: i,
+            position: l.position,
+            color: l.color,
+            intensity: l.intensity * LIGHT_SCALE,
+            decay: l.falloff ? 2 : 0,
+            selected: selection?.kind === 'light' && selection.index === i,
+          }]
+        : [],
+    ),
     extent,
   };
 }

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { nudgeTarget } from '../model/edits';
 import { formatScene } from '../model/formatScene';
 import { STARTER_SCENE } from '../model/starterScene';
 import { parseScene } from '../model/validate';
@@ -125,10 +126,29 @@ describe('sceneStore', () => {
     expect(store().scene.lights?.[0]).toMatchObject({ position: [5, 8, 5] });
   });
 
-  it('keeps the colour and shared overrides when the material kind changes', () => {
+  it('keeps shared overrides when the material kind changes, the colour only where it means the same', () => {
     store().loadScene({ objects: [{ type: 'sphere', material: { type: 'plastic', color: '#123456', specular: 0.2, diffuse: 0.3 } }] });
+    store().setMaterialType(0, 'metal');
+    expect(store().scene.objects[0].material).toEqual({ type: 'metal', color: '#123456', specular: 0.2, diffuse: 0.3 });
+    // a mirror's or glass's colour is a tint: a blue plastic does not become a blue-tinted glass
     store().setMaterialType(0, 'glass');
-    expect(store().scene.objects[0].material).toEqual({ type: 'glass', color: '#123456', specular: 0.2 });
+    expect(store().scene.objects[0].material).toEqual({ type: 'glass', specular: 0.2 });
+    store().setMaterial(0, { type: 'glass', color: '#eeffee' });
+    store().setMaterialType(0, 'mirror');
+    expect(store().scene.objects[0].material).toEqual({ type: 'mirror', color: '#eeffee' });
+  });
+
+  it('saves values without float noise: nudges, drags and typed sums', () => {
+    store().loadScene({ objects: [{ type: 'sphere', center: [-0.4, 1, 0] }] });
+    store().setPreview(nudgeTarget(store().scene, { kind: 'object', index: 0 }, [-0.2, 0, 0]));
+    store().commitPreview();
+    expect(store().scene.objects[0]).toMatchObject({ center: [-0.6, 1, 0] });
+    store().dragTo({ kind: 'object', index: 0 }, [0.1 + 0.2, 1, 0]);
+    expect(store().preview?.objects[0]).toMatchObject({ center: [0.3, 1, 0] });
+    store().commitPreview();
+    store().setObjectField(0, 'radius', 0.7 + 0.1);
+    expect(JSON.stringify(store().scene)).not.toMatch(/\d{13}/);
+    expect(store().scene.objects[0]).toMatchObject({ center: [0.3, 1, 0], radius: 0.8 });
   });
 
   it('keeps view settings out of history', () => {
@@ -167,10 +187,11 @@ describe('sceneStore', () => {
       ],
     };
 
-    it('adds a mesh as one undo step, selected, its OBJ inline at the origin', () => {
+    it('adds a mesh as one undo step, selected, its OBJ inline, resting on the floor', () => {
       store().addMesh(TETRAHEDRON_OBJ, 2);
       const index = STARTER_SCENE.objects.length;
-      expect(store().scene.objects[index]).toMatchObject({ type: 'mesh', obj: TETRAHEDRON_OBJ, position: [0, 0, 0], scale: 2, rotation: [0, 0, 0] });
+      expect(store().scene.objects[index]).toMatchObject({ type: 'mesh', obj: TETRAHEDRON_OBJ, scale: 2, rotation: [0, 0, 0] });
+      expect((store().scene.objects[index] as { position: number[] }).position[1]).toBe(0); // its lowest corner is its origin
       expect(store().selection).toEqual({ kind: 'object', index });
       expect(store().past).toHaveLength(1);
       store().undo();

@@ -5,9 +5,12 @@
  */
 import { create } from 'zustand';
 import { blankScene, sceneLights } from '../model/defaults';
+import { pasteText } from '../model/clipboard';
 import { carryIds } from '../model/identity';
+import { roundEdit } from '../model/rounding';
 import { sameJson } from '../model/sameJson';
 import * as edits from '../model/edits';
+import type { GizmoMode } from '../model/gizmo';
 import type { DragTarget, Selection } from '../model/selection';
 import { STARTER_SCENE } from '../model/starterScene';
 import type {
@@ -20,10 +23,12 @@ import type {
   PointLight,
   RenderSettings,
   Scene,
+  SceneObject,
   Vec3,
 } from '../model/types';
 import type { FieldErrors } from '../model/standingErrors';
 import { push, redo, undo, type Timeline } from './history';
+import { loadHistory, saveHistory } from './historyStorage';
 import { loadSavedScene, saveScene } from './persistence';
 
 /** Zoom (SVG pixels per metre) and pan (the world point at the view's centre) of one view. */
@@ -78,7 +83,7 @@ export interface SceneState {
   setRender(patch: Partial<RenderSettings>): void;
   setCamera(patch: Partial<CameraSettings>): void;
   addObject(kind: ObjectType): void;
-  /** Adds a mesh of inline OBJ text at the origin with a uniform scale, selected (one history entry). */
+  /** Adds a mesh of inline OBJ text with a uniform scale, resting on the floor in front of the camera, selected (one history entry). */
   addMesh(obj: string, scale: number): void;
   /** Replaces a mesh's triangles by inline OBJ text (its `file`, if any, goes). */
   setMeshObj(index: number, obj: string): void;
@@ -108,6 +113,16 @@ export interface SceneState {
   setGridSize(size: number): void;
   /** Asks both plan views to zoom to the whole scene. */
   requestFit(): void;
+  /** Which handles the 3D view shows on the selection (W move, E rotate, R scale). */
+  gizmo: GizmoMode;
+  setGizmo(mode: GizmoMode): void;
+  /** Bumped by F: the 3D view frames the selection. */
+  frameRequest: number;
+  requestFrame(): void;
+  /** Adds the objects and lights of pasted scene JSON (one history entry), selecting the first; false if the text is no scene. */
+  pasteText(text: string): boolean;
+  /** Replaces one object (the 3D view's handles); one history entry. */
+  replaceObject(index: number, object: SceneObject): void;
 }
 
 export const DEFAULT_VIEWS: Record<ViewKind, ViewState> = {
@@ -117,7 +132,7 @@ export const DEFAULT_VIEWS: Record<ViewKind, ViewState> = {
 
 type Data = Pick<
   SceneState,
-  'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest' | 'documentId' | 'serverErrors'
+  'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest' | 'documentId' | 'serverErrors' | 'gizmo' | 'frameRequest'
 >;
 
 const NO_SERVER_ERRORS: Record<ErrorSource, ServerErrors | null> = { render: null, live: null };
@@ -125,7 +140,7 @@ const NO_SERVER_ERRORS: Record<ErrorSource, ServerErrors | null> = { render: nul
 function initialData(scene: Scene): Data {
   return {
     scene: carryIds(null, scene), past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1,
-    documentId: 1, serverErrors: NO_SERVER_ERRORS,
+    documentId: 1, serverErrors: NO_SERVER_ERRORS, gizmo: 'translate', frameRequest: 0,
   };
 }
 
@@ -140,10 +155,11 @@ const sameScene = (a: Scene, b: Scene) => sameJson(a, b);
 
 export const useSceneStore = create<SceneState>()((set, get) => {
   /** The single write path: one edit, one history entry (none if nothing changed). */
-  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection, newDocument = false) => {
+  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection, newDocument = false, exact = newDocument) => {
     const { scene, past, future, selection: current } = get();
-    // a new document numbers its objects afresh; an edit carries the ids on
-    const next = carryIds(newDocument ? null : scene, edit(scene));
+    // a new document numbers its objects afresh; an edit carries the ids on. The numbers an edit
+    // writes are saved rounded; a file or the JSON text keeps the digits it was written with.
+    const next = carryIds(newDocument ? null : scene, exact ? edit(scene) : roundEdit(scene, edit(scene)));
     if (sameScene(next, scene)) {
       set({ preview: null });
       return;
@@ -172,7 +188,7 @@ export const useSceneStore = create<SceneState>()((set, get) => {
       commit(() => blankScene(), () => null, true);
       set({ fitRequest: get().fitRequest + 1, documentId: get().documentId + 1, serverErrors: NO_SERVER_ERRORS });
     },
-    setScene: (scene) => commit(() => structuredClone(scene)),
+    setScene: (scene) => commit(() => structuredClone(scene), undefined, false, true),
     setName: (name) => commit((s) => ({ ...s, name })),
     setBackground: (background) => commit((s) => ({ ...s, background })),
     setAmbient: (ambient) => commit((s) => ({ ...s, ambient })),
@@ -203,8 +219,8 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     moveTarget: (target, to) => commit((s) => edits.moveTarget(s, target, to)),
     select: (selection) => set({ selection: keepValid(get().scene, selection) }),
 
-    setPreview: (preview) => set({ preview: preview && carryIds(get().scene, preview) }),
-    dragTo: (target, to) => set({ preview: carryIds(get().scene, edits.moveTarget(get().scene, target, to)) }),
+    setPreview: (preview) => set({ preview: preview && carryIds(get().scene, roundEdit(get().scene, preview)) }),
+    dragTo: (target, to) => set({ preview: carryIds(get().scene, roundEdit(get().scene, edits.moveTarget(get().scene, target, to))) }),
     commitPreview: () => {
       const { preview } = get();
       if (preview) commit(() => preview);
@@ -217,6 +233,14 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     setSnap: (snap) => set({ snap }),
     setGridSize: (gridSize) => set({ gridSize: gridSize > 0 ? gridSize : get().gridSize }),
     requestFit: () => set({ fitRequest: get().fitRequest + 1 }),
+    setGizmo: (gizmo) => set({ gizmo }),
+    requestFrame: () => set({ frameRequest: get().frameRequest + 1 }),
+    pasteText: (text) => {
+      const pasted = pasteText(get().scene, text);
+      if (pasted) commit(() => pasted.scene, () => pasted.selection);
+      return pasted !== null;
+    },
+    replaceObject: (index, object) => commit((s) => edits.replaceObject(s, index, object)),
   };
 });
 
@@ -228,9 +252,16 @@ export function resetSceneStore(scene: Scene = STARTER_SCENE): void {
   useSceneStore.setState(initialData(structuredClone(scene)));
 }
 
-/** Saves every committed scene to localStorage (call once at start-up). */
+/**
+ * Saves every committed scene to localStorage and the undo history to sessionStorage, after
+ * taking back the history a reload left for the same scene (call once at start-up).
+ */
 export function persistSceneStore(): () => void {
+  const { scene } = useSceneStore.getState();
+  const { past, future } = loadHistory(scene);
+  if (past.length > 0 || future.length > 0) useSceneStore.setState({ past, future });
   return useSceneStore.subscribe((state, previous) => {
     if (state.scene !== previous.scene) saveScene(state.scene);
+    if (state.past !== previous.past || state.future !== previous.future) saveHistory(state.scene, state.past, state.future);
   });
 }

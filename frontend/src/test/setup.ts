@@ -7,6 +7,7 @@ import { resetSceneStore } from '../store/sceneStore';
 // Every test starts from the still life with empty history and no cached meshes, and leaves nothing saved.
 beforeEach(() => {
   localStorage.clear();
+  sessionStorage.clear();
   resetSceneStore();
   meshCache.clear();
 });
@@ -15,4 +16,5 @@ beforeEach(() => {
 afterEach(() => {
   cleanup();
   localStorage.clear();
+  sessionStorage.clear();
 });

@@ -6,6 +6,7 @@ import type { Scene } from '../model/types';
 import { recordingContext } from '../render/fakes';
 import { useSceneStore } from '../store/sceneStore';
 import { Preview3D } from './Preview3D';
+import { ORBIT_SPEEDS } from './previewEngine';
 
 const store = () => useSceneStore.getState();
 
@@ -38,6 +39,26 @@ describe('Preview3D', () => {
     await user.click(screen.getByRole('button', { name: 'Orbit view' }));
     expect(viewport).toHaveAttribute('data-mode', 'orbit');
     expect(screen.getByRole('button', { name: 'Orbit view' })).toHaveAttribute('aria-pressed', 'true');
+  });
+
+  it('shows which handles W, E, R chose, and chooses them by click too', async () => {
+    const user = userEvent.setup();
+    render(<Preview3D />);
+    const group = screen.getByRole('group', { name: '3D handles' });
+    expect(within(group).getByRole('button', { name: 'Move' })).toHaveAttribute('aria-pressed', 'true');
+    act(() => store().setGizmo('rotate'));
+    expect(within(group).getByRole('button', { name: 'Rotate' })).toHaveAttribute('aria-pressed', 'true');
+    await user.click(within(group).getByRole('button', { name: 'Scale' }));
+    expect(store().gizmo).toBe('scale');
+  });
+
+  it('offers Reset view in the orbit view only, and orbits slower than OrbitControls by default', async () => {
+    const user = userEvent.setup();
+    render(<Preview3D />);
+    expect(screen.queryByRole('button', { name: 'Reset view' })).toBeNull();
+    await user.click(screen.getByRole('button', { name: 'Orbit view' }));
+    expect(screen.getByRole('button', { name: 'Reset view' })).toBeInTheDocument();
+    for (const speed of Object.values(ORBIT_SPEEDS)) expect(speed).toBeLessThan(1);
   });
 
   it('opens the live connection only while the Ray traced view is shown', () => {

@@ -2,8 +2,10 @@ import { useEffect, useRef, useState } from 'react';
 import { meshCache } from '../hooks/useMeshes';
 import type { SocketFactory } from '../live/liveSession';
 import { RayTracedView } from '../live/RayTracedView';
+import { HandleModes } from './HandleModes';
 import { sceneToThree } from '../model/toThree';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
+import { handleCallbacks, handlesFor, selectionBall } from './previewSelection';
 import { PreviewEngine, type PreviewMode } from './previewEngine';
 
 /** What the preview shows: one of the three.js cameras, or the server's ray-traced frames. */
@@ -25,7 +27,8 @@ export interface Preview3DProps {
  * around with the mouse and shows the render camera's frustum. Frames are drawn on demand: the
  * store is followed by a subscription, never by per-frame React state. "Ray traced" shows the
  * server's live render instead (its socket open only while that view is shown); the three.js
- * scene is not updated meanwhile.
+ * scene is not updated meanwhile. A click selects what is under it; the selection carries move,
+ * rotate or scale handles (W, E, R), one drag being one undo step; F frames the selection.
  */
 export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Preview3DProps) {
   const host = useRef<HTMLDivElement>(null);
@@ -40,7 +43,7 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
     if (!element) return;
     let preview: PreviewEngine;
     try {
-      preview = new PreviewEngine();
+      preview = new PreviewEngine(handleCallbacks);
     } catch (error) {
       setFailure(error instanceof Error ? error.message : String(error));
       return;
@@ -50,12 +53,20 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
     const update = () => {
       if (viewRef.current === 'raytraced') return;
       const state = useSceneStore.getState();
-      preview.update(sceneToThree(selectDisplayScene(state), state.selection, (mesh) => meshCache.get(mesh)));
+      const scene = selectDisplayScene(state);
+      preview.update(sceneToThree(scene, state.selection, (mesh) => meshCache.get(mesh)));
+      const handles = handlesFor(scene, state.selection);
+      preview.setHandles(handles?.pose ?? null, state.gizmo, handles?.modes ?? []);
     };
     push.current = update;
     update();
     const unsubscribe = useSceneStore.subscribe((state, old) => {
-      if (state.scene !== old.scene || state.preview !== old.preview || state.selection !== old.selection) update();
+      if (state.scene !== old.scene || state.preview !== old.preview || state.selection !== old.selection || state.gizmo !== old.gizmo) update();
+      if (state.frameRequest !== old.frameRequest) {
+        const ball = selectionBall(state.scene, state.selection, (mesh) => meshCache.get(mesh));
+        if (viewRef.current !== 'orbit') setView('orbit');
+        preview.frameOn(ball.center, ball.radius);
+      }
     });
     // A mesh file that finishes loading appears without waiting for the next edit.
     const unsubscribeMeshes = meshCache.subscribe(update);
@@ -90,11 +101,17 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
     <section className="preview3d" aria-label="3D preview">
       <header className="panel-header">
         <h2>3D preview</h2>
+        {view !== 'raytraced' && <HandleModes />}
         <div className="segmented" role="group" aria-label="Preview camera">
           {viewButton('camera', 'Camera view', 'See exactly what the render camera frames')}
           {viewButton('orbit', 'Orbit view', 'Look around freely: drag to orbit, wheel to zoom, right-drag to pan')}
           {viewButton('raytraced', 'Ray traced', 'See the server’s render, refined live as you edit')}
         </div>
+        {view === 'orbit' && (
+          <button type="button" className="small" onClick={() => engine.current?.resetOrbit()} title="Look through the render camera again">
+            Reset view
+          </button>
+        )}
       </header>
       {view === 'raytraced' && shown && <RayTracedView onFieldErrors={onFieldErrors} socketFactory={socketFactory} />}
       <div className="preview3d__viewport" ref={host} data-testid="preview-3d" data-mode={view} hidden={view === 'raytraced'}>

@@ -36,9 +36,11 @@ export function createMaterial(d: MaterialDescriptor, doubleSided: boolean): Mat
         transmission: d.transmission,
         ior: d.ior,
         roughness: d.roughness,
-        thickness: 0.5,
-        transparent: true,
-        opacity: d.opacity,
+        // a solid of glass: light bends through its whole depth (in the shared geometries' own units,
+        // the unit sphere's diameter); with 1 the sphere barely bent what was behind it
+        thickness: 2,
+        attenuationColor: color,
+        specularIntensity: 1,
         side,
       });
   }

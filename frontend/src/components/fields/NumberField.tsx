@@ -1,4 +1,4 @@
-import { useEffect, useId, useState, type KeyboardEvent } from 'react';
+import { useEffect, useId, useState, type CSSProperties, type KeyboardEvent } from 'react';
 import { FieldErrorMessage, useFieldError } from '../fieldErrors';
 
 /** Props of {@link NumberField}. */
@@ -80,6 +80,7 @@ export function NumberField(props: NumberFieldProps) {
         aria-invalid={message || invalid ? true : undefined}
         aria-describedby={message ? `${id}-error` : undefined}
         data-field={path}
+        style={compact ? ({ '--chars': Math.max(4, draft.length) } as CSSProperties) : undefined}
         onChange={(event) => {
           setDraft(event.target.value);
           // A spinner click or arrow key (no inputType) commits at once; typing waits for Enter/blur.

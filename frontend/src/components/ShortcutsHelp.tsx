@@ -1,0 +1,61 @@
+import { useEffect, useRef } from 'react';
+
+/** Every keyboard shortcut of the editor, in the words of the help panel. */
+export const SHORTCUTS: [string, string][] = [
+  ['Ctrl+Z', 'Undo'],
+  ['Ctrl+Shift+Z, Ctrl+Y', 'Redo'],
+  ['Ctrl+C / Ctrl+V', 'Copy / paste the selection as scene JSON (also between tabs)'],
+  ['Ctrl+D', 'Duplicate the selection'],
+  ['Delete, Backspace', 'Delete the selection'],
+  ['Escape', 'Clear the selection; close a menu or this panel'],
+  ['W / E / R', 'Move / rotate / scale handles in the 3D preview'],
+  ['F', 'Frame the selection (or the whole scene) in the 3D orbit view'],
+  ['Arrow keys', 'Nudge the focused thing in a top or side view by one grid step'],
+  ['F2', 'Rename the focused object in the list'],
+  ['Ctrl+Enter', 'Apply the JSON tab'],
+  ['?', 'Show or hide this panel'],
+];
+
+/** Props of {@link ShortcutsHelp}. */
+export interface ShortcutsHelpProps {
+  onClose: () => void;
+}
+
+/** The `?` panel: a dialog listing the keyboard shortcuts; Escape, the button or `?` closes it. */
+export function ShortcutsHelp({ onClose }: ShortcutsHelpProps) {
+  const close = useRef<HTMLButtonElement>(null);
+  useEffect(() => {
+    close.current?.focus();
+    const onKey = (event: KeyboardEvent) => {
+      if (event.key === 'Escape') {
+        event.preventDefault();
+        event.stopPropagation();
+        onClose();
+      }
+    };
+    document.addEventListener('keydown', onKey, true);
+    return () => document.removeEventListener('keydown', onKey, true);
+  }, [onClose]);
+  return (
+    <div className="shortcuts-help" role="dialog" aria-modal="true" aria-labelledby="shortcuts-title" onClick={onClose}>
+      <div className="shortcuts-help__panel" onClick={(event) => event.stopPropagation()}>
+        <header>
+          <h2 id="shortcuts-title">Keyboard shortcuts</h2>
+          <button ref={close} type="button" className="small" onClick={onClose}>
+            Close
+          </button>
+        </header>
+        <dl>
+          {SHORTCUTS.map(([keys, what]) => (
+            <div key={keys}>
+              <dt>
+                <kbd>{keys}</kbd>
+              </dt>
+              <dd>{what}</dd>
+            </div>
+          ))}
+        </dl>
+      </div>
+    </div>
+  );
+}

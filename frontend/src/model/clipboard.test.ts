@@ -1,0 +1,43 @@
+import { describe, expect, it } from 'vitest';
+import { copyText, pasteText } from './clipboard';
+import { validateScene } from './validate';
+import type { Scene } from './types';
+
+const SCENE: Scene = {
+  lights: [{ type: 'point', position: [1, 5, 1] }],
+  objects: [
+    { type: 'sphere', name: 'ball', center: [1, 1, 0], radius: 1, material: { type: 'glass', ior: 1.3 } },
+    { type: 'plane' },
+  ],
+};
+
+describe('copy and paste as scene JSON', () => {
+  it('copies the selection as a scene file of its own', () => {
+    const text = copyText(SCENE, { kind: 'object', index: 0 })!;
+    const parsed = JSON.parse(text);
+    expect(validateScene(parsed).ok).toBe(true);
+    expect(parsed.objects).toEqual([SCENE.objects[0]]);
+    expect(JSON.parse(copyText(SCENE, { kind: 'light', index: 0 })!)).toMatchObject({ lights: SCENE.lights, objects: [] });
+    expect(copyText(SCENE, { kind: 'camera' })).toBeNull();
+    expect(copyText(SCENE, null)).toBeNull();
+  });
+
+  it('pastes into its own scene beside the original, and into another scene where it was', () => {
+    const text = copyText(SCENE, { kind: 'object', index: 0 })!;
+    const again = pasteText(SCENE, text)!;
+    expect(again.scene.objects).toHaveLength(3);
+    expect(again.scene.objects[2]).toEqual({ ...SCENE.objects[0], center: [1.5, 1, 0.5] });
+    expect(again.selection).toEqual({ kind: 'object', index: 2 });
+    const other = pasteText({ objects: [] }, text)!;
+    expect(other.scene.objects).toEqual([SCENE.objects[0]]);
+    const light = pasteText(SCENE, copyText(SCENE, { kind: 'light', index: 0 })!)!;
+    expect(light.scene.lights).toEqual([SCENE.lights![0], { type: 'point', position: [1.5, 5, 1.5] }]);
+    expect(light.selection).toEqual({ kind: 'light', index: 1 });
+  });
+
+  it('leaves text that is no scene alone', () => {
+    expect(pasteText(SCENE, 'hello')).toBeNull();
+    expect(pasteText(SCENE, '{"objects": 3}')).toBeNull();
+    expect(pasteText(SCENE, '{"objects": []}')).toBeNull();
+  });
+});
