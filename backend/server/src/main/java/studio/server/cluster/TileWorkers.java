@@ -186,10 +186,19 @@ final class TileWorkers implements AutoCloseable {
                         }
                     }
                 }
-                // not waited for: the next tile starts now; if this member dies first, its claim is still there
+                // not waited for: the next tile starts now; if this member dies first, its claim is still there.
+                // The claim goes whether the put succeeded or not: a claim of a live member that outlives a lost
+                // put would hide the tile from its coordinator for good (it re-queues only tiles neither done
+                // nor claimed by a live member), while without it the tile is queued again within a stall's time.
                 results.setAsync(task.index(), new TileResult(task.index(), task.attempt(), rgb, worker.rays() - rays,
                         worker.samples() - samples, nonFinite, address, null))
-                        .thenRun(() -> claims.deleteAsync(task.index()));
+                        .whenComplete((ignored, failure) -> {
+                            if (failure != null && running && member.getLifecycleService().isRunning()) {
+                                log.warn("could not report tile {} of job {}: {}", task.index(), task.jobId(),
+                                        failure.toString());
+                            }
+                            claims.deleteAsync(task.index());
+                        });
             } catch (RenderCancelledException e) {
                 handBack(task, claims); // shutting down: another member takes it
             } catch (MemoryBusyException e) {

@@ -5,13 +5,17 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import java.util.UUID;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.Executors;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+
+import com.hazelcast.map.MapInterceptor;
 
 import studio.engine.render.Renderer;
 import studio.server.Await;
@@ -185,6 +189,58 @@ class ClusterJobsTest {
         JobStatus end = awaitFinal(members.get(1), id);
         assertThat(end.state()).isEqualTo(JobState.FAILED);
         assertThat(end.error()).isEqualTo("the tile at 128,96 failed 3 times; the last time: a worker failed");
+    }
+
+    @Test
+    void aTileWhoseResultIsLostIsRenderedAgain() throws Exception {
+        start(2);
+        String id = submit(members.get(0));
+        // the last tile, rendered last: its first result put fails, as one may while partitions move
+        members.get(1).hazelcast.<Integer, TileResult>getMap(ClusterMaps.tiles(id))
+                .addInterceptor(new FirstPutFails(id, TILES - 1));
+
+        JobStatus end = awaitFinal(members.get(1), id);
+
+        assertThat(end.state()).isEqualTo(JobState.DONE);
+        assertThat(FirstPutFails.failed).contains(id);
+        assertThat(members.get(1).jobs.image(id).bytes()).isEqualTo(oneMachine);
+    }
+
+    /** Fails the first put of one tile's result (the members share this JVM, hence the static record). */
+    record FirstPutFails(String jobId, int index) implements MapInterceptor {
+
+        static final Set<String> failed = ConcurrentHashMap.newKeySet();
+
+        @Override
+        public Object interceptPut(Object oldValue, Object newValue) {
+            if (newValue instanceof TileResult result && result.index() == index && !result.failed()
+                    && failed.add(jobId)) {
+                throw new IllegalStateException("the put was lost");
+            }
+            return newValue;
+        }
+
+        @Override
+        public Object interceptGet(Object value) {
+            return value;
+        }
+
+        @Override
+        public void afterGet(Object value) {
+        }
+
+        @Override
+        public Object interceptRemove(Object removedValue) {
+            return removedValue;
+        }
+
+        @Override
+        public void afterPut(Object value) {
+        }
+
+        @Override
+        public void afterRemove(Object value) {
+        }
     }
 
     private static JobListener recorder(List<Object> events) {
