@@ -4,7 +4,7 @@ import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { CheckboxField } from './fields/CheckboxField';
 import { ColorField } from './fields/ColorField';
 import { NumberField } from './fields/NumberField';
-import { TextField } from './fields/TextField';
+import { NameField } from './fields/NameField';
 import { VectorField } from './fields/VectorField';
 import { labelOf } from './labels';
 
@@ -27,14 +27,7 @@ export function InspectorLight({ index }: InspectorLightProps) {
   return (
     <section className="inspector-section" aria-label={`${labelOf(light, index)} properties`} data-testid="inspector-light">
       <h3>{labelOf(light, index)}</h3>
-      <TextField
-        label="Name"
-        path={`${path}.name`}
-        value={light.name ?? ''}
-        maxLength={200}
-        hint="Your name for it, kept in the file (the renderer ignores it); empty for none"
-        onCommit={(name) => setField(index, 'name', name.trim() === '' ? undefined : name.trim())}
-      />
+      <NameField path={`${path}.name`} value={light.name} onCommit={(name) => setField(index, 'name', name)} />
       <VectorField
         label="Light position"
         path={`${path}.position`}

@@ -6,7 +6,7 @@ import { InspectorMaterial } from './InspectorMaterial';
 import { InspectorMesh } from './InspectorMesh';
 import { NumberField } from './fields/NumberField';
 import { VectorField } from './fields/VectorField';
-import { TextField } from './fields/TextField';
+import { NameField } from './fields/NameField';
 import { labelOf, OBJECT_HINTS } from './labels';
 
 /** Props of {@link InspectorObject}. */
@@ -44,14 +44,7 @@ export function InspectorObject({ index }: InspectorObjectProps) {
   return (
     <section className="inspector-section" aria-label={`${labelOf(object, index)} properties`} data-testid="inspector-object">
       <h3 title={OBJECT_HINTS[r.type]}>{labelOf(object, index)}</h3>
-      <TextField
-        label="Name"
-        path={`${path}.name`}
-        value={object.name ?? ''}
-        maxLength={200}
-        hint="Your name for it, kept in the file (the renderer ignores it); empty for none"
-        onCommit={(name) => setField(index, 'name', name.trim() === '' ? undefined : name.trim())}
-      />
+      <NameField path={`${path}.name`} value={object.name} onCommit={(name) => setField(index, 'name', name)} />
       {r.type === 'sphere' && (
         <>
           {vector('center', 'Center', r.center, 'Centre of the sphere (metres)')}

@@ -175,8 +175,13 @@ class ClusterJobsTest {
         assertThat(members.get(2).jobs.image(id).bytes()).isEqualTo(oneMachine);
     }
 
+    /**
+     * The outcome of a graceful leave: the job ends done with one machine's bytes. It does not tell
+     * the worker's hand-back from the owner re-queueing a departed member's tiles (it passes without
+     * the hand-back too); a test of the hand-back itself would watch the queue while the member drains.
+     */
     @Test
-    void aWorkerLeavingGracefullyHandsItsTilesBack() throws Exception {
+    void aWorkerLeavingGracefullyLosesNoTile() throws Exception {
         start(2);
         TestMember accepting = members.get(0), worker = members.get(1);
         String id = submit(accepting);
