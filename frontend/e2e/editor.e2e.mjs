@@ -592,6 +592,59 @@ try {
     await help.waitFor({ state: 'detached' });
   });
 
+  await step('multi-select: Shift-click and a Shift-drag box pick several; one drag moves them all, Delete removes them, each one undo step', async () => {
+    await openScene(page, {
+      name: 'multi',
+      camera: { position: [0, 2, 8], lookAt: [0, 0.5, -3] },
+      objects: [
+        { type: 'sphere', name: 'left', center: [-2, 0.5, 0], radius: 0.5 },
+        { type: 'sphere', name: 'middle', center: [0, 0.5, 0], radius: 0.5 },
+        { type: 'box', name: 'right', center: [2, 0.5, 0], size: [1, 1, 1] },
+        { type: 'plane' },
+      ],
+    });
+    const top = page.getByTestId('top-view');
+    const glyph = (i) => top.getByTestId(`object-${i}`);
+    const centreOf = async (i) => {
+      const b = await glyph(i).locator('circle, polygon').first().boundingBox();
+      return [b.x + b.width / 2, b.y + b.height / 2];
+    };
+    await glyph(0).locator('circle').first().click();
+    await glyph(1).locator('circle').first().click({ modifiers: ['Shift'] });
+    await page.getByText('2 selected').waitFor();
+    expect((await glyph(2).getAttribute('data-selected')) === 'false', 'the box was selected without being picked');
+    // drag the middle sphere: both spheres move by the same amount, the box stays
+    const [x, y] = await centreOf(1);
+    await page.mouse.move(x + 4, y + 4);
+    await page.mouse.down();
+    for (let i = 1; i <= 8; i++) await page.mouse.move(x + 4 + 5 * i, y + 4);
+    await page.mouse.up();
+    let scene = await sceneOf(page);
+    const dx = scene.objects[1].center[0] - 0;
+    expect(dx > 0.3, `the dragged sphere did not move: ${JSON.stringify(scene.objects[1].center)}`);
+    expect(Math.abs(scene.objects[0].center[0] - (-2 + dx)) < 1e-9, `the other selected sphere did not move with it: ${JSON.stringify(scene.objects[0].center)}`);
+    expect(scene.objects[2].center[0] === 2, 'the box moved without being selected');
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => (await sceneOf(page)).objects[0].center[0] === -2 && (await sceneOf(page)).objects[1].center[0] === 0, 'one undo did not put both spheres back');
+    // a Shift-drag box around the middle sphere and the box adds them; then Delete removes all three
+    const [mx, my] = await centreOf(1);
+    const [bx, by] = await centreOf(2);
+    await page.mouse.move(mx - 30, my - 40);
+    await page.keyboard.down('Shift');
+    await page.mouse.down();
+    await page.mouse.move((mx + bx) / 2, my, { steps: 4 });
+    await top.getByTestId('marquee').waitFor();
+    await page.mouse.move(bx + 30, by + 40, { steps: 4 });
+    await page.mouse.up();
+    await page.keyboard.up('Shift');
+    await page.getByText('3 selected').waitFor();
+    await page.screenshot({ path: `${out}multi-select.png` });
+    await page.keyboard.press('Delete');
+    await until(async () => (await sceneOf(page)).objects.length === 1, 'Delete did not remove the three selected objects');
+    await page.keyboard.press('Control+z');
+    await until(async () => (await sceneOf(page)).objects.length === 4, 'one undo did not bring the three back');
+  });
+
   await step('no uncaught errors in the page', async () => {
     expect(pageErrors.length === 0, `page errors: ${pageErrors.join('\n')}`);
   });

@@ -4,6 +4,7 @@ import { InspectorLight } from './InspectorLight';
 import { InspectorObject } from './InspectorObject';
 import { InspectorScene } from './InspectorScene';
 import { SceneOutline } from './SceneOutline';
+import { SelectionSummary } from './SelectionSummary';
 
 /**
  * The right-hand column: what is in the scene, the selected object's or light's fields,
@@ -14,6 +15,7 @@ export function Inspector() {
   return (
     <aside className="inspector" aria-label="Inspector">
       <SceneOutline />
+      <SelectionSummary />
       {selection?.kind === 'object' && <InspectorObject key={`o${selection.index}`} index={selection.index} />}
       {selection?.kind === 'light' && <InspectorLight key={`l${selection.index}`} index={selection.index} />}
       {selection === null && <p className="hint">Click an object, light or the camera in a view (or in the list above) to edit it.</p>}

@@ -1,19 +1,22 @@
 import { useState } from 'react';
 import { resolveMaterial, sceneLights } from '../model/defaults';
 import { idOf } from '../model/identity';
-import { sameSelection, type Selection } from '../model/selection';
+import { inItems, sameSelection, type Selection } from '../model/selection';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { useMeshLookup } from '../hooks/useMeshes';
 import { labelOf, MATERIAL_LABELS, meshName } from './labels';
 
 /**
  * A clickable list of everything in the scene: objects and lights (by name, or kind and stable
- * number), the camera and its target. Double-click (or F2 on) an object or light to rename it.
+ * number), the camera and its target. Shift/Ctrl-click adds an object or light to the selection
+ * (or takes it out). Double-click (or F2 on) an object or light to rename it.
  */
 export function SceneOutline() {
   const scene = useSceneStore(selectDisplayScene);
   const selection = useSceneStore((s) => s.selection);
+  const selectedItems = useSceneStore((s) => s.selectedItems);
   const select = useSceneStore((s) => s.select);
+  const toggleSelect = useSceneStore((s) => s.toggleSelect);
   const meshes = useMeshLookup();
   const [renaming, setRenaming] = useState<string | null>(null);
   const rename = (target: Selection, name: string) => {
@@ -24,7 +27,7 @@ export function SceneOutline() {
     setRenaming(null);
   };
   const item = (key: string, label: string, target: Selection, detail?: string, name?: string) => {
-    const selected = sameSelection(selection, target);
+    const selected = sameSelection(selection, target) || inItems(selectedItems, target);
     if (renaming === key) {
       return (
         <li key={key}>
@@ -50,8 +53,11 @@ export function SceneOutline() {
           type="button"
           className={selected ? 'outline-item is-selected' : 'outline-item'}
           aria-pressed={selected}
-          title={renamable ? `Select ${label} (double-click or F2 to rename)` : `Select ${label}`}
-          onClick={() => select(selected ? null : target)}
+          title={renamable ? `Select ${label} (Shift or Ctrl to add to the selection; double-click or F2 to rename)` : `Select ${label}`}
+          onClick={(e) => {
+            if (e.shiftKey || e.ctrlKey || e.metaKey) toggleSelect(target);
+            else select(selected && selectedItems.length <= 1 ? null : target);
+          }}
           onDoubleClick={() => renamable && setRenaming(key)}
           onKeyDown={(e) => e.key === 'F2' && renamable && setRenaming(key)}
         >

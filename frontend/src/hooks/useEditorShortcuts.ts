@@ -45,7 +45,7 @@ export function useEditorShortcuts(onHelp?: () => void): void {
       else if (mod && key === 'c' && !event.shiftKey && !hasTextSelection()) {
         // Also written here, not only in the copy event: not every browser turns Ctrl+C on a
         // button into a copy event (headless Chromium does not). Writing needs no permission.
-        const text = copyText(s.scene, s.selection);
+        const text = copyText(s.scene, s.selection, s.selectedItems);
         if (text !== null) void navigator.clipboard?.writeText(text).catch(() => {});
         handled = false; // the copy event still follows where the browser sends one
       }
@@ -62,7 +62,7 @@ export function useEditorShortcuts(onHelp?: () => void): void {
     const onCopy = (event: ClipboardEvent) => {
       if (inField(event.target) || hasTextSelection()) return;
       const s = useSceneStore.getState();
-      const text = copyText(s.scene, s.selection);
+      const text = copyText(s.scene, s.selection, s.selectedItems);
       if (text === null || !event.clipboardData) return;
       event.clipboardData.setData('text/plain', text);
       event.preventDefault();

@@ -22,6 +22,20 @@ describe('copy and paste as scene JSON', () => {
     expect(copyText(SCENE, null)).toBeNull();
   });
 
+  it('copies a multi-selection as one scene file, and pastes it back all selected', () => {
+    const items = [{ kind: 'light' as const, index: 0 }, { kind: 'object' as const, index: 1 }, { kind: 'object' as const, index: 0 }];
+    const parsed = JSON.parse(copyText(SCENE, { kind: 'object', index: 0 }, items)!);
+    expect(validateScene(parsed).ok).toBe(true);
+    expect(parsed.objects).toEqual([SCENE.objects[1], SCENE.objects[0]]);
+    expect(parsed.lights).toEqual(SCENE.lights);
+    const pasted = pasteText(SCENE, JSON.stringify(parsed))!;
+    expect(pasted.items).toEqual([
+      { kind: 'object', index: 2 },
+      { kind: 'object', index: 3 },
+      { kind: 'light', index: 1 },
+    ]);
+  });
+
   it('pastes into its own scene beside the original, and into another scene where it was', () => {
     const text = copyText(SCENE, { kind: 'object', index: 0 })!;
     const again = pasteText(SCENE, text)!;

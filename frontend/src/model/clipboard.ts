@@ -6,13 +6,24 @@
 import { FORMAT_VERSION, resolveObject, sceneLights } from './defaults';
 import { anchorField, DUPLICATE_OFFSET } from './edits';
 import { objectAnchor } from './projection';
-import type { Selection } from './selection';
+import type { SceneItem, Selection } from './selection';
 import type { Scene, SceneObject, Vec3 } from './types';
 import { parseScene } from './validate';
 import { add, vecEquals } from './vec';
 
-/** The selection as the text of a scene file, or null when nothing copyable is selected. */
-export function copyText(scene: Scene, selection: Selection): string | null {
+/**
+ * The selection as the text of a scene file, or null when nothing copyable is selected: every
+ * selected object and light when several are (`items`), else the one selected.
+ */
+export function copyText(scene: Scene, selection: Selection, items: readonly SceneItem[] = []): string | null {
+  if (items.length > 1) {
+    const lights = sceneLights(scene);
+    const objects = items.flatMap((i) => (i.kind === 'object' && scene.objects[i.index] ? [scene.objects[i.index]] : []));
+    const picked = items.flatMap((i) => (i.kind === 'light' && lights[i.index] ? [lights[i.index]] : []));
+    if (objects.length + picked.length > 0) {
+      return JSON.stringify({ version: FORMAT_VERSION, ...(picked.length > 0 ? { lights: picked } : {}), objects }, null, 2);
+    }
+  }
   if (selection?.kind === 'object' && scene.objects[selection.index]) {
     return JSON.stringify({ version: FORMAT_VERSION, objects: [scene.objects[selection.index]] }, null, 2);
   }
@@ -21,10 +32,11 @@ export function copyText(scene: Scene, selection: Selection): string | null {
   return null;
 }
 
-/** What a paste adds: the scene with the pasted things, and the first of them to select. */
+/** What a paste adds: the scene with the pasted things, and them to select (the first as primary). */
 export interface Pasted {
   scene: Scene;
   selection: Selection;
+  items: SceneItem[];
 }
 
 /**
@@ -45,7 +57,11 @@ export function pasteText(scene: Scene, text: string): Pasted | null {
   const next: Scene = { ...scene, objects: [...scene.objects, ...objects] };
   if (lightsIn.length > 0) next.lights = [...lights, ...lightsIn.map((l) => ({ ...l, position: l.position && lights.some((m) => m.position && vecEquals(m.position, l.position!)) ? add(l.position, DUPLICATE_OFFSET) : l.position }))];
   const selection: Selection = objects.length > 0 ? { kind: 'object', index: scene.objects.length } : { kind: 'light', index: lights.length };
-  return { scene: next, selection };
+  const items: SceneItem[] = [
+    ...objects.map((_, k) => ({ kind: 'object' as const, index: scene.objects.length + k })),
+    ...lightsIn.map((_, k) => ({ kind: 'light' as const, index: lights.length + k })),
+  ];
+  return { scene: next, selection, items };
 }
 
 function aside(object: SceneObject, taken: Vec3[]): SceneObject {

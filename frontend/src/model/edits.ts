@@ -88,27 +88,37 @@ export function removeLight(scene: Scene, index: number): Scene {
 export function duplicateObject(scene: Scene, index: number): Scene {
   const original = scene.objects[index];
   if (!original) return scene;
+  const objects = [...scene.objects];
+  objects.splice(index + 1, 0, copyAside(original));
+  return { ...scene, objects };
+}
+
+/** A copy of an object moved aside so both stay visible (a plane half a metre along its normal). */
+export function copyAside(original: SceneObject): SceneObject {
   const copy = structuredClone(original);
   const resolved = resolveObject(original);
   if (copy.type === 'plane' && resolved.type === 'plane') {
     // A plane moved sideways is the same plane: move it half a metre along its normal.
     copy.point = add(resolved.point, scale(normalize(resolved.normal), 0.5));
+    return copy;
   }
-  const moved = copy.type === 'plane' ? copy : ({ ...copy, [anchorField(copy.type)]: add(objectAnchor(resolved), DUPLICATE_OFFSET) } as SceneObject);
-  const objects = [...scene.objects];
-  objects.splice(index + 1, 0, moved);
-  return { ...scene, objects };
+  return { ...copy, [anchorField(copy.type)]: add(objectAnchor(resolved), DUPLICATE_OFFSET) } as SceneObject;
 }
 
 export function duplicateLight(scene: Scene, index: number): Scene {
   const lights = sceneLights(scene);
   const original = lights[index];
   if (!original) return scene;
+  const next = [...lights];
+  next.splice(index + 1, 0, lightAside(original));
+  return { ...scene, lights: next };
+}
+
+/** A copy of a light moved aside. */
+export function lightAside(original: PointLight): PointLight {
   const copy = structuredClone(original);
   copy.position = add(original.position ?? newLight().position!, DUPLICATE_OFFSET);
-  const next = [...lights];
-  next.splice(index + 1, 0, copy);
-  return { ...scene, lights: next };
+  return copy;
 }
 
 /** Sets one field of an object (its geometry, or the whole `material`). */

@@ -106,6 +106,12 @@ describe('sceneToThree', () => {
     ],
   };
 
+  it('marks every object and light of a multi-selection', () => {
+    const d = sceneToThree(scene, { kind: 'object', index: 1 }, undefined, [{ kind: 'object', index: 3 }, { kind: 'light', index: 1 }, { kind: 'object', index: 1 }]);
+    expect(d.meshes.map((m) => m.selected)).toEqual([false, true, false, true, false, false]);
+    expect(d.lights.map((l) => l.selected)).toEqual([false, true]);
+  });
+
   it('maps geometry, materials, lights, background and ambient', () => {
     const d = sceneToThree(scene, { kind: 'object', index: 1 });
     expect(d.background).toBe('#112233');

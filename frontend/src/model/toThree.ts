@@ -7,7 +7,7 @@ import { BufferAttribute, BufferGeometry, PerspectiveCamera, Vector3 } from 'thr
 import { resolveScene } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, type ParsedObj } from './obj';
-import type { Selection } from './selection';
+import { inItems, type SceneItem, type Selection } from './selection';
 import type { ResolvedMaterial, ResolvedObject, Scene, Vec3 } from './types';
 import { cross, dot, length, normalize, sub } from './vec';
 
@@ -182,10 +182,12 @@ export function meshGeometry(parsed: ParsedObj): BufferGeometry {
 const toRadians = (d: number) => (d * Math.PI) / 180;
 
 /**
- * The whole preview scene, with the selected object or light marked. Meshes are drawn with the
+ * The whole preview scene, with the selected objects and lights marked (the primary `selection`
+ * and every one of a multi-selection, `items`). Meshes are drawn with the
  * triangles `meshes` knows (none by default); a mesh still loading or broken is left out.
  */
-export function sceneToThree(scene: Scene, selection: Selection = null, meshes: MeshLookup = NO_MESHES): ThreeSceneDescriptor {
+export function sceneToThree(scene: Scene, selection: Selection = null, meshes: MeshLookup = NO_MESHES, items: readonly SceneItem[] = []): ThreeSceneDescriptor {
+  const isSelected = (kind: 'object' | 'light', index: number) => (selection?.kind === kind && selection.index === index) || inItems(items, { kind, index });
   const r = resolveScene(scene);
   const cam = r.camera;
   const targetDistance = Math.max(length(sub(cam.lookAt, cam.position)), 1e-9);
@@ -232,7 +234,7 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
       near: (targetDistance / 1000) * Math.min(1, 2 * Math.cos((Math.min(cam.fov, 179.99) / 2) * (Math.PI / 180))),
       far: extent * 4,
     },
-    meshes: r.objects.flatMap((o, i) => (shown(o) ? (meshOf(o, i, selection?.kind === 'object' && selection.index === i, cam.position, planeSize(extent * 4, cam.fov, r.image.width / r.image.height), meshes) ?? []) : [])),
+    meshes: r.objects.flatMap((o, i) => (shown(o) ? (meshOf(o, i, isSelected('object', i), cam.position, planeSize(extent * 4, cam.fov, r.image.width / r.image.height), meshes) ?? []) : [])),
     lights: r.lights.flatMap((l, i) =>
       near(l.position)
         ? [{
@@ -241,7 +243,7 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
             color: l.color,
             intensity: l.intensity * LIGHT_SCALE,
             decay: l.falloff ? 2 : 0,
-            selected: selection?.kind === 'light' && selection.index === i,
+            selected: isSelected('light', i),
           }]
         : [],
     ),

@@ -119,6 +119,63 @@ describe('sceneStore', () => {
     expect(store().selection).toBeNull();
   });
 
+  it('moves, duplicates and deletes a multi-selection, each as one undo step', () => {
+    const start = store().scene;
+    store().select({ kind: 'object', index: 0 });
+    store().toggleSelect({ kind: 'object', index: 1 });
+    store().toggleSelect({ kind: 'light', index: 0 });
+    expect(store().selectedItems).toHaveLength(3);
+    expect(store().selection).toEqual({ kind: 'light', index: 0 });
+    // a drag of the group: many previews, one entry
+    for (let i = 1; i <= 6; i++) store().dragItemsBy([i / 6, 0, 0]);
+    expect(store().past).toHaveLength(0);
+    store().commitPreview();
+    expect(store().past).toHaveLength(1);
+    const moved = store().scene;
+    expect(moved.lights![0].position![0]).toBe(start.lights![0].position![0] + 1);
+    expect(moved.objects[2]).toEqual(start.objects[2]);
+    store().nudgeSelected([0, 0, -0.5]);
+    expect(store().past).toHaveLength(2);
+    store().duplicateSelected();
+    expect(store().past).toHaveLength(3);
+    expect(store().scene.objects).toHaveLength(start.objects.length + 2);
+    expect(store().selectedItems).toEqual([
+      { kind: 'object', index: start.objects.length },
+      { kind: 'object', index: start.objects.length + 1 },
+      { kind: 'light', index: start.lights!.length },
+    ]);
+    store().deleteSelected();
+    expect(store().past).toHaveLength(4);
+    expect(store().scene.objects).toHaveLength(start.objects.length);
+    expect(store().selectedItems).toEqual([]);
+    store().undo();
+    store().undo();
+    store().undo();
+    store().undo();
+    expect(store().scene).toEqual(start);
+  });
+
+  it('keeps only the selected items that still exist after undo', () => {
+    store().addObject('box');
+    const box = { kind: 'object' as const, index: store().scene.objects.length - 1 };
+    store().toggleSelect({ kind: 'object', index: 0 });
+    expect(store().selectedItems).toEqual([box, { kind: 'object', index: 0 }]);
+    store().undo();
+    expect(store().selectedItems).toEqual([{ kind: 'object', index: 0 }]);
+  });
+
+  it('selecting one thing, the camera or nothing ends a multi-selection', () => {
+    store().select({ kind: 'object', index: 0 });
+    store().toggleSelect({ kind: 'object', index: 1 });
+    store().select({ kind: 'camera' });
+    expect(store().selectedItems).toEqual([]);
+    store().toggleSelect({ kind: 'object', index: 1 });
+    store().selectBox([{ kind: 'object', index: 0 }], true);
+    expect(store().selectedItems).toEqual([{ kind: 'object', index: 1 }, { kind: 'object', index: 0 }]);
+    store().select(null);
+    expect(store().selectedItems).toEqual([]);
+  });
+
   it('materialises the default light when a scene without lights gets one more', () => {
     store().loadScene({ objects: [] });
     store().addLight();

@@ -11,7 +11,8 @@ import { roundEdit } from '../model/rounding';
 import { sameJson } from '../model/sameJson';
 import * as edits from '../model/edits';
 import type { GizmoMode } from '../model/gizmo';
-import type { DragTarget, Selection } from '../model/selection';
+import { nudgeItems, removeItems, duplicateItems } from '../model/groupEdits';
+import { isSceneItem, selectFound, selectOne, toggleItem, type DragTarget, type SceneItem, type Selection } from '../model/selection';
 import { STARTER_SCENE } from '../model/starterScene';
 import type {
   CameraSettings,
@@ -58,7 +59,14 @@ export interface SceneState {
   future: Scene[];
   /** The scene while a drag or a field edit is under way; null otherwise. Never in history. */
   preview: Scene | null;
+  /** The primary selection: what the inspector edits and the 3D handles hold. */
   selection: Selection;
+  /**
+   * Every object and light selected (Shift/Ctrl-click, box select), the primary among them; moving,
+   * deleting, duplicating and copying act on all of them, each as one undo step. Empty when the
+   * camera, its target or nothing is selected.
+   */
+  selectedItems: SceneItem[];
   views: Record<ViewKind, ViewState>;
   snap: boolean;
   /** Grid spacing in metres (also the snapping step). */
@@ -98,7 +106,16 @@ export interface SceneState {
   setLightField<K extends keyof PointLight>(index: number, field: K, value: PointLight[K]): void;
   /** Moves an object, light, the camera or its target (one history entry). */
   moveTarget(target: DragTarget, to: Vec3): void;
+  /** Selects this alone (a plain click). */
   select(selection: Selection): void;
+  /** Shift/Ctrl-click: adds an object or light to the selection, or takes it out. */
+  toggleSelect(selection: Selection): void;
+  /** Box select: selects what was found, added to the selection with `add`. */
+  selectBox(found: SceneItem[], add: boolean): void;
+  /** Drag step of a multi-selection: previews every selected item moved by the same offset; not history. */
+  dragItemsBy(by: Vec3): void;
+  /** Moves every selected item by an offset (arrow keys); one history entry. */
+  nudgeSelected(by: Vec3): void;
   /** Shows an uncommitted scene (drag in progress, field being typed); not history. */
   setPreview(scene: Scene | null): void;
   /** Drag step: previews the target at a new position; not history. */
@@ -132,14 +149,14 @@ export const DEFAULT_VIEWS: Record<ViewKind, ViewState> = {
 
 type Data = Pick<
   SceneState,
-  'scene' | 'past' | 'future' | 'preview' | 'selection' | 'views' | 'snap' | 'gridSize' | 'fitRequest' | 'documentId' | 'serverErrors' | 'gizmo' | 'frameRequest'
+  'scene' | 'past' | 'future' | 'preview' | 'selection' | 'selectedItems' | 'views' | 'snap' | 'gridSize' | 'fitRequest' | 'documentId' | 'serverErrors' | 'gizmo' | 'frameRequest'
 >;
 
 const NO_SERVER_ERRORS: Record<ErrorSource, ServerErrors | null> = { render: null, live: null };
 
 function initialData(scene: Scene): Data {
   return {
-    scene: carryIds(null, scene), past: [], future: [], preview: null, selection: null, views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1,
+    scene: carryIds(null, scene), past: [], future: [], preview: null, selection: null, selectedItems: [], views: structuredClone(DEFAULT_VIEWS), snap: false, gridSize: 0.5, fitRequest: 1,
     documentId: 1, serverErrors: NO_SERVER_ERRORS, gizmo: 'translate', frameRequest: 0,
   };
 }
@@ -151,12 +168,22 @@ function keepValid(scene: Scene, selection: Selection): Selection {
   return selection;
 }
 
+/** A primary selection and the items selected with it. */
+type Picked = { primary: Selection; items: SceneItem[] };
+
+/** The selection and its items, each kept only if it still names something in the scene. */
+function keepPicked(scene: Scene, picked: Picked): Pick<SceneState, 'selection' | 'selectedItems'> {
+  const items = picked.items.filter((item) => keepValid(scene, item) !== null);
+  const selection = keepValid(scene, picked.primary);
+  return { selection, selectedItems: isSceneItem(selection) ? items : [] };
+}
+
 const sameScene = (a: Scene, b: Scene) => sameJson(a, b);
 
 export const useSceneStore = create<SceneState>()((set, get) => {
   /** The single write path: one edit, one history entry (none if nothing changed). */
-  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection, newDocument = false, exact = newDocument) => {
-    const { scene, past, future, selection: current } = get();
+  const commit = (edit: (scene: Scene) => Scene, selection?: (next: Scene) => Selection | Picked, newDocument = false, exact = newDocument) => {
+    const { scene, past, future, selection: current, selectedItems } = get();
     // a new document numbers its objects afresh; an edit carries the ids on. The numbers an edit
     // writes are saved rounded; a file or the JSON text keeps the digits it was written with.
     const next = carryIds(newDocument ? null : scene, exact ? edit(scene) : roundEdit(scene, edit(scene)));
@@ -165,12 +192,14 @@ export const useSceneStore = create<SceneState>()((set, get) => {
       return;
     }
     const timeline = push<Scene>({ past, present: scene, future }, next);
-    set({ scene: next, past: timeline.past, future: timeline.future, preview: null, selection: keepValid(next, selection ? selection(next) : current) });
+    const chosen = selection ? selection(next) : { primary: current, items: selectedItems };
+    const picked = chosen !== null && 'items' in chosen ? chosen : selectOne(chosen);
+    set({ scene: next, past: timeline.past, future: timeline.future, preview: null, ...keepPicked(next, picked) });
   };
   const travel = (move: (t: Timeline<Scene>) => Timeline<Scene>) => {
-    const { scene, past, future, selection } = get();
+    const { scene, past, future, selection, selectedItems } = get();
     const t = move({ past, present: scene, future });
-    set({ scene: t.present, past: t.past, future: t.future, preview: null, selection: keepValid(t.present, selection) });
+    set({ scene: t.present, past: t.past, future: t.future, preview: null, ...keepPicked(t.present, { primary: selection, items: selectedItems }) });
   };
   return {
     ...initialData(loadSavedScene() ?? structuredClone(STARTER_SCENE)),
@@ -200,12 +229,25 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     setMeshObj: (index, obj) => commit((s) => edits.setMeshObj(s, index, obj)),
     addLight: () => commit((s) => edits.addLight(s), (n) => ({ kind: 'light', index: sceneLights(n).length - 1 })),
     duplicateSelected: () => {
-      const sel = get().selection;
+      const { selection: sel, selectedItems } = get();
+      if (selectedItems.length > 1) {
+        let copies: SceneItem[] = [];
+        commit((s) => {
+          const duplicated = duplicateItems(s, selectedItems);
+          copies = duplicated.copies;
+          return duplicated.scene;
+        }, () => ({ primary: copies[copies.length - 1] ?? null, items: copies }));
+        return;
+      }
       if (sel?.kind === 'object') commit((s) => edits.duplicateObject(s, sel.index), () => ({ kind: 'object', index: sel.index + 1 }));
       if (sel?.kind === 'light') commit((s) => edits.duplicateLight(s, sel.index), () => ({ kind: 'light', index: sel.index + 1 }));
     },
     deleteSelected: () => {
-      const sel = get().selection;
+      const { selection: sel, selectedItems } = get();
+      if (selectedItems.length > 1) {
+        commit((s) => removeItems(s, selectedItems), () => null);
+        return;
+      }
       if (sel?.kind === 'object') commit((s) => edits.removeObject(s, sel.index), () => null);
       if (sel?.kind === 'light') commit((s) => edits.removeLight(s, sel.index), () => null);
     },
@@ -217,7 +259,17 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     moveLight: (index, to) => commit((s) => edits.moveLight(s, index, to)),
     setLightField: (index, field, value) => commit((s) => edits.setLightField(s, index, field, value)),
     moveTarget: (target, to) => commit((s) => edits.moveTarget(s, target, to)),
-    select: (selection) => set({ selection: keepValid(get().scene, selection) }),
+    select: (selection) => set(keepPicked(get().scene, selectOne(selection))),
+    toggleSelect: (selection) => {
+      const { scene, selectedItems, selection: primary } = get();
+      set(keepPicked(scene, toggleItem(selectedItems, primary, selection)));
+    },
+    selectBox: (found, add) => {
+      const { scene, selectedItems, selection: primary } = get();
+      set(keepPicked(scene, selectFound(selectedItems, primary, found, add)));
+    },
+    dragItemsBy: (by) => set({ preview: carryIds(get().scene, roundEdit(get().scene, nudgeItems(get().scene, get().selectedItems, by))) }),
+    nudgeSelected: (by) => commit((s) => nudgeItems(s, get().selectedItems, by)),
 
     setPreview: (preview) => set({ preview: preview && carryIds(get().scene, roundEdit(get().scene, preview)) }),
     dragTo: (target, to) => set({ preview: carryIds(get().scene, roundEdit(get().scene, edits.moveTarget(get().scene, target, to))) }),
@@ -237,7 +289,7 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     requestFrame: () => set({ frameRequest: get().frameRequest + 1 }),
     pasteText: (text) => {
       const pasted = pasteText(get().scene, text);
-      if (pasted) commit(() => pasted.scene, () => pasted.selection);
+      if (pasted) commit(() => pasted.scene, () => ({ primary: pasted.selection, items: pasted.items }));
       return pasted !== null;
     },
     replaceObject: (index, object) => commit((s) => edits.replaceObject(s, index, object)),

@@ -249,3 +249,71 @@ describe('meshes in the views', () => {
     expect(store().views.top).toEqual({ zoom: 40, pan: [0, 0] });
   });
 });
+
+describe('multi-selection in the views', () => {
+  const shiftClick = (el: Element) => {
+    fireEvent.pointerDown(el, { clientX: 0, clientY: 0, button: 0, pointerId: 2, shiftKey: true });
+    fireEvent.pointerUp(el, { clientX: 0, clientY: 0, pointerId: 2 });
+  };
+
+  it('Shift-click adds and takes out; dragging one of the group moves all of it as one undo step', () => {
+    resetSceneStore(SCENE);
+    render(<><TopView /><SideView /></>);
+    const svg = screen.getByTestId('top-view');
+    const sphere = within(svg).getByTestId('object-0');
+    fireEvent.pointerDown(sphere, { clientX: 0, clientY: 0, button: 0, pointerId: 1 });
+    fireEvent.pointerUp(svg, { clientX: 0, clientY: 0, pointerId: 1 });
+    shiftClick(within(svg).getByTestId('object-1'));
+    shiftClick(within(svg).getByTestId('light-0'));
+    expect(store().selectedItems).toHaveLength(3);
+    for (const id of ['object-0', 'object-1', 'light-0']) expect(within(svg).getByTestId(id)).toHaveAttribute('data-selected', 'true');
+    expect(within(screen.getByTestId('side-view')).getByTestId('object-1')).toHaveAttribute('data-selected', 'true');
+    // 40 px right and 40 px down in the top view: +1 m on x and z for all three
+    drag(sphere.querySelector('circle')!, svg, worldToSvg('top', top(), [1, 1, 2]), [40, 40]);
+    expect(store().scene.objects[0]).toMatchObject({ center: [2, 1, 3] });
+    expect(store().scene.objects[1]).toMatchObject({ center: [-1, 0.5, 1] });
+    expect(store().scene.lights?.[0].position).toEqual([3, 5, 0]);
+    expect(store().scene.objects[2]).toEqual(SCENE.objects[2]);
+    expect(store().past).toHaveLength(1);
+    expect(store().selectedItems).toHaveLength(3);
+    // Shift-click again takes one out; a plain click on a member picks it alone
+    shiftClick(within(svg).getByTestId('light-0'));
+    expect(store().selectedItems).toEqual([{ kind: 'object', index: 0 }, { kind: 'object', index: 1 }]);
+    fireEvent.pointerDown(within(svg).getByTestId('object-1'), { clientX: 5, clientY: 5, button: 0, pointerId: 3 });
+    fireEvent.pointerUp(svg, { clientX: 5, clientY: 5, pointerId: 3 });
+    expect(store().selectedItems).toEqual([{ kind: 'object', index: 1 }]);
+    expect(store().past).toHaveLength(1);
+  });
+
+  it('Shift-drag on empty space draws a box and selects what lies inside; a plain drag still pans', () => {
+    resetSceneStore(SCENE);
+    render(<TopView />);
+    const svg = screen.getByTestId('top-view');
+    const from = worldToSvg('top', top(), [-3, 0, -2]);
+    const to = worldToSvg('top', top(), [1.5, 0, 2.5]);
+    fireEvent.pointerDown(svg, { clientX: from[0], clientY: from[1], button: 0, pointerId: 1, shiftKey: true });
+    fireEvent.pointerMove(svg, { clientX: to[0], clientY: to[1], pointerId: 1 });
+    const marquee = screen.getByTestId('marquee');
+    expect(Number(marquee.getAttribute('width'))).toBeCloseTo(to[0] - from[0]);
+    fireEvent.pointerUp(svg, { clientX: to[0], clientY: to[1], pointerId: 1 });
+    expect(screen.queryByTestId('marquee')).toBeNull();
+    // the sphere (1, _, 2), the box (-2, _, 0) and the light (2, _, -1)? x 2 is outside
+    expect(store().selectedItems).toEqual([{ kind: 'object', index: 0 }, { kind: 'object', index: 1 }]);
+    expect(store().views.top.pan).toEqual([0, 0]);
+    drag(svg, svg, from, [40, 0]);
+    expect(store().views.top.pan).not.toEqual([0, 0]);
+  });
+
+  it('arrow keys on a member move the whole selection one grid step', () => {
+    resetSceneStore(SCENE);
+    render(<TopView />);
+    act(() => {
+      store().select({ kind: 'object', index: 0 });
+      store().toggleSelect({ kind: 'object', index: 1 });
+    });
+    fireEvent.keyDown(within(screen.getByTestId('top-view')).getByTestId('object-1'), { key: 'ArrowRight' });
+    expect(store().scene.objects[0]).toMatchObject({ center: [1.5, 1, 2] });
+    expect(store().scene.objects[1]).toMatchObject({ center: [-1.5, 0.5, 0] });
+    expect(store().past).toHaveLength(1);
+  });
+});

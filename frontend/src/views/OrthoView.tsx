@@ -1,6 +1,7 @@
 import { useMemo, useRef } from 'react';
 import { imageAspect, resolveLight, resolveObject, resolveScene, sceneLights } from '../model/defaults';
 import { objectAnchor, viewDepth, type ViewKind, type ViewTransform } from '../model/projection';
+import { inItems } from '../model/selection';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { useElementSize } from '../hooks/useElementSize';
 import { useMeshLookup } from '../hooks/useMeshes';
@@ -22,8 +23,9 @@ export interface OrthoViewProps {
 
 /**
  * A plan view of the scene (SVG, `data-testid="top-view"` or `"side-view"`): grid, objects,
- * lights, camera with its view cone and target. Click selects, drag moves, drag on empty space
- * (or middle button) pans, wheel zooms about the cursor.
+ * lights, camera with its view cone and target. Click selects (Shift/Ctrl-click adds or takes
+ * out), drag moves (the whole selection when several are selected), drag on empty space (or
+ * middle button) pans and Shift-drag there selects in a box, wheel zooms about the cursor.
  */
 export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
   const box = useRef<HTMLDivElement>(null);
@@ -31,11 +33,12 @@ export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
   const size = useElementSize(box);
   const scene = useSceneStore(selectDisplayScene);
   const selection = useSceneStore((s) => s.selection);
+  const selectedItems = useSceneStore((s) => s.selectedItems);
   const view = useSceneStore((s) => s.views[kind]);
   const gridSize = useSceneStore((s) => s.gridSize);
   const meshes = useMeshLookup();
   const t: ViewTransform = { ...view, width: size.width, height: size.height };
-  const handlers = useViewPointer(kind, svg, t);
+  const { handlers, marquee } = useViewPointer(kind, svg, t);
 
   useFitView(kind, size);
 
@@ -62,7 +65,7 @@ export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
           ref={svg}
           data-testid={`${kind}-view`}
           role="group"
-          aria-label={`${title}: click to select, drag to move, wheel to zoom, drag empty space to pan`}
+          aria-label={`${title}: click to select, Shift-click to add, drag to move, wheel to zoom, drag empty space to pan, Shift-drag it to select in a box`}
           width={t.width}
           height={t.height}
           viewBox={`0 0 ${t.width} ${t.height}`}
@@ -81,7 +84,7 @@ export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
               t={t}
               object={object}
               index={index}
-              selected={selection?.kind === 'object' && selection.index === index}
+              selected={(selection?.kind === 'object' && selection.index === index) || inItems(selectedItems, { kind: 'object', index })}
               hatchId={`plane-hatch-${kind}`}
               meshState={object.type === 'mesh' ? meshes(object) : undefined}
             />
@@ -89,8 +92,9 @@ export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
           <CameraGlyph kind={kind} t={t} camera={camera} aspect={imageAspect(scene)} selected={cameraSelected} />
           {sceneLights(scene).map((light, index) => {
             const r = resolveLight(light);
-            return <LightGlyph key={index} kind={kind} t={t} index={index} position={r.position} color={r.color} intensity={r.intensity} selected={selection?.kind === 'light' && selection.index === index} />;
+            return <LightGlyph key={index} kind={kind} t={t} index={index} position={r.position} color={r.color} intensity={r.intensity} selected={(selection?.kind === 'light' && selection.index === index) || inItems(selectedItems, { kind: 'light', index })} />;
           })}
+          {marquee && <rect className="marquee" data-testid="marquee" x={marquee.x} y={marquee.y} width={marquee.width} height={marquee.height} />}
         </svg>
       </div>
     </section>

@@ -54,14 +54,14 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
       if (viewRef.current === 'raytraced') return;
       const state = useSceneStore.getState();
       const scene = selectDisplayScene(state);
-      preview.update(sceneToThree(scene, state.selection, (mesh) => meshCache.get(mesh)));
+      preview.update(sceneToThree(scene, state.selection, (mesh) => meshCache.get(mesh), state.selectedItems));
       const handles = handlesFor(scene, state.selection);
       preview.setHandles(handles?.pose ?? null, state.gizmo, handles?.modes ?? []);
     };
     push.current = update;
     update();
     const unsubscribe = useSceneStore.subscribe((state, old) => {
-      if (state.scene !== old.scene || state.preview !== old.preview || state.selection !== old.selection || state.gizmo !== old.gizmo) update();
+      if (state.scene !== old.scene || state.preview !== old.preview || state.selection !== old.selection || state.selectedItems !== old.selectedItems || state.gizmo !== old.gizmo) update();
       if (state.frameRequest !== old.frameRequest) {
         const ball = selectionBall(state.scene, state.selection, (mesh) => meshCache.get(mesh));
         if (viewRef.current !== 'orbit') setView('orbit');

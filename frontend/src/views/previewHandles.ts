@@ -15,8 +15,8 @@ const CLICK_SLOP = 4;
 const DEGREES = 180 / Math.PI;
 
 export interface HandleCallbacks {
-  /** A click picked something, or empty space (null). */
-  onPick(target: DragTarget | null): void;
+  /** A click picked something, or empty space (null); `adding` when Shift, Ctrl or Cmd was held. */
+  onPick(target: DragTarget | null, adding: boolean): void;
   /** The handles moved the stand-in to a new pose (during a drag). */
   onPose(pose: GizmoPose): void;
   /** A handle drag ended. */
@@ -122,7 +122,7 @@ export class PreviewHandles {
     const press = this.press;
     this.press = null;
     if (!press || this.handled || Math.hypot(event.clientX - press.x, event.clientY - press.y) > CLICK_SLOP) return;
-    this.callbacks.onPick(this.pick(event.clientX, event.clientY));
+    this.callbacks.onPick(this.pick(event.clientX, event.clientY), event.shiftKey || event.ctrlKey || event.metaKey);
   };
 
   /** The object or light under a point of the canvas (client pixels), or null. */

@@ -8,7 +8,7 @@ const store = () => useSceneStore.getState();
 
 describe('3D preview selection and handles', () => {
   it('a pick selects; a whole handle drag is one undo step; its values are rounded', () => {
-    handleCallbacks.onPick({ kind: 'object', index: 1 });
+    handleCallbacks.onPick({ kind: 'object', index: 1 }, false);
     expect(store().selection).toEqual({ kind: 'object', index: 1 });
     const start = handlesFor(store().scene, store().selection)!.pose;
     for (let i = 1; i <= 12; i++) handleCallbacks.onPose({ ...start, position: [start.position[0] + i / 30, start.position[1], start.position[2]] });
@@ -20,8 +20,21 @@ describe('3D preview selection and handles', () => {
     expect(center[0]).toBe(Number((start.position[0] + 0.4).toFixed(3)));
     store().undo();
     expect(store().scene).toEqual(STARTER_SCENE);
-    handleCallbacks.onPick(null);
+    handleCallbacks.onPick(null, false);
     expect(store().selection).toBeNull();
+  });
+
+  it('a Shift/Ctrl pick adds to the selection or takes out; a Shift click on empty space keeps it', () => {
+    handleCallbacks.onPick({ kind: 'object', index: 0 }, false);
+    handleCallbacks.onPick({ kind: 'light', index: 0 }, true);
+    expect(store().selectedItems).toEqual([{ kind: 'object', index: 0 }, { kind: 'light', index: 0 }]);
+    expect(store().selection).toEqual({ kind: 'light', index: 0 });
+    handleCallbacks.onPick(null, true);
+    expect(store().selectedItems).toHaveLength(2);
+    handleCallbacks.onPick({ kind: 'object', index: 0 }, true);
+    expect(store().selectedItems).toEqual([{ kind: 'light', index: 0 }]);
+    handleCallbacks.onPick(null, false);
+    expect(store().selectedItems).toEqual([]);
   });
 
   it('moves a light with its handles; the camera has none in 3D', () => {

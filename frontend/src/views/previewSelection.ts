@@ -51,7 +51,11 @@ export function selectionBall(scene: Scene, selection: Selection, meshes: MeshLo
 
 /** The preview's handle events as store actions: a pick selects, a drag previews, the release commits once. */
 export const handleCallbacks: Pick<HandleCallbacks, 'onPick' | 'onPose' | 'onRelease'> = {
-  onPick: (target) => useSceneStore.getState().select(target),
+  onPick: (target, adding) => {
+    const s = useSceneStore.getState();
+    if (adding && target) s.toggleSelect(target);
+    else if (!adding) s.select(target);
+  },
   onPose: (pose) => {
     const s = useSceneStore.getState();
     s.setPreview(posedScene(s.scene, s.selection, pose, s.snap ? s.gridSize : 0.001));

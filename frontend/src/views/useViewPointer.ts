@@ -1,7 +1,8 @@
-import { useEffect, useRef, type KeyboardEvent as ReactKeyboardEvent, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
+import { useEffect, useRef, useState, type KeyboardEvent as ReactKeyboardEvent, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
 import { nudgeTarget, positionOf } from '../model/edits';
 import { panBy, pixelStep, snapToGrid, svgToWorld, VIEW_AXES, worldToSvg, zoomAbout, type Vec2, type ViewKind, type ViewTransform } from '../model/projection';
-import type { DragTarget } from '../model/selection';
+import { itemsInRect } from '../model/boxSelect';
+import { inItems, type DragTarget } from '../model/selection';
 import type { Vec3 } from '../model/types';
 import { useSceneStore } from '../store/sceneStore';
 
@@ -9,8 +10,20 @@ import { useSceneStore } from '../store/sceneStore';
 const CLICK_SLOP = 3;
 
 type Gesture =
-  | { mode: 'move'; target: DragTarget; start: Vec2; origin: Vec3; moved: boolean; pointer: number }
-  | { mode: 'pan'; start: Vec2; t: ViewTransform; moved: boolean; pointer: number; button: number };
+  | { mode: 'move'; target: DragTarget; start: Vec2; origin: Vec3; moved: boolean; pointer: number; group: boolean }
+  | { mode: 'pan'; start: Vec2; t: ViewTransform; moved: boolean; pointer: number; button: number }
+  | { mode: 'box'; start: Vec2; end: Vec2; moved: boolean; pointer: number };
+
+/** The rectangle of a box select under way, in SVG pixels. */
+export interface Marquee {
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}
+
+/** Shift, Ctrl or Cmd: a click adds to the selection or takes out, a drag on empty space box-selects. */
+const adding = (event: { shiftKey: boolean; ctrlKey: boolean; metaKey: boolean }) => event.shiftKey || event.ctrlKey || event.metaKey;
 
 /** Reads `data-target` ("object:2", "light:0", "camera", "target") of the pressed glyph. */
 export function parseTarget(value: string | undefined): DragTarget | null {
@@ -24,13 +37,17 @@ export function parseTarget(value: string | undefined): DragTarget | null {
 /**
  * Pointer handling of a plan view: press on a glyph selects it and dragging moves it (a
  * transient preview, committed as one undo step on release; snapped to the grid when snapping
- * is on); press on empty space or with the middle button pans; a click on empty space clears
- * the selection; the wheel zooms about the cursor. Uses pointer capture.
+ * is on), or moves the whole selection if the glyph is part of a multi-selection; Shift/Ctrl-click
+ * adds a glyph to the selection or takes it out; press on empty space or with the middle button
+ * pans, and with Shift/Ctrl draws a box that selects what lies inside; a click on empty space
+ * clears the selection; the wheel zooms about the cursor. Uses pointer capture. Returns the
+ * handlers for the SVG and the box being drawn.
  */
 export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement | null>, t: ViewTransform) {
   const gesture = useRef<Gesture | null>(null);
   const view = useRef(t);
   view.current = t;
+  const [marquee, setMarquee] = useState<Marquee | null>(null);
 
   const local = (event: { clientX: number; clientY: number }): Vec2 => {
     if (!Number.isFinite(event.clientX) || !Number.isFinite(event.clientY)) return [view.current.width / 2, view.current.height / 2];
@@ -57,9 +74,17 @@ export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement |
     const target = event.button === 0 ? parseTarget(hit?.dataset.target) : null;
     const start = local(event);
     const origin = target ? positionOf(store.scene, target) : null;
+    if (target && origin && adding(event)) {
+      store.toggleSelect(target);
+      event.preventDefault();
+      return;
+    }
     if (target && origin) {
-      store.select(target);
-      gesture.current = { mode: 'move', target, start, origin, moved: false, pointer: event.pointerId };
+      const group = store.selectedItems.length > 1 && inItems(store.selectedItems, target);
+      if (!group) store.select(target);
+      gesture.current = { mode: 'move', target, start, origin, moved: false, pointer: event.pointerId, group };
+    } else if (event.button === 0 && adding(event)) {
+      gesture.current = { mode: 'box', start, end: start, moved: false, pointer: event.pointerId };
     } else {
       gesture.current = { mode: 'pan', start, t: view.current, moved: false, pointer: event.pointerId, button: event.button };
     }
@@ -87,10 +112,16 @@ export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement |
       store.setView(kind, { zoom: g.t.zoom, pan: panBy(kind, g.t, dx, dy) });
       return;
     }
+    if (g.mode === 'box') {
+      g.end = [x, y];
+      setMarquee({ x: Math.min(g.start[0], x), y: Math.min(g.start[1], y), width: Math.abs(dx), height: Math.abs(dy) });
+      return;
+    }
     const o = worldToSvg(kind, view.current, g.origin);
     let to = svgToWorld(kind, view.current, [o[0] + dx, o[1] + dy], g.origin);
     to = snapToGrid(kind, to, store.snap ? store.gridSize : pixelStep(view.current.zoom));
-    store.dragTo(g.target, to);
+    if (g.group) store.dragItemsBy([to[0] - g.origin[0], to[1] - g.origin[1], to[2] - g.origin[2]]);
+    else store.dragTo(g.target, to);
   };
 
   const finish = (event: ReactPointerEvent<SVGSVGElement>, cancelled: boolean) => {
@@ -103,21 +134,29 @@ export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement |
       // see setPointerCapture
     }
     const store = useSceneStore.getState();
-    if (g.mode === 'move') {
+    if (g.mode === 'box') {
+      setMarquee(null);
+      if (!cancelled && g.moved) store.selectBox(itemsInRect(store.scene, kind, view.current, g.start, g.end), true);
+    } else if (g.mode === 'move') {
       if (cancelled) store.cancelPreview();
-      else store.commitPreview();
+      else if (g.moved) store.commitPreview();
+      else if (g.group) store.select(g.target); // a click on one of several selected picks it alone
     } else if (!g.moved && !cancelled && g.button === 0) {
       store.select(null);
     }
   };
 
-  /** Keyboard: Enter/Space selects the focused glyph; arrow keys move it one grid step (one undo step each). */
+  /**
+   * Keyboard: Enter/Space selects the focused glyph (Shift/Ctrl adds it or takes it out); arrow
+   * keys move it one grid step, or the whole selection if it is part of one (one undo step each).
+   */
   const onKeyDown = (event: ReactKeyboardEvent<SVGSVGElement>) => {
     const target = parseTarget(((event.target as Element).closest?.('[data-target]') as SVGElement | null)?.dataset.target);
     if (!target) return;
     const store = useSceneStore.getState();
     if (event.key === 'Enter' || event.key === ' ') {
-      store.select(target);
+      if (adding(event)) store.toggleSelect(target);
+      else store.select(target);
       event.preventDefault();
       return;
     }
@@ -128,17 +167,24 @@ export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement |
     const by: Vec3 = [0, 0, 0];
     by[a.u] = step[0] * store.gridSize;
     by[a.v] = step[1] * a.down * store.gridSize;
-    store.select(target);
-    store.setPreview(nudgeTarget(store.scene, target, by));
-    store.commitPreview();
+    if (store.selectedItems.length > 1 && inItems(store.selectedItems, target)) {
+      store.nudgeSelected(by);
+    } else {
+      store.select(target);
+      store.setPreview(nudgeTarget(store.scene, target, by));
+      store.commitPreview();
+    }
     event.preventDefault();
   };
 
   return {
-    onKeyDown,
-    onPointerDown,
-    onPointerMove,
-    onPointerUp: (event: ReactPointerEvent<SVGSVGElement>) => finish(event, false),
-    onPointerCancel: (event: ReactPointerEvent<SVGSVGElement>) => finish(event, true),
+    marquee,
+    handlers: {
+      onKeyDown,
+      onPointerDown,
+      onPointerMove,
+      onPointerUp: (event: ReactPointerEvent<SVGSVGElement>) => finish(event, false),
+      onPointerCancel: (event: ReactPointerEvent<SVGSVGElement>) => finish(event, true),
+    },
   };
 }
