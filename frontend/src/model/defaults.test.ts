@@ -6,7 +6,7 @@ import { STARTER_SCENE } from './starterScene';
 import type { Scene } from './types';
 
 describe('resolveScene', () => {
-  it('fills every default of the README for the minimal scene', () => {
+  it('fills every default of docs/scene-format.md for the minimal scene', () => {
     const r = resolveScene({ name: 'minimal', objects: [{ type: 'sphere' }, { type: 'plane' }] });
     expect(r.version).toBe(1);
     expect(r.image).toEqual({ width: 800, height: 600, format: 'png', quality: 0.92 });

@@ -1,5 +1,5 @@
 /**
- * The defaults of the scene format, the same values as the README's table, the server's
+ * The defaults of the scene format, the same values as the table in docs/scene-format.md, the server's
  * SceneDefaults and the engine's MaterialDefaults; and {@link resolveScene}, which fills them
  * in for display.
  */

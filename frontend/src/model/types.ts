@@ -1,5 +1,5 @@
 /**
- * The scene format (README "The scene format"), as TypeScript types. Every field but
+ * The scene format (docs/scene-format.md), as TypeScript types. Every field but
  * `objects` may be left out and then takes its default (see `defaults.ts`). Polymorphic
  * elements are discriminated unions on `type`; each material kind carries only its own
  * overrides, exactly as the server's DTOs and the published JSON Schema.
