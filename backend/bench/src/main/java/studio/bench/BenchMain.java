@@ -3,7 +3,8 @@ package studio.bench;
 import java.util.Arrays;
 
 /**
- * {@code java -jar studio-bench.jar peers|jmh|scaling [...]}: the peer benchmark ({@link PeersCommand}),
+ * {@code java -jar studio-bench.jar accuracy|peers|jmh|scaling [...]}: the samplers' speed against
+ * accuracy ({@link studio.bench.accuracy.BenchCommand}), the peer benchmark ({@link PeersCommand}),
  * the JMH micro-benchmarks in {@code studio.bench.jmh} (the arguments go to JMH's own command line,
  * {@code org.openjdk.jmh.Main}) and render time against scene size ({@link ScalingCommand}).
  * Sunflow's side of the peer benchmark runs as its own process through {@link SunflowRender}.
@@ -11,7 +12,8 @@ import java.util.Arrays;
 public final class BenchMain {
 
     static final String USAGE = """
-            usage: java -jar studio-bench.jar peers [--help]      ours against POV-Ray and Sunflow
+            usage: java -jar studio-bench.jar accuracy [--help]   the samplers' speed against accuracy (the README's chart)
+                   java -jar studio-bench.jar peers [--help]      ours against POV-Ray and Sunflow
                    java -jar studio-bench.jar jmh [JMH options]   micro-benchmarks (-h: JMH's options, -l: the list)
                    java -jar studio-bench.jar scaling [--help]    render time against object count""";
 
@@ -22,6 +24,7 @@ public final class BenchMain {
         String command = args.length > 0 ? args[0] : "";
         String[] rest = args.length > 0 ? Arrays.copyOfRange(args, 1, args.length) : args;
         switch (command) {
+            case "accuracy" -> System.exit(studio.bench.accuracy.BenchCommand.run(rest, System.out, System.err));
             case "peers" -> System.exit(PeersCommand.run(rest, System.out, System.err));
             case "scaling" -> System.exit(ScalingCommand.run(rest, System.out, System.err));
             // JMH exits by itself on errors; it forks the benchmarks with this JVM's class path, which is

@@ -1,4 +1,4 @@
-package studio.server.bench;
+package studio.bench.accuracy;
 
 /**
  * One row of the benchmark: a method at one setting on one scene.

@@ -1,4 +1,4 @@
-package studio.server.bench;
+package studio.bench.accuracy;
 
 import java.lang.reflect.Constructor;
 import java.lang.reflect.InvocationTargetException;

@@ -1,4 +1,4 @@
-package studio.server.bench;
+package studio.bench.accuracy;
 
 /**
  * One way of spending samples: a sampler at a fixed count per pixel, or adaptive sampling on top

@@ -1,4 +1,4 @@
-package studio.server.bench;
+package studio.bench.accuracy;
 
 import java.io.PrintStream;
 import java.util.ArrayList;

@@ -1,4 +1,4 @@
-package studio.server.bench;
+package studio.bench.accuracy;
 
 import java.awt.BasicStroke;
 import java.awt.Color;

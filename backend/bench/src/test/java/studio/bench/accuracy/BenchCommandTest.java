@@ -1,4 +1,4 @@
-package studio.server.bench;
+package studio.bench.accuracy;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
@@ -81,6 +81,6 @@ class BenchCommandTest {
     @Test
     void helpPrintsUsage() {
         assertThat(run("--help")).isEqualTo(BenchCommand.OK);
-        assertThat(out.toString(StandardCharsets.UTF_8)).contains("usage: java -jar studio.jar bench");
+        assertThat(out.toString(StandardCharsets.UTF_8)).contains("usage: java -jar studio-bench.jar accuracy");
     }
 }

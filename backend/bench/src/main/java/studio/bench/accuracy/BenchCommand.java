@@ -1,4 +1,4 @@
-package studio.server.bench;
+package studio.bench.accuracy;
 
 import java.io.IOException;
 import java.io.OutputStream;
@@ -21,7 +21,7 @@ import studio.server.scene.MeshFiles;
 import studio.server.scene.SceneCompiler;
 
 /**
- * {@code studio.jar bench [--out docs/bench] [--width W] [--height H] [--runs N]
+ * {@code studio-bench.jar accuracy [--out docs/bench] [--width W] [--height H] [--runs N]
  * [--reference-samples N] [--scenes scenes/bench]}: the speed-against-accuracy benchmark of the
  * samplers. For each scene file it renders a reference with many jittered samples, measures every
  * available sampler (and adaptive sampling, when the engine has it) for time and error, and writes
@@ -34,7 +34,7 @@ public final class BenchCommand {
 
     static final int DEFAULT_WIDTH = 320, DEFAULT_HEIGHT = 240, DEFAULT_RUNS = 5, DEFAULT_REFERENCE_SAMPLES = 1024;
 
-    static final String USAGE = "usage: java -jar studio.jar bench [--out docs/bench] [--width " + DEFAULT_WIDTH
+    static final String USAGE = "usage: java -jar studio-bench.jar accuracy [--out docs/bench] [--width " + DEFAULT_WIDTH
             + "] [--height " + DEFAULT_HEIGHT + "] [--runs " + DEFAULT_RUNS + "] [--reference-samples "
             + DEFAULT_REFERENCE_SAMPLES + "] [--scenes scenes/bench]";
 

@@ -1,4 +1,4 @@
-package studio.server.bench;
+package studio.server.scene;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.fail;
@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.fail;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
@@ -13,23 +14,27 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
-import studio.server.scene.CompiledScene;
-import studio.server.scene.ExampleSceneFiles;
-import studio.server.scene.InvalidSceneException;
-import studio.server.scene.SceneCompiler;
-
-/** Every scene in scenes/bench is valid under the default limits, as the bench command reads it. */
+/**
+ * Every scene in scenes/bench (the speed-against-accuracy benchmark's, in backend/bench) is valid
+ * under the default limits.
+ */
 class BenchScenesValidTest {
 
     private static final SceneCompiler COMPILER = ExampleSceneFiles.compiler();
 
-    static Stream<Arguments> scenes() {
-        return BenchSceneFiles.all().stream().map(p -> Arguments.of(BenchCommand.stem(p), p));
+    static Stream<Arguments> scenes() throws IOException {
+        return benchScenes().stream().map(p -> Arguments.of(ExampleSceneFiles.stem(p), p));
+    }
+
+    private static List<Path> benchScenes() throws IOException {
+        try (Stream<Path> files = Files.list(ExampleSceneFiles.dir().resolve("bench"))) {
+            return files.filter(p -> p.getFileName().toString().endsWith(".json")).sorted().toList();
+        }
     }
 
     @Test
-    void hasTheFourChartScenes() {
-        assertThat(BenchSceneFiles.all().stream().map(BenchCommand::stem))
+    void hasTheFourChartScenes() throws IOException {
+        assertThat(benchScenes().stream().map(ExampleSceneFiles::stem))
                 .contains("edges", "stripes", "glass", "soft-shadows");
     }
 

@@ -1,4 +1,4 @@
-package studio.server.bench;
+package studio.bench.accuracy;
 
 import java.io.IOException;
 import java.nio.file.Files;
