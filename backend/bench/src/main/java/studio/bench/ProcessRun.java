@@ -6,7 +6,7 @@ import java.nio.file.Path;
 import java.util.List;
 
 /** Runs one renderer as a process and times it, wall clock, from start to exit. */
-final class ProcessRun {
+public final class ProcessRun {
 
     private ProcessRun() {
     }
@@ -18,7 +18,7 @@ final class ProcessRun {
      * @return the wall time in nanoseconds
      * @throws IOException if it could not start, failed, or wrote no image (the message has the log's end)
      */
-    static long time(List<String> command, Path output, Path log) throws IOException {
+    public static long time(List<String> command, Path output, Path log) throws IOException {
         Files.deleteIfExists(output);
         ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true)
                 .redirectOutput(log.toFile());

@@ -19,13 +19,18 @@ import studio.server.scene.InvalidSceneException;
 import studio.server.scene.LazyValidation;
 import studio.server.scene.MeshFiles;
 import studio.server.scene.SceneCompiler;
+import studio.server.scene.SceneReader;
+import studio.bench.ResolvedScene;
 
 /**
  * {@code studio-bench.jar accuracy [--out docs/bench] [--width W] [--height H] [--runs N]
- * [--reference-samples N] [--scenes scenes/bench]}: the speed-against-accuracy benchmark of the
- * samplers. For each scene file it renders a reference with many jittered samples, measures every
- * available sampler (and adaptive sampling, when the engine has it) for time and error, and writes
- * {@code speed-accuracy.csv}, the charts, the reference images and {@code summary.txt} to the output folder.
+ * [--reference-samples N] [--scenes scenes/bench] [--povray PATH | --no-povray]}: the
+ * speed-against-accuracy benchmark of the samplers, and of POV-Ray beside them. For each scene file
+ * it renders a reference with many jittered samples, measures every available sampler (and adaptive
+ * sampling, when the engine has it) for time and error, and POV-Ray's fixed grid and adaptive
+ * anti-aliasing against POV-Ray's own reference ({@link PovrayAccuracy}; left out when POV-Ray is
+ * not installed), and writes {@code speed-accuracy.csv}, the charts, the reference images and
+ * {@code summary.txt} to the output folder.
  */
 public final class BenchCommand {
 
@@ -36,7 +41,7 @@ public final class BenchCommand {
 
     static final String USAGE = "usage: java -jar studio-bench.jar accuracy [--out docs/bench] [--width " + DEFAULT_WIDTH
             + "] [--height " + DEFAULT_HEIGHT + "] [--runs " + DEFAULT_RUNS + "] [--reference-samples "
-            + DEFAULT_REFERENCE_SAMPLES + "] [--scenes scenes/bench]";
+            + DEFAULT_REFERENCE_SAMPLES + "] [--scenes scenes/bench] [--povray /usr/bin/povray | --no-povray]";
 
     private BenchCommand() {
     }
@@ -58,12 +63,16 @@ public final class BenchCommand {
         System.setProperty("java.awt.headless", "true");
 
         Map<String, CompiledScene> scenes = new LinkedHashMap<>();
+        Map<String, ResolvedScene> forPovray = new LinkedHashMap<>();
         try (LazyValidation validation = new LazyValidation()) {
             SceneCompiler compiler = SceneCompiler.standalone(validation);
+            SceneReader reader = new SceneReader(validation);
             for (Path file : sceneFiles(options.scenes)) {
                 try {
-                    scenes.put(stem(file), compiler.compile(Files.readAllBytes(file), options.overrides(), 0,
-                            MeshFiles.in(file.toAbsolutePath().getParent())));
+                    byte[] json = Files.readAllBytes(file);
+                    MeshFiles meshes = MeshFiles.in(file.toAbsolutePath().getParent());
+                    scenes.put(stem(file), compiler.compile(json, options.overrides(), 0, meshes));
+                    forPovray.put(stem(file), ResolvedScene.of(reader.read(json), options.width, options.height, meshes));
                 } catch (InvalidSceneException e) {
                     err.println("error: invalid scene " + file + ": " + e.getMessage());
                     return INVALID;
@@ -80,6 +89,18 @@ public final class BenchCommand {
 
         SpeedAccuracyBench bench = new SpeedAccuracyBench(
                 SpeedAccuracyBench.Config.defaults(options.runs, options.referenceSamples), err);
+        PovrayAccuracy povray = null;
+        if (options.povray != null && Files.isExecutable(options.povray)) {
+            try {
+                povray = new PovrayAccuracy(options.povray, Files.createTempDirectory("studio-bench-povray"),
+                        options.width, options.height, Runtime.getRuntime().availableProcessors(), err);
+            } catch (IOException e) {
+                err.println("error: cannot make a folder for POV-Ray's files: " + e.getMessage());
+                return IO_ERROR;
+            }
+        } else if (options.povray != null) {
+            err.println("bench: no POV-Ray at " + options.povray + " (apt-get install povray), so the chart has only ours");
+        }
         err.printf(Locale.ROOT, "bench: %d scenes at %dx%d on %d threads, %d rounds (every setting once a round), reference %s at %d "
                         + "samples/pixel; adaptive sampling %s%n", scenes.size(), options.width, options.height,
                 Runtime.getRuntime().availableProcessors(), options.runs, SpeedAccuracyBench.REFERENCE_SAMPLER,
@@ -89,7 +110,9 @@ public final class BenchCommand {
         try {
             Files.createDirectories(options.out);
             for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
-                SpeedAccuracyBench.SceneResult result = bench.run(scene.getKey(), scene.getValue());
+                PovrayAccuracy.Scene povrayScene = povray == null ? null
+                        : povray.prepare(scene.getKey(), forPovray.get(scene.getKey()));
+                SpeedAccuracyBench.SceneResult result = bench.run(scene.getKey(), scene.getValue(), povrayScene);
                 rowsByScene.put(scene.getKey(), result.rows());
                 all.addAll(result.rows());
                 try (OutputStream image = Files.newOutputStream(options.out.resolve("reference-" + scene.getKey() + ".png"))) {
@@ -98,8 +121,8 @@ public final class BenchCommand {
             }
             BenchCsv.write(options.out.resolve("speed-accuracy.csv"), all);
             BenchCharts.write(options.out, rowsByScene);
-        } catch (IOException e) {
-            err.println("error: cannot write to " + options.out + ": " + e.getMessage());
+        } catch (IOException | java.io.UncheckedIOException e) {
+            err.println("error: " + e.getMessage());
             return IO_ERROR;
         }
 
@@ -143,6 +166,8 @@ public final class BenchCommand {
         Path out = Path.of("docs/bench");
         Path scenes = Path.of("scenes/bench");
         int width = DEFAULT_WIDTH, height = DEFAULT_HEIGHT, runs = DEFAULT_RUNS, referenceSamples = DEFAULT_REFERENCE_SAMPLES;
+        /** POV-Ray's executable; null: leave POV-Ray out. */
+        Path povray = Path.of("/usr/bin/povray");
         boolean help;
 
         static Options parse(String[] args) {
@@ -157,6 +182,8 @@ public final class BenchCommand {
                     case "--height" -> o.height = Args.positive(args, ++i, a);
                     case "--runs" -> o.runs = Args.positive(args, ++i, a);
                     case "--reference-samples" -> o.referenceSamples = Args.positive(args, ++i, a);
+                    case "--povray" -> o.povray = Path.of(Args.value(args, ++i, a));
+                    case "--no-povray" -> o.povray = null;
                     default -> throw new IllegalArgumentException("unknown argument " + a);
                 }
             }

@@ -107,6 +107,46 @@ final class BenchSummary {
             String slope = Double.isNaN(line.slope()) ? "-" : String.format(Locale.ROOT, "%.2f", line.slope());
             s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s%n", line.method(), slope, millis, ratio));
         }
+        String povray = againstPovray(rows);
+        if (!povray.isEmpty()) {
+            s.append(povray);
+        }
+        return s.toString();
+    }
+
+    /** Our default method: what a scene without render settings gets. */
+    static final String DEFAULT_METHOD = "adaptive-sobol";
+
+    /**
+     * Our default method against each POV-Ray setting: the time our default takes to reach that
+     * setting's error (interpolated log-log) over POV-Ray's time for it, so below 1 means our curve
+     * lies below POV-Ray's there ("<=" where our cheapest setting is already more accurate, so its
+     * time bounds ours from above, and the worst ratio counts that bound); a setting whose error our
+     * default never reaches in its range is listed as such. Empty when POV-Ray was not measured.
+     */
+    static String againstPovray(List<Measurement> rows) {
+        List<Measurement> ours = rows.stream().filter(m -> m.method().equals(DEFAULT_METHOD)).toList();
+        List<Measurement> povray = rows.stream().filter(m -> m.method().startsWith("povray")).toList();
+        if (ours.isEmpty() || povray.isEmpty()) {
+            return "";
+        }
+        StringBuilder s = new StringBuilder(String.format(Locale.ROOT,
+                "  %s against POV-Ray, at each POV-Ray setting's error: our time / POV-Ray's time%n", DEFAULT_METHOD));
+        double worst = 0;
+        for (Measurement p : povray) {
+            OptionalDouble millis = timeToReach(ours, p.rmse());
+            boolean beyond = millis.isEmpty();
+            // our cheapest setting already below that error: its time is an upper bound of ours there
+            String bound = !beyond && ordered(ours).get(0).rmse() <= p.rmse() ? "<= " : "";
+            double ratio = beyond ? Double.NaN : millis.getAsDouble() / p.medianMillis();
+            if (!beyond) {
+                worst = Math.max(worst, ratio);
+            }
+            String setting = Double.isNaN(p.threshold()) ? p.samples() + " spp" : "threshold " + p.threshold();
+            s.append(String.format(Locale.ROOT, "    %-16s %-15s rmse %.5f %9.1f ms  %s%n", p.method(), setting, p.rmse(),
+                    p.medianMillis(), beyond ? "below our default's range" : bound + String.format(Locale.ROOT, "%.2f", ratio)));
+        }
+        s.append(String.format(Locale.ROOT, "    worst ratio %.2f%n", worst));
         return s.toString();
     }
 }

@@ -1,6 +1,8 @@
 package studio.bench.accuracy;
 
+import java.io.IOException;
 import java.io.PrintStream;
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -59,6 +61,24 @@ final class SpeedAccuracyBench {
     }
 
     SceneResult run(String name, CompiledScene compiled) {
+        return run(name, compiled, null);
+    }
+
+    /**
+     * As {@link #run(String, CompiledScene)}, with POV-Ray's settings of the scene (or null) timed in
+     * the same rounds, each round right after ours, and their rows added.
+     */
+    SceneResult run(String name, CompiledScene compiled, PovrayAccuracy.Scene povray) {
+        SceneResult ours = runOurs(name, compiled, povray);
+        if (povray == null) {
+            return ours;
+        }
+        List<Measurement> rows = new ArrayList<>(ours.rows());
+        rows.addAll(povray.rows());
+        return new SceneResult(name, rows, ours.reference(), ours.referenceMillis());
+    }
+
+    private SceneResult runOurs(String name, CompiledScene compiled, PovrayAccuracy.Scene povray) {
         Scene scene = compiled.scene();
         RenderSettings base = compiled.settings();
         boolean adaptive = EngineFeatures.hasAdaptive();
@@ -93,19 +113,19 @@ final class SpeedAccuracyBench {
             }
         }
         if (!adaptive) {
-            return new SceneResult(name, measure(name, fixed, scene, reference), reference, referenceMillis);
+            return new SceneResult(name, measure(name, fixed, scene, reference, povray), reference, referenceMillis);
         }
         // sobol first: its adaptive sampling walks one stratified sequence (see Renderer); it is measured
         // in the same rounds as the fixed counts, so that the ratios between them see the same machine
         if (adaptiveAccepts(base, "sobol")) {
             List<Planned> all = new ArrayList<>(fixed);
             all.addAll(adaptivePlans("sobol", base));
-            return new SceneResult(name, measure(name, all, scene, reference), reference, referenceMillis);
+            return new SceneResult(name, measure(name, all, scene, reference, povray), reference, referenceMillis);
         }
-        List<Measurement> rows = new ArrayList<>(measure(name, fixed, scene, reference));
+        List<Measurement> rows = new ArrayList<>(measure(name, fixed, scene, reference, povray));
         String best = bestSampler(rows, base);
         if (best != null) {
-            rows.addAll(measure(name, adaptivePlans(best, base), scene, reference));
+            rows.addAll(measure(name, adaptivePlans(best, base), scene, reference, null));
         }
         return new SceneResult(name, rows, reference, referenceMillis);
     }
@@ -173,9 +193,11 @@ final class SpeedAccuracyBench {
      * Times every setting {@code runs} times in rounds (each round renders every setting once), so a
      * slow spell of the machine, which here lasts from seconds to minutes, falls on all settings alike
      * instead of on the few measured during it; the median of each setting's runs counts. Errors come
-     * from the first round (the same seed gives the same pixels on every run).
+     * from the first round (the same seed gives the same pixels on every run). POV-Ray's settings (if
+     * {@code povray} is not null) are rendered after ours in each round.
      */
-    private List<Measurement> measure(String scene, List<Planned> plans, Scene world, Film reference) {
+    private List<Measurement> measure(String scene, List<Planned> plans, Scene world, Film reference,
+                                      PovrayAccuracy.Scene povray) {
         double[][] millis = new double[plans.size()][config.runs()];
         double[] rmse = new double[plans.size()], meanSpp = new double[plans.size()];
         for (int run = 0; run < config.runs(); run++) {
@@ -189,6 +211,13 @@ final class SpeedAccuracyBench {
                     rmse[i] = ImageError.rmse(result.film(), reference);
                     meanSpp[i] = (double) EngineFeatures.samplesTaken(result, settings)
                             / (settings.width() * settings.height());
+                }
+            }
+            if (povray != null) {
+                try {
+                    povray.round();
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e);
                 }
             }
         }

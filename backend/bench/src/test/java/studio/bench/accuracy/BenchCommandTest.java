@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -27,7 +28,7 @@ class BenchCommandTest {
     @Test
     void tinyRunWritesTheCsvTheChartsAndTheSummary(@TempDir Path dir) throws IOException {
         int code = run("--out", dir.toString(), "--width", "16", "--height", "12", "--runs", "1",
-                "--reference-samples", "16", "--scenes", BenchSceneFiles.dir().toString());
+                "--reference-samples", "16", "--scenes", BenchSceneFiles.dir().toString(), "--no-povray");
 
         assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
         List<String> csv = Files.readAllLines(dir.resolve("speed-accuracy.csv"));
@@ -54,6 +55,35 @@ class BenchCommandTest {
         assertThat(dir.resolve("reference-stripes.png")).isNotEmptyFile();
         assertThat(Files.readString(dir.resolve("summary.txt"))).contains("soft-shadows", "target RMSE", "jittered");
         assertThat(out.toString(StandardCharsets.UTF_8)).contains("ms to target", "vs jittered");
+    }
+
+    @Test
+    void withPovRayTheChartHasItsGridAndAdaptiveCurves(@TempDir Path dir) throws IOException {
+        Path povray = Path.of("/usr/bin/povray");
+        Assumptions.assumeTrue(Files.isExecutable(povray), "POV-Ray is not installed (apt-get install povray)");
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Files.copy(BenchSceneFiles.dir().resolve("edges.json"), scenes.resolve("edges.json"));
+        int code = run("--out", dir.resolve("out").toString(), "--width", "16", "--height", "12", "--runs", "1",
+                "--reference-samples", "16", "--scenes", scenes.toString(), "--povray", povray.toString());
+
+        assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
+        List<String> csv = Files.readAllLines(dir.resolve("out/speed-accuracy.csv"));
+        assertThat(csv.stream().filter(l -> l.startsWith("edges,povray-grid,"))).hasSize(PovrayAccuracy.GRID.length);
+        assertThat(csv.stream().filter(l -> l.startsWith("edges,povray-adaptive,"))).hasSize(PovrayAccuracy.THRESHOLDS.length);
+        // one ray through each pixel's centre: one camera ray a pixel, and an error above the 64-ray grid's
+        String one = csv.stream().filter(l -> l.startsWith("edges,povray-grid,1,")).findFirst().orElseThrow();
+        String many = csv.stream().filter(l -> l.startsWith("edges,povray-grid,64,")).findFirst().orElseThrow();
+        assertThat(Double.parseDouble(one.split(",")[3])).isEqualTo(1.0);
+        assertThat(Double.parseDouble(one.split(",")[5])).isGreaterThan(Double.parseDouble(many.split(",")[5]));
+        assertThat(Files.readString(dir.resolve("out/summary.txt"))).contains("against POV-Ray", "worst ratio");
+    }
+
+    @Test
+    void aMissingPovRayLeavesItOffTheChart(@TempDir Path dir) {
+        int code = run("--out", dir.toString(), "--width", "8", "--height", "6", "--runs", "1", "--reference-samples", "4",
+                "--scenes", BenchSceneFiles.dir().toString(), "--povray", dir.resolve("no-povray").toString());
+        assertThat(code).isEqualTo(BenchCommand.OK);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("no POV-Ray at");
     }
 
     @Test

@@ -74,4 +74,17 @@ class BenchSummaryTest {
         assertThat(regular.millis()).isNaN();
         assertThat(BenchSummary.format("s", rows)).contains("not reached");
     }
+
+    @Test
+    void comparesOurDefaultWithEachPovRaySetting() {
+        List<Measurement> rows = new ArrayList<>(method("adaptive-sobol", 1, 0.1, -1.0));
+        // POV-Ray: twice our time per sample, at the same errors, so our time to each error is half of its
+        rows.addAll(method("povray-grid", 2, 0.1, -1.0).subList(1, 5));
+        String text = BenchSummary.againstPovray(rows);
+        assertThat(text).contains("adaptive-sobol against POV-Ray").contains("0.50").contains("worst ratio 0.50");
+        // an error below our default's range is said to be so, and does not count
+        rows.add(new Measurement("s", "povray-adaptive", 81, 40, 100, 1e-6, ImageError.psnr(1e-6), 0.01));
+        assertThat(BenchSummary.againstPovray(rows)).contains("below our default's range").contains("worst ratio 0.50");
+        assertThat(BenchSummary.againstPovray(method("adaptive-sobol", 1, 0.1, -1.0))).isEmpty();
+    }
 }
