@@ -12,7 +12,6 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 
-import javax.imageio.ImageIO;
 
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.Film;
@@ -371,12 +370,12 @@ final class RenderJob implements Runnable {
         return lastSeenNanos;
     }
 
-    /** One tile of the film as a base64 PNG. */
+    /** One tile of the film as a base64 PNG, written by the same encoder as whole images. */
     static String tilePng(Film film, TileRect tile) {
-        var whole = ImageEncoder.toImage(film, tile);
+        var pixels = ImageEncoder.toImage(film, tile);
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         try {
-            ImageIO.write(whole, "png", out);
+            ImageEncoder.writePng(pixels, out);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
