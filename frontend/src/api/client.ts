@@ -5,6 +5,8 @@
  * error or a network failure, comes out as one typed {@link ApiError}.
  */
 
+import { isRecord } from '../util/json';
+
 /** One entry of `GET /api/scenes`: an example file in `scenes/`, by its file stem. */
 export interface SceneSummary {
   name: string;
@@ -205,8 +207,4 @@ function statusDetail(response: Response): string | undefined {
 
 function firstString(...values: unknown[]): string | undefined {
   return values.find((v): v is string => typeof v === 'string' && v !== '');
-}
-
-function isRecord(value: unknown): value is Record<string, unknown> {
-  return typeof value === 'object' && value !== null && !Array.isArray(value);
 }

@@ -13,6 +13,7 @@ import {
   type FetchFn,
   type RenderOutput,
 } from './client';
+import { finite, isRecord } from '../util/json';
 
 /** Where a job is in its life; the last three are final. */
 export type JobState = 'queued' | 'running' | 'done' | 'failed' | 'cancelled';
@@ -292,14 +293,7 @@ function isJobState(value: unknown): value is JobState {
   return value === 'queued' || value === 'running' || value === 'done' || value === 'failed' || value === 'cancelled';
 }
 
-function finite(value: unknown): number | undefined {
-  return typeof value === 'number' && Number.isFinite(value) ? value : undefined;
-}
 
 function clamp01(value: number): number {
   return Math.min(1, Math.max(0, value));
-}
-
-function isRecord(value: unknown): value is Record<string, unknown> {
-  return typeof value === 'object' && value !== null && !Array.isArray(value);
 }

@@ -10,6 +10,7 @@
  * `{"revision": n, "problem": {...}}` holding the REST API's RFC 9457 problem.
  */
 import { problemToError, type ApiError } from '../api/client';
+import { isRecord } from '../util/json';
 
 /** One revision as the client sends it. */
 export interface RevisionMessage {
@@ -138,8 +139,4 @@ function parseHeader(json: unknown): FrameHeader {
 /** A whole number from 0 up. */
 function isCount(value: unknown): value is number {
   return typeof value === 'number' && Number.isSafeInteger(value) && value >= 0;
-}
-
-function isRecord(value: unknown): value is Record<string, unknown> {
-  return typeof value === 'object' && value !== null && !Array.isArray(value);
 }

@@ -8,6 +8,7 @@
  */
 import schema from './scene.schema.json';
 import type { Scene } from './types';
+import { isFiniteNumber as isNumber } from '../util/json';
 
 /** One problem with the scene, named by its JSON path (`objects[2].radius`). */
 export interface Problem {
@@ -32,7 +33,6 @@ function resolve(rule: Rule | undefined, value: unknown): Rule | undefined {
   return rule;
 }
 
-const isNumber = (v: unknown): v is number => typeof v === 'number' && Number.isFinite(v);
 
 function checkNumber(rule: Rule, value: number, path: string, out: Problem[]): void {
   if (rule.type === 'integer' && !Number.isInteger(value)) out.push({ path, message: 'must be a whole number' });

@@ -16,6 +16,7 @@ import {
   SCENE_FIELDS,
   type Scene,
 } from './types';
+import { isRecord } from '../util/json';
 
 /** One problem, named by its JSON path (`objects[2].radius`). */
 export interface ShapeError {
@@ -27,8 +28,6 @@ export type ParseResult = { ok: true; scene: Scene } | { ok: false; errors: Shap
 
 type Check = (value: unknown, path: string, errors: ShapeError[]) => void;
 
-const isRecord = (v: unknown): v is Record<string, unknown> =>
-  typeof v === 'object' && v !== null && !Array.isArray(v);
 
 const number: Check = (v, path, errors) => {
   if (typeof v !== 'number' || !Number.isFinite(v)) errors.push({ path, message: 'must be a finite number' });
