@@ -31,7 +31,11 @@ import studio.engine.memory.MemoryGate;
  * tokenised in place, without regular expressions or a String per line or token. Numbers of up
  * to 19 significant digits are converted exactly by {@link DecimalToDouble} (Clinger's fast path
  * or Eisel-Lemire); longer ones, and the rare cases it declines, go to {@link Double#parseDouble}.
- * Every value is the correctly rounded one.
+ * Every value is the correctly rounded one. Measured against {@link Double#parseDouble} for every
+ * number (a 50,000-triangle torus with normals, 3.3 MB of OBJ, thread CPU time, alternated): warm,
+ * best of 40 parses, 9.7-9.8 ms against 13.6-14.1 ms, so it is kept for the server, which reads
+ * each new mesh warm; in a fresh JVM's first parse (the command line) the two were within the noise
+ * (84-123 ms either way), since neither is compiled yet.
  */
 public final class ObjReader {
 
