@@ -4,13 +4,16 @@ import studio.engine.math.Vec3;
 
 /**
  * A ray o + t*d. The direction need not be unit length; intersection tests accept any non-zero d.
- * Mutable so that the hot loop can reuse one per thread and recursion depth ({@link #set}); shapes
- * only read it.
+ * Mutable so that the hot loop can reuse one per thread and recursion depth ({@link #set}, the
+ * only way to change it); shapes only read it.
  */
 public final class Ray {
 
     public double ox, oy, oz;
     public double dx, dy, dz;
+    /** The ray in the triangle test's frame, set up on the first {@link #shear} after {@link #set}. */
+    private final RayShear shear = new RayShear();
+    private boolean sheared;
 
     public Ray(double ox, double oy, double oz, double dx, double dy, double dz) {
         set(ox, oy, oz, dx, dy, dz);
@@ -24,7 +27,17 @@ public final class Ray {
     public Ray set(double ox, double oy, double oz, double dx, double dy, double dz) {
         this.ox = ox; this.oy = oy; this.oz = oz;
         this.dx = dx; this.dy = dy; this.dz = dz;
+        sheared = false;
         return this;
+    }
+
+    /** This ray in the watertight triangle test's frame, worked out once however many meshes it meets. */
+    RayShear shear() {
+        if (!sheared) {
+            shear.setUp(this);
+            sheared = true;
+        }
+        return shear;
     }
 
     public Ray(Vec3 origin, Vec3 direction) {

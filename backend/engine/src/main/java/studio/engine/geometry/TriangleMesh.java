@@ -20,7 +20,7 @@ import studio.engine.mesh.MeshData;
  * <p>Rays meet triangles with the watertight test of Woop, Benthin and Wald (JCGT 2013): the axes
  * are permuted so the ray's largest direction component becomes z, the triangle is sheared so the
  * ray runs along z, and the three edge functions decide. The permutation and shear are worked out
- * once per ray; an edge shared by two triangles gives each of them exactly the negated edge
+ * once per ray ({@link Ray#shear}, shared by every mesh the ray meets); an edge shared by two triangles gives each of them exactly the negated edge
  * function, and edge functions of zero count as inside for both, so no ray slips through a shared
  * edge (robustness case NUM-08, docs/robustness.md). Like pbrt, a hit counts only if t exceeds its own rounding bound.
  *
@@ -173,19 +173,9 @@ public final class TriangleMesh implements Shape {
     @Override
     public boolean intersect(Ray ray, double tMax, Hit hit) {
         double dx = ray.dx, dy = ray.dy, dz = ray.dz;
-        // Per ray: the axis permutation (kz = largest |d|, winding kept) and the shear.
-        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
-        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-        int kx = kz == 2 ? 0 : kz + 1;
-        int ky = kx == 2 ? 0 : kx + 1;
-        double dkz = component(kz, dx, dy, dz);
-        if (dkz < 0) {
-            int swap = kx; kx = ky; ky = swap;
-        }
-        double sz = 1 / dkz;
-        double sx = -component(kx, dx, dy, dz) * sz, sy = -component(ky, dx, dy, dz) * sz;
-        double okx = component(kx, ray.ox, ray.oy, ray.oz), oky = component(ky, ray.ox, ray.oy, ray.oz);
-        double okz = component(kz, ray.ox, ray.oy, ray.oz);
+        RayShear f = ray.shear();
+        int kx = f.kx, ky = f.ky, kz = f.kz;
+        double sx = f.sx, sy = f.sy, sz = f.sz, okx = f.okx, oky = f.oky, okz = f.okz;
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
         boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
@@ -234,18 +224,9 @@ public final class TriangleMesh implements Shape {
     @Override
     public boolean occluded(Ray ray, double tMax) {
         double dx = ray.dx, dy = ray.dy, dz = ray.dz;
-        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
-        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-        int kx = kz == 2 ? 0 : kz + 1;
-        int ky = kx == 2 ? 0 : kx + 1;
-        double dkz = component(kz, dx, dy, dz);
-        if (dkz < 0) {
-            int swap = kx; kx = ky; ky = swap;
-        }
-        double sz = 1 / dkz;
-        double sx = -component(kx, dx, dy, dz) * sz, sy = -component(ky, dx, dy, dz) * sz;
-        double okx = component(kx, ray.ox, ray.oy, ray.oz), oky = component(ky, ray.ox, ray.oy, ray.oz);
-        double okz = component(kz, ray.ox, ray.oy, ray.oz);
+        RayShear f = ray.shear();
+        int kx = f.kx, ky = f.ky, kz = f.kz;
+        double sx = f.sx, sy = f.sy, sz = f.sz, okx = f.okx, oky = f.oky, okz = f.okz;
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
         boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
@@ -280,19 +261,9 @@ public final class TriangleMesh implements Shape {
      * checked against (tests, robustness case NUM-06, docs/robustness.md).
      */
     boolean intersectEachTriangle(Ray ray, double tMax, Hit hit) {
-        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
-        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
-        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-        int kx = kz == 2 ? 0 : kz + 1;
-        int ky = kx == 2 ? 0 : kx + 1;
-        double dkz = component(kz, dx, dy, dz);
-        if (dkz < 0) {
-            int swap = kx; kx = ky; ky = swap;
-        }
-        double sz = 1 / dkz;
-        double sx = -component(kx, dx, dy, dz) * sz, sy = -component(ky, dx, dy, dz) * sz;
-        double okx = component(kx, ray.ox, ray.oy, ray.oz), oky = component(ky, ray.ox, ray.oy, ray.oz);
-        double okz = component(kz, ray.ox, ray.oy, ray.oz);
+        RayShear f = ray.shear();
+        int kx = f.kx, ky = f.ky, kz = f.kz;
+        double sx = f.sx, sy = f.sy, sz = f.sz, okx = f.okx, oky = f.oky, okz = f.okz;
         double best = tMax;
         int bestTri = -1;
         for (int tri = 0; tri < indices.length / 3; tri++) {
@@ -307,10 +278,6 @@ public final class TriangleMesh implements Shape {
         }
         fill(bestTri, okx, oky, okz, kx, ky, kz, sx, sy, sz, hit);
         return true;
-    }
-
-    private static double component(int axis, double x, double y, double z) {
-        return axis == 0 ? x : axis == 1 ? y : z;
     }
 
     /**
