@@ -1,9 +1,11 @@
 package studio.engine.geometry;
 
 /**
- * The one place secondary rays are made. The origin is moved off the surface along the normal by
- * the hit point's error bound, to the side the new ray leaves from, then one ulp further in each
- * moved component (pbrt's OffsetRayOrigin). New rays then accept any t &gt; 0: no fixed epsilon,
+ * The one place secondary rays are made. The origin is moved off the surface along its geometric
+ * normal by the hit point's error bound, to the side the new ray leaves from, then one ulp further
+ * in each moved component (pbrt's OffsetRayOrigin). The geometric normal, not a smooth mesh's
+ * interpolated one: the error bound is the point's distance from the triangle's plane, and only
+ * its own normal says which side of that plane the new ray is on. New rays then accept any t &gt; 0: no fixed epsilon,
  * so it works at any scale and any distance from the origin.
  */
 public final class Rays {
@@ -23,13 +25,13 @@ public final class Rays {
 
     /** {@link #spawn(Hit, double, double, double)} into {@code out} (the hot loop reuses its rays); returns out. */
     public static Ray spawn(Hit hit, double dx, double dy, double dz, Ray out) {
-        double offset = Math.abs(hit.nx) * hit.ex + Math.abs(hit.ny) * hit.ey + Math.abs(hit.nz) * hit.ez;
-        if (hit.nx * dx + hit.ny * dy + hit.nz * dz < 0) {
+        double offset = Math.abs(hit.gx) * hit.ex + Math.abs(hit.gy) * hit.ey + Math.abs(hit.gz) * hit.ez;
+        if (hit.gx * dx + hit.gy * dy + hit.gz * dz < 0) {
             offset = -offset;
         }
-        double ox = step(hit.px, offset * hit.nx);
-        double oy = step(hit.py, offset * hit.ny);
-        double oz = step(hit.pz, offset * hit.nz);
+        double ox = step(hit.px, offset * hit.gx);
+        double oy = step(hit.py, offset * hit.gy);
+        double oz = step(hit.pz, offset * hit.gz);
         return out.set(ox, oy, oz, dx, dy, dz);
     }
 

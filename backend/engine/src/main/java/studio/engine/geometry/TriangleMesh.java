@@ -28,9 +28,9 @@ import studio.engine.mesh.MeshData;
  * counter-clockwise triangles seen from outside, as in OBJ), or with vertex normals their
  * barycentric interpolation turned to the geometric normal's side. The hit point is the
  * barycentric combination of the vertices, with pbrt's error bound gamma(7)*sum|b_i*p_i|, so
- * {@link Rays#spawn} offsets it like any other hit. (It offsets along the interpolated normal; where
- * vertex normals bend far from the faces a reflected ray can dip under the surface and darken it,
- * the usual shading-normal terminator.) Zero-area triangles are dropped when the mesh is made.
+ * {@link Rays#spawn} offsets it like any other hit, along the triangle's own (geometric) normal,
+ * which the hit carries beside the interpolated one. Zero-area triangles are dropped when the mesh
+ * is made.
  *
  * <p>Making a mesh takes memory in proportion to it (its world-space copies, the triangles' boxes
  * and the BVH build, about 280 bytes a triangle in all); it is asked of a {@link MemoryGate} first.
@@ -351,7 +351,10 @@ public final class TriangleMesh implements Shape {
         double gm = Math.max(Math.abs(gx), Math.max(Math.abs(gy), Math.abs(gz)));
         gx /= gm; gy /= gm; gz /= gm;
         double gl = Math.sqrt(gx * gx + gy * gy + gz * gz);
-        double nx = gx / gl, ny = gy / gl, nz = gz / gl;
+        gx /= gl;
+        gy /= gl;
+        gz /= gl;
+        double nx = gx, ny = gy, nz = gz;
         if (normals != null) {
             double[] n = normals;
             double sxn = b0 * n[a] + b1 * n[b] + b2 * n[c];
@@ -365,7 +368,7 @@ public final class TriangleMesh implements Shape {
                 nz = szn * flip;
             }
         }
-        hit.set(t, px, py, pz, nx, ny, nz, ex, ey, ez);
+        hit.set(t, px, py, pz, nx, ny, nz, gx, gy, gz, ex, ey, ez);
     }
 
     @Override

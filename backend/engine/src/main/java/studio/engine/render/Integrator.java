@@ -98,9 +98,9 @@ final class Integrator {
         }
         double dLen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
         double dx = ray.dx / dLen, dy = ray.dy / dLen, dz = ray.dz / dLen;
-        double cosOut = hit.nx * dx + hit.ny * dy + hit.nz * dz;
-        boolean front = cosOut < 0;
-        // The shading normal faces the viewer.
+        // Which side of the surface the ray comes from is the geometric normal's call; the shading
+        // normal is turned to that side.
+        boolean front = hit.gx * dx + hit.gy * dy + hit.gz * dz < 0;
         double sx = front ? hit.nx : -hit.nx, sy = front ? hit.ny : -hit.ny, sz = front ? hit.nz : -hit.nz;
 
         direct(m, hit, sx, sy, sz, -dx, -dy, -dz, front);
@@ -230,9 +230,10 @@ final class Integrator {
                 return false;
             }
             double cos = shadowHit.nx * ray.dx + shadowHit.ny * ray.dy + shadowHit.nz * ray.dz;
-            boolean entering = cos < 0;
-            double transmitted = 1 - (entering ? Fresnel.reflectance(-cos, 1, m.ior())
-                    : Fresnel.reflectance(cos, m.ior(), 1));
+            boolean entering = shadowHit.gx * ray.dx + shadowHit.gy * ray.dy + shadowHit.gz * ray.dz < 0;
+            // |cos|: a smooth mesh's shading normal may lean past the side its triangle is crossed from
+            double transmitted = 1 - (entering ? Fresnel.reflectance(Math.abs(cos), 1, m.ior())
+                    : Fresnel.reflectance(Math.abs(cos), m.ior(), 1));
             r *= transmitted;
             g *= transmitted;
             b *= transmitted;

@@ -140,6 +140,63 @@ class SpawnedRayTest {
     }
 
     /**
+     * A smooth triangle whose vertex normals lean up to 80 degrees from its face: a ray spawned from a hit
+     * on it, in any direction not grazing the face, never hits it again (it is flat), however far the
+     * interpolated normal leans. The origin is moved off along the face's own normal; moved along the
+     * interpolated one it could land on the wrong side of the face (where the two normals disagree about
+     * the new ray's side) or not clear the point's rounding error across the face.
+     */
+    @ParameterizedTest(name = "scale {0}, translated by {1}")
+    @MethodSource("scalesAndTranslations")
+    void rayFromSmoothTriangleNeverRehitsIt(double scale, double translation) {
+        Random random = new Random(4 + Double.hashCode(scale) * 31L + Double.hashCode(translation));
+        Failures failures = new Failures();
+        Hit hit = new Hit(), again = new Hit();
+        for (int i = 0; i < CASES / 10; i++) {
+            Vec3 centre = translated(translation).plus(randomUnit(random).times(scale * uniform(random, 0, 3)));
+            Vec3 a = centre.plus(randomUnit(random).times(scale)), b = centre.plus(randomUnit(random).times(scale));
+            Vec3 c = centre.plus(randomUnit(random).times(scale));
+            Vec3 g = b.minus(a).cross(c.minus(a));
+            if (g.length() < 0.2 * scale * scale) {
+                continue; // a sliver: its own rounding is another test's matter
+            }
+            g = g.normalized();
+            double[] normals = new double[9];
+            for (int v = 0; v < 3; v++) {
+                Vec3 lean = randomUnit(random).cross(g).normalized();
+                double angle = Math.toRadians(uniform(random, 0, 80));
+                Vec3 n = g.times(Math.cos(angle)).plus(lean.times(Math.sin(angle)));
+                normals[3 * v] = n.x();
+                normals[3 * v + 1] = n.y();
+                normals[3 * v + 2] = n.z();
+            }
+            TriangleMesh mesh = new TriangleMesh(new studio.engine.mesh.MeshData(new double[] {a.x(), a.y(), a.z(),
+                    b.x(), b.y(), b.z(), c.x(), c.y(), c.z()}, new int[] {0, 1, 2}, normals));
+            double u = uniform(random, 0.1, 0.8), w = uniform(random, 0.1, 0.9 - u);
+            Vec3 p = a.plus(b.minus(a).times(u)).plus(c.minus(a).times(w));
+            Vec3 d = incoming(random, g);
+            if (random.nextBoolean()) {
+                d = d.negated();
+            }
+            Ray primary = new Ray(p.minus(d.times(scale * uniform(random, 0.5, 5))), d);
+            if (!mesh.intersect(primary, Double.POSITIVE_INFINITY, hit)) {
+                continue; // the primary ray slipped off an edge: nothing to spawn from
+            }
+            for (int k = 0; k < 8; k++) {
+                Vec3 out = randomUnit(random);
+                if (Math.abs(out.dot(g)) < 0.05) {
+                    continue;
+                }
+                Ray spawned = Rays.spawn(hit, out.x(), out.y(), out.z());
+                if (mesh.intersect(spawned, Double.POSITIVE_INFINITY, again) || mesh.occluded(spawned, Double.POSITIVE_INFINITY)) {
+                    failures.add("re-hit the smooth triangle at t=" + again.t + " from " + spawned + " (primary " + primary + ")");
+                }
+            }
+        }
+        failures.assertNone();
+    }
+
+    /**
      * Spawns the mirror reflection and a random direction through the surface from the hit and checks them
      * against the shape: a ray leaving the closed shape never hits it; a ray going into it hits the far wall,
      * no closer than {@code minDistance} of the cosine between the ray and the inward normal.
