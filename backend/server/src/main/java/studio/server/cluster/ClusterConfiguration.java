@@ -20,8 +20,9 @@ import studio.server.system.MemoryBudget;
 import studio.server.system.StudioProperties;
 
 /**
- * The cluster: with {@code studio.cluster.members} set, a Hazelcast {@link Config} from which
- * Spring Boot's Hazelcast support starts the embedded member; without, nothing (a cluster of one).
+ * The cluster: with {@code studio.cluster.members} (or {@code studio.cluster.kubernetes-service-dns})
+ * set, a Hazelcast {@link Config} from which Spring Boot's Hazelcast support starts the embedded
+ * member; without, nothing (a cluster of one).
  */
 @Configuration(proxyBeanMethods = false)
 @EnableConfigurationProperties(ClusterProperties.class)
@@ -50,14 +51,22 @@ class ClusterConfiguration {
         return new ClusterHealth(member.getIfAvailable());
     }
 
-    /** True when studio.cluster.members names at least one member. */
+    /**
+     * True when studio.cluster.members names at least one member, or the members are found on
+     * Kubernetes (studio.cluster.kubernetes-service-dns).
+     */
     static final class MembersConfigured implements Condition {
 
         @Override
         public boolean matches(ConditionContext context, AnnotatedTypeMetadata metadata) {
-            return Binder.get(context.getEnvironment()).bind("studio.cluster.members", Bindable.listOf(String.class))
+            Binder binder = Binder.get(context.getEnvironment());
+            boolean listed = binder.bind("studio.cluster.members", Bindable.listOf(String.class))
                     .map(members -> members.stream().anyMatch(member -> !member.isBlank()))
                     .orElse(false);
+            boolean onKubernetes = binder.bind("studio.cluster.kubernetes-service-dns", String.class)
+                    .map(dns -> !dns.isBlank())
+                    .orElse(false);
+            return listed || onKubernetes;
         }
     }
 }

@@ -3,6 +3,7 @@ package studio.server.cluster;
 import java.util.List;
 
 import org.springframework.boot.context.properties.ConfigurationProperties;
+import org.springframework.boot.context.properties.bind.ConstructorBinding;
 import org.springframework.boot.context.properties.bind.DefaultValue;
 
 /**
@@ -14,21 +15,45 @@ import org.springframework.boot.context.properties.bind.DefaultValue;
  * @param name        the cluster's name: members of other names never join this one
  * @param bindAddress the address the member listens on and gives the others (e.g. 127.0.0.1);
  *                    empty: Hazelcast picks one of the machine's addresses
+ * @param kubernetesServiceDns on Kubernetes, the DNS name of a headless service over the members'
+ *                    pods (e.g. {@code ray-studio-cluster.default.svc.cluster.local}): the members find
+ *                    each other through it (Hazelcast's Kubernetes discovery, DNS lookup mode, which needs
+ *                    no access to the Kubernetes API) instead of a member list; empty: not on Kubernetes
  */
 @ConfigurationProperties("studio.cluster")
 public record ClusterProperties(@DefaultValue("5701") int port, @DefaultValue List<String> members,
-                                @DefaultValue("ray-studio") String name, @DefaultValue("") String bindAddress) {
+                                @DefaultValue("ray-studio") String name, @DefaultValue("") String bindAddress,
+                                @DefaultValue("") String kubernetesServiceDns) {
 
+    @ConstructorBinding
     public ClusterProperties {
         members = members == null ? List.of()
                 : members.stream().map(String::trim).filter(member -> !member.isEmpty()).toList();
+        kubernetesServiceDns = kubernetesServiceDns == null ? "" : kubernetesServiceDns.trim();
         if (port < 1 || port > 65535) {
             throw new IllegalArgumentException("studio.cluster.port must be a port number (1-65535): " + port);
         }
+        if (!members.isEmpty() && !kubernetesServiceDns.isEmpty()) {
+            throw new IllegalArgumentException("set studio.cluster.members or studio.cluster.kubernetes-service-dns, "
+                    + "not both: the members find each other one way");
+        }
     }
 
-    /** True when members are configured: only then does this service start a Hazelcast member. */
+    /** Members found by a list, not on Kubernetes. */
+    public ClusterProperties(int port, List<String> members, String name, String bindAddress) {
+        this(port, members, name, bindAddress, "");
+    }
+
+    /**
+     * True when members are configured, or found on Kubernetes: only then does this service start a
+     * Hazelcast member.
+     */
     public boolean clustered() {
-        return !members.isEmpty();
+        return !members.isEmpty() || onKubernetes();
+    }
+
+    /** True when the members find each other through a Kubernetes headless service. */
+    public boolean onKubernetes() {
+        return !kubernetesServiceDns.isEmpty();
     }
 }

@@ -8,9 +8,9 @@ import com.hazelcast.config.QueueConfig;
 import com.hazelcast.config.RingbufferConfig;
 
 /**
- * The Hazelcast configuration of this service's member: join only the listed members over TCP
- * (multicast, auto-detection and Hazelcast's phone-home stay off, so a member writes to no address
- * it was not given), listen on the configured port only (no auto-increment: a second member on a
+ * The Hazelcast configuration of this service's member: join only the listed members over TCP, or
+ * on Kubernetes the pods behind the configured headless service (multicast, auto-detection and
+ * Hazelcast's phone-home stay off, so a member writes to no address it was not given), listen on the configured port only (no auto-increment: a second member on a
  * machine must be given its own port), and leave the member's shutdown to the application, which
  * drains its renders first. Every map, the tile queue and the event logs keep one backup on another
  * member, so the loss of any one member loses no job, tile or image.
@@ -50,7 +50,13 @@ public final class MemberConfig {
         JoinConfig join = network.getJoin();
         join.getMulticastConfig().setEnabled(false);
         join.getAutoDetectionConfig().setEnabled(false);
-        join.getTcpIpConfig().setEnabled(true).setMembers(cluster.members());
+        if (cluster.onKubernetes()) {
+            // DNS lookup mode: the headless service's A records are the members; no API access needed
+            join.getKubernetesConfig().setEnabled(true).setProperty("service-dns", cluster.kubernetesServiceDns())
+                    .setProperty("service-port", Integer.toString(cluster.port()));
+        } else {
+            join.getTcpIpConfig().setEnabled(true).setMembers(cluster.members());
+        }
         for (String map : new String[] {ClusterMaps.JOBS, ClusterMaps.SCENES, ClusterMaps.IMAGES, ClusterMaps.CANCELS,
                 ClusterMaps.SEEN}) {
             config.addMapConfig(new MapConfig(map).setBackupCount(BACKUPS));
