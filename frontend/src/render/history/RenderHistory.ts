@@ -93,7 +93,7 @@ export class RenderHistory {
    * the stage's render; the oldest beyond the bound leaves the list and storage. Resolves with the
    * record, or null when what was rendered is no scene.
    */
-  async add(render: FinishedRender): Promise<RenderRecord | null> {
+  readonly add = async (render: FinishedRender): Promise<RenderRecord | null> => {
     const thumbnail = await this.thumbnail(render.image, render.width, render.height).catch(() => null);
     await this.loaded;
     const record = recordOf(render, nextNumber(this.records()), thumbnail);
@@ -107,7 +107,7 @@ export class RenderHistory {
       this.storage.setStage(record.id),
     ]).catch(() => undefined);
     return record;
-  }
+  };
 
   /** Revokes every object URL and empties the list (tests; a page never needs to). */
   dispose(): void {
