@@ -5,8 +5,10 @@
 import type { RenderRecord } from './renderRecord';
 
 /**
- * How many renders are kept: the last 12. A 1920 x 1080 PNG render is 2 to 4 MB, so the bound keeps
- * the browser's storage under about 50 MB, and the strip fits a row or two of thumbnails.
+ * How many renders are kept: the last 12, a strip the width of the stage. Full-HD renders are small
+ * as PNG (measured at 1920 x 1080: still-life 250 KB, six-materials 293 KB, glass-pattern with 4
+ * random samples a pixel 352 KB), so 12 take about 4 MB of the browser's storage; even 12 that did
+ * not compress at all (6.2 MB each) would stay under 75 MB.
  */
 export const HISTORY_LIMIT = 12;
 
