@@ -55,7 +55,9 @@ export function useStageHistory(history: RenderHistory, { live, liveJobId, onSho
     ...view,
     entries,
     show: (id) => showing({ kind: 'record', id }),
-    compare: (id) => view.shown && showing({ kind: 'compare', base: view.shown.record.id, other: id }),
+    compare: (id) => {
+      if (view.shown) showing({ kind: 'compare', base: view.shown.record.id, other: id });
+    },
     restore: (id) => {
       const entry = history.find(id);
       if (!entry) return;
