@@ -645,6 +645,88 @@ try {
     await until(async () => (await sceneOf(page)).objects.length === 4, 'one undo did not bring the three back');
   });
 
+  await step('render history: two renders compared with a slider, the first one\'s scene restored, the last render shown again after a reload', async () => {
+    const red = '#d03020', blue = '#2040d0';
+    const scene = {
+      name: 'history', image: { width: 160, height: 120 }, camera: { position: [0, 2, 6], lookAt: [0, 1, 0] },
+      objects: [{ type: 'plane', material: { type: 'chalk' } }, { type: 'sphere', center: [0, 1, 0], radius: 1, material: { type: 'plastic', color: red } }],
+    };
+    await openScene(page, scene);
+    const stats = page.getByTestId('render-stats');
+    /** Renders, and returns the number the history gave the render (its caption on the stage). */
+    const renderNumber = async (before) => {
+      await page.getByTestId('render-button').click();
+      let number;
+      await until(async () => {
+        number = /Render (\d+) ·/.exec(await stats.innerText({ timeout: 100 }).catch(() => ''))?.[1];
+        return number !== undefined && number !== before;
+      }, 'the render did not arrive in the history', 60000);
+      return number;
+    };
+    const first = await renderNumber();
+    await page.getByRole('navigation', { name: 'Scene contents' }).getByRole('button', { name: /^Sphere/ }).click();
+    const hex = page.getByLabel('Color hex', { exact: true });
+    await hex.fill(blue);
+    await hex.press('Enter');
+    const second = await renderNumber(first);
+
+    await page.getByRole('button', { name: /^History/ }).click();
+    const strip = page.getByRole('region', { name: 'Render history' });
+    for (const n of [first, second]) {
+      const name = await strip.getByRole('button', { name: new RegExp(`^Render ${n}: history · `) }).getAttribute('aria-label');
+      expect(/ · 160 × 120 px · up to 16 spp · /.test(name), `the history names a render "${name}"`);
+    }
+    await strip.getByRole('button', { name: `Compare Render ${first} with Render ${second}` }).click();
+    const slider = page.getByRole('slider', { name: 'Divider between the two renders' });
+    expect((await slider.getAttribute('aria-valuenow')) === '50', 'the slider does not start in the middle');
+    expect((await page.getByTestId('compare-left').innerText()).includes(`Render ${first} ·`), 'the left side is not labelled as the first render');
+    expect((await page.getByTestId('compare-right').innerText()).includes(`Render ${second} ·`), 'the right side is not labelled as the second render');
+    const [left, right] = [page.getByTestId('compare-image-left'), page.getByTestId('compare-image-right')];
+    const [a, b] = [await left.boundingBox(), await right.boundingBox()];
+    expect(a.width > 300 && ['x', 'y', 'width', 'height'].every((k) => Math.abs(a[k] - b[k]) < 0.5), `the two renders are not drawn alike: ${JSON.stringify([a, b])}`);
+    // the left image is the red sphere's render, the right the blue one's (their centre pixels)
+    const centre = (image) => image.evaluate(async (el) => {
+      const bitmap = await createImageBitmap(await (await fetch(el.getAttribute('href'))).blob());
+      const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+      const g = canvas.getContext('2d');
+      g.drawImage(bitmap, 0, 0);
+      return Array.from(g.getImageData(bitmap.width / 2, bitmap.height / 2, 1, 1).data.slice(0, 3));
+    });
+    const [l, r] = [await centre(left), await centre(right)];
+    expect(l[0] > l[2] + 40 && r[2] > r[0] + 40, `left ${l} is not the red render or right ${r} not the blue one`);
+    await slider.focus();
+    for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowLeft');
+    await page.keyboard.press('Shift+ArrowLeft');
+    expect((await slider.getAttribute('aria-valuenow')) === '35', `the keys moved the slider to ${await slider.getAttribute('aria-valuenow')}`);
+    const svg = await page.locator('.compare-view__svg').boundingBox();
+    const divider = await page.locator('.compare-view__divider').boundingBox();
+    const at = (divider.x + divider.width / 2 - a.x) / a.width;
+    expect(Math.abs(at - 0.35) < 0.01, `the divider is drawn at ${at} of the image, not 0.35`);
+    await page.mouse.click(a.x + a.width * 0.8, svg.y + svg.height / 2);
+    expect(Math.abs(Number(await slider.getAttribute('aria-valuenow')) - 80) < 0.5, `a click at 80% put the slider at ${await slider.getAttribute('aria-valuenow')}`);
+    await page.screenshot({ path: `${out}render-history-compare.png` });
+
+    await strip.getByRole('button', { name: `Restore scene of Render ${first}` }).click();
+    const colour = async () => (await sceneOf(page)).objects[1].material.color;
+    await until(async () => (await colour()) === red, 'Restore scene did not bring the red sphere back');
+    await until(async () => (await stats.innerText()).includes(`Render ${first} ·`), 'the stage does not show the restored render');
+    expect(await page.getByText('Out of date', { exact: true }).count() === 0, 'the restored render is out of date');
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => (await colour()) === blue, 'one undo did not take the restore back');
+    await page.getByRole('button', { name: 'Redo' }).click();
+    await until(async () => (await colour()) === red, 'redo did not restore again');
+
+    await page.reload();
+    await page.getByTestId('top-view').waitFor();
+    await page.getByRole('tab', { name: 'Image' }).click();
+    await page.getByTestId('render-image').waitFor({ timeout: 5000 });
+    await until(async () => (await stats.innerText()).includes(`Render ${second} ·`), async () => `after a reload the stage shows "${await stats.innerText()}"`);
+    await page.getByText('Out of date', { exact: true }).waitFor({ timeout: 5000 });
+    await page.getByRole('button', { name: /^History/ }).click();
+    await strip.getByRole('button', { name: new RegExp(`^Render ${first}: `) }).waitFor();
+    await page.screenshot({ path: `${out}render-history-reloaded.png` });
+  });
+
   await step('no uncaught errors in the page', async () => {
     expect(pageErrors.length === 0, `page errors: ${pageErrors.join('\n')}`);
   });

@@ -1,58 +1,9 @@
-import { act, render, screen, waitFor } from '@testing-library/react';
+import { act, screen, waitFor } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { beforeEach, describe, expect, it, vi } from 'vitest';
-import type { FetchFn } from '../api/client';
-import { fakeEventSources, recordingContext, statusJson, tileJson } from './fakes';
+import { recordingContext, statusJson, tileJson } from './fakes';
+import { calls, mockServer, PROBLEM, SCENE, setup } from './panelHarness';
 import { RenderPanel } from './RenderPanel';
-
-const SCENE = { name: 'still-life', image: { width: 64, height: 32 }, objects: [{ type: 'sphere' }] };
-const PROBLEM = { 'Content-Type': 'application/problem+json' };
-const PNG = new Uint8Array([0x89, 0x50, 0x4e, 0x47]);
-
-type Handler = (init?: RequestInit) => Response | Promise<Response>;
-
-/** A fetch answering the job routes; a test overrides any route by "METHOD path". */
-function mockServer(routes: Record<string, Handler> = {}) {
-  const defaults: Record<string, Handler> = {
-    'POST /api/jobs': () =>
-      Response.json(statusJson(), { status: 202, headers: { Location: '/api/jobs/k3j' } }),
-    'DELETE /api/jobs/k3j': () => Response.json(statusJson({ state: 'running' }), { status: 202 }),
-    'GET /api/jobs/k3j/image': () =>
-      new Response(PNG, {
-        headers: {
-          'Content-Type': 'image/png',
-          'Content-Disposition': 'attachment; filename="still-life.png"',
-          'X-Render-Millis': '1500',
-          'X-Rays-Per-Second': '4200000',
-        },
-      }),
-  };
-  return vi.fn<FetchFn>(async (url, init) => {
-    const key = `${init?.method ?? 'GET'} ${url}`;
-    const handler = routes[key] ?? defaults[key];
-    return handler ? handler(init) : new Response('', { status: 404 });
-  });
-}
-
-function calls(fetchFn: ReturnType<typeof mockServer>, method: string, url: string) {
-  return fetchFn.mock.calls.filter(([u, init]) => u === url && (init?.method ?? 'GET') === method);
-}
-
-function setup(fetchFn = mockServer()) {
-  const streams = fakeEventSources();
-  const onFieldErrors = vi.fn<(errors: Record<string, string>, scene: unknown) => void>();
-  const user = userEvent.setup();
-  const view = render(
-    <RenderPanel scene={SCENE} onFieldErrors={onFieldErrors} fetchFn={fetchFn} eventSourceFactory={streams.factory} />,
-  );
-  /** Clicks Render and waits for the event stream to open. */
-  const startRender = async () => {
-    await user.click(screen.getByTestId('render-button'));
-    await waitFor(() => expect(streams.opened.length).toBeGreaterThan(0));
-    return streams.last();
-  };
-  return { fetchFn, streams, onFieldErrors, user, view, startRender };
-}
 
 describe('RenderPanel', () => {
   let canvas: ReturnType<typeof recordingContext>;
@@ -181,13 +132,13 @@ describe('RenderPanel', () => {
   });
 
   it('says "Out of date" once the scene differs from the one rendered, and renders again on request', async () => {
-    const { startRender, fetchFn, view, onFieldErrors, streams } = setup();
+    const { startRender, fetchFn, view, onFieldErrors, streams, history } = setup();
     const source = await startRender();
     act(() => source.emit('end', statusJson({ state: 'done', progress: 1 })));
     await screen.findByTestId('render-image');
     expect(screen.queryByText('Out of date')).toBeNull();
     const changed = { ...SCENE, objects: [{ type: 'sphere', radius: 2 }] };
-    view.rerender(<RenderPanel scene={changed} onFieldErrors={onFieldErrors} fetchFn={fetchFn} eventSourceFactory={streams.factory} />);
+    view.rerender(<RenderPanel scene={changed} onFieldErrors={onFieldErrors} fetchFn={fetchFn} eventSourceFactory={streams.factory} history={history} />);
     expect(screen.getByText('Out of date')).toBeVisible();
     expect(screen.getByRole('img', { name: 'Rendered image' })).toBeInTheDocument();
     await userEvent.setup().click(screen.getByRole('button', { name: 'Render again' }));
@@ -195,7 +146,7 @@ describe('RenderPanel', () => {
     expect(JSON.parse(String(calls(fetchFn, 'POST', '/api/jobs')[1][1]?.body))).toEqual(changed);
     expect(screen.queryByText('Out of date')).toBeNull();
     // the same scene again (a new but equal value) is not out of date
-    view.rerender(<RenderPanel scene={structuredClone(changed)} onFieldErrors={onFieldErrors} fetchFn={fetchFn} eventSourceFactory={streams.factory} />);
+    view.rerender(<RenderPanel scene={structuredClone(changed)} onFieldErrors={onFieldErrors} fetchFn={fetchFn} eventSourceFactory={streams.factory} history={history} />);
     expect(screen.queryByText('Out of date')).toBeNull();
   });
 

@@ -9,10 +9,12 @@ export interface RenderResultProps {
   stale?: boolean;
   /** Opens the zoomable full-size viewer; no button without it. */
   onViewFullSize?: () => void;
+  /** Which render of the history it is, first in the statistics ("Render 2 · 14:03:12 · 16 spp"). */
+  caption?: string;
 }
 
 /** The finished image with its size, render time, rays per second and a Download link. */
-export function RenderResult({ image, stale = false, onViewFullSize }: RenderResultProps) {
+export function RenderResult({ image, stale = false, onViewFullSize, caption }: RenderResultProps) {
   return (
     <figure className={stale ? 'render-result is-stale' : 'render-result'}>
       <div className="render-frame">
@@ -28,6 +30,7 @@ export function RenderResult({ image, stale = false, onViewFullSize }: RenderRes
         />
       </div>
       <figcaption className="render-result__meta" data-testid="render-stats">
+        {caption && <span className="render-result__caption">{caption}</span>}
         {image.width > 0 && image.height > 0 && (
           <span>
             {image.width} × {image.height} px

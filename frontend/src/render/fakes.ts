@@ -1,8 +1,10 @@
 /**
- * Test doubles for the render panel: a scriptable EventSource and a 2D context that records
- * what was drawn. Only tests import this file.
+ * Test doubles for the render panel: a scriptable EventSource, a 2D context that records
+ * what was drawn, and a history storage in memory. Only tests import this file.
  */
 import type { EventSourceFactory, EventSourceLike } from '../api/jobs';
+import type { HistoryStorage, StoredHistory } from './history/historyStorage';
+import type { RenderRecord } from './history/renderRecord';
 
 type Listener = (event: MessageEvent) => void;
 
@@ -101,4 +103,39 @@ export function statusJson(overrides: Record<string, unknown> = {}): Record<stri
 /** A tile event's JSON, with a few bytes standing in for the PNG. */
 export function tileJson(x: number, y: number, progress: number): Record<string, unknown> {
   return { x, y, width: 32, height: 32, png: btoa('\x89PNG tile'), progress };
+}
+
+/**
+ * The render history's storage in memory, standing in for IndexedDB (happy-dom has none). A new
+ * RenderHistory over the same storage is a reload; `failing` makes every call reject, as a storage
+ * that breaks its promise never to would.
+ */
+export class MemoryHistoryStorage implements HistoryStorage {
+  readonly records = new Map<string, RenderRecord>();
+  stageId: string | null = null;
+  failing = false;
+
+  async load(): Promise<StoredHistory> {
+    this.check();
+    return { records: [...this.records.values()].map((r) => ({ ...r })), stageId: this.stageId };
+  }
+
+  async put(record: RenderRecord): Promise<void> {
+    this.check();
+    this.records.set(record.id, { ...record });
+  }
+
+  async remove(ids: readonly string[]): Promise<void> {
+    this.check();
+    for (const id of ids) this.records.delete(id);
+  }
+
+  async setStage(id: string | null): Promise<void> {
+    this.check();
+    this.stageId = id;
+  }
+
+  private check(): void {
+    if (this.failing) throw new DOMException('The quota has been exceeded.', 'QuotaExceededError');
+  }
 }

@@ -99,4 +99,34 @@ describe('useRenderJob', () => {
     expect(hook.result.current.cancelling).toBe(false);
     expect(streams.last().closed).toBe(false);
   });
+
+  it('hands each finished render, with the scene it was started for, to onFinished once; a superseded one never', async () => {
+    let id = 0;
+    let releaseImage = () => {};
+    const held = new Promise<void>((resolve) => (releaseImage = resolve));
+    const fetchFn = vi.fn<FetchFn>(async (url, init) => {
+      if (init?.method === 'POST') return Response.json(statusJson({ id: `job${++id}` }), { status: 202 });
+      if (url === '/api/jobs/job1/image') await held;
+      if (url.endsWith('/image')) return new Response('png', { headers: { 'Content-Type': 'image/png', 'X-Render-Millis': '1500' } });
+      return Response.json(statusJson({ state: 'cancelled' }));
+    });
+    const onFinished = vi.fn();
+    const streams = fakeEventSources();
+    const hook = renderHook(() => useRenderJob({ fetchFn, eventSourceFactory: streams.factory, onFinished }));
+    const first = { name: 'first', objects: [] };
+    const second = { name: 'second', objects: [] };
+
+    await act(() => hook.result.current.start(first));
+    act(() => streams.last().emit('end', statusJson({ id: 'job1', state: 'done', progress: 1 })));
+    // its image is still on the way when the next render starts: that job's image is never kept
+    await act(() => hook.result.current.start(second));
+    releaseImage();
+    act(() => streams.last().emit('end', statusJson({ id: 'job2', state: 'done', progress: 1, width: 64, height: 32 })));
+    await waitFor(() => expect(hook.result.current.image).not.toBeNull());
+    expect(onFinished).toHaveBeenCalledTimes(1);
+    expect(onFinished).toHaveBeenCalledWith(
+      expect.objectContaining({ jobId: 'job2', sentScene: second, width: 64, height: 32, renderMillis: 1500, filename: 'still-life.png' }),
+    );
+    expect(onFinished.mock.calls[0][0].image).toBeInstanceOf(Blob);
+  });
 });

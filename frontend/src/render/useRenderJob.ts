@@ -12,6 +12,7 @@ import {
   type JobState,
   type JobStatus,
 } from '../api/jobs';
+import type { FinishedRender } from './history/renderRecord';
 import { paintTile, resetCanvas, type TileDecoder } from './tilePainter';
 import { useElapsedClock } from './useElapsedClock';
 
@@ -40,6 +41,8 @@ export interface RenderJobOptions {
   fetchFn?: FetchFn;
   eventSourceFactory?: EventSourceFactory;
   decodeTile?: TileDecoder;
+  /** Called once for each job that ends done with its image fetched, with the scene it was started for. */
+  onFinished?: (render: FinishedRender) => void;
 }
 
 /** The state of the current job and what can be done with it. */
@@ -80,6 +83,7 @@ export function useRenderJob(options: RenderJobOptions = {}): RenderJob {
   const jobRef = useRef<JobStatus | null>(null);
   const unsubscribe = useRef<(() => void) | null>(null);
   const imageUrl = useRef<string | null>(null);
+  const sentScene = useRef<unknown>(null); // the scene of the current generation's job
 
   useEffect(() => {
     optionsRef.current = options;
@@ -113,14 +117,15 @@ export function useRenderJob(options: RenderJobOptions = {}): RenderJob {
       try {
         const out = await fetchJobImage(status.id, fetchFn, status.fileName || undefined);
         if (gen !== generation.current) return;
-        replaceImage({
-          url: URL.createObjectURL(out.image),
+        const finished = {
           filename: out.filename,
           width: status.width,
           height: status.height,
           renderMillis: out.renderMillis ?? status.elapsedMillis,
           raysPerSecond: out.raysPerSecond ?? status.raysPerSecond,
-        });
+        };
+        replaceImage({ url: URL.createObjectURL(out.image), ...finished });
+        optionsRef.current.onFinished?.({ jobId: status.id, finishedAt: Date.now(), sentScene: sentScene.current, image: out.image, ...finished });
       } catch (e) {
         if (gen === generation.current) setError(asJobApiError(e));
       }
@@ -185,6 +190,7 @@ export function useRenderJob(options: RenderJobOptions = {}): RenderJob {
   const start = useCallback(
     async (scene: unknown): Promise<StartOutcome> => {
       const { gen, stopped } = abandon();
+      sentScene.current = scene;
       replaceImage(null);
       setJob(null);
       setProgress(0);
