@@ -10,14 +10,14 @@ import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
 import studio.engine.mesh.MeshData;
 import studio.engine.mesh.ObjReader;
-import studio.server.scene.CameraDto;
-import studio.server.scene.LightDto;
-import studio.server.scene.MeshFiles;
-import studio.server.scene.ObjectDto;
-import studio.server.scene.RenderDto;
-import studio.server.scene.SceneDefaults;
-import studio.server.scene.SceneDto;
-import studio.server.scene.SceneMapper;
+import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.SceneMapper;
+import studio.server.scene.format.CameraDto;
+import studio.server.scene.format.LightDto;
+import studio.server.scene.format.ObjectDto;
+import studio.server.scene.format.RenderDto;
+import studio.server.scene.format.SceneDefaults;
+import studio.server.scene.format.SceneDto;
 
 /**
  * A scene file with every default applied, in the terms the exporters need: positions in world

@@ -18,7 +18,7 @@ import studio.engine.mesh.MeshData;
 import studio.engine.mesh.MeshShapes;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
-import studio.server.scene.SceneMapper;
+import studio.server.scene.compiling.SceneMapper;
 
 /**
  * The scenes of the scaling benchmark and of the BVH micro-benchmarks, built directly through the

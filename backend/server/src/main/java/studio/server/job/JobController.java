@@ -15,9 +15,9 @@ import org.springframework.web.servlet.mvc.method.annotation.SseEmitter;
 import jakarta.servlet.http.HttpServletRequest;
 
 import studio.server.render.RenderedImage;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.SceneCompiler;
-import studio.server.scene.SceneMediaTypes;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.format.SceneMediaTypes;
 import studio.server.system.IntakeMemory;
 
 /**

@@ -17,7 +17,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import studio.server.render.RenderBudget;
-import studio.server.scene.CompiledScene;
+import studio.server.scene.compiling.CompiledScene;
 import studio.server.system.Drainable;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
@@ -108,7 +108,7 @@ public final class JobService implements Drainable, AutoCloseable {
      * Queues a validated scene.
      *
      * @throws JobQueueFullException when every slot and queue place, or the memory the render needs, is taken
-     * @throws studio.server.scene.InvalidSceneException when the render could never fit the memory budget
+     * @throws studio.server.scene.format.InvalidSceneException when the render could never fit the memory budget
      */
     public JobStatus submit(CompiledScene scene) {
         return submit(scene, IntakeMemory.NONE);

@@ -12,8 +12,8 @@ import org.springframework.web.ErrorResponseException;
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
 import studio.server.render.RenderTimeExceededException;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.InvalidSceneException;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 

@@ -10,7 +10,8 @@ import org.springframework.web.bind.annotation.RestController;
 import org.springframework.web.context.request.async.DeferredResult;
 
 import jakarta.servlet.http.HttpServletRequest;
-import studio.server.scene.SceneMediaTypes;
+
+import studio.server.scene.format.SceneMediaTypes;
 import studio.server.system.IntakeMemory;
 
 /**

@@ -25,7 +25,7 @@ import studio.server.job.JobNotFoundException;
 import studio.server.job.JobQueueFullException;
 import studio.server.render.RenderBusyException;
 import studio.server.render.RenderTimeExceededException;
-import studio.server.scene.InvalidSceneException;
+import studio.server.scene.format.InvalidSceneException;
 
 /**
  * Every error as an RFC 9457 problem (application/problem+json). An invalid scene is a 400 whose

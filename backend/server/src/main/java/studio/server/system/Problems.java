@@ -6,8 +6,8 @@ import java.util.Map;
 import org.springframework.http.HttpStatus;
 import org.springframework.http.ProblemDetail;
 
-import studio.server.scene.FieldProblem;
-import studio.server.scene.InvalidSceneException;
+import studio.server.scene.format.FieldProblem;
+import studio.server.scene.format.InvalidSceneException;
 
 /** The problems (RFC 9457) that more than one API sends, built in one place. */
 public final class Problems {

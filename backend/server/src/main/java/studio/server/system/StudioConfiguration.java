@@ -9,17 +9,18 @@ import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
 
 import jakarta.validation.Validator;
+
 import studio.server.job.JobCluster;
 import studio.server.job.JobService;
 import studio.server.render.RenderBudget;
 import studio.server.render.RenderService;
-import studio.server.scene.ExampleScenes;
-import studio.server.scene.MeshCache;
-import studio.server.scene.MeshFiles;
-import studio.server.scene.SceneCompiler;
-import studio.server.scene.SceneLimits;
-import studio.server.scene.SceneMapper;
-import studio.server.scene.SceneReader;
+import studio.server.scene.compiling.MeshCache;
+import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.compiling.SceneMapper;
+import studio.server.scene.examples.ExampleScenes;
+import studio.server.scene.format.SceneLimits;
+import studio.server.scene.reading.SceneReader;
 
 /** Wires the scene pipeline and the render service from the configuration. */
 @Configuration(proxyBeanMethods = false)

@@ -7,7 +7,7 @@ import org.springframework.boot.context.properties.bind.DefaultValue;
 import org.springframework.util.unit.DataSize;
 
 import studio.server.job.JobSettings;
-import studio.server.scene.SceneLimits;
+import studio.server.scene.format.SceneLimits;
 
 /**
  * The service's settings (application.properties, or environment variables such as

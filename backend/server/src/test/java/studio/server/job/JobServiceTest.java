@@ -19,9 +19,9 @@ import org.junit.jupiter.api.Test;
 import studio.engine.scene.Scene;
 import studio.server.Await;
 import studio.server.render.RenderBudget;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.ExampleSceneFiles;
-import studio.server.scene.InvalidSceneException;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.examples.ExampleSceneFiles;
+import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.MemoryBudget;
 
 class JobServiceTest {
