@@ -90,7 +90,7 @@ class SceneMapperTest {
         assertThat(compiled.fileName()).isEqualTo("render.png");
         assertThat(compiled.scene().objectCount()).isZero();
         assertThat(compiled.scene().ambient()).isEqualTo(0.08);
-        assertThat(compiled.scene().background()).isEqualTo(SceneMapper.color("#20232a"));
+        assertThat(compiled.scene().background()).isEqualTo(Colors.linear("#20232a"));
     }
 
     @Test
@@ -99,7 +99,7 @@ class SceneMapperTest {
         assertThat(lights).hasSize(1);
         PointLight light = lights.get(0);
         assertThat(light.position()).isEqualTo(new Vec3(5, 8, 5));
-        assertThat(light.color()).isEqualTo(SceneMapper.color("#ffffff"));
+        assertThat(light.color()).isEqualTo(Colors.linear("#ffffff"));
         assertThat(light.intensity()).isEqualTo(1.0);
         assertThat(light.falloff()).isFalse();
     }
@@ -114,7 +114,7 @@ class SceneMapperTest {
         List<PointLight> lights = map("{'lights':[{'type':'point','intensity':0.5,'falloff':true}],'objects':[]}")
                 .scene().lights();
         assertThat(lights).containsExactly(
-                new PointLight(new Vec3(5, 8, 5), SceneMapper.color("#ffffff"), 0.5, true));
+                new PointLight(new Vec3(5, 8, 5), Colors.linear("#ffffff"), 0.5, true));
     }
 
     @Test
