@@ -20,11 +20,7 @@ class ScenesController {
     record SceneSummary(String name) {
     }
 
-    private final ExampleScenes examples;
-
-    ScenesController(ExampleScenes examples) {
-        this.examples = examples;
-    }
+    private final ExampleScenes examples = ExampleScenes.fromClasspath();
 
     @GetMapping("/api/scenes")
     List<SceneSummary> list() {
