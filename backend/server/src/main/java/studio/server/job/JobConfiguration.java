@@ -5,6 +5,7 @@ import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
 
 import studio.server.render.RenderBudget;
+import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.StudioProperties;
 
 /** The render jobs (studio.jobs.*), in a cluster with the cluster's jobs. */
@@ -13,8 +14,9 @@ class JobConfiguration {
 
     /** In a cluster, with the cluster's jobs (studio.server.cluster); else with this member's only. */
     @Bean(destroyMethod = "close")
-    JobService jobService(StudioProperties properties, RenderBudget budget, ObjectProvider<JobCluster> cluster) {
-        return new JobService(settings(properties), budget, properties.jobs().shutdownGrace(),
+    JobService jobService(SceneCompiler compiler, StudioProperties properties, RenderBudget budget,
+                          ObjectProvider<JobCluster> cluster) {
+        return new JobService(compiler, settings(properties), budget, properties.jobs().shutdownGrace(),
                 cluster.getIfAvailable(() -> JobCluster.SINGLE));
     }
 
