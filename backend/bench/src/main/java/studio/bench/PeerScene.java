@@ -7,10 +7,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import studio.server.scene.MeshFiles;
-import studio.server.scene.ObjectDto;
-import studio.server.scene.SceneDto;
-import studio.server.scene.SceneReader;
+import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.format.ObjectDto;
+import studio.server.scene.format.SceneDto;
+import studio.server.scene.reading.SceneReader;
 import tools.jackson.databind.JsonNode;
 import tools.jackson.databind.json.JsonMapper;
 import tools.jackson.databind.node.ObjectNode;

@@ -17,9 +17,10 @@ import javax.imageio.ImageIO;
 
 import jakarta.validation.Validation;
 import jakarta.validation.ValidatorFactory;
+
 import studio.server.cli.Args;
-import studio.server.scene.InvalidSceneException;
-import studio.server.scene.SceneReader;
+import studio.server.scene.format.InvalidSceneException;
+import studio.server.scene.reading.SceneReader;
 
 /**
  * {@code studio-bench.jar peers [--runs 5] [--scenes still-life,spheres-10k,mesh-100k,glass] [--samples 1,16]

@@ -10,19 +10,20 @@ import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
 import studio.engine.mesh.MeshData;
 import studio.engine.mesh.ObjReader;
-import studio.server.scene.CameraDto;
-import studio.server.scene.LightDto;
-import studio.server.scene.MeshFiles;
-import studio.server.scene.ObjectDto;
-import studio.server.scene.RenderDto;
-import studio.server.scene.SceneDefaults;
-import studio.server.scene.SceneDto;
-import studio.server.scene.SceneMapper;
+import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.Colors;
+import studio.server.scene.compiling.MaterialMapping;
+import studio.server.scene.format.CameraDto;
+import studio.server.scene.format.LightDto;
+import studio.server.scene.format.ObjectDto;
+import studio.server.scene.format.RenderDto;
+import studio.server.scene.format.SceneDefaults;
+import studio.server.scene.format.SceneDto;
 
 /**
  * A scene file with every default applied, in the terms the exporters need: positions in world
  * space, colours in linear light, materials with their resolved coefficients (from the engine's
- * {@link MaterialDefaults}, as the server's SceneMapper maps them). The image size is the
+ * {@link MaterialDefaults}, as the server's MaterialMapping maps them). The image size is the
  * benchmark's, not the file's.
  */
 public record ResolvedScene(int width, int height, Camera camera, Rgb background, double ambient, int maxDepth,
@@ -87,20 +88,20 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
 
         List<Light> lights = new ArrayList<>();
         if (dto.lights() == null) {
-            lights.add(new Light(vec(SceneDefaults.LIGHT_POSITION), SceneMapper.color(SceneDefaults.LIGHT_COLOR),
+            lights.add(new Light(vec(SceneDefaults.LIGHT_POSITION), Colors.linear(SceneDefaults.LIGHT_COLOR),
                     SceneDefaults.LIGHT_INTENSITY, false));
         } else {
             for (LightDto light : dto.lights()) {
                 LightDto.Point p = (LightDto.Point) light;
                 lights.add(new Light(vec(or(p.position(), SceneDefaults.LIGHT_POSITION)),
-                        SceneMapper.color(or(p.color(), SceneDefaults.LIGHT_COLOR)),
+                        Colors.linear(or(p.color(), SceneDefaults.LIGHT_COLOR)),
                         or(p.intensity(), SceneDefaults.LIGHT_INTENSITY), Boolean.TRUE.equals(p.falloff())));
             }
         }
 
         List<Shape> objects = new ArrayList<>();
         for (ObjectDto o : dto.objects()) {
-            Material m = SceneMapper.material(o.material());
+            Material m = MaterialMapping.of(o.material());
             if (o instanceof ObjectDto.Sphere s) {
                 objects.add(new Sphere(vec(or(s.center(), SceneDefaults.SPHERE_CENTER)),
                         or(s.radius(), SceneDefaults.SPHERE_RADIUS), m));
@@ -120,7 +121,7 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
                         vec(or(p.normal(), SceneDefaults.PLANE_NORMAL)).normalized(), m));
             }
         }
-        return new ResolvedScene(width, height, camera, SceneMapper.color(or(dto.background(), SceneDefaults.BACKGROUND)),
+        return new ResolvedScene(width, height, camera, Colors.linear(or(dto.background(), SceneDefaults.BACKGROUND)),
                 or(dto.ambient(), SceneDefaults.AMBIENT), or(render.maxDepth(), SceneDefaults.MAX_DEPTH), lights, objects);
     }
 

@@ -18,7 +18,7 @@ import studio.engine.mesh.MeshData;
 import studio.engine.mesh.MeshShapes;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
-import studio.server.scene.SceneMapper;
+import studio.server.scene.compiling.Colors;
 
 /**
  * The scenes of the scaling benchmark and of the BVH micro-benchmarks, built directly through the
@@ -40,12 +40,12 @@ public final class ScalingScenes {
     static final Vec3 KNOT_POSITION = new Vec3(0, 1.6, 0), KNOT_ROTATION = new Vec3(-20, 25, 15);
     static final double KNOT_SCALE = 0.8;
 
-    private static final Material GROUND = MaterialDefaults.of(MaterialKind.CHALK, SceneMapper.color("#c8c0b0"));
-    private static final Material KNOT = MaterialDefaults.of(MaterialKind.PLASTIC, SceneMapper.color("#e0a030"));
+    private static final Material GROUND = MaterialDefaults.of(MaterialKind.CHALK, Colors.linear("#c8c0b0"));
+    private static final Material KNOT = MaterialDefaults.of(MaterialKind.PLASTIC, Colors.linear("#e0a030"));
     private static final List<PointLight> LIGHTS = List.of(
             new PointLight(new Vec3(-3, 6, 4), Rgb.WHITE, 0.85, false),
-            new PointLight(new Vec3(5, 4, -2), SceneMapper.color("#ffd8a8"), 0.35, false));
-    private static final Rgb BACKGROUND = SceneMapper.color("#2a2f38");
+            new PointLight(new Vec3(5, 4, -2), Colors.linear("#ffd8a8"), 0.35, false));
+    private static final Rgb BACKGROUND = Colors.linear("#2a2f38");
     private static final double AMBIENT = 0.07;
 
     private ScalingScenes() {
@@ -64,7 +64,7 @@ public final class ScalingScenes {
         Random random = new Random(SEED);
         Material[] materials = new Material[SpheresScene.PALETTE.length];
         for (int i = 0; i < materials.length; i++) {
-            materials[i] = MaterialDefaults.of(MaterialKind.CHALK, SceneMapper.color(SpheresScene.PALETTE[i]));
+            materials[i] = MaterialDefaults.of(MaterialKind.CHALK, Colors.linear(SpheresScene.PALETTE[i]));
         }
         double r = sphereRadius(n);
         List<SceneObject> objects = new ArrayList<>(n);

@@ -15,11 +15,11 @@ import org.junit.jupiter.api.io.TempDir;
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.mesh.MeshData;
 import studio.engine.mesh.ObjReader;
-import studio.server.scene.MeshFiles;
-import studio.server.scene.ObjectDto;
-import studio.server.scene.SceneDto;
-import studio.server.scene.SceneLimits;
-import studio.server.scene.SceneMapper;
+import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.SceneMapper;
+import studio.server.scene.format.ObjectDto;
+import studio.server.scene.format.SceneDto;
+import studio.server.scene.format.SceneLimits;
 
 /** The mesh-100k scene: its mesh, its files, and the same silhouette drawn by ours, POV-Ray and Sunflow. */
 class MeshSceneTest {

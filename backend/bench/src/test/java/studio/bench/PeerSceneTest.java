@@ -13,11 +13,12 @@ import org.junit.jupiter.api.io.TempDir;
 
 import jakarta.validation.Validation;
 import jakarta.validation.ValidatorFactory;
-import studio.server.scene.LightDto;
-import studio.server.scene.MaterialDto;
-import studio.server.scene.ObjectDto;
-import studio.server.scene.SceneDto;
-import studio.server.scene.SceneReader;
+
+import studio.server.scene.format.LightDto;
+import studio.server.scene.format.MaterialDto;
+import studio.server.scene.format.ObjectDto;
+import studio.server.scene.format.SceneDto;
+import studio.server.scene.reading.SceneReader;
 
 class PeerSceneTest {
 

@@ -5,9 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
-import studio.server.scene.SceneDto;
-import studio.server.scene.SceneLimits;
-import studio.server.scene.SceneMapper;
+import studio.server.scene.compiling.SceneMapper;
+import studio.server.scene.format.SceneDto;
+import studio.server.scene.format.SceneLimits;
 
 class SpheresSceneTest {
 

@@ -16,14 +16,15 @@ import javax.imageio.ImageIO;
 
 import jakarta.validation.Validation;
 import jakarta.validation.ValidatorFactory;
+
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.Renderer;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.MeshFiles;
-import studio.server.scene.SceneDto;
-import studio.server.scene.SceneLimits;
-import studio.server.scene.SceneMapper;
-import studio.server.scene.SceneReader;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.SceneMapper;
+import studio.server.scene.format.SceneDto;
+import studio.server.scene.format.SceneLimits;
+import studio.server.scene.reading.SceneReader;
 
 /** Small renders of one scene file by ours (in this JVM), POV-Ray (a process) and Sunflow (in this JVM). */
 final class TestRenders {

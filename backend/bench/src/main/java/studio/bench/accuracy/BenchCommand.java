@@ -12,15 +12,15 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Stream;
 
-import studio.server.render.ImageFiles;
 import studio.server.cli.Args;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.InvalidSceneException;
-import studio.server.scene.LazyValidation;
-import studio.server.scene.MeshFiles;
-import studio.server.scene.SceneCompiler;
-import studio.server.scene.SceneReader;
 import studio.bench.ResolvedScene;
+import studio.server.render.ImageFiles;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.format.InvalidSceneException;
+import studio.server.scene.reading.LazyValidation;
+import studio.server.scene.reading.SceneReader;
 
 /**
  * {@code studio-bench.jar accuracy [--out docs/bench] [--width W] [--height H] [--runs N]

@@ -17,7 +17,7 @@ import studio.engine.render.RenderSettings;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.Sampler;
 import studio.engine.scene.Scene;
-import studio.server.scene.CompiledScene;
+import studio.server.scene.compiling.CompiledScene;
 
 /**
  * Measures one scene: a reference render with many jittered samples, then every available sampler

@@ -4,8 +4,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import studio.server.scene.SceneLimits;
-import studio.server.scene.SceneSchema;
+import studio.server.scene.format.SceneLimits;
+import studio.server.scene.format.SceneSchema;
 
 /**
  * The schemas of the OpenAPI document, as JSON Schema 2020-12 maps: the scene format from

@@ -25,8 +25,9 @@ import io.swagger.v3.oas.models.parameters.Parameter;
 import io.swagger.v3.oas.models.parameters.RequestBody;
 import io.swagger.v3.oas.models.responses.ApiResponse;
 import io.swagger.v3.oas.models.responses.ApiResponses;
-import studio.server.scene.SceneLimits;
-import studio.server.scene.SceneMediaTypes;
+
+import studio.server.scene.format.SceneLimits;
+import studio.server.scene.format.SceneMediaTypes;
 
 /**
  * The API's OpenAPI 3.1 document (/v3/api-docs, Swagger UI at /swagger-ui.html). springdoc finds

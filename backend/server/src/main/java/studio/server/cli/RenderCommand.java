@@ -16,11 +16,11 @@ import java.util.Map;
 import studio.engine.render.RenderResult;
 import studio.engine.render.Renderer;
 import studio.server.render.ImageFiles;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.InvalidSceneException;
-import studio.server.scene.LazyValidation;
-import studio.server.scene.MeshFiles;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.format.InvalidSceneException;
+import studio.server.scene.reading.LazyValidation;
 
 /**
  * {@code studio.jar render SCENE.json -o OUT.(png|jpg) [--width W] [--height H] [--samples N]

@@ -15,7 +15,7 @@ import com.hazelcast.config.Config;
 import com.hazelcast.core.HazelcastInstance;
 
 import studio.server.job.JobCluster;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.MemoryBudget;
 import studio.server.system.StudioProperties;
 

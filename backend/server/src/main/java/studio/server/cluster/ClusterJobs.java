@@ -34,8 +34,8 @@ import studio.server.job.JobState;
 import studio.server.job.JobStatus;
 import studio.server.job.TileEvent;
 import studio.server.render.RenderBudget;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.SceneCompiler;
 
 /**
  * Jobs in a cluster of several members (see {@link JobCluster}): the job table, scenes, images and

@@ -5,8 +5,8 @@ import java.util.Map;
 
 import com.hazelcast.map.IMap;
 
-import studio.server.scene.CompiledScene;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 

@@ -28,7 +28,7 @@ import studio.engine.render.RenderResult;
 import studio.engine.render.Renderer;
 import studio.engine.render.TileRect;
 import studio.server.job.JobFailedException;
-import studio.server.scene.CompiledScene;
+import studio.server.scene.compiling.CompiledScene;
 
 /**
  * The coordinator of a job's render in the cluster, on the member that runs the job: queues the

@@ -20,7 +20,7 @@ import studio.engine.render.RenderCancelledException;
 import studio.engine.render.Renderer;
 import studio.engine.render.TileRect;
 import studio.engine.render.TileRenderer;
-import studio.server.scene.CompiledScene;
+import studio.server.scene.compiling.CompiledScene;
 import studio.server.system.MemoryBusyException;
 
 /**

@@ -8,7 +8,7 @@ import java.util.function.Supplier;
 import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
 import studio.server.render.RenderBudget;
-import studio.server.scene.CompiledScene;
+import studio.server.scene.compiling.CompiledScene;
 
 /**
  * Where a job's tiles are rendered and who else sees the job. In a cluster of one ({@link #SINGLE},

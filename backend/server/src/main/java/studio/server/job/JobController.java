@@ -15,9 +15,7 @@ import org.springframework.web.servlet.mvc.method.annotation.SseEmitter;
 import jakarta.servlet.http.HttpServletRequest;
 
 import studio.server.render.RenderedImage;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.SceneCompiler;
-import studio.server.scene.SceneMediaTypes;
+import studio.server.scene.format.SceneMediaTypes;
 import studio.server.system.IntakeMemory;
 
 /**
@@ -27,21 +25,16 @@ import studio.server.system.IntakeMemory;
 @RestController
 class JobController {
 
-    private final SceneCompiler compiler;
     private final JobService jobs;
 
-    JobController(SceneCompiler compiler, JobService jobs) {
-        this.compiler = compiler;
+    JobController(JobService jobs) {
         this.jobs = jobs;
     }
 
+    /** The service reads the scene, as the render service does for POST /api/render. */
     @PostMapping(path = "/api/jobs", consumes = {SceneMediaTypes.JSON, SceneMediaTypes.JSON_SUFFIXED})
     ResponseEntity<JobStatus> start(@RequestBody(required = false) byte[] scene, HttpServletRequest request) {
-        jobs.checkRoom();
-        IntakeMemory intake = IntakeMemory.of(request);
-        byte[] json = scene != null ? scene : new byte[0];
-        CompiledScene compiled = compiler.compile(json, intake);
-        JobStatus status = jobs.submit(compiled, json, intake);
+        JobStatus status = jobs.start(scene != null ? scene : new byte[0], IntakeMemory.of(request));
         return ResponseEntity.accepted().location(URI.create("/api/jobs/" + status.id())).body(status);
     }
 

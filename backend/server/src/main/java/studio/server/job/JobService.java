@@ -17,7 +17,9 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import studio.server.render.RenderBudget;
-import studio.server.scene.CompiledScene;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.Drainable;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
@@ -30,6 +32,8 @@ import studio.server.system.MemoryBudget;
  */
 public final class JobService implements Drainable, AutoCloseable {
 
+    /** Null in a service that is handed compiled scenes only. */
+    private final SceneCompiler compiler;
     private final JobSettings settings;
     private final RenderBudget budget;
     private final Duration shutdownGrace;
@@ -45,22 +49,28 @@ public final class JobService implements Drainable, AutoCloseable {
     /** A listener whose delivery has not returned for this long is dropped (see {@link JobSubscription}). */
     static final long STALL_MILLIS = 5_000;
 
-    public JobService(JobSettings settings) {
-        this(settings, RenderBudget.unlimited(), Duration.ofSeconds(5));
-    }
-
     /**
-     * @param shutdownGrace on shutdown, how long running jobs may go on before they are cancelled
-     */
-    public JobService(JobSettings settings, RenderBudget budget, Duration shutdownGrace) {
-        this(settings, budget, shutdownGrace, JobCluster.SINGLE);
-    }
-
-    /**
-     * @param cluster where jobs' tiles are rendered and who else sees them ({@link JobCluster#SINGLE}:
-     *                this member only)
+     * A service that is handed compiled scenes only ({@link #submit}; {@link #start} refuses): a
+     * cluster member's tests compile their scenes themselves.
      */
     public JobService(JobSettings settings, RenderBudget budget, Duration shutdownGrace, JobCluster cluster) {
+        this(null, settings, budget, shutdownGrace, cluster);
+    }
+
+    /** A service outside Spring (tests), in a cluster of one, without a memory or time limit. */
+    public JobService(SceneCompiler compiler, JobSettings settings) {
+        this(compiler, settings, RenderBudget.unlimited(), Duration.ofSeconds(5), JobCluster.SINGLE);
+    }
+
+    /**
+     * @param compiler      reads the scenes {@link #start} is given
+     * @param shutdownGrace on shutdown, how long running jobs may go on before they are cancelled
+     * @param cluster       where jobs' tiles are rendered and who else sees them ({@link JobCluster#SINGLE}:
+     *                      this member only)
+     */
+    public JobService(SceneCompiler compiler, JobSettings settings, RenderBudget budget, Duration shutdownGrace,
+                      JobCluster cluster) {
+        this.compiler = compiler;
         this.settings = settings;
         this.cluster = cluster;
         this.budget = budget;
@@ -105,10 +115,27 @@ public final class JobService implements Drainable, AutoCloseable {
     }
 
     /**
+     * Reads a scene and queues it, as {@code POST /api/jobs} does: refuses at once while there is no
+     * room ({@link #checkRoom}), then compiles the scene with this service's threads per render, its
+     * building drawn on the request's {@code intake}, which hands its memory over to the job's.
+     *
+     * @param sceneJson the scene as sent; in a cluster it travels to the members that render the job's tiles
+     * @throws JobQueueFullException when every slot and queue place, or the memory the render needs, is taken
+     * @throws InvalidSceneException when the scene is invalid or its render could never fit the memory budget
+     */
+    public JobStatus start(byte[] sceneJson, IntakeMemory intake) {
+        if (compiler == null) {
+            throw new IllegalStateException("this job service is handed compiled scenes only; submit them");
+        }
+        checkRoom();
+        return submit(compiler.compile(sceneJson, Map.of(), settings.renderThreads(), intake), sceneJson, intake);
+    }
+
+    /**
      * Queues a validated scene.
      *
      * @throws JobQueueFullException when every slot and queue place, or the memory the render needs, is taken
-     * @throws studio.server.scene.InvalidSceneException when the render could never fit the memory budget
+     * @throws InvalidSceneException when the render could never fit the memory budget
      */
     public JobStatus submit(CompiledScene scene) {
         return submit(scene, IntakeMemory.NONE);

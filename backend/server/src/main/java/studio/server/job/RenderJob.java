@@ -22,7 +22,7 @@ import studio.engine.render.TileRect;
 import studio.server.render.ImageFiles;
 import studio.server.render.RenderBudget;
 import studio.server.render.RenderTimeExceededException;
-import studio.server.scene.CompiledScene;
+import studio.server.scene.compiling.CompiledScene;
 import studio.server.system.MemoryBudget;
 
 /**

@@ -18,7 +18,7 @@ import org.springframework.web.socket.config.annotation.WebSocketHandlerRegistry
 import org.springframework.web.socket.server.HandshakeInterceptor;
 
 import studio.server.render.RenderBudget;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.StudioProperties;
 import tools.jackson.databind.json.JsonMapper;
 

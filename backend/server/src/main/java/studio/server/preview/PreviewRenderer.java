@@ -15,12 +15,11 @@ import studio.engine.image.ImageEncoder;
 import studio.engine.render.Film;
 import studio.engine.render.RenderSettings;
 import studio.server.render.RenderBudget;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.InvalidSceneException;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
-import studio.server.system.Problems;
 import tools.jackson.databind.json.JsonMapper;
 
 /**
@@ -116,12 +115,10 @@ final class PreviewRenderer {
         return new CompiledScene(scene.scene(), settings, "png", 1, scene.fileStem());
     }
 
-    /** {@code {"revision": n, "problem": {...}}} for an invalid message or scene. */
-    String problem(Long revision, InvalidSceneException e) {
-        return problem(revision, Problems.invalidScene(e));
-    }
-
-    /** {@code {"revision": n, "problem": {...}}} for a refusal that carries its own problem. */
+    /**
+     * {@code {"revision": n, "problem": {...}}} for a refusal that carries its own problem: an invalid
+     * message or scene ({@link InvalidSceneException}), memory that is taken, ...
+     */
     String problem(Long revision, ErrorResponse refusal) {
         return problem(revision, refusal.getBody());
     }

@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
-import studio.server.scene.FieldProblem;
-import studio.server.scene.InvalidSceneException;
+import studio.server.scene.format.FieldProblem;
+import studio.server.scene.format.InvalidSceneException;
 import tools.jackson.core.JacksonException;
 import tools.jackson.core.JsonParser;
 import tools.jackson.core.JsonToken;

@@ -12,8 +12,8 @@ import org.springframework.web.ErrorResponseException;
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
 import studio.server.render.RenderTimeExceededException;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.InvalidSceneException;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 
@@ -131,11 +131,9 @@ final class PreviewSession {
             }
             lastRevision = request.revision();
             scene = renderer.compile(request, next.memory());
-        } catch (InvalidSceneException e) {
-            output.text(renderer.problem(PreviewRequest.revisionOf(next.message()), e));
-            return;
         } catch (ErrorResponseException e) {
-            // the memory to build it is taken right now (503), or it could never fit (413)
+            // an invalid message or scene (400), the memory to build it is taken right now (503), or it
+            // could never fit (413)
             output.text(renderer.problem(PreviewRequest.revisionOf(next.message()), e));
             return;
         } finally {
@@ -171,12 +169,9 @@ final class PreviewSession {
                             first ? this::closed : this::superseded);
                 } catch (RenderCancelledException e) {
                     return;
-                } catch (RenderTimeExceededException e) {
-                    output.text(renderer.problem(request.revision(), HttpStatus.UNPROCESSABLE_CONTENT,
-                            "Render time budget exceeded", e.getMessage()));
-                    return;
-                } catch (InvalidSceneException e) {
-                    output.text(renderer.problem(request.revision(), e)); // it could never fit the render memory
+                } catch (RenderTimeExceededException | InvalidSceneException e) {
+                    // past the render time budget (422), or it could never fit the render memory (400)
+                    output.text(renderer.problem(request.revision(), e));
                     return;
                 }
                 output.frame(frame);

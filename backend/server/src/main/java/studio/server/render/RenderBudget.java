@@ -10,8 +10,8 @@ import studio.engine.render.RenderCancelledException;
 import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
 import studio.engine.render.Renderer;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.InvalidSceneException;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 

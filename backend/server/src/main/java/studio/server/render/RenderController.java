@@ -10,7 +10,9 @@ import org.springframework.web.bind.annotation.RestController;
 import org.springframework.web.context.request.async.DeferredResult;
 
 import jakarta.servlet.http.HttpServletRequest;
-import studio.server.scene.SceneMediaTypes;
+
+import studio.engine.render.RenderCancelledException;
+import studio.server.scene.format.SceneMediaTypes;
 import studio.server.system.IntakeMemory;
 
 /**
@@ -18,9 +20,9 @@ import studio.server.system.IntakeMemory;
  * while the request waits asynchronously; a client that disconnects cancels its render within a few
  * milliseconds ({@link ClientProbe} notices it, or the container reports an async error). Every
  * answer but the image is a problem: 422 when the render ran out of its time budget, 503 with
- * Retry-After when the server is busy, stopping, or gave up waiting for the render (its time budget
- * and a minute to encode the image, {@link RenderService#responseTimeoutMillis}). The body must be
- * sent as JSON ({@link SceneMediaTypes}).
+ * Retry-After when the server is busy, stopping (and cancelled the render), or gave up waiting for
+ * the render (its time budget and a minute to encode the image,
+ * {@link RenderService#responseTimeoutMillis}). The body must be sent as JSON ({@link SceneMediaTypes}).
  */
 @RestController
 class RenderController {
@@ -60,10 +62,20 @@ class RenderController {
             if (error == null) {
                 response.setResult(image.toResponse());
             } else {
-                response.setErrorResult(error instanceof CompletionException wrapped && wrapped.getCause() != null
-                        ? wrapped.getCause() : error);
+                response.setErrorResult(answer(error instanceof CompletionException wrapped
+                        && wrapped.getCause() != null ? wrapped.getCause() : error));
             }
         });
         return response;
+    }
+
+    /**
+     * A render's failure as its answer: a cancelled render is a 503 with Retry-After (only a client
+     * that is still there sees it: its render was stopped because the server is stopping); any other
+     * failure carries its own answer ({@link RenderTimeExceededException}) or is unexpected.
+     */
+    private static Throwable answer(Throwable failure) {
+        return failure instanceof RenderCancelledException ? new RenderBusyException("the render was cancelled "
+                + "before it finished (the server is shutting down); try again shortly") : failure;
     }
 }

@@ -2,7 +2,7 @@ package studio.server.render;
 
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.scene.Scene;
-import studio.server.scene.CompiledScene;
+import studio.server.scene.compiling.CompiledScene;
 
 /**
  * How much heap a render holds, estimated before it starts (see {@link studio.server.system.MemoryBudget}).

@@ -17,8 +17,8 @@ import java.util.concurrent.atomic.AtomicLong;
 import studio.engine.render.RenderCancelledException;
 import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.Drainable;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
@@ -63,7 +63,7 @@ public final class RenderService implements Drainable, AutoCloseable {
     /**
      * Validates the scene and starts its render.
      *
-     * @throws studio.server.scene.InvalidSceneException if the scene is invalid or could never fit the memory budget
+     * @throws studio.server.scene.format.InvalidSceneException if the scene is invalid or could never fit the memory budget
      * @throws RenderBusyException if every slot, or the memory the render needs, is taken right now
      */
     public Ticket start(byte[] sceneJson) {

@@ -19,72 +19,22 @@ import org.springframework.web.context.request.WebRequest;
 import org.springframework.web.servlet.mvc.method.annotation.ResponseEntityExceptionHandler;
 import org.springframework.web.servlet.resource.NoResourceFoundException;
 
-import studio.engine.render.RenderCancelledException;
-import studio.server.job.JobNotDoneException;
-import studio.server.job.JobNotFoundException;
-import studio.server.job.JobQueueFullException;
-import studio.server.render.RenderBusyException;
-import studio.server.render.RenderTimeExceededException;
-import studio.server.scene.InvalidSceneException;
-
 /**
- * Every error as an RFC 9457 problem (application/problem+json). An invalid scene is a 400 whose
- * {@code errors} property lists each bad field by its JSON path and why.
+ * Every error as an RFC 9457 problem (application/problem+json). The features' own refusals (an
+ * invalid scene, a full queue, a busy server, an unknown job, ...) are {@code ErrorResponseException}s
+ * that carry their status, problem and headers, which {@link ResponseEntityExceptionHandler} sends as
+ * they are; this adds what the container and Spring report in their own words, and a 500 for the
+ * unexpected.
  */
 @RestControllerAdvice
 class ProblemAdvice extends ResponseEntityExceptionHandler {
 
     private static final Logger log = LoggerFactory.getLogger(ProblemAdvice.class);
 
-    @ExceptionHandler(InvalidSceneException.class)
-    ResponseEntity<ProblemDetail> invalidScene(InvalidSceneException e) {
-        return ResponseEntity.badRequest().body(Problems.invalidScene(e));
-    }
-
-    @ExceptionHandler(JobNotFoundException.class)
-    ResponseEntity<ProblemDetail> jobNotFound(JobNotFoundException e) {
-        return ResponseEntity.status(HttpStatus.NOT_FOUND)
-                .body(ProblemDetail.forStatusAndDetail(HttpStatus.NOT_FOUND, e.getMessage()));
-    }
-
-    @ExceptionHandler(JobNotDoneException.class)
-    ResponseEntity<ProblemDetail> jobNotDone(JobNotDoneException e) {
-        return ResponseEntity.status(HttpStatus.CONFLICT)
-                .body(ProblemDetail.forStatusAndDetail(HttpStatus.CONFLICT, e.getMessage()));
-    }
-
-    @ExceptionHandler(JobQueueFullException.class)
-    ResponseEntity<ProblemDetail> queueFull(JobQueueFullException e) {
-        return ResponseEntity.status(HttpStatus.TOO_MANY_REQUESTS)
-                .header(HttpHeaders.RETRY_AFTER, Integer.toString(e.retryAfterSeconds()))
-                .body(ProblemDetail.forStatusAndDetail(HttpStatus.TOO_MANY_REQUESTS, e.getMessage()));
-    }
-
     @ExceptionHandler(BodyTooLargeException.class)
     ResponseEntity<ProblemDetail> bodyTooLarge(BodyTooLargeException e) {
         ProblemDetail problem = ProblemDetail.forStatusAndDetail(HttpStatus.CONTENT_TOO_LARGE, e.getMessage());
         return ResponseEntity.status(HttpStatus.CONTENT_TOO_LARGE).body(problem);
-    }
-
-    @ExceptionHandler(RenderBusyException.class)
-    ResponseEntity<ProblemDetail> busy(RenderBusyException e) {
-        ProblemDetail problem = ProblemDetail.forStatusAndDetail(HttpStatus.SERVICE_UNAVAILABLE, e.getMessage());
-        return ResponseEntity.status(HttpStatus.SERVICE_UNAVAILABLE).header(HttpHeaders.RETRY_AFTER, "5").body(problem);
-    }
-
-    @ExceptionHandler(RenderTimeExceededException.class)
-    ResponseEntity<ProblemDetail> renderTooLong(RenderTimeExceededException e) {
-        ProblemDetail problem = ProblemDetail.forStatusAndDetail(HttpStatus.UNPROCESSABLE_CONTENT, e.getMessage());
-        problem.setTitle("Render time budget exceeded");
-        return ResponseEntity.status(HttpStatus.UNPROCESSABLE_CONTENT).body(problem);
-    }
-
-    /** Only a client that is still there sees this: its render was stopped because the server is stopping. */
-    @ExceptionHandler(RenderCancelledException.class)
-    ResponseEntity<ProblemDetail> renderCancelled(RenderCancelledException e) {
-        ProblemDetail problem = ProblemDetail.forStatusAndDetail(HttpStatus.SERVICE_UNAVAILABLE,
-                "the render was cancelled before it finished (the server is shutting down); try again shortly");
-        return ResponseEntity.status(HttpStatus.SERVICE_UNAVAILABLE).header(HttpHeaders.RETRY_AFTER, "5").body(problem);
     }
 
     /** Tomcat cannot read the query string: a parameter without a name, a bad %-escape, too many parameters. */

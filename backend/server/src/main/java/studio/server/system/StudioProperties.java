@@ -6,12 +6,11 @@ import org.springframework.boot.context.properties.ConfigurationProperties;
 import org.springframework.boot.context.properties.bind.DefaultValue;
 import org.springframework.util.unit.DataSize;
 
-import studio.server.job.JobSettings;
-import studio.server.scene.SceneLimits;
-
 /**
  * The service's settings (application.properties, or environment variables such as
- * STUDIO_LIMITS_MAXWIDTH).
+ * STUDIO_LIMITS_MAXWIDTH), every one with its default, in one place as an operator reads them.
+ * Plain values only: each feature's configuration turns its part into its own types (the scene
+ * limits, the job settings, ...), so this package knows none of them.
  *
  * @param concurrentRenders synchronous renders at once; more get 503 with Retry-After
  * @param renderThreads     worker threads per render, 0 for all cores
@@ -19,8 +18,9 @@ import studio.server.scene.SceneLimits;
  *                          0 for half of the maximum heap
  */
 @ConfigurationProperties("studio")
-public record StudioProperties(Limits limits, Jobs jobs, @DefaultValue("2") int concurrentRenders,
-                               @DefaultValue("0") int renderThreads, @DefaultValue("0B") DataSize renderMemory) {
+public record StudioProperties(@DefaultValue Limits limits, @DefaultValue Jobs jobs,
+                               @DefaultValue("2") int concurrentRenders, @DefaultValue("0") int renderThreads,
+                               @DefaultValue("0B") DataSize renderMemory) {
 
     /**
      * Render jobs: how many run at once, how many wait, how long results are kept, and on shutdown
@@ -43,38 +43,10 @@ public record StudioProperties(Limits limits, Jobs jobs, @DefaultValue("2") int 
                          @DefaultValue("2000000") int maxTriangles, @DefaultValue("33554432") long maxBodyBytes,
                          @DefaultValue("268435456") long maxPixelSamples, @DefaultValue("5m") Duration maxRenderTime,
                          @DefaultValue("10s") Duration bodyGrace, @DefaultValue("256KB") DataSize minBodyRate) {
-
-        public SceneLimits toSceneLimits() {
-            return new SceneLimits(maxWidth, maxHeight, maxSamples, maxDepth, maxObjects, maxLights, maxTriangles,
-                    maxBodyBytes, maxPixelSamples);
-        }
     }
 
     /** The memory budget: {@link #renderMemory}, or half of the maximum heap when that is 0. */
     public MemoryBudget memoryBudget() {
         return renderMemory.toBytes() > 0 ? new MemoryBudget(renderMemory.toBytes()) : MemoryBudget.ofHeapShare(0.5);
-    }
-
-    /** The job settings, with this service's threads per render. */
-    public JobSettings jobSettings() {
-        return new JobSettings(jobs.concurrent(), jobs.queue(), jobs.keepFinished(), jobs.maxFinished(),
-                jobs.abandonAfter(), renderThreads);
-    }
-
-    public StudioProperties {
-        if (jobs == null) {
-            JobSettings d = JobSettings.DEFAULTS;
-            jobs = new Jobs(d.concurrent(), d.queue(), d.keepFinished(), d.maxFinished(), d.abandonAfter(),
-                    Duration.ofSeconds(20));
-        }
-        if (limits == null) {
-            SceneLimits d = SceneLimits.DEFAULTS;
-            limits = new Limits(d.maxWidth(), d.maxHeight(), d.maxSamples(), d.maxDepth(), d.maxObjects(),
-                    d.maxLights(), d.maxTriangles(), d.maxBodyBytes(), d.maxPixelSamples(), Duration.ofMinutes(5),
-                    Duration.ofSeconds(10), DataSize.ofKilobytes(256));
-        }
-        if (renderMemory == null) {
-            renderMemory = DataSize.ofBytes(0);
-        }
     }
 }

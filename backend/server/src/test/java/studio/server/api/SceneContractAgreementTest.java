@@ -28,10 +28,10 @@ import com.networknt.schema.Schema;
 import com.networknt.schema.SchemaRegistry;
 import com.networknt.schema.SpecificationVersion;
 
-import studio.server.scene.ExampleSceneFiles;
-import studio.server.scene.FieldProblem;
-import studio.server.scene.InvalidSceneException;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.examples.ExampleSceneFiles;
+import studio.server.scene.format.FieldProblem;
+import studio.server.scene.format.InvalidSceneException;
 import tools.jackson.databind.DeserializationFeature;
 import tools.jackson.databind.JsonNode;
 import tools.jackson.databind.json.JsonMapper;

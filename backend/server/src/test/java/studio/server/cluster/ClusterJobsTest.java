@@ -25,8 +25,8 @@ import studio.server.job.JobState;
 import studio.server.job.JobStatus;
 import studio.server.job.TileEvent;
 import studio.server.render.ImageFiles;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.IntakeMemory;
 
 /**

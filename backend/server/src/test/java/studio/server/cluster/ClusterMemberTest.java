@@ -16,7 +16,7 @@ import com.hazelcast.core.HazelcastInstance;
 import org.springframework.boot.context.properties.EnableConfigurationProperties;
 
 import studio.server.Await;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.MemoryBudget;
 import studio.server.system.StudioProperties;
 

@@ -12,7 +12,7 @@ import jakarta.validation.ValidatorFactory;
 import studio.server.job.JobService;
 import studio.server.job.JobSettings;
 import studio.server.render.RenderBudget;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.MemoryBudget;
 
 /**

@@ -19,9 +19,10 @@ import org.junit.jupiter.api.Test;
 import studio.engine.scene.Scene;
 import studio.server.Await;
 import studio.server.render.RenderBudget;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.ExampleSceneFiles;
-import studio.server.scene.InvalidSceneException;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.examples.ExampleSceneFiles;
+import studio.server.scene.format.InvalidSceneException;
+import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 
 class JobServiceTest {
@@ -46,7 +47,7 @@ class JobServiceTest {
     private JobService service;
 
     private JobService service(JobSettings settings) {
-        service = new JobService(settings);
+        service = new JobService(ExampleSceneFiles.compiler(), settings);
         return service;
     }
 
@@ -157,6 +158,27 @@ class JobServiceTest {
         jobs.cancel(running.id());
     }
 
+    /** As POST /api/jobs starts a job: the service reads the scene, once there is room for it. */
+    @Test
+    void startReadsTheSceneOnlyOnceThereIsRoom() throws Exception {
+        JobService jobs = service(settings(1, 1));
+        JobStatus running = jobs.start(SMALL.getBytes(StandardCharsets.UTF_8), IntakeMemory.NONE);
+        await("done", () -> jobs.status(running.id()).state() == JobState.DONE);
+        assertNotNull(jobs.image(running.id()).bytes());
+        InvalidSceneException invalid = assertThrows(InvalidSceneException.class,
+                () -> jobs.start("{}".getBytes(StandardCharsets.UTF_8), IntakeMemory.NONE));
+        assertEquals("objects", invalid.problems().get(0).field());
+
+        JobStatus blocker = jobs.submit(compile(LARGE));
+        await("running", () -> jobs.status(blocker.id()).state() == JobState.RUNNING);
+        JobStatus queued = jobs.submit(compile(LARGE));
+        // no room: refused before the scene is read, so an invalid one is refused for the queue, not itself
+        assertThrows(JobQueueFullException.class, () -> jobs.start("{}".getBytes(StandardCharsets.UTF_8),
+                IntakeMemory.NONE));
+        jobs.cancel(queued.id());
+        jobs.cancel(blocker.id());
+    }
+
     @Test
     void fullQueueIsRefusedWithARetryDelay() {
         JobService jobs = service(settings(1, 1));
@@ -243,7 +265,8 @@ class JobServiceTest {
     // --- memory, disconnects, shutdown ---------------------------------------------------------
 
     private JobService service(JobSettings settings, MemoryBudget memory, Duration grace) {
-        service = new JobService(settings, new RenderBudget(Duration.ofMinutes(5), memory), grace);
+        service = new JobService(ExampleSceneFiles.compiler(), settings, new RenderBudget(Duration.ofMinutes(5), memory),
+                grace, JobCluster.SINGLE);
         return service;
     }
 

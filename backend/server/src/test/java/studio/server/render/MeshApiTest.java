@@ -25,7 +25,7 @@ import org.springframework.http.MediaType;
 import org.springframework.test.web.servlet.MockMvc;
 
 import studio.server.AsyncMvc;
-import studio.server.scene.ExampleSceneFiles;
+import studio.server.scene.examples.ExampleSceneFiles;
 import tools.jackson.databind.json.JsonMapper;
 
 /** Meshes through the API: shipped meshes by file name, uploaded meshes inline, bad OBJ named by field and line. */

@@ -19,9 +19,9 @@ import org.junit.jupiter.params.provider.MethodSource;
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.RenderResult;
 import studio.engine.render.Renderer;
-import studio.server.scene.CompiledScene;
-import studio.server.scene.ExampleSceneFiles;
-import studio.server.scene.SceneCompiler;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.examples.ExampleSceneFiles;
 
 /**
  * Every scene in scenes/ rendered small and compared with its checked-in reference in

@@ -40,7 +40,7 @@ import org.springframework.test.web.servlet.MockMvc;
 import org.springframework.test.web.servlet.MvcResult;
 
 import studio.server.AsyncMvc;
-import studio.server.scene.ExampleSceneFiles;
+import studio.server.scene.examples.ExampleSceneFiles;
 import tools.jackson.databind.json.JsonMapper;
 
 /**

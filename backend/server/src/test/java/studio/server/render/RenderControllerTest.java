@@ -28,6 +28,7 @@ import org.springframework.mock.web.MockAsyncContext;
 import org.springframework.test.web.servlet.MockMvc;
 import org.springframework.test.web.servlet.MvcResult;
 
+import studio.engine.render.RenderCancelledException;
 import studio.server.AsyncMvc;
 
 /** The render endpoint's mapping of service outcomes onto HTTP, with the service mocked. */
@@ -96,6 +97,21 @@ class RenderControllerTest {
                 .andExpect(jsonPath("$.title").value("Render time budget exceeded"))
                 .andExpect(jsonPath("$.detail").value(containsString("5 min")))
                 .andExpect(jsonPath("$.detail").value(containsString("studio.limits.max-render-time")));
+    }
+
+    /** Only a client still there sees it: its render was stopped because the server is stopping. */
+    @Test
+    void renderCancelledByShutdownGives503WithRetryAfter() throws Exception {
+        RenderService.Ticket ticket = ticket(CompletableFuture.failedFuture(new RenderCancelledException()));
+        given(renderService.start(any(), any(), any())).willReturn(ticket);
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content("{\"objects\":[]}"))
+                .andExpect(status().isServiceUnavailable())
+                .andExpect(header().string(HttpHeaders.RETRY_AFTER, "5"))
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.title").value("Service Unavailable"))
+                .andExpect(jsonPath("$.detail").value("the render was cancelled before it finished (the server is "
+                        + "shutting down); try again shortly"))
+                .andExpect(jsonPath("$.instance").value("/api/render"));
     }
 
     @Test

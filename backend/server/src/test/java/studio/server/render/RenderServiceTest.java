@@ -14,8 +14,8 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
 import studio.server.Await;
-import studio.server.scene.ExampleSceneFiles;
-import studio.server.scene.InvalidSceneException;
+import studio.server.scene.examples.ExampleSceneFiles;
+import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.MemoryBudget;
 
 /** The synchronous render service without HTTP: its slots, its time budget, and what a refused request costs. */

@@ -1,0 +1,134 @@
+package studio.server.scene.compiling;
+
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.HexFormat;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+import studio.engine.geometry.TriangleMesh;
+import studio.engine.math.Vec3;
+import studio.engine.mesh.MeshData;
+import studio.server.system.MemoryBudget;
+
+/**
+ * Meshes already read and built, by content: the OBJ text's SHA-256 and, for a built mesh (its
+ * triangles placed in the world with their bounding volume hierarchy), its placement. The live view
+ * sends the whole scene on every edit; with this, moving a light or another object reuses an
+ * unchanged mesh as it is, and moving the mesh reuses its parsed OBJ. A digest, not the text's hash
+ * code, so that nobody can make two different meshes share an entry.
+ *
+ * <p>Bounded: the least recently used entries go first, and every entry holds its share of the
+ * service's {@link MemoryBudget} ({@value #BYTES_PER_TRIANGLE} bytes a triangle) while it is kept;
+ * when the budget cannot cover a mesh, it is not kept. Meshes are immutable once built, so renders
+ * may share them.
+ */
+public final class MeshCache {
+
+    /** Positions, normals, indices, and a built mesh's BVH: as a render's estimate counts a triangle. */
+    public static final long BYTES_PER_TRIANGLE = 200;
+
+    /** Where a built mesh stands: its content and its placement. */
+    record Placement(String digest, Vec3 position, double scale, Vec3 rotation) {
+    }
+
+    private record Entry<T>(T value, MemoryBudget.Reservation memory) {
+    }
+
+    private final long maxTriangles;
+    private final MemoryBudget memory;
+    private final Map<String, Entry<MeshData>> parsed = new LinkedHashMap<>(16, 0.75f, true);
+    private final Map<Placement, Entry<TriangleMesh>> built = new LinkedHashMap<>(16, 0.75f, true);
+    private long triangles;
+
+    /** @param maxTriangles at most this many triangles kept, parsed and built together */
+    public MeshCache(long maxTriangles, MemoryBudget memory) {
+        this.maxTriangles = maxTriangles;
+        this.memory = memory;
+    }
+
+    /** Keeps nothing (the command line reads each mesh once). */
+    public static MeshCache none() {
+        return new MeshCache(0, MemoryBudget.unlimited());
+    }
+
+    /** The SHA-256 of an OBJ text, as the key of its entries. */
+    static String digest(String objText) {
+        try {
+            MessageDigest sha = MessageDigest.getInstance("SHA-256");
+            return HexFormat.of().formatHex(sha.digest(objText.getBytes(StandardCharsets.UTF_8)));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java runtime has SHA-256", e);
+        }
+    }
+
+    synchronized MeshData parsed(String digest) {
+        Entry<MeshData> entry = parsed.get(digest);
+        return entry != null ? entry.value() : null;
+    }
+
+    synchronized void keepParsed(String digest, MeshData data) {
+        Entry<MeshData> entry = admit(data.triangleCount(), data);
+        if (entry != null) {
+            release(parsed.put(digest, entry));
+        }
+    }
+
+    synchronized TriangleMesh built(Placement placement) {
+        Entry<TriangleMesh> entry = built.get(placement);
+        return entry != null ? entry.value() : null;
+    }
+
+    synchronized void keepBuilt(Placement placement, TriangleMesh mesh) {
+        Entry<TriangleMesh> entry = admit(mesh.triangleCount(), mesh);
+        if (entry != null) {
+            release(built.put(placement, entry));
+        }
+    }
+
+    /** Triangles kept now. */
+    synchronized long triangles() {
+        return triangles;
+    }
+
+    /** Makes room (least recently used first) and reserves the memory, or null if it cannot be kept. */
+    private <T> Entry<T> admit(int count, T value) {
+        if (count > maxTriangles) {
+            return null;
+        }
+        while (triangles + count > maxTriangles && evictOldest()) {
+            // evicting
+        }
+        MemoryBudget.Reservation reservation;
+        while ((reservation = memory.tryReserve(count * BYTES_PER_TRIANGLE)) == null) {
+            if (!evictOldest()) {
+                return null;
+            }
+        }
+        triangles += count;
+        return new Entry<>(value, reservation);
+    }
+
+    /** Drops the least recently used entry, built meshes before parsed ones; false if there is none. */
+    private boolean evictOldest() {
+        Map<?, ? extends Entry<?>> from = !built.isEmpty() ? built : parsed;
+        Iterator<? extends Entry<?>> oldest = from.values().iterator();
+        if (!oldest.hasNext()) {
+            return false;
+        }
+        release(oldest.next());
+        oldest.remove();
+        return true;
+    }
+
+    private void release(Entry<?> entry) {
+        if (entry != null) {
+            int count = entry.value() instanceof MeshData data ? data.triangleCount()
+                    : ((TriangleMesh) entry.value()).triangleCount();
+            triangles -= count;
+            entry.memory().close();
+        }
+    }
+}

@@ -1,0 +1,70 @@
+package studio.server.scene.compiling;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+
+import studio.server.scene.format.MeshFileNames;
+
+/**
+ * Where a mesh's {@code file} is read from. The command line reads files beside the scene file; the
+ * service reads only the meshes shipped with its example scenes (anything else is sent inline as
+ * {@code obj}, which is how a mesh is uploaded).
+ */
+@FunctionalInterface
+public interface MeshFiles {
+
+    /**
+     * The OBJ text of {@code file}.
+     *
+     * @throws IllegalArgumentException saying what is wrong with the name, or that there is no such file
+     */
+    String read(String file);
+
+    /** The meshes shipped in the jar under scenes/ (copied from scenes/ at build time). */
+    static MeshFiles bundled() {
+        return file -> {
+            requireName(file);
+            try (InputStream in = MeshFiles.class.getClassLoader().getResourceAsStream("scenes/" + file)) {
+                if (in == null) {
+                    throw new IllegalArgumentException("no mesh '" + file + "' ships with this server; send the "
+                            + "OBJ text inline as \"obj\" instead");
+                }
+                return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                throw new IllegalArgumentException("cannot read the mesh '" + file + "': " + e.getMessage());
+            }
+        };
+    }
+
+    /** Files relative to a folder, e.g. the one holding the scene file. */
+    static MeshFiles in(Path folder) {
+        return file -> {
+            requireName(file);
+            Path path = folder.resolve(file);
+            try {
+                return Files.readString(path, StandardCharsets.UTF_8);
+            } catch (NoSuchFileException e) {
+                throw new IllegalArgumentException("no such file: " + path);
+            } catch (IOException e) {
+                throw new IllegalArgumentException("cannot read " + path + ": " + e.getMessage());
+            }
+        };
+    }
+
+    /** No files at all: meshes must be inline. */
+    static MeshFiles none() {
+        return file -> {
+            throw new IllegalArgumentException("mesh files cannot be read here; send the OBJ text inline as \"obj\"");
+        };
+    }
+
+    private static void requireName(String file) {
+        if (!MeshFileNames.PATTERN.matcher(file).matches()) {
+            throw new IllegalArgumentException(MeshFileNames.MESSAGE);
+        }
+    }
+}

@@ -1,0 +1,68 @@
+package studio.server.scene.format;
+
+import java.util.List;
+
+import com.fasterxml.jackson.annotation.JsonSubTypes;
+import com.fasterxml.jackson.annotation.JsonTypeInfo;
+
+import org.hibernate.validator.constraints.CodePointLength;
+
+import jakarta.validation.Valid;
+import jakarta.validation.constraints.NotNull;
+import jakarta.validation.constraints.Pattern;
+import jakarta.validation.constraints.Positive;
+
+/**
+ * A scene object; {@code type} names its kind. Each may carry a {@code name} the user gave it in the editor;
+ * the engine ignores it (it is the editor's, kept in the file so a scene reopens with its names).
+ */
+@JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "type")
+@JsonSubTypes({
+        @JsonSubTypes.Type(value = ObjectDto.Sphere.class, name = "sphere"),
+        @JsonSubTypes.Type(value = ObjectDto.Box.class, name = "box"),
+        @JsonSubTypes.Type(value = ObjectDto.Plane.class, name = "plane"),
+        @JsonSubTypes.Type(value = ObjectDto.Mesh.class, name = "mesh")})
+public sealed interface ObjectDto {
+
+    MaterialDto material();
+
+    record Sphere(
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> center,
+            @Positive @Finite Double radius,
+            @Valid MaterialDto material,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
+    }
+
+    /** A box: centre, full size along its own axes, rotation in degrees about x, y, z (order XYZ, as three.js). */
+    record Box(
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> center,
+            @Vector List<@NotNull(message = "must be a number") @Positive @Finite Double> size,
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
+            @Valid MaterialDto material,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
+    }
+
+    /** An infinite plane through {@code point} with the given normal (need not be unit length). */
+    record Plane(
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> point,
+            @Vector @NonZeroVector List<@NotNull(message = "must be a number") @Finite Double> normal,
+            @Valid MaterialDto material,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
+    }
+
+    /**
+     * A triangle mesh from Wavefront OBJ (positions, triangles or polygons, optional vertex normals
+     * for smooth shading): either the OBJ text itself in {@code obj}, or a {@code file} name (see
+     * {@link MeshFileNames}; the compiler's MeshFiles say where it is read from). Placed by a uniform
+     * scale, then the rotation (degrees, order XYZ as three.js), then moved to {@code position}.
+     */
+    record Mesh(
+            String obj,
+            @Pattern(regexp = MeshFileNames.RULE, message = MeshFileNames.MESSAGE) String file,
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
+            @Positive @Finite Double scale,
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
+            @Valid MaterialDto material,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
+    }
+}
