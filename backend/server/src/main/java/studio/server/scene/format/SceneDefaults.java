@@ -1,10 +1,21 @@
 package studio.server.scene.format;
 
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+import studio.engine.material.Material;
+import studio.engine.material.MaterialDefaults;
+import studio.engine.material.MaterialKind;
+import studio.engine.math.Rgb;
+import studio.engine.math.Srgb;
 
 /**
  * Defaults of the scene format, for every field a file leaves out (material coefficients come
- * from the engine's MaterialDefaults). Published with the format, so change them deliberately.
+ * from the engine's MaterialDefaults). The one place they live: the mapper fills them in, and the
+ * published JSON Schema states them ({@code "default"}, from {@link #of}), which the editor's
+ * defaults are tested against. Change them deliberately.
  */
 public final class SceneDefaults {
 
@@ -43,5 +54,53 @@ public final class SceneDefaults {
     public static final String MATERIAL = "chalk";
 
     private SceneDefaults() {
+    }
+
+    /** The default of each field with one, by record. render.adaptive has none alone: it depends on the sampler. */
+    private static final Map<Class<?>, Map<String, Object>> FIELDS = Map.of(
+            SceneDto.class, Map.of("version", SceneDto.FORMAT_VERSION, "name", NAME, "background", BACKGROUND,
+                    "ambient", AMBIENT),
+            ImageDto.class, Map.of("width", WIDTH, "height", HEIGHT, "format", FORMAT, "quality", JPEG_QUALITY),
+            CameraDto.class, Map.of("position", CAMERA_POSITION, "lookAt", CAMERA_LOOK_AT, "up", CAMERA_UP,
+                    "fov", CAMERA_FOV_DEGREES),
+            RenderDto.class, Map.of("sampler", SAMPLER, "samples", SAMPLES, "maxDepth", MAX_DEPTH, "seed", SEED),
+            LightDto.Point.class, Map.of("position", LIGHT_POSITION, "color", LIGHT_COLOR, "intensity", LIGHT_INTENSITY,
+                    "falloff", false),
+            ObjectDto.Sphere.class, Map.of("center", SPHERE_CENTER, "radius", SPHERE_RADIUS),
+            ObjectDto.Box.class, Map.of("center", BOX_CENTER, "size", BOX_SIZE, "rotation", ORIGIN),
+            ObjectDto.Plane.class, Map.of("point", ORIGIN, "normal", PLANE_NORMAL),
+            ObjectDto.Mesh.class, Map.of("position", ORIGIN, "scale", MESH_SCALE, "rotation", ORIGIN));
+
+    /**
+     * The default of a field of one of the format's records, as the schema publishes it, or null
+     * when it has none (a required field, a list, or one whose default depends on another field).
+     * A material's come from the engine's {@link MaterialDefaults} for its kind, its colour as
+     * {@code #rrggbb}.
+     */
+    public static Object of(Class<?> record, String field) {
+        if (MaterialDto.class.isAssignableFrom(record) && record != MaterialDto.class) {
+            return materialDefaults(MaterialKind.valueOf(record.getSimpleName().toUpperCase(Locale.ROOT))).get(field);
+        }
+        return FIELDS.getOrDefault(record, Map.of()).get(field);
+    }
+
+    private static Map<String, Object> materialDefaults(MaterialKind kind) {
+        Material m = MaterialDefaults.of(kind, null);
+        Map<String, Object> fields = new LinkedHashMap<>();
+        fields.put("color", hex(m.color()));
+        fields.put("diffuse", m.diffuse());
+        fields.put("specular", m.specular());
+        fields.put("shininess", m.shininess());
+        fields.put("reflectivity", m.reflectivity());
+        fields.put("ior", m.ior());
+        return fields;
+    }
+
+    private static String hex(Rgb linear) {
+        return String.format(Locale.ROOT, "#%02x%02x%02x", byte8(linear.r()), byte8(linear.g()), byte8(linear.b()));
+    }
+
+    private static int byte8(double linear) {
+        return (int) Math.round(Srgb.fromLinear(linear) * 255);
     }
 }

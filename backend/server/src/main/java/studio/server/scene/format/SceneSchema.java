@@ -30,8 +30,9 @@ import jakarta.validation.constraints.PositiveOrZero;
 
 /**
  * The scene format as a JSON Schema (draft 2020-12), derived from the DTO records and their
- * Bean Validation annotations, with this server's limits as maximum and maxItems. It is what the
- * server enforces, so the editor's types are checked against it and cannot drift.
+ * Bean Validation annotations, with this server's limits as maximum and maxItems and each field's
+ * default ({@link SceneDefaults#of}). It is what the server enforces, so the editor's types and
+ * defaults are checked against it and cannot drift.
  */
 public final class SceneSchema {
 
@@ -63,8 +64,12 @@ public final class SceneSchema {
         for (RecordComponent component : type.getRecordComponents()) {
             Field field = field(type, component.getName());
             String childPath = path.isEmpty() ? component.getName() : path + "." + component.getName();
-            properties.put(component.getName(), value(component.getGenericType(), field.getAnnotatedType(), field,
-                    childPath));
+            Map<String, Object> property = value(component.getGenericType(), field.getAnnotatedType(), field, childPath);
+            Object fallback = SceneDefaults.of(type, component.getName());
+            if (fallback != null) {
+                property.put("default", fallback);
+            }
+            properties.put(component.getName(), property);
             if (field.isAnnotationPresent(NotNull.class)) {
                 required.add(component.getName());
             }

@@ -62,19 +62,41 @@ class SceneSchemaTest {
         Map<String, Object> schema = SceneSchema.of(limits);
         Map<String, Object> defs = (Map<String, Object>) schema.get("$defs");
         Map<String, Object> image = (Map<String, Object>) ((Map<String, Object>) defs.get("Image")).get("properties");
-        assertEquals(Map.of("type", "integer", "minimum", 1, "maximum", 640), image.get("width"));
+        assertEquals(Map.of("type", "integer", "minimum", 1, "maximum", 640, "default", 800), image.get("width"));
         Map<String, Object> root = (Map<String, Object>) schema.get("properties");
         assertEquals(50, ((Map<String, Object>) root.get("objects")).get("maxItems"));
         assertEquals(List.of("objects"), schema.get("required"));
         Map<String, Object> sphere = (Map<String, Object>) ((Map<String, Object>) defs.get("SphereObject"))
                 .get("properties");
-        assertEquals(Map.of("type", "number", "exclusiveMinimum", 0), sphere.get("radius"));
+        assertEquals(Map.of("type", "number", "exclusiveMinimum", 0, "default", 1.0), sphere.get("radius"));
         Map<String, Object> center = (Map<String, Object>) sphere.get("center");
         assertEquals(3, center.get("minItems"));
         assertEquals(3, center.get("maxItems"));
         Map<String, Object> camera = (Map<String, Object>) ((Map<String, Object>) defs.get("Camera")).get("properties");
-        assertEquals(Map.of("type", "number", "exclusiveMinimum", 0, "exclusiveMaximum", 180), camera.get("fov"));
+        assertEquals(Map.of("type", "number", "exclusiveMinimum", 0, "exclusiveMaximum", 180, "default", 50.0), camera.get("fov"));
         Map<String, Object> background = (Map<String, Object>) root.get("background");
         assertEquals("^(#[0-9a-fA-F]{6})$", background.get("pattern"));
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void publishesEachFieldsDefaultAsTheMapperFillsItIn() {
+        Map<String, Object> schema = SceneSchema.of(SceneLimits.DEFAULTS);
+        Map<String, Object> defs = (Map<String, Object>) schema.get("$defs");
+        Map<String, Object> root = (Map<String, Object>) schema.get("properties");
+        assertEquals(SceneDefaults.NAME, ((Map<String, Object>) root.get("name")).get("default"));
+        Map<String, Object> render = (Map<String, Object>) ((Map<String, Object>) defs.get("Render")).get("properties");
+        assertEquals(SceneDefaults.SAMPLER, ((Map<String, Object>) render.get("sampler")).get("default"));
+        // render.adaptive's default depends on the sampler: none is published
+        assertEquals(null, ((Map<String, Object>) render.get("adaptive")).get("default"));
+        Map<String, Object> mirror = (Map<String, Object>) ((Map<String, Object>) defs.get("MirrorMaterial")).get("properties");
+        assertEquals("#ffffff", ((Map<String, Object>) mirror.get("color")).get("default"));
+        assertEquals(1.0, ((Map<String, Object>) mirror.get("reflectivity")).get("default"));
+        Map<String, Object> chalk = (Map<String, Object>) ((Map<String, Object>) defs.get("ChalkMaterial")).get("properties");
+        assertEquals("#cccccc", ((Map<String, Object>) chalk.get("color")).get("default"));
+        Map<String, Object> light = (Map<String, Object>) ((Map<String, Object>) defs.get("PointLight")).get("properties");
+        assertEquals(false, ((Map<String, Object>) light.get("falloff")).get("default"));
+        // a required field has none
+        assertEquals(null, ((Map<String, Object>) root.get("objects")).get("default"));
     }
 }
