@@ -31,6 +31,8 @@ final class TestMember implements AutoCloseable {
     final ClusterJobs cluster;
     final JobService jobs;
     final String address;
+    /** The member's id, as the job table names a job's owner. */
+    final String uuid;
     /** What the member's workers do once they took a tile from the queue, before they claim it. */
     volatile Consumer<TileTask> onTaken = task -> {
     };
@@ -60,6 +62,7 @@ final class TestMember implements AutoCloseable {
         cluster = new ClusterJobs(hazelcast, compiler, workers, 1);
         jobs = new JobService(SETTINGS, RenderBudget.unlimited(), Duration.ofSeconds(2), cluster);
         address = ClusterNames.address(hazelcast.getCluster().getLocalMember());
+        uuid = hazelcast.getCluster().getLocalMember().getUuid().toString();
     }
 
     /**
