@@ -5,10 +5,12 @@ import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executor;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 
@@ -49,6 +51,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(ClusterJobs.class);
     /** Besides on every member's departure, orphaned jobs are looked for this often. */
     static final long ORPHAN_CHECK_SECONDS = 5;
+    /** A job's end is written to the cluster's maps within this long before the job reports it, or after. */
+    static final long END_WRITE_SECONDS = 10;
     /**
      * The cluster's tiles are this large when the image has at least {@value #MIN_LARGE_TILES} of
      * them. Each tile costs a few round trips between members (take and claim it, put its result,
@@ -161,7 +165,30 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             scenes.set(id, sceneJson);
             jobs.set(id, new JobRecord(now, memberId, tileSize));
         }
-        return new JobPublisher(id, memberId, tileSize, jobs, images, events, status, image, published);
+        return new JobPublisher(id, memberId, jobs, images, events, status, image, published);
+    }
+
+    /**
+     * Writes the end of a job of this member that ran (a done job's image first, then the job table), so
+     * that the job reports its end only once every member serves it, image and all. A write that
+     * fails or takes more than {@value #END_WRITE_SECONDS} s is left to the job's {@link JobPublisher},
+     * which writes the end again when the job reports it; a done end is never written without its image.
+     */
+    @Override
+    public void ending(String id, JobStatus end, byte[] image) {
+        try {
+            if (end.state() == JobState.DONE) {
+                images.setAsync(id, image).toCompletableFuture().get(END_WRITE_SECONDS, TimeUnit.SECONDS);
+            }
+            jobs.submitToKey(id, new StatusUpdate(memberId, end)).toCompletableFuture()
+                    .get(END_WRITE_SECONDS, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (ExecutionException | TimeoutException | RuntimeException e) {
+            if (member.getLifecycleService().isRunning()) {
+                log.warn("could not write the end of job {} to the cluster's maps: {}", id, e.toString());
+            }
+        }
     }
 
     /** The tiles whose events a job's ring buffer holds. */

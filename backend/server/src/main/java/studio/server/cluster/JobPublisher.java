@@ -15,16 +15,16 @@ import studio.server.job.TileEvent;
 /**
  * Tells the cluster about a job this member runs: it is the job's own subscriber (on the job
  * service's sender threads, off the job's lock and the render threads), and writes each status to
- * the job table, each event to the job's ring buffer (its event log, which any member's event
- * streams read) and, at the end, the image to the image map before the end event, so that a client
- * that hears the end through any member can fetch the image. A job taken over from a member that
- * died skips the tile events its first member published already.
+ * the job table ({@link StatusUpdate}: never over the job's end), each event to the job's ring
+ * buffer (its event log, which any member's event streams read), and last the end event. The end
+ * of a job that ran, and a done job's image, are in the cluster's maps before the job itself reports
+ * its end ({@link ClusterJobs#ending}); this writes them again only if that failed. A job taken over
+ * from a member that died skips the tile events its first member published already.
  */
 final class JobPublisher implements JobListener {
 
     private final String id;
     private final String owner;
-    private final int tileSize;
     private final IMap<String, JobRecord> jobs;
     private final IMap<String, byte[]> images;
     private final Ringbuffer<JobEvent> events;
@@ -37,11 +37,10 @@ final class JobPublisher implements JobListener {
     /** Progress is written to the job table at most this often: a status read through another member lags by as much. */
     static final long PROGRESS_MILLIS = 250;
 
-    JobPublisher(String id, String owner, int tileSize, IMap<String, JobRecord> jobs, IMap<String, byte[]> images,
+    JobPublisher(String id, String owner, IMap<String, JobRecord> jobs, IMap<String, byte[]> images,
                  Ringbuffer<JobEvent> events, Supplier<JobStatus> current, Supplier<byte[]> image, Set<String> published) {
         this.id = id;
         this.owner = owner;
-        this.tileSize = tileSize;
         this.jobs = jobs;
         this.images = images;
         this.events = events;
@@ -56,7 +55,7 @@ final class JobPublisher implements JobListener {
 
     @Override
     public void status(JobStatus status) {
-        jobs.set(id, new JobRecord(status, owner, tileSize));
+        jobs.executeOnKey(id, new StatusUpdate(owner, status));
         events.add(status);
     }
 
@@ -69,16 +68,17 @@ final class JobPublisher implements JobListener {
         long now = System.nanoTime();
         if (now - progressWritten > PROGRESS_MILLIS * 1_000_000) {
             progressWritten = now;
-            jobs.set(id, new JobRecord(current.get(), owner, tileSize)); // the progress, for status through any member
+            // the progress, for status through any member
+            jobs.executeOnKey(id, new StatusUpdate(owner, current.get()));
         }
     }
 
     @Override
     public void end(JobStatus status) {
-        if (status.state() == JobState.DONE) {
+        if (status.state() == JobState.DONE && !images.containsKey(id)) {
             images.set(id, image.get());
         }
-        jobs.set(id, new JobRecord(status, owner, tileSize));
+        jobs.executeOnKey(id, new StatusUpdate(owner, status));
         events.add(status);
     }
 }

@@ -2,6 +2,7 @@ package studio.server.cluster;
 
 import java.util.ArrayList;
 import java.util.BitSet;
+import java.util.Collection;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -34,10 +35,16 @@ import studio.server.scene.compiling.CompiledScene;
  * The coordinator of a job's render in the cluster, on the member that runs the job: queues the
  * job's tiles as tasks for every member's {@link TileWorkers}, assembles the results into the film
  * as they arrive (each tile once, reported to the job's listener), and queues again the tiles whose
- * worker died (their {@link TileClaim} names a member that left) or failed, at most
+ * worker died (their {@link TileClaim} names a member that left), failed, or were lost, at most
  * {@value #MAX_ATTEMPTS} times per tile; then the job fails, naming the tile. A member that takes
  * the job over runs the same loop: the tiles already in the job's tile map are assembled first,
- * and only the tiles neither done nor claimed by a live member are queued again.
+ * and only the tiles neither done, queued, nor claimed by a live member are queued again.
+ *
+ * <p>What is done is the coordinator's own record (the results it assembled); every other tile is
+ * queued, claimed, or for a moment in no state (a worker took it and has not claimed it yet). A
+ * tile in no state at two looks a second apart was lost (its worker died between taking and
+ * claiming it, or its result's put failed) and is queued again, so no tile can fall out of every
+ * state for good.
  */
 final class TileFarm {
 
@@ -47,15 +54,17 @@ final class TileFarm {
     static final int MAX_ATTEMPTS = 3;
     /** The coordinator looks for results this often, and for the cancel and the deadline. */
     static final long POLL_MILLIS = 100;
-    /** The coordinator looks for tiles lost with their members this often (and at once when one leaves). */
+    /**
+     * The coordinator looks for tiles claimed by members that left this often (and at once when one
+     * leaves), and looks again this soon at tiles it found in no state.
+     */
     static final long LOST_CHECK_MILLIS = 1_000;
     /**
-     * When no tile has arrived for this long, the coordinator reads the tiles it has not heard of from
-     * the job's tile map (map events are not delivered reliably while partitions move after a member
-     * died) and queues again every tile that is neither done, nor claimed by a live member, nor in the
-     * queue (a member killed in the middle of committing its take): such a tile costs at most this long.
+     * The coordinator looks for tiles in no state this often (a second after a member left): it reads
+     * the queue, the claims, and the results of such tiles (map events are not delivered reliably
+     * while partitions move after a member died). A lost tile costs at most this long and a second.
      */
-    static final long STALL_MILLIS = 5_000;
+    static final long MISSING_CHECK_MILLIS = 5_000;
 
     private final HazelcastInstance member;
     private final TileWorkers workers;
@@ -99,62 +108,50 @@ final class TileFarm {
         UUID registration = results.addEntryListener(new Arrivals(arrived), true);
         workers.scenes().offer(jobId, scene);
         Map<String, Integer> count = counts.computeIfAbsent(jobId, id -> new ConcurrentHashMap<>());
-        Assembly assembly = new Assembly(tiles, new Film(width, height), listener, count);
+        Job job = new Job(jobId, tiles, results, claims, new TileAssembly(tiles, new Film(width, height), listener, count));
         try {
-            List<TileResult> failed = new ArrayList<>();
             for (TileResult result : results.values()) {
-                assembly.accept(result);
-                if (result.failed()) {
-                    failed.add(result); // its coordinator died before it could retry it
-                }
-            }
-            for (TileResult result : failed) {
-                if (!assembly.done.get(result.index())) {
-                    retry(jobId, tiles, results, result.index(), result.attempt(), result.error());
-                }
+                job.arrived(result); // a failed one: its coordinator died before it could retry it
             }
             Set<String> alive = alive();
-            List<TileTask> todo = new ArrayList<>();
             Map<Integer, TileClaim> claimed = resumed ? Map.copyOf(claims) : Map.of();
             BitSet queued = resumed ? queued(jobId) : new BitSet();
+            List<TileTask> todo = new ArrayList<>();
             for (int i = 0; i < tiles.size(); i++) {
                 TileClaim claim = claimed.get(i);
-                if (!assembly.done.get(i) && !queued.get(i) && (claim == null || !alive.contains(claim.member()))) {
-                    todo.add(new TileTask(jobId, i, claim == null ? 0 : claim.attempt() + 1));
+                if (!job.assembly.done.get(i) && !queued.get(i) && (claim == null || !alive.contains(claim.member()))) {
+                    todo.add(job.task(i, claim == null ? 0 : claim.attempt() + 1));
                 }
             }
             queue.addAll(todo);
             long seenLeft = membersLeft;
-            long nextCheck = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(LOST_CHECK_MILLIS);
-            long lastArrival = System.nanoTime();
-            while (assembly.doneCount < tiles.size()) {
+            long nextLostCheck = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(LOST_CHECK_MILLIS);
+            long nextMissingCheck = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(MISSING_CHECK_MILLIS);
+            while (job.assembly.doneCount < tiles.size()) {
                 if (stop.getAsBoolean()) {
                     throw new RenderCancelledException();
                 }
                 TileResult result = arrived.poll(POLL_MILLIS, TimeUnit.MILLISECONDS);
-                if (result == null && System.nanoTime() - lastArrival > TimeUnit.MILLISECONDS.toNanos(STALL_MILLIS)) {
-                    lastArrival = System.nanoTime();
-                    for (TileResult missed : unheard(results, tiles.size(), assembly.done)) {
-                        assembly.accept(missed);
-                        if (missed.failed() && !assembly.done.get(missed.index())) {
-                            retry(jobId, tiles, results, missed.index(), missed.attempt(), missed.error());
-                        }
-                    }
-                    requeueMissing(jobId, tiles.size(), claims, assembly.done);
-                }
                 if (result != null) {
-                    lastArrival = System.nanoTime();
-                    assembly.accept(result);
-                    if (result.failed() && !assembly.done.get(result.index())) {
-                        retry(jobId, tiles, results, result.index(), result.attempt(), result.error());
-                    }
+                    job.arrived(result);
                 }
-                if (seenLeft != membersLeft || System.nanoTime() - nextCheck > 0) {
+                long now = System.nanoTime();
+                boolean left = seenLeft != membersLeft;
+                if (left) {
                     seenLeft = membersLeft;
-                    nextCheck = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(LOST_CHECK_MILLIS);
-                    requeueLost(jobId, tiles, claims, results, assembly.done);
+                    nextMissingCheck = Math.min(nextMissingCheck, now + TimeUnit.MILLISECONDS.toNanos(LOST_CHECK_MILLIS));
+                }
+                if (left || now - nextLostCheck > 0) {
+                    nextLostCheck = now + TimeUnit.MILLISECONDS.toNanos(LOST_CHECK_MILLIS);
+                    requeueLost(job);
+                }
+                if (now - nextMissingCheck > 0) {
+                    boolean suspects = requeueMissing(job);
+                    nextMissingCheck = System.nanoTime()
+                            + TimeUnit.MILLISECONDS.toNanos(suspects ? LOST_CHECK_MILLIS : MISSING_CHECK_MILLIS);
                 }
             }
+            TileAssembly assembly = job.assembly;
             return new RenderResult(assembly.film, assembly.rays, assembly.nonFinite, System.nanoTime() - start,
                     assembly.samples);
         } catch (InterruptedException e) {
@@ -174,7 +171,7 @@ final class TileFarm {
         counts.remove(jobId);
     }
 
-    /** The job's tiles in the queue now (a job taken over: its first member queued them). */
+    /** The job's tiles in the queue now. */
     private BitSet queued(String jobId) {
         BitSet queued = new BitSet();
         for (TileTask task : queue) {
@@ -193,93 +190,106 @@ final class TileFarm {
         return alive;
     }
 
-    /** The results in the job's tile map of tiles not done here. */
-    private static java.util.Collection<TileResult> unheard(IMap<Integer, TileResult> results, int count, BitSet done) {
-        Set<Integer> open = new HashSet<>();
-        for (int i = done.nextClearBit(0); i < count; i = done.nextClearBit(i + 1)) {
-            open.add(i);
-        }
-        return results.getAll(open).values();
-    }
-
-    /** Queues the tiles that are neither done, nor claimed by a live member, nor queued. */
-    private void requeueMissing(String jobId, int count, IMap<Integer, TileClaim> claims, BitSet done) {
-        Set<String> alive = alive();
-        Map<Integer, TileClaim> claimed = Map.copyOf(claims);
-        BitSet queued = queued(jobId);
-        List<TileTask> missing = new ArrayList<>();
-        for (int i = 0; i < count; i++) {
-            TileClaim claim = claimed.get(i);
-            if (!done.get(i) && !queued.get(i) && (claim == null || !alive.contains(claim.member()))) {
-                missing.add(new TileTask(jobId, i, claim == null ? 0 : claim.attempt() + 1));
-            }
-        }
-        if (!missing.isEmpty()) {
-            log.info("job {}: {} tiles were neither done, claimed nor queued; queued again", jobId, missing.size());
-            queue.addAll(missing);
-        }
-    }
-
     /** Queues again the tiles claimed by members that have left. */
-    private void requeueLost(String jobId, List<TileRect> tiles, IMap<Integer, TileClaim> claims,
-                             IMap<Integer, TileResult> results, BitSet done) {
+    private void requeueLost(Job job) {
         Set<String> alive = alive();
-        for (Map.Entry<Integer, TileClaim> entry : claims.entrySet()) {
+        for (Map.Entry<Integer, TileClaim> entry : job.claims.entrySet()) {
             int index = entry.getKey();
             TileClaim claim = entry.getValue();
-            if (!done.get(index) && !alive.contains(claim.member()) && claims.remove(index, claim)) {
-                retry(jobId, tiles, results, index, claim.attempt(), "its member left the cluster");
+            if (!job.assembly.done.get(index) && !alive.contains(claim.member()) && job.claims.remove(index, claim)) {
+                job.retry(index, claim.attempt(), "its member left the cluster");
             }
         }
     }
 
-    private void retry(String jobId, List<TileRect> tiles, IMap<Integer, TileResult> results, int index, int attempt,
-                       String why) {
-        if (attempt + 1 >= MAX_ATTEMPTS) {
-            TileRect tile = tiles.get(index);
-            throw new JobFailedException("the tile at " + tile.x() + "," + tile.y() + " failed " + MAX_ATTEMPTS
-                    + " times; the last time: " + why);
-        }
-        results.delete(index);
-        queue.add(new TileTask(jobId, index, attempt + 1));
-    }
-
-    /** The job's film as its tiles arrive: each tile once, reported in the order it arrived. */
-    private static final class Assembly {
-        final List<TileRect> tiles;
-        final Film film;
-        final RenderListener listener;
-        final Map<String, Integer> count;
-        final BitSet done = new BitSet();
-        int doneCount;
-        long rays, samples, nonFinite;
-
-        Assembly(List<TileRect> tiles, Film film, RenderListener listener, Map<String, Integer> count) {
-            this.tiles = tiles;
-            this.film = film;
-            this.listener = listener;
-            this.count = count;
-        }
-
-        void accept(TileResult result) {
-            if (result.failed() || done.get(result.index())) {
-                return;
-            }
-            TileRect tile = tiles.get(result.index());
-            double[] rgb = result.rgb();
-            int i = 0;
-            for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
-                for (int x = tile.x(); x < tile.x() + tile.width(); x++, i += 3) {
-                    film.set(x, y, rgb[i], rgb[i + 1], rgb[i + 2]);
+    /**
+     * Looks for the job's tiles in no state: not done here, not in the queue, not claimed. The queue is
+     * read before the claims, so a tile taken meanwhile shows as claimed, unless its worker claims it
+     * only after the claims were read: so a tile is taken for lost only when it was in no state at the
+     * previous look too. The results of such tiles are read first (their events may have been lost).
+     *
+     * @return true if some tiles were in no state for the first time: the next look should come soon
+     */
+    private boolean requeueMissing(Job job) {
+        BitSet missing = new BitSet();
+        Collection<TileResult> unheard;
+        try {
+            BitSet queued = queued(job.id);
+            Set<Integer> claimed = job.claims.keySet();
+            BitSet done = job.assembly.done;
+            for (int i = done.nextClearBit(0); i < job.tiles.size(); i = done.nextClearBit(i + 1)) {
+                if (!queued.get(i) && !claimed.contains(i)) {
+                    missing.set(i);
                 }
             }
-            done.set(result.index());
-            doneCount++;
-            rays += result.rays();
-            samples += result.samples();
-            nonFinite += result.nonFinite();
-            count.merge(result.worker(), 1, Integer::sum);
-            listener.tileFinished(film, tile, doneCount, tiles.size());
+            unheard = missing.isEmpty() ? List.of() : job.results.getAll(new HashSet<>(missing.stream().boxed().toList()))
+                    .values();
+        } catch (RuntimeException e) {
+            log.warn("job {}: could not look for lost tiles ({}); looking again shortly", job.id, e.toString());
+            return true;
+        }
+        for (TileResult result : unheard) {
+            missing.clear(result.index());
+            job.arrived(result);
+        }
+        BitSet lost = (BitSet) missing.clone();
+        lost.and(job.suspects);
+        missing.andNot(lost);
+        job.suspects = missing;
+        if (!lost.isEmpty()) {
+            log.info("job {}: {} tiles were neither done, queued nor claimed, twice; queued again", job.id,
+                    lost.cardinality());
+            for (int i = lost.nextSetBit(0); i >= 0; i = lost.nextSetBit(i + 1)) {
+                job.retry(i, job.attempts[i], "it was lost");
+            }
+        }
+        return !missing.isEmpty();
+    }
+
+    /** A job's render on its coordinator: its tiles, where they are, and how often each was queued. */
+    private final class Job {
+        final String id;
+        final List<TileRect> tiles;
+        final IMap<Integer, TileResult> results;
+        final IMap<Integer, TileClaim> claims;
+        final TileAssembly assembly;
+        /** The attempt each tile was last queued with by this coordinator. */
+        final int[] attempts;
+        /** The tiles in no state at the last look. */
+        BitSet suspects = new BitSet();
+
+        Job(String id, List<TileRect> tiles, IMap<Integer, TileResult> results, IMap<Integer, TileClaim> claims,
+            TileAssembly assembly) {
+            this.id = id;
+            this.tiles = tiles;
+            this.results = results;
+            this.claims = claims;
+            this.assembly = assembly;
+            this.attempts = new int[tiles.size()];
+        }
+
+        TileTask task(int index, int attempt) {
+            attempts[index] = Math.max(attempts[index], attempt);
+            return new TileTask(id, index, attempt);
+        }
+
+        /** A tile's result: assembled, or if it failed, the tile is tried again. */
+        void arrived(TileResult result) {
+            assembly.accept(result);
+            if (result.failed() && !assembly.done.get(result.index())) {
+                retry(result.index(), result.attempt(), result.error());
+            }
+        }
+
+        /** Queues the tile again as its next attempt, or fails the job if that would be one too many. */
+        void retry(int index, int attempt, String why) {
+            if (attempt + 1 >= MAX_ATTEMPTS) {
+                TileRect tile = tiles.get(index);
+                throw new JobFailedException("the tile at " + tile.x() + "," + tile.y() + " failed " + MAX_ATTEMPTS
+                        + " times; the last time: " + why);
+            }
+            results.delete(index);
+            queue.add(task(index, attempt + 1));
         }
     }
 

@@ -12,8 +12,6 @@ import org.slf4j.LoggerFactory;
 import com.hazelcast.collection.IQueue;
 import com.hazelcast.core.HazelcastInstance;
 import com.hazelcast.map.IMap;
-import com.hazelcast.transaction.TransactionContext;
-import com.hazelcast.transaction.TransactionOptions;
 
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
@@ -26,11 +24,17 @@ import studio.server.system.MemoryBusyException;
 /**
  * This member's tile workers: threads that take tile tasks from the cluster's queue, every job's,
  * render them and put the results into the job's tile map, where the member that runs the job
- * assembles them. Taking a task and claiming it ({@link TileClaim}, naming this member) is one
- * transaction, so a tile is always queued, claimed or done: when a member dies, the tiles it had
- * claimed are queued again by their jobs' coordinators ({@link TileFarm}). On shutdown the workers
- * stop within a camera sample and hand their tiles back (queued again, claims dropped) before the
- * member leaves.
+ * assembles them. A worker takes a task with a plain poll and then claims it ({@link TileClaim},
+ * naming this member) in the job's claim map: no transaction, so nothing a dead member held can
+ * hold up the others. (Taking and claiming in one transaction did: a member killed inside it kept
+ * the claim's key locked for the transaction's timeout, two minutes, since Hazelcast releases a
+ * departed member's locks but not its transactions' locks, which a one-phase transaction has no log
+ * to roll back; every worker that took the tile again waited on that lock, the tile invisible in
+ * its own transaction, until every worker of the cluster did.) For the moment between the poll and
+ * the claim a tile is in no state, and a member that dies then loses it: the job's coordinator
+ * ({@link TileFarm}) finds such tiles, as it finds the tiles claimed by members that left, and
+ * queues them again. On shutdown the workers stop within a camera sample and hand their tiles back
+ * (queued again, claims dropped) before the member leaves.
  */
 final class TileWorkers implements AutoCloseable {
 
@@ -39,28 +43,47 @@ final class TileWorkers implements AutoCloseable {
     static final long POLL_MILLIS = 500;
     /** A job's state is asked of the job table at most this often per member (not for every tile). */
     static final long JOB_CHECK_MILLIS = 1_000;
-    /** Take and claim: one phase suffices, as a member lost mid-commit leaves its claims to be re-queued anyway. */
-    private static final TransactionOptions TAKE = new TransactionOptions()
-            .setTransactionType(TransactionOptions.TransactionType.ONE_PHASE);
 
     private record JobCheck(JobRecord job, long atNanos) {
     }
 
     private final HazelcastInstance member;
+    private final String memberId;
     private final String address;
     private final JobScenes scenes;
     private final IQueue<TileTask> queue;
     private final IMap<String, JobRecord> jobs;
     private final List<Worker> workers = new ArrayList<>();
     private final Map<String, JobCheck> checked = new ConcurrentHashMap<>();
+    private final Steps steps;
     private volatile boolean running = true;
 
+    /** The steps of a take, where a test kills a member with a take half done; nothing in the application. */
+    interface Steps {
+        Steps NONE = new Steps() {
+        };
+
+        /** The task is out of the queue and not claimed yet. */
+        default void taken(TileTask task) {
+        }
+
+        /** The task is claimed and not rendered yet. */
+        default void claimed(TileTask task) {
+        }
+    }
+
     TileWorkers(HazelcastInstance member, JobScenes scenes, int threads) {
+        this(member, scenes, threads, Steps.NONE);
+    }
+
+    TileWorkers(HazelcastInstance member, JobScenes scenes, int threads, Steps steps) {
         this.member = member;
+        this.memberId = member.getCluster().getLocalMember().getUuid().toString();
         this.address = ClusterNames.address(member.getCluster().getLocalMember());
         this.scenes = scenes;
         this.queue = member.getQueue(ClusterMaps.TILE_QUEUE);
         this.jobs = member.getMap(ClusterMaps.JOBS);
+        this.steps = steps;
         for (int i = 0; i < threads; i++) {
             Worker worker = new Worker();
             worker.thread = new Thread(worker, "tile-worker-" + (i + 1));
@@ -131,28 +154,22 @@ final class TileWorkers implements AutoCloseable {
             }
         }
 
-        /** Takes a task and claims it in one transaction, waiting at most {@value #POLL_MILLIS} ms. */
+        /** Takes a task and claims it, waiting at most {@value #POLL_MILLIS} ms for one. */
         private TileTask take() {
-            TransactionContext transaction = member.newTransactionContext(TAKE);
-            transaction.beginTransaction();
+            TileTask task;
             try {
-                TileTask task = transaction.<TileTask>getQueue(ClusterMaps.TILE_QUEUE)
-                        .poll(POLL_MILLIS, TimeUnit.MILLISECONDS);
-                if (task != null) {
-                    transaction.<Integer, TileClaim>getMap(ClusterMaps.claims(task.jobId()))
-                            .set(task.index(), new TileClaim(member.getCluster().getLocalMember().getUuid().toString(),
-                                    task.attempt()));
-                }
-                transaction.commitTransaction();
-                return task;
+                task = queue.poll(POLL_MILLIS, TimeUnit.MILLISECONDS);
             } catch (InterruptedException e) {
-                transaction.rollbackTransaction();
                 Thread.currentThread().interrupt();
                 return null;
-            } catch (RuntimeException e) {
-                transaction.rollbackTransaction();
-                throw e;
             }
+            if (task != null) {
+                steps.taken(task);
+                member.<Integer, TileClaim>getMap(ClusterMaps.claims(task.jobId())).set(task.index(),
+                        new TileClaim(memberId, task.attempt()));
+                steps.claimed(task);
+            }
+            return task;
         }
 
         private void render(TileTask task) {

@@ -47,6 +47,17 @@ public interface JobCluster {
         return budget.render(scene, listener, cancelled);
     }
 
+    /**
+     * A job of this member ran and is about to end: when this returns, every member serves its end
+     * (and a done job's image, written before the end), so that the job reports its end only once any
+     * member would; if the write failed, the cluster learns the end from the job's events instead.
+     * Called on the job's thread, holding no lock; a bounded wait. Meanwhile the job serves its image.
+     *
+     * @param image the encoded image when {@code end} is done, else null
+     */
+    default void ending(String id, JobStatus end, byte[] image) {
+    }
+
     /** The tiles each member has rendered for a job of this member, or null in a cluster of one. */
     default Map<String, Integer> workers(String id) {
         return null;

@@ -166,7 +166,7 @@ public final class JobService implements Drainable, AutoCloseable {
                             boolean resumed) {
         RenderJob job = new RenderJob(id, scene, budget, memory,
                 (compiled, listener, cancelled) -> cluster.render(id, compiled, budget, listener, cancelled),
-                () -> cluster.workers(id));
+                () -> cluster.workers(id), (end, image) -> cluster.ending(id, end, image));
         jobs.put(job.id(), job);
         JobListener publisher = cluster.accepted(id, sceneJson, job::status, job::image, resumed);
         if (publisher != null) {

@@ -44,6 +44,19 @@ final class RenderJob implements Runnable {
         RenderResult render(CompiledScene scene, RenderListener listener, BooleanSupplier cancelled);
     }
 
+    /**
+     * Who learns a job's end before the job itself reports it (see {@link JobCluster#ending}): called on
+     * the job's thread, holding no lock, once the render is over and before the job's status turns final.
+     */
+    @FunctionalInterface
+    interface Ending {
+        Ending NONE = (end, image) -> {
+        };
+
+        /** @param image the encoded image when {@code end} is done, else null */
+        void ending(JobStatus end, byte[] image);
+    }
+
     private final String id;
     /** Null once the job is final. */
     private CompiledScene scene;
@@ -51,6 +64,7 @@ final class RenderJob implements Runnable {
     private final String fileName, mediaType;
     private final RenderBudget budget;
     private final Render render;
+    private final Ending ending;
     /** The tiles each member rendered (in a cluster), else null. */
     private final Supplier<Map<String, Integer>> workers;
     /** The render's memory while it is queued or running; then the image's, until the job is dropped. */
@@ -74,13 +88,14 @@ final class RenderJob implements Runnable {
     private volatile long lastSeenNanos = System.nanoTime();
 
     RenderJob(String id, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory) {
-        this(id, scene, budget, memory, budget::render, () -> null);
+        this(id, scene, budget, memory, budget::render, () -> null, Ending.NONE);
     }
 
     RenderJob(String id, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory, Render render,
-              Supplier<Map<String, Integer>> workers) {
+              Supplier<Map<String, Integer>> workers, Ending ending) {
         this.id = id;
         this.render = render;
+        this.ending = ending;
         this.workers = workers;
         this.scene = scene;
         this.width = scene.settings().width();
@@ -114,24 +129,41 @@ final class RenderJob implements Runnable {
         try {
             RenderResult result = render.render(scene, this::tileFinished, cancelRequested::get);
             byte[] bytes = ImageFiles.encode(result.film(), scene.format(), scene.quality());
-            synchronized (this) {
-                image = bytes;
-                raysPerSecond = result.raysPerSecond();
-                finish(JobState.DONE, null);
-            }
+            end(JobState.DONE, null, bytes, result.raysPerSecond());
         } catch (RenderCancelledException e) {
-            synchronized (this) {
-                finish(JobState.CANCELLED, cancelReason);
-            }
+            end(JobState.CANCELLED, cancelReason(), null, null);
         } catch (RenderTimeExceededException | JobFailedException e) {
-            synchronized (this) {
-                finish(JobState.FAILED, e.getMessage());
-            }
+            end(JobState.FAILED, e.getMessage(), null, null);
         } catch (RuntimeException | OutOfMemoryError e) {
-            synchronized (this) {
-                finish(JobState.FAILED, "the render failed: " + e.getClass().getSimpleName());
-            }
+            end(JobState.FAILED, "the render failed: " + e.getClass().getSimpleName(), null, null);
         }
+    }
+
+    /**
+     * Ends a job that ran: tells {@link Ending} its end first, outside the lock, and only then turns
+     * final, so that nobody hears the end from this job before those told first have it. The image
+     * is here before that: whoever heard the end from them gets the image from this job too.
+     */
+    private void end(JobState finalState, String message, byte[] bytes, Double rays) {
+        long endAt = System.nanoTime();
+        JobStatus end;
+        synchronized (this) {
+            image = bytes;
+            end = status(finalState, message, endAt, rays);
+        }
+        try {
+            ending.ending(end, bytes);
+        } catch (RuntimeException e) {
+            // those told first learn the end from the job's events instead
+        }
+        synchronized (this) {
+            raysPerSecond = rays;
+            finish(finalState, message, endAt);
+        }
+    }
+
+    private synchronized String cancelReason() {
+        return cancelReason;
     }
 
     private void tileFinished(Film film, TileRect tile, int done, int total) {
@@ -172,9 +204,13 @@ final class RenderJob implements Runnable {
     }
 
     private void finish(JobState finalState, String message) {
+        finish(finalState, message, System.nanoTime());
+    }
+
+    private void finish(JobState finalState, String message, long endAt) {
         state = finalState;
         error = message;
-        endNanos = System.nanoTime();
+        endNanos = endAt;
         scene = null;
         // the render's memory is free now; the image, already made, is counted until the job is dropped
         MemoryBudget.Reservation rendering = memory;
@@ -339,8 +375,12 @@ final class RenderJob implements Runnable {
     }
 
     synchronized JobStatus status() {
-        long end = endNanos != 0 ? endNanos : System.nanoTime();
-        long elapsed = startNanos != 0 ? (end - startNanos) / 1_000_000 : 0;
+        return status(state, error, endNanos != 0 ? endNanos : System.nanoTime(), raysPerSecond);
+    }
+
+    /** The status the job has (or will have) in {@code state}, at {@code endAt} (System.nanoTime). */
+    private JobStatus status(JobState state, String error, long endAt, Double raysPerSecond) {
+        long elapsed = startNanos != 0 ? (endAt - startNanos) / 1_000_000 : 0;
         return new JobStatus(id, state, state == JobState.DONE ? 1.0 : progress, elapsed, raysPerSecond,
                 width, height, fileName, mediaType, error, workers.get());
     }
@@ -349,7 +389,10 @@ final class RenderJob implements Runnable {
         return state;
     }
 
-    /** The encoded image, or null unless done. */
+    /**
+     * The encoded image, or null unless done (or about to be: it is here while the job's end is being
+     * told, see {@link Ending}).
+     */
     synchronized byte[] image() {
         return image;
     }

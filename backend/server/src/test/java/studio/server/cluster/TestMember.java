@@ -3,6 +3,7 @@ package studio.server.cluster;
 import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.Consumer;
 
 import com.hazelcast.core.Hazelcast;
 import com.hazelcast.core.HazelcastInstance;
@@ -30,6 +31,14 @@ final class TestMember implements AutoCloseable {
     final ClusterJobs cluster;
     final JobService jobs;
     final String address;
+    /** The member's id, as the job table names a job's owner. */
+    final String uuid;
+    /** What the member's workers do once they took a tile from the queue, before they claim it. */
+    volatile Consumer<TileTask> onTaken = task -> {
+    };
+    /** What the member's workers do once they claimed a tile they took, before they render it. */
+    volatile Consumer<TileTask> onClaimed = task -> {
+    };
 
     /** A member on 127.0.0.1:{@code port} of the cluster {@code name}, which lists the members on {@code ports}. */
     TestMember(String name, int port, int... ports) {
@@ -38,10 +47,30 @@ final class TestMember implements AutoCloseable {
         hazelcast = Hazelcast.newHazelcastInstance(MemberConfig.of(new ClusterProperties(port, members, name, "127.0.0.1")));
         SceneCompiler compiler = SceneCompiler.standalone(VALIDATION::getValidator);
         TileWorkers workers = new TileWorkers(hazelcast,
-                new JobScenes(hazelcast.getMap(ClusterMaps.SCENES), compiler, MemoryBudget.unlimited()), 1);
+                new JobScenes(hazelcast.getMap(ClusterMaps.SCENES), compiler, MemoryBudget.unlimited()), 1,
+                new TileWorkers.Steps() {
+                    @Override
+                    public void taken(TileTask task) {
+                        onTaken.accept(task);
+                    }
+
+                    @Override
+                    public void claimed(TileTask task) {
+                        onClaimed.accept(task);
+                    }
+                });
         cluster = new ClusterJobs(hazelcast, compiler, workers, 1);
         jobs = new JobService(SETTINGS, RenderBudget.unlimited(), Duration.ofSeconds(2), cluster);
         address = ClusterNames.address(hazelcast.getCluster().getLocalMember());
+        uuid = hazelcast.getCluster().getLocalMember().getUuid().toString();
+    }
+
+    /**
+     * Dies as with SIGKILL, as far as the other members can tell, on the thread that calls it (one of
+     * its own workers, say): its cluster member goes at once; the rest stops at {@link #kill}.
+     */
+    void die() {
+        hazelcast.getLifecycleService().terminate();
     }
 
     /** Dies as with SIGKILL, as far as the other members can tell: it leaves without a word. */

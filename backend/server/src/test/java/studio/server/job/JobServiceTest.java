@@ -81,6 +81,31 @@ class JobServiceTest {
         assertArrayEquals(new byte[] {(byte) 0x89, 'P', 'N', 'G'}, java.util.Arrays.copyOf(png, 4));
     }
 
+    /**
+     * In a cluster a job reports its end only once the cluster has it (other members answer from the
+     * cluster's maps), and serves its image while the cluster learns the end: a client that heard
+     * "done" through another member gets the image from this one too.
+     */
+    @Test
+    void jobReportsItsEndOnlyOnceTheClusterHasItAndServesItsImageMeanwhile() throws Exception {
+        List<String> seenWhileEnding = new CopyOnWriteArrayList<>();
+        JobService[] self = new JobService[1];
+        JobCluster cluster = new JobCluster() {
+            @Override
+            public void ending(String id, JobStatus end, byte[] image) {
+                JobService jobs = self[0];
+                seenWhileEnding.add(end.state() + " told, " + jobs.status(id).state() + " reported, image "
+                        + (java.util.Arrays.equals(jobs.image(id).bytes(), image) ? "served" : "differs"));
+            }
+        };
+        service = self[0] = new JobService(settings(1, 4), RenderBudget.unlimited(), Duration.ofSeconds(5), cluster);
+        JobStatus started = service.submit(compile(SMALL));
+
+        await("done", () -> service.status(started.id()).state() == JobState.DONE);
+
+        assertEquals(List.of("DONE told, RUNNING reported, image served"), seenWhileEnding);
+    }
+
     @Test
     void listenerHearsEachStateEveryTileAndTheEnd() throws Exception {
         JobService jobs = service(settings(1, 4));

@@ -1,0 +1,56 @@
+package studio.server.cluster;
+
+import java.util.BitSet;
+import java.util.List;
+import java.util.Map;
+
+import studio.engine.render.Film;
+import studio.engine.render.RenderListener;
+import studio.engine.render.TileRect;
+
+/**
+ * A job's film on its coordinator as its tiles arrive from the cluster's workers: each tile once,
+ * reported to the job's listener in the order it arrived; what is done is this record, not the
+ * cluster's maps.
+ */
+final class TileAssembly {
+
+    final List<TileRect> tiles;
+    final Film film;
+    final RenderListener listener;
+    /** The tiles each member rendered. */
+    final Map<String, Integer> count;
+    /** The tiles in the film. */
+    final BitSet done = new BitSet();
+    int doneCount;
+    long rays, samples, nonFinite;
+
+    TileAssembly(List<TileRect> tiles, Film film, RenderListener listener, Map<String, Integer> count) {
+        this.tiles = tiles;
+        this.film = film;
+        this.listener = listener;
+        this.count = count;
+    }
+
+    /** Puts a tile's result into the film, unless it failed or the tile is done already. */
+    void accept(TileResult result) {
+        if (result.failed() || done.get(result.index())) {
+            return;
+        }
+        TileRect tile = tiles.get(result.index());
+        double[] rgb = result.rgb();
+        int i = 0;
+        for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
+            for (int x = tile.x(); x < tile.x() + tile.width(); x++, i += 3) {
+                film.set(x, y, rgb[i], rgb[i + 1], rgb[i + 2]);
+            }
+        }
+        done.set(result.index());
+        doneCount++;
+        rays += result.rays();
+        samples += result.samples();
+        nonFinite += result.nonFinite();
+        count.merge(result.worker(), 1, Integer::sum);
+        listener.tileFinished(film, tile, doneCount, tiles.size());
+    }
+}
