@@ -42,6 +42,7 @@ final class BenchCharts {
     /** One scene's chart, and one panel of the combined image (kept small so the PNG stays well under 150 KB). */
     static final int WIDTH = 560, HEIGHT = 400, PANEL_WIDTH = 500, PANEL_HEIGHT = 360;
     private static final Color ADAPTIVE_COLOR = Color.BLACK;
+    private static final Color POVRAY_COLOR = new Color(0x7f7f7f);
 
     /** One colour and marker per sampler (in the order of EngineFeatures.SAMPLER_NAMES), the same in every panel. */
     private static final Color[] COLORS = {
@@ -155,7 +156,17 @@ final class BenchCharts {
                     own.stream().mapToDouble(Measurement::medianMillis).toArray(),
                     own.stream().mapToDouble(Measurement::rmse).toArray());
             series.setLineWidth(1.5f);
-            if (Double.isNaN(own.get(0).threshold())) {
+            if (method.startsWith("povray")) {
+                // POV-Ray in grey, apart from every method of ours: a solid grid, a dotted adaptive line
+                series.setLineColor(POVRAY_COLOR);
+                series.setMarkerColor(POVRAY_COLOR);
+                boolean adaptive = !Double.isNaN(own.get(0).threshold());
+                series.setMarker(adaptive ? SeriesMarkers.DIAMOND : SeriesMarkers.SQUARE);
+                if (adaptive) {
+                    series.setLineStyle(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f,
+                            new float[] {2f, 3f}, 0f));
+                }
+            } else if (Double.isNaN(own.get(0).threshold())) {
                 int i = Math.max(0, EngineFeatures.SAMPLER_NAMES.indexOf(method));
                 series.setLineColor(COLORS[i % COLORS.length]);
                 series.setMarkerColor(COLORS[i % COLORS.length]);
