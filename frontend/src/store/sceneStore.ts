@@ -231,12 +231,8 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     duplicateSelected: () => {
       const { selection: sel, selectedItems } = get();
       if (selectedItems.length > 1) {
-        let copies: SceneItem[] = [];
-        commit((s) => {
-          const duplicated = duplicateItems(s, selectedItems);
-          copies = duplicated.copies;
-          return duplicated.scene;
-        }, () => ({ primary: copies[copies.length - 1] ?? null, items: copies }));
+        const { scene, copies } = duplicateItems(get().scene, selectedItems);
+        commit(() => scene, () => ({ primary: copies[copies.length - 1] ?? null, items: copies }));
         return;
       }
       if (sel?.kind === 'object') commit((s) => edits.duplicateObject(s, sel.index), () => ({ kind: 'object', index: sel.index + 1 }));
