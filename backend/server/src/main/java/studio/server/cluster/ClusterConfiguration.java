@@ -59,14 +59,10 @@ class ClusterConfiguration {
 
         @Override
         public boolean matches(ConditionContext context, AnnotatedTypeMetadata metadata) {
-            Binder binder = Binder.get(context.getEnvironment());
-            boolean listed = binder.bind("studio.cluster.members", Bindable.listOf(String.class))
-                    .map(members -> members.stream().anyMatch(member -> !member.isBlank()))
+            // the properties' own rule, bound here because a condition runs before their bean exists
+            return Binder.get(context.getEnvironment()).bind("studio.cluster", Bindable.of(ClusterProperties.class))
+                    .map(ClusterProperties::clustered)
                     .orElse(false);
-            boolean onKubernetes = binder.bind("studio.cluster.kubernetes-service-dns", String.class)
-                    .map(dns -> !dns.isBlank())
-                    .orElse(false);
-            return listed || onKubernetes;
         }
     }
 }
