@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Scaling on one machine: the same job rendered by one member pinned to core 0, then by two members pinned to
-# cores 0 and 1 (taskset), each run alternated ROUNDS times; prints each job's render time (its status's
+# cores 0 and 1 (taskset), each run alternated ROUNDS times. Each start renders the job twice: cold (the first
+# job of fresh JVMs, which also compile the render path just-in-time on the pinned cores, each member its own)
+# and warm (the same job again, as a running service meets it). Prints each job's render time (its status's
 # elapsedMillis), the tile counts per member and the CPU time each member's JVM used during the job (on a
 # machine shared with other work the wall time says little; the CPU time says what the cluster costs). Default job: scenes/glass-pattern.json at 960x720, 36 samples.
 #
@@ -83,12 +85,14 @@ for round in $(seq "$rounds"); do
   echo "round $round: one member on core 0"
   start 0 0
   until_true 300 members_up 1
-  run_job
+  echo " cold:"; run_job
+  echo " warm:"; run_job
   stop_all
   echo "round $round: two members on cores 0 and 1"
   start 0 0 --studio.cluster.port="$cluster" --studio.cluster.members="$members" --studio.cluster.bind-address=127.0.0.1
   start 1 1 --studio.cluster.port=$((cluster + 1)) --studio.cluster.members="$members" --studio.cluster.bind-address=127.0.0.1
   until_true 300 members_up 2
-  run_job
+  echo " cold:"; run_job
+  echo " warm:"; run_job
   stop_all
 done
