@@ -1,5 +1,7 @@
 package studio.server.cluster;
 
+import io.micrometer.core.instrument.Gauge;
+import io.micrometer.core.instrument.binder.MeterBinder;
 import org.springframework.beans.factory.ObjectProvider;
 import org.springframework.boot.context.properties.EnableConfigurationProperties;
 import org.springframework.boot.context.properties.bind.Bindable;
@@ -49,6 +51,13 @@ class ClusterConfiguration {
     @Bean
     ClusterHealth clusterHealthIndicator(ObjectProvider<HazelcastInstance> member) {
         return new ClusterHealth(member.getIfAvailable());
+    }
+
+    /** The cluster's size as this member sees it, in the metrics: studio_cluster_members. */
+    @Bean
+    MeterBinder clusterMetrics(ClusterHealth health) {
+        return registry -> Gauge.builder("studio.cluster.members", health, ClusterHealth::members)
+                .description("Members of the cluster as this member sees it (1: a cluster of one)").register(registry);
     }
 
     /**

@@ -19,6 +19,14 @@ final class ClusterHealth implements HealthIndicator {
         this.member = member;
     }
 
+    /** The members this one sees: 1 in a cluster of one, 0 once this member has shut down. */
+    int members() {
+        if (member == null) {
+            return 1;
+        }
+        return member.getLifecycleService().isRunning() ? member.getCluster().getMembers().size() : 0;
+    }
+
     @Override
     public Health health() {
         if (member == null) {

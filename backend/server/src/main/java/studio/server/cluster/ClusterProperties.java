@@ -10,13 +10,13 @@ import org.springframework.boot.context.properties.bind.DefaultValue;
  * The cluster this service is a member of (environment: STUDIO_CLUSTER_MEMBERS and so on).
  *
  * @param port        this member's cluster port
- * @param members     {@code host:port} of the members to join (this one may be among them); empty: a
+ * @param members     host:port of the members to join (this one may be among them); empty: a
  *                    cluster of one, which starts no Hazelcast member and touches no network
  * @param name        the cluster's name: members of other names never join this one
  * @param bindAddress the address the member listens on and gives the others (e.g. 127.0.0.1);
  *                    empty: Hazelcast picks one of the machine's addresses
  * @param kubernetesServiceDns on Kubernetes, the DNS name of a headless service over the members'
- *                    pods (e.g. {@code ray-studio-cluster.default.svc.cluster.local}): the members find
+ *                    pods (e.g. ray-studio-cluster.default.svc.cluster.local): the members find
  *                    each other through it (Hazelcast's Kubernetes discovery, DNS lookup mode, which needs
  *                    no access to the Kubernetes API) instead of a member list; empty: not on Kubernetes
  */

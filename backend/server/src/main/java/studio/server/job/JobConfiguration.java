@@ -1,5 +1,7 @@
 package studio.server.job;
 
+import io.micrometer.core.instrument.Gauge;
+import io.micrometer.core.instrument.binder.MeterBinder;
 import org.springframework.beans.factory.ObjectProvider;
 import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
@@ -20,7 +22,18 @@ class JobConfiguration {
                 cluster.getIfAvailable(() -> JobCluster.SINGLE));
     }
 
-    /** The job settings, with this service's threads per render. */
+    /** This member's jobs in the metrics: studio_jobs_queued (the queue's depth) and studio_jobs_running. */
+    @Bean
+    MeterBinder jobMetrics(JobService jobs) {
+        return registry -> {
+            Gauge.builder("studio.jobs.queued", jobs, JobService::queued)
+                    .description("Render jobs of this member waiting to run").register(registry);
+            Gauge.builder("studio.jobs.running", jobs, JobService::running)
+                    .description("Render jobs of this member running now").register(registry);
+        };
+    }
+
+        /** The job settings, with this service's threads per render. */
     static JobSettings settings(StudioProperties properties) {
         StudioProperties.Jobs jobs = properties.jobs();
         return new JobSettings(jobs.concurrent(), jobs.queue(), jobs.keepFinished(), jobs.maxFinished(),

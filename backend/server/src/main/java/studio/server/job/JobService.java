@@ -172,6 +172,7 @@ public final class JobService implements Drainable, AutoCloseable {
         if (publisher != null) {
             job.subscribe(publisher, senders, true);
         }
+        JobLog.accepted(id, scene, resumed, executor.getQueue().size());
         try {
             executor.execute(job);
         } catch (RejectedExecutionException e) {
@@ -374,6 +375,16 @@ public final class JobService implements Drainable, AutoCloseable {
     /** Jobs known right now, finished ones included (for tests and metrics). */
     int size() {
         return jobs.size();
+    }
+
+    /** Jobs of this member waiting to run. */
+    public int queued() {
+        return executor.getQueue().size();
+    }
+
+    /** Jobs of this member running now. */
+    public int running() {
+        return executor.getActiveCount();
     }
 
     /** Stops taking jobs (new ones get 429) and cancels the queued ones at once; their listeners hear the end. */

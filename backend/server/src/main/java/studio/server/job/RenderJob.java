@@ -21,6 +21,7 @@ import studio.engine.render.RenderResult;
 import studio.engine.render.TileRect;
 import studio.server.render.ImageFiles;
 import studio.server.render.RenderBudget;
+import studio.server.render.RenderMetrics;
 import studio.server.render.RenderTimeExceededException;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.system.MemoryBudget;
@@ -113,21 +114,30 @@ final class RenderJob implements Runnable {
     @Override
     public void run() {
         CompiledScene scene;
+        JobStatus cancelledBeforeStart = null;
         synchronized (this) {
             if (state != JobState.QUEUED) {
                 return;
             }
             if (cancelRequested.get()) {
                 finish(JobState.CANCELLED, cancelReason + " before it started");
-                return;
+                cancelledBeforeStart = status();
+                scene = null;
+            } else {
+                state = JobState.RUNNING;
+                scene = this.scene;
+                startNanos = System.nanoTime();
+                broadcastStatus();
             }
-            state = JobState.RUNNING;
-            scene = this.scene;
-            startNanos = System.nanoTime();
-            broadcastStatus();
         }
+        if (cancelledBeforeStart != null) {
+            JobLog.ended(cancelledBeforeStart, 0);
+            return;
+        }
+        JobLog.started(id, (startNanos - createdNanos) / 1_000_000);
         try {
             RenderResult result = render.render(scene, this::tileFinished, cancelRequested::get);
+            budget.metrics().rendered(RenderMetrics.Kind.JOB, result);
             byte[] bytes = ImageFiles.encode(result.film(), scene.format(), scene.quality());
             end(JobState.DONE, null, bytes, result.raysPerSecond());
         } catch (RenderCancelledException e) {
@@ -160,6 +170,7 @@ final class RenderJob implements Runnable {
             raysPerSecond = rays;
             finish(finalState, message, endAt);
         }
+        JobLog.ended(end, bytes != null ? bytes.length : 0);
     }
 
     private synchronized String cancelReason() {
@@ -181,25 +192,41 @@ final class RenderJob implements Runnable {
     }
 
     /** Asks the job to stop; a queued job is cancelled at once, a running one after its current tiles. */
-    synchronized JobStatus cancel() {
+    JobStatus cancel() {
         return cancel("cancelled");
     }
 
     /** As {@link #cancel()}, with the reason the job's status will give. */
-    synchronized JobStatus cancel(String reason) {
-        if (!cancelRequested.getAndSet(true)) {
-            cancelReason = reason;
+    JobStatus cancel(String reason) {
+        JobStatus status;
+        boolean endedNow = false;
+        synchronized (this) {
+            if (!cancelRequested.getAndSet(true)) {
+                cancelReason = reason;
+            }
+            if (state == JobState.QUEUED) {
+                finish(JobState.CANCELLED, cancelReason + " before it started");
+                endedNow = true;
+            }
+            status = status();
         }
-        if (state == JobState.QUEUED) {
-            finish(JobState.CANCELLED, cancelReason + " before it started");
+        if (endedNow) {
+            JobLog.ended(status, 0);
         }
-        return status();
+        return status;
     }
 
     /** Marks a job the executor refused or dropped. */
-    synchronized void fail(String message) {
-        if (!state.isFinal()) {
-            finish(JobState.FAILED, message);
+    void fail(String message) {
+        JobStatus status = null;
+        synchronized (this) {
+            if (!state.isFinal()) {
+                finish(JobState.FAILED, message);
+                status = status();
+            }
+        }
+        if (status != null) {
+            JobLog.ended(status, 0);
         }
     }
 

@@ -3,6 +3,8 @@ package studio.server.preview;
 import java.nio.charset.StandardCharsets;
 import java.util.Map;
 
+import io.micrometer.core.instrument.Gauge;
+import io.micrometer.core.instrument.binder.MeterBinder;
 import org.springframework.boot.context.properties.EnableConfigurationProperties;
 import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
@@ -43,6 +45,13 @@ class PreviewConfiguration implements WebSocketConfigurer {
     @Bean(destroyMethod = "close")
     PreviewHandler previewHandler() {
         return handler;
+    }
+
+    /** The live views open now, in the metrics: studio_live_view_sessions. */
+    @Bean
+    MeterBinder liveViewMetrics() {
+        return registry -> Gauge.builder("studio.live_view.sessions", handler, PreviewHandler::open)
+                .description("Live views (/api/preview) open now").register(registry);
     }
 
     @Override

@@ -13,8 +13,10 @@ import org.springframework.web.ErrorResponse;
 
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.Film;
+import studio.engine.render.RenderResult;
 import studio.engine.render.RenderSettings;
 import studio.server.render.RenderBudget;
+import studio.server.render.RenderMetrics;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
@@ -93,7 +95,9 @@ final class PreviewRenderer {
      */
     byte[] render(CompiledScene scene, PreviewPass pass, Film film, long revision, long receivedNanos,
                   BooleanSupplier superseded) {
-        budget.render(passScene(scene, pass.settings()), film, pass.pixels(), pass.except(), superseded);
+        RenderResult rendered = budget.render(passScene(scene, pass.settings()), film, pass.pixels(), pass.except(),
+                superseded);
+        budget.metrics().rendered(RenderMetrics.Kind.LIVE_VIEW, rendered);
         try {
             ByteArrayOutputStream image = new ByteArrayOutputStream();
             var pixels = ImageEncoder.toImage(film, pass.pixels());

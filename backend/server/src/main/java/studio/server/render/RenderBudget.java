@@ -18,19 +18,27 @@ import studio.server.system.MemoryBudget;
 /**
  * What one render may use: at most {@code maxTime} of wall time (asked every few milliseconds, as
  * cancellation is: the render stops within a camera sample of its deadline) and its share of the
- * service's {@link MemoryBudget}.
+ * service's {@link MemoryBudget}; and where the renders that finished are counted
+ * ({@link RenderMetrics}, by whoever asked for the render).
  */
 public final class RenderBudget {
 
     private final Duration maxTime;
     private final MemoryBudget memory;
+    private final RenderMetrics metrics;
 
+    /** A budget whose renders are counted in memory only. */
     public RenderBudget(Duration maxTime, MemoryBudget memory) {
+        this(maxTime, memory, RenderMetrics.unpublished());
+    }
+
+    public RenderBudget(Duration maxTime, MemoryBudget memory, RenderMetrics metrics) {
         if (maxTime.isNegative() || maxTime.isZero()) {
             throw new IllegalArgumentException("the time budget per render must be positive: " + maxTime);
         }
         this.maxTime = maxTime;
         this.memory = memory;
+        this.metrics = metrics;
     }
 
     /** No time limit to speak of, and no memory limit (tests, the command line). */
@@ -44,6 +52,10 @@ public final class RenderBudget {
 
     public MemoryBudget memory() {
         return memory;
+    }
+
+    public RenderMetrics metrics() {
+        return metrics;
     }
 
     /**

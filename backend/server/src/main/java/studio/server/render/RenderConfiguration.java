@@ -1,5 +1,6 @@
 package studio.server.render;
 
+import io.micrometer.core.instrument.MeterRegistry;
 import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
 
@@ -7,13 +8,13 @@ import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.MemoryBudget;
 import studio.server.system.StudioProperties;
 
-/** The render budget every render runs within, and the synchronous render service (POST /api/render). */
+/** The render budget every render runs within (its renders counted in the service's metrics), and the synchronous render service (POST /api/render). */
 @Configuration(proxyBeanMethods = false)
 class RenderConfiguration {
 
     @Bean
-    RenderBudget renderBudget(StudioProperties properties, MemoryBudget memory) {
-        return new RenderBudget(properties.limits().maxRenderTime(), memory);
+    RenderBudget renderBudget(StudioProperties properties, MemoryBudget memory, MeterRegistry metrics) {
+        return new RenderBudget(properties.limits().maxRenderTime(), memory, new RenderMetrics(metrics));
     }
 
     @Bean(destroyMethod = "close")

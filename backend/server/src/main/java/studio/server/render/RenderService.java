@@ -200,6 +200,7 @@ public final class RenderService implements Drainable, AutoCloseable {
                     throw new RenderCancelledException();
                 }
                 RenderResult rendered = budget.render(scene, RenderListener.NONE, this::stopRequested);
+                budget.metrics().rendered(RenderMetrics.Kind.SYNC, rendered);
                 byte[] bytes = ImageFiles.encode(rendered.film(), scene.format(), scene.quality());
                 result.complete(new RenderedImage(bytes, scene.mediaType(), scene.fileName(), scene.settings().width(),
                         scene.settings().height(), rendered.elapsedMillis(), rendered.raysPerSecond()));

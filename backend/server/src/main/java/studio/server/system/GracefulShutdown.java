@@ -50,6 +50,16 @@ public final class GracefulShutdown implements SmartLifecycle {
         log.info("shutting down: renders drained in {} ms", (System.nanoTime() - start) / 1_000_000);
     }
 
+    /**
+     * Not stopped when the context is only paused (Spring's test framework pauses a cached context
+     * it is not using, and restarts it later): the drain refuses new work for good, as a service
+     * being shut down must.
+     */
+    @Override
+    public boolean isPauseable() {
+        return false;
+    }
+
     @Override
     public boolean isRunning() {
         return running;

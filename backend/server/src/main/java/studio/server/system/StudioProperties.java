@@ -14,8 +14,8 @@ import org.springframework.util.unit.DataSize;
  *
  * @param concurrentRenders synchronous renders at once; more get 503 with Retry-After
  * @param renderThreads     worker threads per render, 0 for all cores
- * @param renderMemory      the heap that renders and request bodies may hold at once ({@link MemoryBudget});
- *                          0 for half of the maximum heap
+ * @param renderMemory      the heap that renders and request bodies may hold at once; 0 for half of the maximum
+ *                          heap; beyond it 503 (a render) or 429 (a body)
  */
 @ConfigurationProperties("studio")
 public record StudioProperties(@DefaultValue Limits limits, @DefaultValue Jobs jobs,
@@ -25,6 +25,14 @@ public record StudioProperties(@DefaultValue Limits limits, @DefaultValue Jobs j
     /**
      * Render jobs: how many run at once, how many wait, how long results are kept, and on shutdown
      * how long running jobs may go on before they are cancelled.
+     *
+     * @param concurrent    render jobs (POST /api/jobs) that run at once
+     * @param queue         jobs that may wait to run; more get 429 with Retry-After
+     * @param keepFinished  how long a finished job and its image are kept
+     * @param maxFinished   finished jobs kept at most; the oldest is dropped first
+     * @param abandonAfter  a job that nobody has asked about for this long is cancelled
+     * @param shutdownGrace on shutdown, how long running renders (jobs and POST /api/render) may go on
+     *                      before they are cancelled; queued jobs are cancelled at once
      */
     public record Jobs(@DefaultValue("1") int concurrent, @DefaultValue("8") int queue,
                        @DefaultValue("15m") Duration keepFinished, @DefaultValue("50") int maxFinished,
@@ -34,8 +42,20 @@ public record StudioProperties(@DefaultValue Limits limits, @DefaultValue Jobs j
     /**
      * Limits on one scene, one request and one render.
      *
-     * @param bodyGrace   how long any request body may take to arrive
-     * @param minBodyRate beyond that, how fast (per second, on average) it must keep arriving
+     * @param maxWidth        the widest image a scene may ask for, in pixels
+     * @param maxHeight       the tallest image a scene may ask for, in pixels
+     * @param maxSamples      the most samples per pixel a scene may ask for
+     * @param maxDepth        the deepest recursion (reflection and refraction bounces) a scene may ask for
+     * @param maxObjects      the most objects in one scene
+     * @param maxLights       the most lights in one scene
+     * @param maxTriangles    the most triangles of all of a scene's meshes together
+     * @param maxBodyBytes    the largest request body (and live-view message), inline meshes included (about
+     *                        70 bytes a triangle); larger ones get 413
+     * @param maxPixelSamples the render budget: width times height times samples of one render
+     * @param maxRenderTime   the wall time one render may take; then it stops and says so (422)
+     * @param bodyGrace       how long any request body may take to arrive
+     * @param minBodyRate     beyond that, how fast (per second, on average) it must keep arriving; slower
+     *                        ones get 408
      */
     public record Limits(@DefaultValue("4096") int maxWidth, @DefaultValue("4096") int maxHeight,
                          @DefaultValue("1024") int maxSamples, @DefaultValue("16") int maxDepth,

@@ -2,6 +2,9 @@ package studio.server.system;
 
 import java.util.List;
 
+import io.micrometer.core.instrument.Gauge;
+import io.micrometer.core.instrument.MeterRegistry;
+import io.micrometer.core.instrument.binder.MeterBinder;
 import org.springframework.boot.context.properties.EnableConfigurationProperties;
 import org.springframework.boot.web.servlet.FilterRegistrationBean;
 import org.springframework.context.annotation.Bean;
@@ -26,6 +29,33 @@ class SystemConfiguration {
     @Bean
     GracefulShutdown gracefulShutdown(List<Drainable> work, StudioProperties properties) {
         return new GracefulShutdown(work, properties.jobs().shutdownGrace());
+    }
+
+    /** The API's refusals counted by status, first of the filters so that it sees theirs. */
+    @Bean
+    FilterRegistrationBean<RefusalMetricsFilter> refusalMetricsFilter(MeterRegistry registry) {
+        FilterRegistrationBean<RefusalMetricsFilter> registration =
+                new FilterRegistrationBean<>(new RefusalMetricsFilter(registry));
+        registration.addUrlPatterns("/api/*");
+        registration.setOrder(0);
+        return registration;
+    }
+
+    /**
+     * The render memory in the metrics: studio_render_memory_capacity_bytes, _reserved_bytes and
+     * _free_bytes (what renders, jobs, live views and request bodies hold, and what is left).
+     */
+    @Bean
+    MeterBinder renderMemoryMetrics(MemoryBudget memory) {
+        return registry -> {
+            Gauge.builder("studio.render.memory.capacity", memory, MemoryBudget::capacity).baseUnit("bytes")
+                    .description("The render memory (studio.render-memory)").register(registry);
+            Gauge.builder("studio.render.memory.reserved", memory, MemoryBudget::reserved).baseUnit("bytes")
+                    .description("Render memory held by renders, jobs, live views and request bodies")
+                    .register(registry);
+            Gauge.builder("studio.render.memory.free", memory, m -> m.capacity() - m.reserved()).baseUnit("bytes")
+                    .description("Render memory not held").register(registry);
+        };
     }
 
     @Bean

@@ -21,9 +21,12 @@ import java.util.concurrent.ExecutionException;
 import javax.imageio.ImageIO;
 
 import org.junit.jupiter.api.Test;
+import org.springframework.beans.factory.annotation.Autowired;
 import org.springframework.boot.test.context.SpringBootTest;
 import org.springframework.boot.test.web.server.LocalServerPort;
 
+import io.micrometer.core.instrument.MeterRegistry;
+import io.micrometer.core.instrument.Timer;
 import studio.server.Await;
 import tools.jackson.databind.JsonNode;
 
@@ -43,6 +46,9 @@ class PreviewApiTest {
 
     @LocalServerPort
     int port;
+
+    @Autowired
+    MeterRegistry metrics;
 
     private static int[] pixels(byte[] encoded) throws Exception {
         BufferedImage image = ImageIO.read(new ByteArrayInputStream(encoded));
@@ -83,6 +89,20 @@ class PreviewApiTest {
             assertArrayEquals(pixels(renderPng(atViewSize)), pixels(client.lastFrame().image()),
                     "the final frame is the render, pixel for pixel");
         }
+    }
+
+    @Test
+    void passesAreCountedAsLiveViewRendersAndOpenViewsAsSessions() throws Exception {
+        Timer liveView = metrics.get("studio.render").tag("kind", "live_view").timer();
+        long before = liveView.count();
+        try (PreviewClient client = new PreviewClient(port)) {
+            client.send(1, SCENE, 64, 48);
+            Await.until("the final frame", 30_000, () -> client.lastFrame() != null && client.lastFrame().last());
+            assertEquals(before + client.frames.size(), liveView.count(), "one render a pass");
+            assertTrue(metrics.get("studio.live_view.sessions").gauge().value() >= 1);
+        }
+        Await.until("the view's session closed", 5_000,
+                () -> metrics.get("studio.live_view.sessions").gauge().value() == 0);
     }
 
     @Test
