@@ -32,6 +32,8 @@ public final class Hit {
     public final double[] sceneStackEntry = new double[Bvh.STACK_SIZE];
     /** Traversal stack of a BVH inside one shape (a mesh's triangles), used while the scene's is in use. */
     public final int[] shapeStack = new int[Bvh.STACK_SIZE];
+    /** Where the ray enters each node on {@link #shapeStack}. */
+    public final double[] shapeStackEntry = new double[Bvh.STACK_SIZE];
 
     /** A hit on a surface whose shading normal is its geometric normal. */
     void set(double t, double px, double py, double pz, double nx, double ny, double nz,

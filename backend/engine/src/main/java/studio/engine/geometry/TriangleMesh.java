@@ -179,33 +179,45 @@ public final class TriangleMesh implements Shape {
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
         boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
-        boolean negX = dx < 0, negY = dy < 0, negZ = dz < 0;
 
         double[] nb = nodeBounds;
         int[] links = nodeLinks;
         int[] stack = hit.shapeStack;
+        double[] stackEntry = hit.shapeStackEntry;
         int sp = 0, node = 0, bestTri = -1;
         double best = tMax;
+        double entry = Slab.entry(nb, 0, ox, oy, oz, ix, iy, iz, nanFree, best);
         while (true) {
-            if (Slab.hits(nb, 6 * node, ox, oy, oz, ix, iy, iz, nanFree, best)) {
+            if (entry <= best) { // a miss is NaN: false
                 int o = 3 * node;
                 int count = links[o + 1];
                 if (count < 0) {
-                    int axis = ~count;
-                    if (axis == 0 ? negX : axis == 1 ? negY : negZ) {
-                        stack[sp++] = node + 1;
-                        node = links[o];
-                    } else {
-                        stack[sp++] = links[o];
-                        node++;
+                    // the scene's order (ShapeSet): both children's boxes tested here, the nearer visited
+                    // first, the other kept with its entry distance, one the ray misses never pushed
+                    int left = node + 1, right = links[o];
+                    double inLeft = Slab.entry(nb, 6 * left, ox, oy, oz, ix, iy, iz, nanFree, best);
+                    double inRight = Slab.entry(nb, 6 * right, ox, oy, oz, ix, iy, iz, nanFree, best);
+                    boolean hitLeft = inLeft <= best, hitRight = inRight <= best;
+                    if (hitLeft && hitRight) {
+                        boolean leftFirst = inLeft <= inRight;
+                        stack[sp] = leftFirst ? right : left;
+                        stackEntry[sp++] = leftFirst ? inRight : inLeft;
+                        node = leftFirst ? left : right;
+                        entry = leftFirst ? inLeft : inRight;
+                        continue;
                     }
-                    continue;
-                }
-                for (int tri = links[o], end = tri + count; tri < end; tri++) {
-                    double t = distance(tri, okx, oky, okz, kx, ky, kz, sx, sy, sz, best);
-                    if (t == t) {
-                        best = t;
-                        bestTri = tri;
+                    if (hitLeft || hitRight) {
+                        node = hitLeft ? left : right;
+                        entry = hitLeft ? inLeft : inRight;
+                        continue;
+                    }
+                } else {
+                    for (int tri = links[o], end = tri + count; tri < end; tri++) {
+                        double t = distance(tri, okx, oky, okz, kx, ky, kz, sx, sy, sz, best);
+                        if (t == t) {
+                            best = t;
+                            bestTri = tri;
+                        }
                     }
                 }
             }
@@ -213,6 +225,7 @@ public final class TriangleMesh implements Shape {
                 break;
             }
             node = stack[--sp];
+            entry = stackEntry[sp];
         }
         if (bestTri < 0) {
             return false;
