@@ -51,6 +51,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(ClusterJobs.class);
     /** Besides on every member's departure, orphaned jobs are looked for this often. */
     static final long ORPHAN_CHECK_SECONDS = 5;
+    /** Streams of other members' jobs hear a heartbeat this often, as the job service's own streams do. */
+    static final long REMOTE_HEARTBEAT_SECONDS = 5;
     /** A job's end is written to the cluster's maps within this long before the job reports it, or after. */
     static final long END_WRITE_SECONDS = 10;
     /**
@@ -79,11 +81,21 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     /** Jobs this member took over and has not rendered yet: their tiles may be queued already. */
     private final Set<String> adopted = ConcurrentHashMap.newKeySet();
     private final ScheduledExecutorService background;
+    /** The event streams this member serves of other members' jobs, by listener. */
+    private final Map<JobListener, RemoteJobStream> remoteStreams = new ConcurrentHashMap<>();
+    private final long remoteHeartbeatMillis;
     private volatile Takeover takeover;
     private UUID membershipRegistration, cancelRegistration;
 
     /** @param renderThreads threads per render, 0 for all cores: fixes a job's tiling, as on one member */
     ClusterJobs(HazelcastInstance member, SceneCompiler compiler, TileWorkers workers, int renderThreads) {
+        this(member, compiler, workers, renderThreads, TimeUnit.SECONDS.toMillis(REMOTE_HEARTBEAT_SECONDS));
+    }
+
+    /** As above, with the streams of other members' jobs hearing a heartbeat every {@code remoteHeartbeatMillis} (tests). */
+    ClusterJobs(HazelcastInstance member, SceneCompiler compiler, TileWorkers workers, int renderThreads,
+                long remoteHeartbeatMillis) {
+        this.remoteHeartbeatMillis = remoteHeartbeatMillis;
         this.member = member;
         this.memberId = member.getCluster().getLocalMember().getUuid().toString();
         this.compiler = compiler;
@@ -120,6 +132,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         });
         background.scheduleWithFixedDelay(this::adoptOrphans, ORPHAN_CHECK_SECONDS, ORPHAN_CHECK_SECONDS,
                 TimeUnit.SECONDS);
+        background.scheduleWithFixedDelay(this::heartbeatRemoteStreams, remoteHeartbeatMillis, remoteHeartbeatMillis,
+                TimeUnit.MILLISECONDS);
         workers.start();
     }
 
@@ -245,8 +259,36 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             return false;
         }
         seen.setAsync(id, System.currentTimeMillis());
-        new RemoteJobStream(id, jobs, member.getRingbuffer(ClusterMaps.events(id)), listener, sender).start(job);
+        RemoteJobStream stream = new RemoteJobStream(id, jobs, member.getRingbuffer(ClusterMaps.events(id)), listener,
+                sender, () -> remoteStreams.remove(listener));
+        remoteStreams.put(listener, stream);
+        stream.start(job);
         return true;
+    }
+
+    @Override
+    public void unsubscribe(String id, JobListener listener) {
+        RemoteJobStream stream = remoteStreams.get(listener);
+        if (stream != null) {
+            stream.close();
+        }
+    }
+
+    /**
+     * Every {@value #REMOTE_HEARTBEAT_SECONDS} s, as this member's own jobs do for their streams: each
+     * event stream of another member's job checks its connection (a keep-alive), and the job is marked
+     * seen, so that its owner does not cancel it as abandoned while a client watches it through here.
+     */
+    private void heartbeatRemoteStreams() {
+        Set<String> watched = new HashSet<>();
+        for (RemoteJobStream stream : remoteStreams.values()) {
+            stream.heartbeat();
+            watched.add(stream.jobId());
+        }
+        long now = System.currentTimeMillis();
+        for (String id : watched) {
+            seen.setAsync(id, now);
+        }
     }
 
     @Override

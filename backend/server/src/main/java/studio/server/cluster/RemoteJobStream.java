@@ -1,6 +1,9 @@
 package studio.server.cluster;
 
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.Executor;
+import java.util.concurrent.atomic.AtomicBoolean;
 
 import com.hazelcast.map.IMap;
 import com.hazelcast.ringbuffer.ReadResultSet;
@@ -15,8 +18,12 @@ import studio.server.job.TileEvent;
  * An event stream of a job that another member runs, read from the job's ring buffer: the status
  * now, the tiles so far, then what follows, and last the end, as a stream of a job of this member
  * would give them. Reads wait asynchronously (no thread waits for the next event) and deliver on
- * the job service's sender threads, one batch after another, so the listener hears the events in
- * order and may write to a slow connection.
+ * the job service's sender threads, one task after another (a batch, or a heartbeat), so the
+ * listener hears the events in order, one call at a time, and may write to a slow connection.
+ *
+ * <p>While the job is quiet, {@link #heartbeat} lets the listener check its connection (an event
+ * stream sends a keep-alive comment), as the streams of this member's own jobs do; a listener
+ * that went away is {@link #close closed}, and the stream reads no further.
  */
 final class RemoteJobStream {
 
@@ -29,34 +36,90 @@ final class RemoteJobStream {
     private final Executor sender;
     /** Status events up to this sequence were past when the listener subscribed: it hears the status now instead. */
     private long pastStatuses;
+    private final Queue<Runnable> outbox = new ConcurrentLinkedQueue<>();
+    private final AtomicBoolean delivering = new AtomicBoolean();
+    private final Runnable onClosed;
+    private volatile boolean closed;
 
+    /** @param onClosed run once when the stream ends, is dropped or is closed */
     RemoteJobStream(String id, IMap<String, JobRecord> jobs, Ringbuffer<JobEvent> events, JobListener listener,
-                    Executor sender) {
+                    Executor sender, Runnable onClosed) {
         this.id = id;
         this.jobs = jobs;
         this.events = events;
         this.listener = listener;
         this.sender = sender;
+        this.onClosed = onClosed;
+    }
+
+    String jobId() {
+        return id;
     }
 
     void start(JobRecord job) {
         long head = events.headSequence();
         pastStatuses = events.tailSequence();
-        sender.execute(() -> {
+        post(() -> {
             listener.status(job.status());
             if (job.status().state().isFinal()) {
-                listener.end(job.status());
+                end(job.status());
             } else {
                 read(head);
             }
         });
     }
 
+    /** Lets the listener check its connection, after whatever it is being told now. */
+    void heartbeat() {
+        post(() -> {
+            if (!closed) {
+                listener.heartbeat();
+            }
+        });
+    }
+
+    /** The listener went away: nothing more is read or delivered (a read already waiting is ignored when it returns). */
+    void close() {
+        if (!closed) {
+            closed = true;
+            onClosed.run();
+        }
+    }
+
+    /** Runs a delivery on the sender pool after the ones before it, never two at once. */
+    private void post(Runnable delivery) {
+        outbox.add(delivery);
+        if (delivering.compareAndSet(false, true)) {
+            sender.execute(this::drain);
+        }
+    }
+
+    private void drain() {
+        do {
+            for (Runnable next; (next = outbox.poll()) != null; ) {
+                next.run();
+            }
+            delivering.set(false);
+            // a task posted after the queue looked empty and before the flag was cleared is run now
+        } while (!outbox.isEmpty() && delivering.compareAndSet(false, true));
+    }
+
     private void read(long from) {
-        events.readManyAsync(from, 1, BATCH, null).whenCompleteAsync(this::deliver, sender);
+        if (closed) {
+            return;
+        }
+        events.readManyAsync(from, 1, BATCH, null).whenComplete((batch, failure) -> post(() -> deliver(batch, failure)));
+    }
+
+    private void end(JobStatus status) {
+        close();
+        listener.end(status);
     }
 
     private void deliver(ReadResultSet<JobEvent> batch, Throwable failure) {
+        if (closed) {
+            return;
+        }
         if (failure != null) {
             // the job was dropped meanwhile, or this member is leaving: end with what the table says, if anything
             JobRecord job;
@@ -66,8 +129,9 @@ final class RemoteJobStream {
                 job = null;
             }
             if (job != null && job.status().state().isFinal()) {
-                listener.end(job.status());
+                end(job.status());
             } else {
+                close();
                 listener.dropped();
             }
             return;
@@ -78,7 +142,7 @@ final class RemoteJobStream {
                 listener.tile(tile);
             } else if (event instanceof JobStatus status) {
                 if (status.state().isFinal()) {
-                    listener.end(status);
+                    end(status);
                     return;
                 }
                 if (batch.getSequence(i) > pastStatuses) {

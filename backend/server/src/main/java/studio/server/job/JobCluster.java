@@ -100,6 +100,14 @@ public interface JobCluster {
         return false;
     }
 
+    /**
+     * A listener {@link #subscribe subscribed} to another member's job went away or left: its stream
+     * stops. (The job goes on; its owner cancels it as abandoned once nobody has asked about it for
+     * a while, as for a job whose own last listener left.)
+     */
+    default void unsubscribe(String id, JobListener listener) {
+    }
+
     /** When anyone in the cluster last asked about the job (epoch millis), or 0 if not known. */
     default long lastSeenMillis(String id) {
         return 0;

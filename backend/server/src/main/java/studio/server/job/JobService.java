@@ -286,6 +286,8 @@ public final class JobService implements Drainable, AutoCloseable {
         RenderJob job = jobs.get(id);
         if (job != null) {
             job.unsubscribe(listener);
+        } else {
+            cluster.unsubscribe(id, listener);
         }
     }
 
@@ -296,7 +298,9 @@ public final class JobService implements Drainable, AutoCloseable {
      */
     void disconnected(String id, JobListener listener) {
         RenderJob job = jobs.get(id);
-        if (job != null && job.unsubscribeLast(listener)) {
+        if (job == null) {
+            cluster.unsubscribe(id, listener); // another member's job: its stream stops
+        } else if (job.unsubscribeLast(listener)) {
             cancel(id);
         }
     }

@@ -12,6 +12,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
@@ -213,6 +214,61 @@ class ClusterJobsTest {
         assertThat(awaitFinal(members.get(1), id).state()).isEqualTo(JobState.DONE);
         assertThat(claimed).hasSize(1);
         assertThat(members.get(1).jobs.image(id).bytes()).isEqualTo(oneMachine);
+    }
+
+    /**
+     * A stream of another member's job hears heartbeats while the job is quiet, as a stream of this
+     * member's own job does (an event stream sends a keep-alive and so finds out that its client left),
+     * and keeps the job marked seen, so that its owner does not cancel it as abandoned while someone
+     * watches it through another member; once its listener is unsubscribed it hears nothing more.
+     */
+    @Test
+    void aStreamThroughAnotherMemberHearsHeartbeatsAndNothingOnceItsListenerLeft() throws Exception {
+        start(2);
+        CountDownLatch go = new CountDownLatch(1);
+        for (TestMember member : members) {
+            member.onTaken = task -> awaitQuietly(go); // no tile finishes: a quiet job
+        }
+        String id = submit(members.get(0));
+        TestMember other = members.get(1);
+        List<Object> events = new CopyOnWriteArrayList<>();
+        AtomicInteger heartbeats = new AtomicInteger();
+        JobListener listener = new JobListener() {
+            @Override
+            public void status(JobStatus status) {
+                events.add(status);
+            }
+
+            @Override
+            public void tile(TileEvent tile) {
+                events.add(tile);
+            }
+
+            @Override
+            public void end(JobStatus status) {
+                events.add("end " + status.state().json());
+            }
+
+            @Override
+            public void heartbeat() {
+                heartbeats.incrementAndGet();
+            }
+        };
+        assertThat(other.cluster.subscribe(id, listener, Executors.newCachedThreadPool())).isTrue();
+        long seenAtSubscribe = other.cluster.lastSeenMillis(id);
+        Await.until("heartbeats of a quiet job through another member", WAIT_MILLIS, () -> heartbeats.get() >= 3);
+        Await.until("the job marked seen by the heartbeats", WAIT_MILLIS,
+                () -> other.cluster.lastSeenMillis(id) > seenAtSubscribe);
+        assertThat(events).noneMatch(TileEvent.class::isInstance);
+
+        other.cluster.unsubscribe(id, listener);
+        int heartbeatsThen = heartbeats.get();
+        go.countDown();
+        assertThat(awaitFinal(other, id).state()).isEqualTo(JobState.DONE);
+        pause(3 * TestMember.REMOTE_HEARTBEAT_MILLIS);
+        assertThat(events).as("no tile and no end once the listener left").noneMatch(
+                event -> event instanceof TileEvent || event instanceof String);
+        assertThat(heartbeats.get()).as("a heartbeat under way when it left, at most").isLessThanOrEqualTo(heartbeatsThen + 1);
     }
 
     private static void awaitQuietly(CountDownLatch latch) {

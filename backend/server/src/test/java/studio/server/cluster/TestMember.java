@@ -24,6 +24,8 @@ import studio.server.system.MemoryBudget;
 final class TestMember implements AutoCloseable {
 
     static final ValidatorFactory VALIDATION = Validation.buildDefaultValidatorFactory();
+    /** Streams of other members' jobs hear a heartbeat this often (5 s in the application). */
+    static final long REMOTE_HEARTBEAT_MILLIS = 200;
     static final JobSettings SETTINGS = new JobSettings(1, 4, Duration.ofMinutes(10), 50, Duration.ofMinutes(10), 1);
 
     final int port;
@@ -59,7 +61,7 @@ final class TestMember implements AutoCloseable {
                         onClaimed.accept(task);
                     }
                 });
-        cluster = new ClusterJobs(hazelcast, compiler, workers, 1);
+        cluster = new ClusterJobs(hazelcast, compiler, workers, 1, REMOTE_HEARTBEAT_MILLIS);
         jobs = new JobService(SETTINGS, RenderBudget.unlimited(), Duration.ofSeconds(2), cluster);
         address = ClusterNames.address(hazelcast.getCluster().getLocalMember());
         uuid = hazelcast.getCluster().getLocalMember().getUuid().toString();
