@@ -9,26 +9,14 @@ import {
   startJob,
   subscribeJob,
   type EventSourceFactory,
-  type JobState,
   type JobStatus,
 } from '../api/jobs';
 import type { FinishedRender } from './history/renderRecord';
+import type { FinishedImage, RenderPhase } from './renderJobState';
 import { paintTile, resetCanvas, type TileDecoder } from './tilePainter';
 import { useElapsedClock } from './useElapsedClock';
 
-/** Where the panel is: nothing yet, posting the scene, or the job's own state. */
-export type RenderPhase = 'idle' | 'starting' | JobState;
-
-/** A finished render, ready to show and download. */
-export interface FinishedImage {
-  /** Object URL of the image; the hook revokes it when it is replaced or on unmount. */
-  url: string;
-  filename: string;
-  width: number;
-  height: number;
-  renderMillis: number;
-  raysPerSecond: number | null;
-}
+export type { FinishedImage, RenderPhase } from './renderJobState';
 
 /** What {@link RenderJob.start} came to: the caller maps field errors from `rejected`. */
 export type StartOutcome =
