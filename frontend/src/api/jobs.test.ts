@@ -187,6 +187,30 @@ describe('getJob, cancelJob and fetchJobImage', () => {
     expect((await fetchJobImage('k3j', fetchFn, 'glass.jpg')).filename).toBe('glass.jpg');
   });
 
+  it('hands the signal to every request, so the caller can abort it', async () => {
+    const { signal } = new AbortController();
+    const fetchFn = vi.fn<FetchFn>(async (url) =>
+      url.endsWith('/image') ? new Response('png') : Response.json(statusJson()),
+    );
+    await getJob('k3j', fetchFn, signal);
+    await cancelJob('k3j', fetchFn, signal);
+    await fetchJobImage('k3j', fetchFn, undefined, signal);
+    expect(fetchFn.mock.calls.map(([, init]) => init?.signal)).toEqual([signal, signal, signal]);
+  });
+
+  it('rejects an aborted request with the abort itself, not as an unreachable server', async () => {
+    const controller = new AbortController();
+    // as the browser's fetch does: pending until the signal aborts, then rejects with its reason
+    const fetchFn = vi.fn<FetchFn>(
+      (_url, init) => new Promise<Response>((_, reject) => init?.signal?.addEventListener('abort', () => reject(init.signal?.reason))),
+    );
+    const pending = getJob('k3j', fetchFn, controller.signal);
+    controller.abort();
+    const error = await pending.catch((e: unknown) => e);
+    expect(error).not.toBeInstanceOf(ApiError);
+    expect(error).toHaveProperty('name', 'AbortError');
+  });
+
   it('rejects an image that is not ready with 409', async () => {
     const problem = { title: 'Conflict', status: 409, detail: 'The job is still running' };
     const fetchFn = answering(new Response(JSON.stringify(problem), { status: 409, headers: PROBLEM }));
@@ -261,6 +285,23 @@ describe('subscribeJob', () => {
     expect(source.closed).toBe(true);
     source.emit('status', statusJson());
     expect(handlers.onStatus).not.toHaveBeenCalled();
+  });
+
+  it('closes the stream when its signal aborts and calls no handler after it', () => {
+    const streams = fakeEventSources();
+    const onStatus = vi.fn();
+    const controller = new AbortController();
+    subscribeJob('k3j', { onStatus }, streams.factory, controller.signal);
+    controller.abort();
+    expect(streams.last().closed).toBe(true);
+    streams.last().emit('status', statusJson());
+    expect(onStatus).not.toHaveBeenCalled();
+  });
+
+  it('opens no stream for a signal already aborted', () => {
+    const streams = fakeEventSources();
+    subscribeJob('k3j', {}, streams.factory, AbortSignal.abort());
+    expect(streams.opened).toHaveLength(0);
   });
 
   it('reports an unreadable event without closing the stream', () => {

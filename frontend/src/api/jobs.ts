@@ -4,7 +4,8 @@
  *
  * Pure TypeScript, no React. Every failed request comes out as a {@link JobApiError} (an
  * {@link ApiError}, parsed from `application/problem+json` by `client.ts`), which also carries
- * the server's `Retry-After` when it is busy.
+ * the server's `Retry-After` when it is busy. A request whose `signal` aborts rejects with the
+ * abort itself (an `AbortError`), not as an unreachable server.
  */
 import {
   ApiError,
@@ -113,16 +114,17 @@ export async function startJob(sceneJson: unknown, fetchFn: FetchFn = defaultFet
 }
 
 /** Reads a job's current status; 404 for an unknown id. */
-export async function getJob(id: string, fetchFn: FetchFn = defaultFetch): Promise<JobStatus> {
-  const response = await send(fetchFn, jobUrl(id), { headers: { Accept: 'application/json' } });
+export async function getJob(id: string, fetchFn: FetchFn = defaultFetch, signal?: AbortSignal): Promise<JobStatus> {
+  const response = await send(fetchFn, jobUrl(id), { headers: { Accept: 'application/json' }, signal });
   return readStatus(response, id);
 }
 
 /** Asks the server to stop a job; resolves with its status (cancelled within one tile's time). */
-export async function cancelJob(id: string, fetchFn: FetchFn = defaultFetch): Promise<JobStatus> {
+export async function cancelJob(id: string, fetchFn: FetchFn = defaultFetch, signal?: AbortSignal): Promise<JobStatus> {
   const response = await send(fetchFn, jobUrl(id), {
     method: 'DELETE',
     headers: { Accept: 'application/json' },
+    signal,
   });
   return readStatus(response, id);
 }
@@ -136,9 +138,11 @@ export async function fetchJobImage(
   id: string,
   fetchFn: FetchFn = defaultFetch,
   fallbackFilename?: string,
+  signal?: AbortSignal,
 ): Promise<RenderOutput> {
   const response = await send(fetchFn, jobUrl(id, 'image'), {
     headers: { Accept: 'image/png, image/jpeg, application/problem+json' },
+    signal,
   });
   const contentType = (response.headers.get('Content-Type') ?? '').split(';')[0].trim() || 'image/png';
   const disposition = response.headers.get('Content-Disposition');
@@ -156,19 +160,24 @@ export async function fetchJobImage(
 
 /**
  * Follows a job's event stream: `status`, `tile` and `end` events are parsed and handed to the
- * handlers; `end` closes the stream. Returns a function that closes it early.
+ * handlers; `end` closes the stream, and so does `signal` when it aborts. Returns a function that
+ * closes it early.
  */
 export function subscribeJob(
   id: string,
   handlers: JobHandlers,
   eventSourceFactory: EventSourceFactory = defaultEventSource,
+  signal?: AbortSignal,
 ): () => void {
+  if (signal?.aborted) return () => undefined;
   const source = eventSourceFactory(jobUrl(id, 'events'));
   let open = true;
   const close = () => {
     open = false;
+    signal?.removeEventListener('abort', close);
     source.close();
   };
+  signal?.addEventListener('abort', close);
 
   /** Registers a listener that parses `data` and ignores everything after closing. */
   const on = <T>(type: string, parse: (data: unknown) => T | null, handle: (value: T) => void) => {
@@ -249,6 +258,7 @@ async function send(fetchFn: FetchFn, url: string, init: RequestInit): Promise<R
   try {
     response = await fetchFn(url, init);
   } catch (cause) {
+    if (init.signal?.aborted) throw cause;
     const message = cause instanceof Error ? cause.message : String(cause);
     throw new JobApiError(new ApiError(0, 'Cannot reach the server', message));
   }

@@ -9,26 +9,23 @@ import {
   startJob,
   subscribeJob,
   type EventSourceFactory,
-  type JobState,
   type JobStatus,
+  type JobTile,
 } from '../api/jobs';
 import type { FinishedRender } from './history/renderRecord';
+import {
+  INITIAL_STATE,
+  renderJobReducer,
+  viewOf,
+  type FinishedImage,
+  type RenderJobAction,
+  type RenderJobState,
+  type RenderPhase,
+} from './renderJobState';
 import { paintTile, resetCanvas, type TileDecoder } from './tilePainter';
 import { useElapsedClock } from './useElapsedClock';
 
-/** Where the panel is: nothing yet, posting the scene, or the job's own state. */
-export type RenderPhase = 'idle' | 'starting' | JobState;
-
-/** A finished render, ready to show and download. */
-export interface FinishedImage {
-  /** Object URL of the image; the hook revokes it when it is replaced or on unmount. */
-  url: string;
-  filename: string;
-  width: number;
-  height: number;
-  renderMillis: number;
-  raysPerSecond: number | null;
-}
+export type { FinishedImage, RenderPhase } from './renderJobState';
 
 /** What {@link RenderJob.start} came to: the caller maps field errors from `rejected`. */
 export type StartOutcome =
@@ -67,56 +64,64 @@ export interface RenderJob {
   cancel: () => Promise<void>;
 }
 
-/** Manages one render job at a time: start, follow its events, paint tiles, fetch the image. */
-export function useRenderJob(options: RenderJobOptions = {}): RenderJob {
-  const [job, setJob] = useState<JobStatus | null>(null);
-  const [starting, setStarting] = useState(false);
-  const [progress, setProgress] = useState(0);
-  const [image, setImage] = useState<FinishedImage | null>(null);
-  const [error, setError] = useState<JobApiError | null>(null);
-  const [cancelling, setCancelling] = useState(false);
-  const elapsedMillis = useElapsedClock(job);
+/**
+ * One job of the hook: the scene it was started for, and the controller that its requests, its
+ * event stream and its tile painting all listen to. Starting another job, cancelling a start still
+ * in flight, or unmounting aborts it; from then on nothing of that job reaches the state.
+ */
+interface JobRun {
+  readonly scene: unknown;
+  readonly controller: AbortController;
+  /** Closes the job's event stream (it closes by itself on abort and after its end event). */
+  stopFollowing: () => void;
+}
 
+/** A state change: the states before and after an action that was not ignored. */
+interface Transition {
+  before: RenderJobState;
+  after: RenderJobState;
+}
+
+const SUPERSEDED: StartOutcome = { kind: 'superseded' };
+const ignore = () => undefined;
+
+/**
+ * Manages one render job at a time: start, follow its events, paint tiles, fetch the image. What
+ * is known of the job is a state machine (`renderJobState.ts`); this hook makes the requests and
+ * feeds the machine. The reducer runs here rather than in `useReducer` because the hook acts on
+ * its verdict at once: entering the end fetches a done job's image; an ignored action does nothing.
+ */
+export function useRenderJob(options: RenderJobOptions = {}): RenderJob {
+  const [state, setState] = useState<RenderJobState>(INITIAL_STATE);
+  const machine = useRef(state); // the state after the latest action: callbacks read this, rendering `state`
+  const run = useRef<JobRun | null>(null); // the current job
   const canvasRef = useRef<HTMLCanvasElement | null>(null);
   const optionsRef = useRef(options);
-  const generation = useRef(0); // bumped by every start/abandon; stale callbacks compare it
-  const jobRef = useRef<JobStatus | null>(null);
-  const unsubscribe = useRef<(() => void) | null>(null);
-  const imageUrl = useRef<string | null>(null);
-  const sentScene = useRef<unknown>(null); // the scene of the current generation's job
+  const view = viewOf(state);
+  const elapsedMillis = useElapsedClock(view.job);
 
   useEffect(() => {
     optionsRef.current = options;
   });
 
-  const replaceImage = useCallback((next: FinishedImage | null) => {
-    if (imageUrl.current) URL.revokeObjectURL(imageUrl.current);
-    imageUrl.current = next?.url ?? null;
-    setImage(next);
+  /** Applies an action of a job; null when the job was left or the machine ignored the action. */
+  const dispatch = useCallback((job: JobRun, action: RenderJobAction): Transition | null => {
+    if (job.controller.signal.aborted) return null;
+    const before = machine.current;
+    const after = renderJobReducer(before, action);
+    if (after === before) return null;
+    machine.current = after;
+    setState(after);
+    return { before, after };
   }, []);
 
-  const stopFollowing = useCallback(() => {
-    unsubscribe.current?.();
-    unsubscribe.current = null;
-  }, []);
-
-  /** Records a status of the current job. */
-  const track = useCallback((status: JobStatus) => {
-    jobRef.current = status;
-    setJob(status);
-    setProgress((p) => (status.state === 'done' ? 1 : Math.max(p, status.progress)));
-  }, []);
-
-  const finish = useCallback(
-    async (status: JobStatus, gen: number) => {
-      stopFollowing();
-      track(status);
-      setCancelling(false);
-      if (status.state !== 'done') return;
-      const { fetchFn } = optionsRef.current;
+  /** Fetches a done job's image, shows it and hands it to `onFinished`. */
+  const fetchImage = useCallback(
+    async (job: JobRun, status: JobStatus) => {
+      const { signal } = job.controller;
       try {
-        const out = await fetchJobImage(status.id, fetchFn, status.fileName || undefined);
-        if (gen !== generation.current) return;
+        const out = await fetchJobImage(status.id, optionsRef.current.fetchFn, status.fileName || undefined, signal);
+        if (signal.aborted) return;
         const finished = {
           filename: out.filename,
           width: status.width,
@@ -124,139 +129,126 @@ export function useRenderJob(options: RenderJobOptions = {}): RenderJob {
           renderMillis: out.renderMillis ?? status.elapsedMillis,
           raysPerSecond: out.raysPerSecond ?? status.raysPerSecond,
         };
-        replaceImage({ url: URL.createObjectURL(out.image), ...finished });
-        optionsRef.current.onFinished?.({ jobId: status.id, finishedAt: Date.now(), sentScene: sentScene.current, image: out.image, ...finished });
+        const url = URL.createObjectURL(out.image);
+        if (!dispatch(job, { type: 'imageFetched', jobId: status.id, image: { url, ...finished } })) return URL.revokeObjectURL(url);
+        optionsRef.current.onFinished?.({ jobId: status.id, finishedAt: Date.now(), sentScene: job.scene, image: out.image, ...finished });
       } catch (e) {
-        if (gen === generation.current) setError(asJobApiError(e));
+        dispatch(job, { type: 'imageFailed', jobId: status.id, error: asJobApiError(e) });
       }
     },
-    [replaceImage, stopFollowing, track],
+    [dispatch],
   );
 
-  /** The stream gave up: ask once for the job's state, finishing it if it has ended. */
+  /** Applies news of a job; when it ends the job, stops following it and fetches a done job's image. */
+  const advance = useCallback(
+    (job: JobRun, action: RenderJobAction) => {
+      const change = dispatch(job, action);
+      if (change?.after.kind !== 'finished' || change.before.kind === 'finished') return;
+      job.stopFollowing();
+      if (change.after.job.state === 'done') void fetchImage(job, change.after.job);
+    },
+    [dispatch, fetchImage],
+  );
+
+  /** The stream gave up: asks once for the job's state, which ends it or leaves the loss reported. */
   const recover = useCallback(
-    async (id: string, lost: ApiError, gen: number) => {
+    async (job: JobRun, jobId: string, lost: ApiError) => {
+      let status: JobStatus | null = null;
       try {
-        const status = await getJob(id, optionsRef.current.fetchFn);
-        if (gen !== generation.current) return;
-        if (isFinalState(status.state)) return void (await finish(status, gen));
-        track(status);
+        status = await getJob(jobId, optionsRef.current.fetchFn, job.controller.signal);
       } catch {
-        // The job's state is unknown; report the lost stream itself.
+        // The job's state is unknown; the lost stream itself is reported.
       }
-      if (gen === generation.current) setError(asJobApiError(lost));
+      advance(job, { type: 'streamLost', jobId, error: asJobApiError(lost), status });
     },
-    [finish, track],
+    [advance],
   );
 
+  /** Follows an accepted job: its events move the state, its tiles are painted on the canvas. */
   const follow = useCallback(
-    (status: JobStatus, gen: number) => {
-      track(status);
+    (job: JobRun, status: JobStatus) => {
       resetCanvas(canvasRef.current, status.width, status.height);
-      if (isFinalState(status.state)) return void finish(status, gen);
+      advance(job, { type: 'jobAccepted', status });
+      if (isFinalState(status.state)) return;
+      const { signal } = job.controller;
       const { eventSourceFactory, decodeTile } = optionsRef.current;
-      const current = () => gen === generation.current;
-      unsubscribe.current = subscribeJob(
-        status.id,
-        {
-          onStatus: (s) => current() && track(s),
-          onTile: (tile) => {
-            if (!current()) return;
-            setProgress((p) => Math.max(p, tile.progress));
-            paintTile(() => canvasRef.current, tile, decodeTile, current).catch(() => undefined);
-          },
-          onEnd: (s) => current() && void finish(s, gen),
-          onError: (e) => current() && void recover(status.id, e, gen),
+      const handlers = {
+        onStatus: (s: JobStatus) => advance(job, { type: 'status', status: s }),
+        onTile: (tile: JobTile) => {
+          advance(job, { type: 'tile', jobId: status.id, progress: tile.progress });
+          paintTile(() => canvasRef.current, tile, decodeTile, () => !signal.aborted).catch(ignore);
         },
-        eventSourceFactory,
-      );
+        onEnd: (s: JobStatus) => advance(job, { type: 'ended', status: s }),
+        onError: (lost: ApiError) => void recover(job, status.id, lost),
+      };
+      job.stopFollowing = subscribeJob(status.id, handlers, eventSourceFactory, signal);
     },
-    [finish, recover, track],
+    [advance, recover],
   );
 
-  /** Forgets the current job and returns the new generation; cancels the job if under way. */
-  const abandon = useCallback(() => {
-    const gen = ++generation.current;
-    stopFollowing();
-    const previous = jobRef.current;
-    jobRef.current = null;
-    const stopped =
-      previous && !isFinalState(previous.state)
-        ? cancelJob(previous.id, optionsRef.current.fetchFn).then(() => undefined, () => undefined)
-        : Promise.resolve();
-    return { gen, stopped };
-  }, [stopFollowing]);
+  /** Leaves the current job: aborts everything of it, and stops it on the server if under way. */
+  const abandon = useCallback((): Promise<void> => {
+    const left = machine.current;
+    run.current?.controller.abort();
+    run.current = null;
+    if (left.kind !== 'following' && left.kind !== 'cancelling') return Promise.resolve();
+    // Without the job's signal: this request is meant to outlive it.
+    return cancelJob(left.job.id, optionsRef.current.fetchFn).then(ignore, ignore);
+  }, []);
 
   const start = useCallback(
     async (scene: unknown): Promise<StartOutcome> => {
-      const { gen, stopped } = abandon();
-      sentScene.current = scene;
-      replaceImage(null);
-      setJob(null);
-      setProgress(0);
-      setError(null);
-      setCancelling(false);
-      setStarting(true);
+      const stopped = abandon();
+      const job: JobRun = { scene, controller: new AbortController(), stopFollowing: ignore };
+      run.current = job;
+      dispatch(job, { type: 'startRequested' });
       await stopped; // the old job frees its slot before the new one asks for one
-      if (gen !== generation.current) return { kind: 'superseded' };
+      const { signal } = job.controller;
+      if (signal.aborted) return SUPERSEDED;
       const { fetchFn } = optionsRef.current;
       let status: JobStatus;
       try {
+        // Not given the signal: a POST aborted after the server took it would leave a job running
+        // that no one knows to stop. Its answer is awaited, and its job cancelled if left meanwhile.
         status = await startJob(scene, fetchFn);
       } catch (e) {
-        if (gen !== generation.current) return { kind: 'superseded' };
-        const rejected = asJobApiError(e);
-        setStarting(false);
-        setError(rejected);
-        return { kind: 'rejected', error: rejected };
+        if (signal.aborted) return SUPERSEDED;
+        const error = asJobApiError(e);
+        dispatch(job, { type: 'startRejected', error });
+        return { kind: 'rejected', error };
       }
-      if (gen !== generation.current) {
-        // Cancelled or restarted while the POST was in flight: stop the orphan.
-        cancelJob(status.id, fetchFn).catch(() => undefined);
-        return { kind: 'superseded' };
+      if (signal.aborted) {
+        cancelJob(status.id, fetchFn).catch(ignore);
+        return SUPERSEDED;
       }
-      setStarting(false);
-      follow(status, gen);
+      follow(job, status);
       return { kind: 'started', job: status };
     },
-    [abandon, follow, replaceImage],
+    [abandon, dispatch, follow],
   );
 
   const cancel = useCallback(async () => {
-    const status = jobRef.current;
-    if (!status) {
-      if (!starting) return;
-      generation.current++; // the pending start cancels its job when it arrives
-      setStarting(false);
-      return;
-    }
-    if (isFinalState(status.state)) return;
-    const gen = generation.current;
-    setCancelling(true);
+    const job = run.current;
+    const change = job ? dispatch(job, { type: 'cancelRequested' }) : null;
+    if (!job || !change) return;
+    // A start still in flight is left; its job is cancelled when the POST answers.
+    if (change.after.kind !== 'cancelling') return void abandon();
+    const jobId = change.after.job.id;
     try {
-      const answer = await cancelJob(status.id, optionsRef.current.fetchFn);
-      const latest = jobRef.current;
-      if (gen !== generation.current || !latest || isFinalState(latest.state)) return;
-      if (isFinalState(answer.state)) await finish(answer, gen);
-      else track(answer);
+      const answer = await cancelJob(jobId, optionsRef.current.fetchFn, job.controller.signal);
+      advance(job, { type: 'cancelAnswered', status: answer });
     } catch (e) {
-      if (gen !== generation.current) return;
-      setCancelling(false);
-      setError(asJobApiError(e));
+      dispatch(job, { type: 'cancelFailed', jobId, error: asJobApiError(e) });
     }
-  }, [finish, starting, track]);
+  }, [abandon, advance, dispatch]);
 
-  useEffect(
-    () => () => {
-      abandon();
-      if (imageUrl.current) URL.revokeObjectURL(imageUrl.current);
-      imageUrl.current = null;
-    },
-    [abandon],
-  );
+  useEffect(() => () => void abandon(), [abandon]);
 
-  const phase: RenderPhase = starting ? 'starting' : (job?.state ?? 'idle');
-  return { phase, job, progress, elapsedMillis, image, error, cancelling, canvasRef, start, cancel };
+  // Every image URL is revoked once the state no longer shows it: replaced, cleared or unmounted.
+  const imageUrl = view.image?.url;
+  useEffect(() => (imageUrl ? () => URL.revokeObjectURL(imageUrl) : undefined), [imageUrl]);
+
+  return { ...view, elapsedMillis, canvasRef, start, cancel };
 }
 
 /** Any thrown value as a JobApiError, so the panel has one type to show. */
