@@ -49,8 +49,8 @@ final class JobLog {
         if (end.workers() != null && !end.workers().isEmpty()) {
             line.append(", tiles by member ").append(end.workers());
         }
-        if (end.error() != null) {
-            line.append(": ").append(end.error());
+        if (end.error() != null && !end.error().equals(end.state().name().toLowerCase(Locale.ROOT))) {
+            line.append(": ").append(end.error()); // why, unless it only says the state again
         }
         log.info(line.toString());
     }
