@@ -24,19 +24,12 @@ public sealed interface Sampler
 
     /**
      * Samples first .. first + count - 1 of a pattern of {@code size} samples into xs and ys at the
-     * same indices. {@code random} stands at the pattern's first draw (and is left anywhere). The
-     * multi-jittered sampler fills the whole pattern (its shuffles tie the samples together), so xs
-     * and ys hold at least {@code size}; the others fill only the samples asked for.
+     * same indices. {@code random} stands at the pattern's first draw; a whole pattern leaves it
+     * just after the pattern's {@link #draws} values. The multi-jittered sampler fills the whole
+     * pattern (its shuffles tie the samples together), so xs and ys hold at least {@code size}; the
+     * others fill only the samples asked for.
      */
     void fill(PixelRandom random, int size, int first, int count, double[] xs, double[] ys);
-
-    /**
-     * One whole pattern of {@link #samplesPerPixel()} samples drawn from random's current position
-     * (which moves on by {@link #draws(int)}): what a pixel takes under fixed sampling.
-     */
-    default void generate(PixelRandom random, double[] xs, double[] ys) {
-        fill(random, samplesPerPixel(), 0, samplesPerPixel(), xs, ys);
-    }
 
     /** The scene-format names of the samplers, in a stable order: simplest first. */
     static List<String> names() {

@@ -39,7 +39,7 @@ class PixelSamplesTest {
                 double[] xs = new double[n], ys = new double[n];
                 for (int pixel = 0; pixel < 20; pixel++) {
                     drawn.reset(pixel, 7, SEED);
-                    sampler.generate(drawn, xs, ys);
+                    Patterns.whole(sampler, drawn, xs, ys);
                     skipped.reset(pixel, 7, SEED);
                     skipped.skip(sampler.draws(n));
                     assertEquals(skipped.nextDouble(), drawn.nextDouble(), 0.0, name + " N=" + n);
