@@ -1,13 +1,12 @@
 package studio.engine.render;
 
-import studio.engine.sampler.PixelRandom;
-import studio.engine.sampler.Sampler;
+import studio.engine.sampler.PixelSamples;
 
 /**
  * Adaptive sampling in batches (every sampler but sobol; threshold t &gt; 0). With N the sampler's
  * samples per pixel (the maximum), a pixel takes samples in batches of {@value #BATCH}, each a fresh
- * pattern of the configured sampler (so each batch is stratified), drawn from the pixel's random
- * stream as it continues. After each full batch, with k the number of full batches so far,
+ * pattern of the configured sampler (so each batch is stratified): its samples 4j .. 4j + 3 are
+ * pattern j of the pixel's {@link PixelSamples}. After each full batch, with k the number of full batches so far,
  * n = {@value #BATCH} k the samples so far, and per channel c (linear light):
  * <ul>
  * <li>m_c,j the mean of batch j and M_c = mean_j m_c,j (the pixel's mean),</li>
@@ -38,21 +37,18 @@ final class BatchAdaptiveSampling implements TileSampling {
 
     private final SampleTracer tracer;
     private final int max;
-    /** A full batch, and the last, partial batch when the maximum is not a multiple. */
-    private final Sampler batchSampler, remainderSampler;
-    private final PixelRandom random = new PixelRandom();
-    private final double[] xs = new double[BATCH], ys = new double[BATCH];
-    private final long seed;
+    /** The pixel's samples in patterns of one batch. */
+    private final PixelSamples pixelSamples;
+    private final double[] xs, ys;
     private final double threshold;
     private long samples;
 
     BatchAdaptiveSampling(RenderSettings settings, SampleTracer tracer) {
         this.tracer = tracer;
-        Sampler sampler = settings.sampler();
-        max = sampler.samplesPerPixel();
-        batchSampler = max >= BATCH ? sampler.withSamplesPerPixel(BATCH) : null;
-        remainderSampler = max % BATCH != 0 ? sampler.withSamplesPerPixel(max % BATCH) : null;
-        seed = settings.seed();
+        max = settings.sampler().samplesPerPixel();
+        pixelSamples = new PixelSamples(settings.sampler(), BATCH, settings.seed());
+        xs = new double[max];
+        ys = new double[max];
         threshold = settings.adaptiveThreshold();
     }
 
@@ -61,7 +57,7 @@ final class BatchAdaptiveSampling implements TileSampling {
         long bad = 0;
         for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
             for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
-                random.reset(x, y, seed);
+                pixelSamples.startPixel(x, y);
                 bad += pixel(film, x, y);
             }
         }
@@ -84,8 +80,8 @@ final class BatchAdaptiveSampling implements TileSampling {
         t.resetRange();
         while (taken < max) {
             int size = Math.min(BATCH, max - taken);
-            (size == BATCH ? batchSampler : remainderSampler).generate(random, xs, ys);
-            bad += t.trace(x, y, xs, ys, 0, size);
+            pixelSamples.fill(taken, size, xs, ys);
+            bad += t.trace(x, y, xs, ys, taken, size);
             taken += size;
             totalR += t.sumR;
             totalG += t.sumG;

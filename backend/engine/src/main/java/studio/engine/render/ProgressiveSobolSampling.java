@@ -1,7 +1,6 @@
 package studio.engine.render;
 
-import studio.engine.sampler.PixelRandom;
-import studio.engine.sampler.SobolSampler;
+import studio.engine.sampler.PixelSamples;
 
 /**
  * Adaptive sampling with the {@code sobol} sampler: one scrambled Sobol sequence per pixel, walked
@@ -34,14 +33,13 @@ final class ProgressiveSobolSampling implements TileSampling {
     /** Where tiles share their edge pixels' base samples, or null: each tile traces its ring itself. */
     private final TileBorders borders;
     private final StopSignal stop;
-    private final SobolSampler.Sequence sequence = new SobolSampler.Sequence();
-    private final PixelRandom random = new PixelRandom();
+    /** The pixel's samples: one pattern, the sequence's first N points. */
+    private final PixelSamples pixelSamples;
     /** Each base pixel's sum and per-channel range, over a tile and its ring. */
     private final double[] baseSum = new double[3 * RING_TILE * RING_TILE];
     private final double[] baseMin = new double[3 * RING_TILE * RING_TILE], baseMax = new double[3 * RING_TILE * RING_TILE];
     private final double[] xs, ys;
     private final int max, width, height;
-    private final long seed;
     private final double threshold;
     private long samples;
 
@@ -50,11 +48,11 @@ final class ProgressiveSobolSampling implements TileSampling {
         this.borders = borders;
         this.stop = stop;
         max = settings.sampler().samplesPerPixel();
+        pixelSamples = new PixelSamples(settings.sampler(), max, settings.seed());
         xs = new double[max];
         ys = new double[max];
         width = settings.width();
         height = settings.height();
-        seed = settings.seed();
         threshold = settings.adaptiveThreshold();
     }
 
@@ -82,9 +80,8 @@ final class ProgressiveSobolSampling implements TileSampling {
                 int entry = borders == null ? -1 : borders.entryOf(x, y);
                 long badHere = entry < 0 ? -1 : borders.loadOrClaim(entry, baseSum, baseMin, baseMax, 3 * i, stop);
                 if (badHere < 0) {
-                    random.reset(x, y, seed);
-                    sequence.seed(random);
-                    sequence.fill(0, base, xs, ys);
+                    pixelSamples.startPixel(x, y);
+                    pixelSamples.fill(0, base, xs, ys);
                     t.resetRange();
                     try {
                         badHere = t.trace(x, y, xs, ys, 0, base);
@@ -150,8 +147,7 @@ final class ProgressiveSobolSampling implements TileSampling {
     /** Walks on along pixel i's sequence from its {@code base} samples, doubling, until the halves agree or the maximum is reached. */
     private long refinePixel(Film film, int x, int y, int i, int base) {
         SampleTracer t = tracer;
-        random.reset(x, y, seed);
-        sequence.seed(random);
+        pixelSamples.startPixel(x, y);
         t.minR = baseMin[3 * i]; t.minG = baseMin[3 * i + 1]; t.minB = baseMin[3 * i + 2];
         t.maxR = baseMax[3 * i]; t.maxG = baseMax[3 * i + 1]; t.maxB = baseMax[3 * i + 2];
         double totalR = baseSum[3 * i], totalG = baseSum[3 * i + 1], totalB = baseSum[3 * i + 2];
@@ -160,7 +156,7 @@ final class ProgressiveSobolSampling implements TileSampling {
         while (taken < max) {
             double firstR = totalR, firstG = totalG, firstB = totalB;
             int half = taken, target = Math.min(max, taken * 2);
-            sequence.fill(taken, target - taken, xs, ys);
+            pixelSamples.fill(taken, target - taken, xs, ys);
             bad += t.trace(x, y, xs, ys, taken, target - taken);
             totalR += t.sumR;
             totalG += t.sumG;

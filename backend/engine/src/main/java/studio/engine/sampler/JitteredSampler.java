@@ -11,18 +11,24 @@ public record JitteredSampler(int samplesPerPixel) implements Sampler {
     }
 
     @Override
-    public void generate(PixelRandom random, double[] xs, double[] ys) {
-        int rows = Strata.rows(samplesPerPixel), columns = samplesPerPixel / rows;
-        for (int j = 0, i = 0; j < rows; j++) {
-            for (int c = 0; c < columns; c++, i++) {
-                xs[i] = Strata.offset(c, random.nextDouble(), columns);
-                ys[i] = Strata.offset(j, random.nextDouble(), rows);
-            }
-        }
+    public String name() {
+        return "jittered";
     }
 
+    /** Two values (x, y) per sample. */
     @Override
-    public Sampler withSamplesPerPixel(int n) {
-        return new JitteredSampler(n);
+    public int draws(int size) {
+        return 2 * size;
+    }
+
+    /** Sample i sits in column i mod columns and row i / columns of the pattern's grid. */
+    @Override
+    public void fill(PixelRandom random, int size, int first, int count, double[] xs, double[] ys) {
+        int rows = Strata.rows(size), columns = size / rows;
+        random.skip(2L * first);
+        for (int i = first; i < first + count; i++) {
+            xs[i] = Strata.offset(i % columns, random.nextDouble(), columns);
+            ys[i] = Strata.offset(i / columns, random.nextDouble(), rows);
+        }
     }
 }

@@ -19,14 +19,26 @@ public record MultiJitteredSampler(int samplesPerPixel) implements Sampler {
     }
 
     @Override
-    public void generate(PixelRandom random, double[] xs, double[] ys) {
-        int total = samplesPerPixel;
-        int n = Strata.rows(total), m = total / n; // n rows, m columns
+    public String name() {
+        return "multijittered";
+    }
+
+    /** Two values per sample, and one per swap of the shuffles: n - 1 in each of m columns, m - 1 in each of n rows. */
+    @Override
+    public int draws(int size) {
+        int n = Strata.rows(size), m = size / n;
+        return 2 * size + m * (n - 1) + n * (m - 1);
+    }
+
+    /** The whole pattern, whichever samples are asked for: the shuffles leave no sample on its own. */
+    @Override
+    public void fill(PixelRandom random, int size, int first, int count, double[] xs, double[] ys) {
+        int n = Strata.rows(size), m = size / n; // n rows, m columns
         for (int j = 0; j < n; j++) {
             for (int i = 0; i < m; i++) {
                 int s = j * m + i;
-                xs[s] = Strata.offset(i * n + j, random.nextDouble(), total);
-                ys[s] = Strata.offset(j * m + i, random.nextDouble(), total);
+                xs[s] = Strata.offset(i * n + j, random.nextDouble(), size);
+                ys[s] = Strata.offset(j * m + i, random.nextDouble(), size);
             }
         }
         // x within each column i: permute over the rows j
@@ -48,10 +60,5 @@ public record MultiJitteredSampler(int samplesPerPixel) implements Sampler {
                 ys[row + k] = t;
             }
         }
-    }
-
-    @Override
-    public Sampler withSamplesPerPixel(int n) {
-        return new MultiJitteredSampler(n);
     }
 }

@@ -11,15 +11,22 @@ public record RandomSampler(int samplesPerPixel) implements Sampler {
     }
 
     @Override
-    public void generate(PixelRandom random, double[] xs, double[] ys) {
-        for (int i = 0; i < samplesPerPixel; i++) {
-            xs[i] = random.nextDouble();
-            ys[i] = random.nextDouble();
-        }
+    public String name() {
+        return "random";
+    }
+
+    /** Two values (x, y) per sample. */
+    @Override
+    public int draws(int size) {
+        return 2 * size;
     }
 
     @Override
-    public Sampler withSamplesPerPixel(int n) {
-        return new RandomSampler(n);
+    public void fill(PixelRandom random, int size, int first, int count, double[] xs, double[] ys) {
+        random.skip(2L * first);
+        for (int i = first; i < first + count; i++) {
+            xs[i] = random.nextDouble();
+            ys[i] = random.nextDouble();
+        }
     }
 }

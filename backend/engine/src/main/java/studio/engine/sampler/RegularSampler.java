@@ -7,26 +7,37 @@ package studio.engine.sampler;
 public record RegularSampler(int samplesPerPixel) implements Sampler {
 
     public RegularSampler {
-        int k = (int) Math.round(Math.sqrt(samplesPerPixel));
-        if (samplesPerPixel < 1 || k * k != samplesPerPixel) {
+        side(samplesPerPixel);
+    }
+
+    @Override
+    public String name() {
+        return "regular";
+    }
+
+    /** Nothing random. */
+    @Override
+    public int draws(int size) {
+        return 0;
+    }
+
+    /** Sample i is at the centre of column i mod k and row i / k. */
+    @Override
+    public void fill(PixelRandom random, int size, int first, int count, double[] xs, double[] ys) {
+        int k = side(size);
+        for (int i = first; i < first + count; i++) {
+            xs[i] = (i % k + 0.5) / k;
+            ys[i] = (i / k + 0.5) / k;
+        }
+    }
+
+    /** k for a pattern of k*k samples. */
+    private static int side(int size) {
+        int k = (int) Math.round(Math.sqrt(size));
+        if (size < 1 || k * k != size) {
             throw new IllegalArgumentException("the regular sampler needs a square number of samples "
-                    + "(1, 4, 9, 16, ...), not " + samplesPerPixel);
+                    + "(1, 4, 9, 16, ...), not " + size);
         }
-    }
-
-    @Override
-    public void generate(PixelRandom random, double[] xs, double[] ys) {
-        int k = (int) Math.round(Math.sqrt(samplesPerPixel));
-        for (int j = 0, i = 0; j < k; j++) {
-            for (int c = 0; c < k; c++, i++) {
-                xs[i] = (c + 0.5) / k;
-                ys[i] = (j + 0.5) / k;
-            }
-        }
-    }
-
-    @Override
-    public Sampler withSamplesPerPixel(int n) {
-        return new RegularSampler(n);
+        return k;
     }
 }

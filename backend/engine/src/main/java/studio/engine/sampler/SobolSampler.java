@@ -8,10 +8,12 @@ package studio.engine.sampler;
  * point index is shuffled by a nested uniform scramble and each coordinate gets its own nested
  * uniform (Owen) scramble, all built on a Laine-Karras style hash (the improved constants of
  * N. Vegdahl, "Building a Better LK Hash", 2021). The three 32-bit seeds are drawn from the pixel's
- * random stream, so every call, e.g. every batch of adaptive sampling, gets a fresh, independent
- * pattern. Whenever N is a power of two the N points are a (0, m, 2)-net: every elementary interval
- * of area 1/N (1/N x 1, 2/N x 1/2, ..., 1 x 1/N) holds exactly one point, so the pattern is
- * stratified in every aspect ratio at once. Other N take the first N points of such a net.
+ * random stream where the pattern starts, so every pattern, e.g. every batch of adaptive sampling,
+ * is a fresh, independent one; and any run of a pattern's points costs only those points
+ * (progressive sampling walks a pixel's one pattern a run at a time). Whenever N is a power of two
+ * the N points are a (0, m, 2)-net: every elementary interval of area 1/N (1/N x 1, 2/N x 1/2, ...,
+ * 1 x 1/N) holds exactly one point, so the pattern is stratified in every aspect ratio at once.
+ * Other N take the first N points of such a net.
  */
 public record SobolSampler(int samplesPerPixel) implements Sampler {
 
@@ -20,43 +22,26 @@ public record SobolSampler(int samplesPerPixel) implements Sampler {
     }
 
     @Override
-    public void generate(PixelRandom random, double[] xs, double[] ys) {
-        fill(random.nextInt(), random.nextInt(), random.nextInt(), 0, samplesPerPixel, xs, ys);
+    public String name() {
+        return "sobol";
     }
 
-    /** Points first .. first + count - 1 of the sequence with these seeds, into xs, ys at the same indices. */
-    private static void fill(int indexSeed, int xSeed, int ySeed, int first, int count, double[] xs, double[] ys) {
+    /** Three 32-bit seeds: the index's scramble and each coordinate's. */
+    @Override
+    public int draws(int size) {
+        return 3;
+    }
+
+    /** Points first .. first + count - 1 of the sequence scrambled with the pattern's seeds. */
+    @Override
+    public void fill(PixelRandom random, int size, int first, int count, double[] xs, double[] ys) {
+        int indexSeed = random.nextInt(), xSeed = random.nextInt(), ySeed = random.nextInt();
         // owenScramble(b, s) = reverse(lkHash(reverse(b), s)); the reversals that cancel are left out.
         for (int i = first; i < first + count; i++) {
             int index = owenScramble(i, indexSeed);
             xs[i] = unit(Integer.reverse(lkHash(index, xSeed)));
             ys[i] = unit(Integer.reverse(lkHash(sobolSecondReversed(index), ySeed)));
         }
-    }
-
-    /**
-     * One pixel's scrambled sequence, produced a run at a time (adaptive sampling takes only the
-     * points it needs). Mutable, one per worker thread.
-     */
-    public static final class Sequence {
-        private int indexSeed, xSeed, ySeed;
-
-        /** Starts a new pixel's sequence: the same three seeds {@link #generate} would draw. */
-        public void seed(PixelRandom random) {
-            indexSeed = random.nextInt();
-            xSeed = random.nextInt();
-            ySeed = random.nextInt();
-        }
-
-        /** Points first .. first + count - 1 of the sequence into xs, ys at the same indices. */
-        public void fill(int first, int count, double[] xs, double[] ys) {
-            SobolSampler.fill(indexSeed, xSeed, ySeed, first, count, xs, ys);
-        }
-    }
-
-    @Override
-    public Sampler withSamplesPerPixel(int n) {
-        return new SobolSampler(n);
     }
 
     /**

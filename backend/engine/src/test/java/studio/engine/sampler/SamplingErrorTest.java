@@ -50,7 +50,7 @@ class SamplingErrorTest {
         for (int y = 0; y < SIZE; y++) {
             for (int x = 0; x < SIZE; x++) {
                 random.reset(x, y, 2024);
-                sampler.generate(random, xs, ys);
+                Patterns.whole(sampler, random, xs, ys);
                 double estimate = 0;
                 for (int s = 0; s < n; s++) {
                     double phase = (x + xs[s]) / period;
@@ -115,7 +115,7 @@ class SamplingErrorTest {
             double sum = 0;
             for (int i = 0; i < edgeCount; i++) {
                 random.reset(i, n, 7);
-                sampler.generate(random, xs, ys);
+                Patterns.whole(sampler, random, xs, ys);
                 int inside = 0;
                 for (int s = 0; s < n; s++) {
                     inside += (xs[s] - 0.5) * edge[i][0] + (ys[s] - 0.5) * edge[i][1] < edge[i][2] ? 1 : 0;

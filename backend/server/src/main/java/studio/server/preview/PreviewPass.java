@@ -5,6 +5,7 @@ import java.util.List;
 
 import studio.engine.render.PixelLattice;
 import studio.engine.render.RenderSettings;
+import studio.engine.sampler.Sampler;
 
 /**
  * One pass of the live view's refinement: a render of some of the view's pixels at some samples
@@ -67,7 +68,7 @@ record PreviewPass(int number, RenderSettings settings, PixelLattice pixels, Pix
 
     /** The target's camera, size, depth and seed at one sample a pixel, not adaptive. */
     private static RenderSettings oneSample(RenderSettings target) {
-        return new RenderSettings(target.width(), target.height(), target.sampler().withSamplesPerPixel(1),
+        return new RenderSettings(target.width(), target.height(), Sampler.of(target.sampler().name(), 1),
                 target.maxDepth(), target.threads(), target.seed(), target.minPathWeight(), 0);
     }
 }
