@@ -3,10 +3,11 @@ package studio.bench;
 import java.util.Arrays;
 
 /**
- * {@code java -jar studio-bench.jar accuracy|peers|jmh|scaling [...]}: the samplers' speed against
+ * {@code java -jar studio-bench.jar accuracy|peers|jmh|scaling|kernel [...]}: the samplers' speed against
  * accuracy ({@link studio.bench.accuracy.BenchCommand}), the peer benchmark ({@link PeersCommand}),
  * the JMH micro-benchmarks in {@code studio.bench.jmh} (the arguments go to JMH's own command line,
- * {@code org.openjdk.jmh.Main}) and render time against scene size ({@link ScalingCommand}).
+ * {@code org.openjdk.jmh.Main}), render time against scene size ({@link ScalingCommand}) and the ray
+ * kernel's throughput beside Embree's ({@link studio.bench.kernel.KernelCommand}).
  * Sunflow's side of the peer benchmark runs as its own process through {@link SunflowRender}.
  */
 public final class BenchMain {
@@ -15,7 +16,8 @@ public final class BenchMain {
             usage: java -jar studio-bench.jar accuracy [--help]   the samplers' speed against accuracy (the README's chart)
                    java -jar studio-bench.jar peers [--help]      ours against POV-Ray and Sunflow
                    java -jar studio-bench.jar jmh [JMH options]   micro-benchmarks (-h: JMH's options, -l: the list)
-                   java -jar studio-bench.jar scaling [--help]    render time against object count""";
+                   java -jar studio-bench.jar scaling [--help]    render time against object count
+                   java -jar studio-bench.jar kernel [--help]     rays a second of the bare kernel (beside Embree's)""";
 
     private BenchMain() {
     }
@@ -27,6 +29,7 @@ public final class BenchMain {
             case "accuracy" -> System.exit(studio.bench.accuracy.BenchCommand.run(rest, System.out, System.err));
             case "peers" -> System.exit(PeersCommand.run(rest, System.out, System.err));
             case "scaling" -> System.exit(ScalingCommand.run(rest, System.out, System.err));
+            case "kernel" -> System.exit(studio.bench.kernel.KernelCommand.run(rest, System.out, System.err));
             // JMH exits by itself on errors; it forks the benchmarks with this JVM's class path, which is
             // this jar and, through its manifest, lib/
             case "jmh" -> {

@@ -61,7 +61,7 @@ public final class PeersCommand {
      * A generated scene's file: {@code spheres-10k} ({@link SpheresScene}) or {@code mesh-100k}
      * ({@link MeshScene}, whose OBJ file it writes into {@code dir}, beside where the scene file goes).
      */
-    static byte[] generated(String name, Path dir) throws IOException {
+    public static byte[] generated(String name, Path dir) throws IOException {
         String json = switch (name) {
             case "spheres-10k" -> SpheresScene.json(100);
             case "mesh-100k" -> {
