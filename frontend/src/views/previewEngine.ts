@@ -23,6 +23,7 @@ export class PreviewEngine {
   readonly canvas: HTMLCanvasElement;
   private readonly renderer: WebGLRenderer;
   private readonly scene = new Scene();
+  private readonly background = new Color();
   private readonly content = new PreviewContent();
   private readonly renderCamera = new PerspectiveCamera();
   private readonly orbitCamera = new PerspectiveCamera(50, 1, 0.01, 1e4);
@@ -44,6 +45,7 @@ export class PreviewEngine {
     this.renderer.setPixelRatio(Math.min(2, globalThis.devicePixelRatio || 1));
     this.canvas = this.renderer.domElement;
     this.scene.add(this.content.root);
+    this.scene.background = this.background;
     // The render has shadows: so does the preview. No made-up environment: mirrors, metals and
     // glass reflect the scene itself (ReflectionProbes) or nothing.
     // Shadow maps and reflections are taken again when the scene changes, not when only the view
@@ -66,12 +68,12 @@ export class PreviewEngine {
     });
   }
 
-  /** Shows a scene's descriptor. */
+  /** Shows a scene's descriptor: what is already shown changes in place (see {@link PreviewContent}). */
   update(d: ThreeSceneDescriptor): void {
     this.last = d;
     this.content.update(d, this.mode === 'orbit');
     this.stale = true;
-    this.scene.background = new Color(d.background);
+    this.background.set(d.background);
     applyRenderCamera(this.renderCamera, d.camera);
     this.orbitCamera.far = d.camera.far;
     this.orbitCamera.near = d.camera.near;
