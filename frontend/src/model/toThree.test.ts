@@ -1,5 +1,7 @@
 import { BoxGeometry, Euler, Mesh, Quaternion, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
+import * as edits from './edits';
+import { carryIds, idOf } from './identity';
 import { cameraFrame } from './projection';
 import { letterbox, LIGHT_SCALE, makeRenderCamera, meshGeometry, planeSize, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
 import { MeshCache, type MeshLookup } from './meshCache';
@@ -126,11 +128,29 @@ describe('sceneToThree', () => {
     expect(d.meshes[4].material).toEqual({ kind: 'standard', color: '#ffffff', metalness: 1, roughness: 0, reflects: true });
     expect(d.meshes[5].material).toMatchObject({ kind: 'lambert', diffuse: 0.9 });
     expect(d.lights).toEqual([
-      { index: 0, position: [1, 2, 3], color: '#ff0000', intensity: 0.5 * LIGHT_SCALE, decay: 2, selected: false },
-      { index: 1, position: [5, 8, 5], color: '#ffffff', intensity: LIGHT_SCALE, decay: 0, selected: false },
+      { id: 'light@0', index: 0, position: [1, 2, 3], color: '#ff0000', intensity: 0.5 * LIGHT_SCALE, decay: 2, selected: false },
+      { id: 'light@1', index: 1, position: [5, 8, 5], color: '#ffffff', intensity: LIGHT_SCALE, decay: 0, selected: false },
     ]);
     expect(d.camera).toMatchObject({ fov: 50, aspect: 800 / 600, position: [0, 2, 8] });
     expect(d.camera.far).toBeGreaterThan(d.extent);
+  });
+
+  it('carries each object’s and light’s editor id, so the preview keeps its mesh through moves and deletions', () => {
+    const s = carryIds(null, scene);
+    const d = sceneToThree(s);
+    expect(d.meshes.map((m) => m.id)).toEqual(s.objects.map(idOf));
+    expect(d.lights.map((l) => [l.id, l.index])).toEqual([['light-1', 0], ['light-2', 1]]);
+    const moved = carryIds(s, edits.moveObject(s, 3, [4, 0, 0]));
+    expect(sceneToThree(moved).meshes.map((m) => m.id)).toEqual(d.meshes.map((m) => m.id));
+    const fewer = carryIds(moved, edits.removeLight(edits.removeObject(moved, 0), 0));
+    expect(sceneToThree(fewer).meshes.map((m) => [m.id, m.index])).toEqual([['object-2', 0], ['object-3', 1], ['object-4', 2], ['object-5', 3], ['object-6', 4]]);
+    expect(sceneToThree(fewer).lights.map((l) => [l.id, l.index])).toEqual([['light-2', 0]]);
+  });
+
+  it('names what has no editor id by kind and index, apart from every editor id (the default light, a scene outside the store)', () => {
+    const d = sceneToThree({ objects: [{ type: 'sphere' }, { type: 'box' }] });
+    expect(d.meshes.map((m) => m.id)).toEqual(['object@0', 'object@1']);
+    expect(d.lights.map((l) => l.id)).toEqual(['light@0']);
   });
 
   it('rotates a box as the engine does (Euler XYZ in degrees)', () => {

@@ -8,7 +8,8 @@ import { resolveScene } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, type ParsedObj } from './obj';
 import { inItems, type SceneItem, type Selection } from './selection';
-import type { ResolvedMaterial, ResolvedObject, Scene, Vec3 } from './types';
+import { idOf } from './identity';
+import type { Light, ResolvedMaterial, ResolvedObject, Scene, SceneObject, Vec3 } from './types';
 import { cross, dot, length, normalize, sub } from './vec';
 
 /**
@@ -36,6 +37,8 @@ export type MaterialDescriptor =
   | { kind: 'physical'; color: string; transmission: number; ior: number; roughness: number; reflects: true };
 
 export interface MeshDescriptor {
+  /** The object's stable id in the editor (see {@link previewId}): the preview keeps its mesh by it. */
+  id: string;
   /** Index of the scene object. */
   index: number;
   /**
@@ -56,6 +59,8 @@ export interface MeshDescriptor {
 }
 
 export interface LightDescriptor {
+  /** The light's stable id in the editor (see {@link previewId}): the preview keeps its light by it. */
+  id: string;
   index: number;
   position: Vec3;
   color: string;
@@ -124,8 +129,17 @@ export function quaternionFromZ(normal: Vec3): [number, number, number, number] 
   return q.map((c) => c / l) as [number, number, number, number];
 }
 
-function meshOf(o: ResolvedObject, index: number, selected: boolean, camera: Vec3, planeSize: number, meshes: MeshLookup): MeshDescriptor | null {
-  const base = { index, selected, material: materialToThree(o.material), rotation: [0, 0, 0] as Vec3, quaternion: [0, 0, 0, 1] as [number, number, number, number] };
+/**
+ * The editor's id of an object or light (`object-2`, carried from edit to edit by the store), or
+ * for one that has none (a scene that did not pass through the store, the default light of a
+ * scene without lights) one made of its kind and index: `object@2`, which no editor id is.
+ */
+export function previewId(item: SceneObject | Light | undefined, kind: 'object' | 'light', index: number): string {
+  return idOf(item) ?? `${kind}@${index}`;
+}
+
+function meshOf(o: ResolvedObject, id: string, index: number, selected: boolean, camera: Vec3, planeSize: number, meshes: MeshLookup): MeshDescriptor | null {
+  const base = { id, index, selected, material: materialToThree(o.material), rotation: [0, 0, 0] as Vec3, quaternion: [0, 0, 0, 1] as [number, number, number, number] };
   switch (o.type) {
     case 'sphere':
       return { ...base, geometry: 'sphere', position: o.center, scale: [o.radius, o.radius, o.radius] };
@@ -234,10 +248,11 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
       near: (targetDistance / 1000) * Math.min(1, 2 * Math.cos((Math.min(cam.fov, 179.99) / 2) * (Math.PI / 180))),
       far: extent * 4,
     },
-    meshes: r.objects.flatMap((o, i) => (shown(o) ? (meshOf(o, i, isSelected('object', i), cam.position, planeSize(extent * 4, cam.fov, r.image.width / r.image.height), meshes) ?? []) : [])),
+    meshes: r.objects.flatMap((o, i) => (shown(o) ? (meshOf(o, previewId(scene.objects[i], 'object', i), i, isSelected('object', i), cam.position, planeSize(extent * 4, cam.fov, r.image.width / r.image.height), meshes) ?? []) : [])),
     lights: r.lights.flatMap((l, i) =>
       near(l.position)
         ? [{
+            id: previewId(scene.lights?.[i], 'light', i),
             index: i,
             position: l.position,
             color: l.color,

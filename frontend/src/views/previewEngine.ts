@@ -1,37 +1,15 @@
 /**
- * The imperative side of the 3D preview (no React): owns the WebGL renderer, shared
- * geometries, the render camera and an orbit camera, and draws one frame only when asked
- * (scene change, resize, orbit movement).
+ * The imperative side of the 3D preview (no React): owns the WebGL renderer, the render camera
+ * and an orbit camera, shows the scene's content ({@link PreviewContent}), and draws one frame
+ * only when asked (scene change, resize, orbit movement).
  */
-import {
-  AmbientLight,
-  BasicShadowMap,
-  BoxGeometry,
-  BoxHelper,
-  CameraHelper,
-  Color,
-  Group,
-  Mesh,
-  MeshBasicMaterial,
-  PerspectiveCamera,
-  PlaneGeometry,
-  PointLight,
-  Scene,
-  SphereGeometry,
-  WebGLRenderer,
-} from 'three';
+import { BasicShadowMap, Color, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { frameBall, type GizmoMode, type GizmoPose } from '../model/gizmo';
-import type { DragTarget } from '../model/selection';
 import type { Vec3 } from '../model/types';
 import { applyRenderCamera, letterbox, type ThreeSceneDescriptor } from '../model/toThree';
+import { PreviewContent } from './previewContent';
 import { PreviewHandles, type HandleCallbacks } from './previewHandles';
-import { ReflectionProbes } from './reflectionProbes';
-
-/** Lights that cast shadows (a point light's shadow is six renders of the scene). */
-export const MAX_SHADOW_LIGHTS = 4;
-import { MeshGeometryCache } from './previewGeometries';
-import { MaterialCache } from './previewMaterials';
 
 export type PreviewMode = 'camera' | 'orbit';
 
@@ -41,30 +19,22 @@ export type PreviewMode = 'camera' | 'orbit';
  */
 export const ORBIT_SPEEDS = { rotateSpeed: 0.45, zoomSpeed: 0.5, panSpeed: 0.6 } as const;
 
-const SELECTED = 0x4ea1ff;
-
 export class PreviewEngine {
   readonly canvas: HTMLCanvasElement;
   private readonly renderer: WebGLRenderer;
   private readonly scene = new Scene();
-  private readonly content = new Group();
+  private readonly background = new Color();
+  private readonly content = new PreviewContent();
   private readonly renderCamera = new PerspectiveCamera();
   private readonly orbitCamera = new PerspectiveCamera(50, 1, 0.01, 1e4);
   private readonly controls: OrbitControls;
-  private readonly materials = new MaterialCache();
-  private readonly meshGeometries = new MeshGeometryCache();
-  private readonly geometries = { sphere: new SphereGeometry(1, 48, 32), box: new BoxGeometry(1, 1, 1), plane: new PlaneGeometry(1, 1, 64, 64), marker: new SphereGeometry(1, 16, 12) };
-  private readonly disposables: { dispose(): void }[] = [];
   private mode: PreviewMode = 'camera';
   private orbitPlaced = false;
   private size = { width: 1, height: 1 };
   private last: ThreeSceneDescriptor | null = null;
   private frame = 0;
-  private readonly pickables: Mesh[] = [];
-  private readonly probes = new ReflectionProbes();
   /** The content changed since the shadow maps and reflections were last taken. */
   private stale = true;
-  private readonly helpers: { visible: boolean }[] = [];
   private readonly handles: PreviewHandles;
 
   /** Throws when WebGL 2 is not available. */
@@ -74,7 +44,8 @@ export class PreviewEngine {
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(Math.min(2, globalThis.devicePixelRatio || 1));
     this.canvas = this.renderer.domElement;
-    this.scene.add(this.content);
+    this.scene.add(this.content.root);
+    this.scene.background = this.background;
     // The render has shadows: so does the preview. No made-up environment: mirrors, metals and
     // glass reflect the scene itself (ReflectionProbes) or nothing.
     // Shadow maps and reflections are taken again when the scene changes, not when only the view
@@ -88,7 +59,7 @@ export class PreviewEngine {
     this.controls.enabled = false;
     Object.assign(this.controls, ORBIT_SPEEDS);
     this.controls.addEventListener('change', () => this.requestRender());
-    this.handles = new PreviewHandles(this.canvas, this.scene, this.renderCamera, () => this.pickables, {
+    this.handles = new PreviewHandles(this.canvas, this.scene, this.renderCamera, () => this.content.pickables, {
       ...callbacks,
       onChange: () => this.requestRender(),
       onDragging: (dragging) => {
@@ -97,65 +68,13 @@ export class PreviewEngine {
     });
   }
 
-  /** Rebuilds the preview's content from a descriptor (cheap for editor-sized scenes). */
+  /** Shows a scene's descriptor: what is already shown changes in place (see {@link PreviewContent}). */
   update(d: ThreeSceneDescriptor): void {
     this.last = d;
-    for (const item of this.disposables.splice(0)) item.dispose();
-    this.probes.clear();
+    this.content.update(d, this.mode === 'orbit');
     this.stale = true;
-    this.content.clear();
-    this.pickables.length = 0;
-    this.helpers.length = 0;
-    this.scene.background = new Color(d.background);
-    this.content.add(new AmbientLight(0xffffff, d.ambient));
-    for (const m of d.meshes) {
-      const geometry = m.geometry === 'mesh' ? this.meshGeometries.get(m.mesh!) : this.geometries[m.geometry];
-      // Planes and meshes (which may be open) are seen from both sides.
-      const mesh = new Mesh(geometry, this.materials.get(m.material, m.geometry === 'plane' || m.geometry === 'mesh'));
-      mesh.position.set(...m.position);
-      mesh.scale.set(...m.scale);
-      if (m.geometry === 'plane') mesh.quaternion.set(...m.quaternion);
-      else mesh.rotation.set(m.rotation[0], m.rotation[1], m.rotation[2], 'XYZ');
-      mesh.castShadow = m.geometry !== 'plane';
-      mesh.receiveShadow = true;
-      if (m.material.kind === 'standard' || m.material.kind === 'physical') {
-        mesh.updateMatrixWorld();
-        this.probes.add(mesh, m.position, d.camera.near, d.camera.far);
-      }
-      mesh.userData.target = { kind: 'object', index: m.index } satisfies DragTarget;
-      this.pickables.push(mesh);
-      this.content.add(mesh);
-      if (m.selected && m.geometry !== 'plane') this.addHelper(new BoxHelper(mesh, SELECTED));
-    }
-    this.materials.sweep();
-    this.meshGeometries.sweep();
-    for (const l of d.lights) {
-      const light = new PointLight(l.color, l.intensity, 0, l.decay);
-      light.position.set(...l.position);
-      if (l.index < MAX_SHADOW_LIGHTS) {
-        light.castShadow = true;
-        light.shadow.mapSize.set(1024, 1024);
-        light.shadow.camera.near = Math.max(d.camera.near, d.extent * 1e-4);
-        light.shadow.camera.far = d.camera.far;
-        // no bias: with three 0.187 a point light's shadow vanished with a bias of -0.0005 (measured)
-        this.disposables.push({ dispose: () => light.shadow.dispose() });
-      }
-      this.content.add(light);
-      const markerMaterial = new MeshBasicMaterial({ color: l.selected ? SELECTED : l.color });
-      this.disposables.push(markerMaterial);
-      const marker = new Mesh(this.geometries.marker, markerMaterial);
-      this.helpers.push(marker);
-      marker.position.set(...l.position);
-      marker.scale.setScalar(d.extent * (l.selected ? 0.008 : 0.005));
-      marker.userData.target = { kind: 'light', index: l.index } satisfies DragTarget;
-      this.pickables.unshift(marker); // a light inside an object is still found
-      this.content.add(marker);
-    }
+    this.background.set(d.background);
     applyRenderCamera(this.renderCamera, d.camera);
-    if (this.mode === 'orbit') {
-      const frustum = applyRenderCamera(new PerspectiveCamera(), { ...d.camera, far: Math.hypot(...d.camera.position.map((p, i) => p - d.camera.lookAt[i])) });
-      this.addHelper(new CameraHelper(frustum));
-    }
     this.orbitCamera.far = d.camera.far;
     this.orbitCamera.near = d.camera.near;
     this.layout();
@@ -215,7 +134,7 @@ export class PreviewEngine {
       if (this.stale) {
         this.stale = false;
         this.renderer.shadowMap.needsUpdate = true;
-        this.probes.update(this.renderer, this.scene, [...this.helpers, ...this.handles.helpers()]);
+        this.content.takeReflections(this.renderer, this.scene, this.handles.helpers());
       }
       this.renderer.render(this.scene, this.mode === 'camera' ? this.renderCamera : this.orbitCamera);
     });
@@ -224,21 +143,11 @@ export class PreviewEngine {
   dispose(): void {
     cancelAnimationFrame(this.frame);
     this.handles.dispose();
-    this.probes.clear();
-    for (const item of this.disposables.splice(0)) item.dispose();
+    this.content.dispose();
     this.controls.dispose();
-    this.materials.dispose();
-    this.meshGeometries.dispose();
-    Object.values(this.geometries).forEach((g) => g.dispose());
     this.renderer.dispose();
     this.renderer.forceContextLoss();
     this.canvas.remove();
-  }
-
-  private addHelper(helper: BoxHelper | CameraHelper): void {
-    this.helpers.push(helper);
-    this.content.add(helper);
-    this.disposables.push(helper);
   }
 
   private layout(): void {

@@ -2,7 +2,7 @@
  * Direct manipulation in the 3D preview (no React): a click picks the object or light under the
  * pointer, and three.js TransformControls put move, rotate or scale handles on the selection. The
  * handles hold a stand-in (an Object3D at the object's anchor, with its rotation), never the drawn
- * mesh, which is rebuilt from the scene on every change; each handle movement reports the stand-in's
+ * mesh, which follows the scene on every change; each handle movement reports the stand-in's
  * pose, and the release reports the end of the drag (the store commits one history entry).
  */
 import { Euler, Object3D, Raycaster, Vector2, type Camera, type Scene } from 'three';

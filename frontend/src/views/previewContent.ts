@@ -1,0 +1,222 @@
+/**
+ * What the 3D preview draws of a scene (no renderer, no React): the meshes, lights and their
+ * markers, the selection's boxes and the render camera's frustum, with the shared geometries and
+ * materials, the reflection probes and what a click can pick. Each mesh and light is kept by its
+ * object's stable id and changed in place; an update creates only what is new and disposes only
+ * what is gone ({@link planMeshes}, {@link planLights}), so a drag step builds nothing.
+ */
+import {
+  AmbientLight,
+  BoxGeometry,
+  BoxHelper,
+  CameraHelper,
+  Group,
+  Mesh,
+  MeshBasicMaterial,
+  PerspectiveCamera,
+  PlaneGeometry,
+  PointLight,
+  SphereGeometry,
+  type BufferGeometry,
+  type Material,
+  type Object3D,
+  type Scene,
+  type WebGLRenderer,
+} from 'three';
+import type { DragTarget } from '../model/selection';
+import { applyRenderCamera, type LightDescriptor, type MeshDescriptor, type ThreeSceneDescriptor } from '../model/toThree';
+import { MeshGeometryCache } from './previewGeometries';
+import { MaterialCache } from './previewMaterials';
+import { castsShadow, meshBuild, planLights, planMeshes, type LightBuild, type MeshBuild } from './previewReconcile';
+import { ReflectionProbes } from './reflectionProbes';
+
+const SELECTED = 0x4ea1ff;
+
+interface MeshEntry {
+  readonly build: MeshBuild;
+  readonly mesh: Mesh;
+  /** The selection's box, while selected. */
+  box: BoxHelper | null;
+}
+
+interface LightEntry {
+  readonly build: LightBuild;
+  readonly light: PointLight;
+  /** The small sphere that shows where the light is, and is picked. */
+  readonly marker: Mesh<SphereGeometry, MeshBasicMaterial>;
+}
+
+export class PreviewContent {
+  /** Everything drawn; the engine adds it to its scene. */
+  readonly root = new Group();
+  /** What a click can pick: the lights' markers first (a light inside an object is still found), then the meshes. */
+  readonly pickables: Mesh[] = [];
+  /** What reflections leave out: the markers and helpers. */
+  readonly helpers: Object3D[] = [];
+  private readonly materials = new MaterialCache();
+  private readonly meshGeometries = new MeshGeometryCache();
+  private readonly geometries = { sphere: new SphereGeometry(1, 48, 32), box: new BoxGeometry(1, 1, 1), plane: new PlaneGeometry(1, 1, 64, 64), marker: new SphereGeometry(1, 16, 12) };
+  private readonly probes = new ReflectionProbes();
+  private readonly ambient = new AmbientLight(0xffffff, 0);
+  private readonly meshes = new Map<string, MeshEntry>();
+  private readonly lights = new Map<string, LightEntry>();
+  private frustum: CameraHelper | null = null;
+
+  constructor() {
+    this.root.add(this.ambient);
+  }
+
+  /** Shows `d`; with `frustum`, the render camera's frustum too (the orbit view). */
+  update(d: ThreeSceneDescriptor, frustum: boolean): void {
+    this.pickables.length = 0;
+    this.helpers.length = 0;
+    this.ambient.intensity = d.ambient;
+    const meshes = planMeshes(this.meshes, d.meshes);
+    for (const key of meshes.remove) this.removeMesh(key);
+    for (const step of meshes.steps) {
+      if (step.action === 'create') this.meshes.set(step.key, this.createMesh(step.next));
+      this.placeMesh(this.meshes.get(step.key)!, step.next, d);
+    }
+    // each kept mesh asked for its geometry and material again: the sweeps free only what none uses
+    this.materials.sweep();
+    this.meshGeometries.sweep();
+    this.probes.sweep();
+    const lights = planLights(this.lights, d.lights);
+    for (const key of lights.remove) this.removeLight(key);
+    for (const step of lights.steps) {
+      if (step.action === 'create') this.lights.set(step.key, this.createLight(step.next));
+      this.placeLight(this.lights.get(step.key)!, step.next, d);
+    }
+    this.showFrustum(frustum ? d : null);
+  }
+
+  /** Takes every reflection probe's cube map, with the helpers and `hide` (the handles) left out. */
+  takeReflections(renderer: WebGLRenderer, scene: Scene, hide: Object3D[]): void {
+    this.probes.update(renderer, scene, [...this.helpers, ...hide]);
+  }
+
+  dispose(): void {
+    [...this.meshes.keys()].forEach((key) => this.removeMesh(key));
+    [...this.lights.keys()].forEach((key) => this.removeLight(key));
+    this.showFrustum(null);
+    this.probes.clear();
+    this.materials.dispose();
+    this.meshGeometries.dispose();
+    Object.values(this.geometries).forEach((g) => g.dispose());
+  }
+
+  private createMesh(m: MeshDescriptor): MeshEntry {
+    const mesh = new Mesh(this.geometryOf(m), this.materialOf(m));
+    mesh.castShadow = m.geometry !== 'plane';
+    mesh.receiveShadow = true;
+    this.root.add(mesh);
+    return { build: meshBuild(m), mesh, box: null };
+  }
+
+  /** The geometry of `m` (the same for as long as its build is). */
+  private geometryOf(m: MeshDescriptor): BufferGeometry {
+    return m.geometry === 'mesh' ? this.meshGeometries.get(m.mesh!) : this.geometries[m.geometry];
+  }
+
+  private materialOf(m: MeshDescriptor): Material {
+    // Planes and meshes (which may be open) are seen from both sides.
+    return this.materials.get(m.material, m.geometry === 'plane' || m.geometry === 'mesh');
+  }
+
+  /** Puts a mesh where `m` says, in its material (asked of the caches each time, which keeps them in use). */
+  private placeMesh(entry: MeshEntry, m: MeshDescriptor, d: ThreeSceneDescriptor): void {
+    const { mesh } = entry;
+    mesh.geometry = this.geometryOf(m);
+    mesh.material = this.materialOf(m);
+    mesh.position.set(...m.position);
+    mesh.scale.set(...m.scale);
+    if (m.geometry === 'plane') mesh.quaternion.set(...m.quaternion);
+    else mesh.rotation.set(m.rotation[0], m.rotation[1], m.rotation[2], 'XYZ');
+    if (m.material.kind === 'standard' || m.material.kind === 'physical') {
+      mesh.updateMatrixWorld();
+      this.probes.add(mesh, m.position, d.camera.near, d.camera.far);
+    }
+    // a new target each time: the one a click handed to the store stays as it was
+    mesh.userData.target = { kind: 'object', index: m.index } satisfies DragTarget;
+    this.pickables.push(mesh);
+    const boxed = m.selected && m.geometry !== 'plane';
+    if (boxed && !entry.box) entry.box = this.addHelper(new BoxHelper(mesh, SELECTED));
+    else if (boxed) entry.box!.update();
+    else if (entry.box) entry.box = dropHelper(entry.box);
+    if (entry.box) this.helpers.push(entry.box);
+  }
+
+  private removeMesh(key: string): void {
+    const entry = this.meshes.get(key)!;
+    entry.mesh.removeFromParent();
+    if (entry.box) dropHelper(entry.box);
+    this.meshes.delete(key);
+  }
+
+  private createLight(l: LightDescriptor): LightEntry {
+    const light = new PointLight();
+    light.castShadow = castsShadow(l);
+    // no bias: with three 0.187 a point light's shadow vanished with a bias of -0.0005 (measured)
+    light.shadow.mapSize.set(1024, 1024);
+    const marker = new Mesh(this.geometries.marker, new MeshBasicMaterial());
+    this.root.add(light, marker);
+    return { build: light.castShadow, light, marker };
+  }
+
+  private placeLight({ light, marker }: LightEntry, l: LightDescriptor, d: ThreeSceneDescriptor): void {
+    light.color.set(l.color);
+    light.intensity = l.intensity;
+    light.decay = l.decay;
+    light.position.set(...l.position);
+    if (light.castShadow) {
+      const near = Math.max(d.camera.near, d.extent * 1e-4);
+      const camera = light.shadow.camera;
+      if (camera.near !== near || camera.far !== d.camera.far) {
+        // three sets the projection once, when it makes the shadow map: a kept light sets its own
+        camera.near = near;
+        camera.far = d.camera.far;
+        camera.updateProjectionMatrix();
+      }
+    }
+    marker.material.color.set(l.selected ? SELECTED : l.color);
+    marker.position.set(...l.position);
+    marker.scale.setScalar(d.extent * (l.selected ? 0.008 : 0.005));
+    marker.userData.target = { kind: 'light', index: l.index } satisfies DragTarget;
+    this.helpers.push(marker);
+    this.pickables.unshift(marker);
+  }
+
+  /** A light's shadow map and its marker's material go with it. */
+  private removeLight(key: string): void {
+    const { light, marker } = this.lights.get(key)!;
+    light.removeFromParent();
+    light.dispose();
+    marker.removeFromParent();
+    marker.material.dispose();
+    this.lights.delete(key);
+  }
+
+  /** The render camera's frustum as `d` frames it (kept from update to update), or none. */
+  private showFrustum(d: ThreeSceneDescriptor | null): void {
+    if (!d) {
+      if (this.frustum) this.frustum = dropHelper(this.frustum);
+      return;
+    }
+    const c = d.camera;
+    const camera = applyRenderCamera((this.frustum?.camera as PerspectiveCamera) ?? new PerspectiveCamera(), { ...c, far: Math.hypot(...c.position.map((p, i) => p - c.lookAt[i])) });
+    if (this.frustum) this.frustum.update();
+    else this.frustum = this.addHelper(new CameraHelper(camera));
+    this.helpers.push(this.frustum);
+  }
+
+  private addHelper<T extends BoxHelper | CameraHelper>(helper: T): T {
+    this.root.add(helper);
+    return helper;
+  }
+}
+
+function dropHelper(helper: BoxHelper | CameraHelper): null {
+  helper.removeFromParent();
+  helper.dispose();
+  return null;
+}
