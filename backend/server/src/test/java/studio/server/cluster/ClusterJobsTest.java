@@ -233,27 +233,7 @@ class ClusterJobsTest {
         TestMember other = members.get(1);
         List<Object> events = new CopyOnWriteArrayList<>();
         AtomicInteger heartbeats = new AtomicInteger();
-        JobListener listener = new JobListener() {
-            @Override
-            public void status(JobStatus status) {
-                events.add(status);
-            }
-
-            @Override
-            public void tile(TileEvent tile) {
-                events.add(tile);
-            }
-
-            @Override
-            public void end(JobStatus status) {
-                events.add("end " + status.state().json());
-            }
-
-            @Override
-            public void heartbeat() {
-                heartbeats.incrementAndGet();
-            }
-        };
+        JobListener listener = recorder(events, heartbeats);
         assertThat(other.cluster.subscribe(id, listener, Executors.newCachedThreadPool())).isTrue();
         long seenAtSubscribe = other.cluster.lastSeenMillis(id);
         Await.until("heartbeats of a quiet job through another member", WAIT_MILLIS, () -> heartbeats.get() >= 3);
@@ -423,7 +403,17 @@ class ClusterJobsTest {
     }
 
     private static JobListener recorder(List<Object> events) {
+        return recorder(events, new AtomicInteger());
+    }
+
+    /** Records status, tile and end events in order, and counts heartbeats apart. */
+    private static JobListener recorder(List<Object> events, AtomicInteger heartbeats) {
         return new JobListener() {
+            @Override
+            public void heartbeat() {
+                heartbeats.incrementAndGet();
+            }
+
             @Override
             public void status(JobStatus status) {
                 events.add(status);
