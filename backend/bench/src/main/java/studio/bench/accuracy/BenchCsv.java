@@ -9,7 +9,7 @@ import java.util.Locale;
 /** The measurements as CSV, one row each, numbers in the C locale. */
 final class BenchCsv {
 
-    static final String HEADER = "scene,method,samples,mean_spp,median_ms,rmse,psnr_db,threshold";
+    static final String HEADER = "scene,method,samples,mean_spp,median_ms,median_cpu_ms,rmse,psnr_db,threshold";
 
     private BenchCsv() {
     }
@@ -17,8 +17,10 @@ final class BenchCsv {
     static String format(List<Measurement> rows) {
         StringBuilder csv = new StringBuilder(HEADER).append('\n');
         for (Measurement m : rows) {
-            csv.append(String.format(Locale.ROOT, "%s,%s,%d,%.3f,%.3f,%.6g,%.3f,%s\n", m.scene(), m.method(),
-                    m.samples(), m.meanSamplesPerPixel(), m.medianMillis(), m.rmse(), m.psnr(),
+            csv.append(String.format(Locale.ROOT, "%s,%s,%d,%.3f,%.3f,%s,%.6g,%.3f,%s\n", m.scene(), m.method(),
+                    m.samples(), m.meanSamplesPerPixel(), m.medianMillis(),
+                    Double.isNaN(m.medianCpuMillis()) ? "" : String.format(Locale.ROOT, "%.3f", m.medianCpuMillis()),
+                    m.rmse(), m.psnr(),
                     Double.isNaN(m.threshold()) ? "" : String.format(Locale.ROOT, "%s", m.threshold())));
         }
         return csv.toString();

@@ -7,13 +7,15 @@ import java.util.List;
 import java.util.Locale;
 import java.util.OptionalDouble;
 import java.util.Set;
+import java.util.function.ToDoubleFunction;
 
 /**
  * The summary of one scene: for each method, how fast its error falls with samples (the
  * least-squares slope of log RMSE against log samples per pixel, over 4..256 for fixed counts and
  * over every threshold for adaptive sampling, against the mean samples per pixel), and how long it
  * takes to reach the error that jittered sampling reaches at 16 samples, also as a ratio to
- * jittered's own time.
+ * jittered's own time, by the wall clock and by the renders' CPU time (the second is what a render
+ * cost whatever else the machine did meanwhile: on a shared machine it is the figure that repeats).
  */
 final class BenchSummary {
 
@@ -21,8 +23,8 @@ final class BenchSummary {
     static final int TARGET_SAMPLES = 16;
     static final int SLOPE_FROM = 4, SLOPE_TO = 256;
 
-    /** The error to reach: jittered's RMSE at 16 samples per pixel. */
-    record Target(double rmse, double millis) {
+    /** The error to reach: jittered's RMSE at 16 samples per pixel, and its wall and CPU times. */
+    record Target(double rmse, double millis, double cpuMillis) {
     }
 
     /**
@@ -31,8 +33,9 @@ final class BenchSummary {
      * @param millis     time to reach the target; NaN if it never does
      * @param upperBound true if even the method's cheapest setting is below the target (millis is that setting's time)
      * @param ratio      millis over jittered's time to reach the target
+     * @param cpuRatio   the same ratio by CPU time; NaN where CPU time was not measured
      */
-    record Line(String method, double slope, double millis, boolean upperBound, double ratio) {
+    record Line(String method, double slope, double millis, boolean upperBound, double ratio, double cpuRatio) {
     }
 
     private BenchSummary() {
@@ -42,7 +45,7 @@ final class BenchSummary {
     static Target target(List<Measurement> rows) {
         return rows.stream()
                 .filter(m -> m.method().equals(TARGET_SAMPLER) && m.samples() == TARGET_SAMPLES && Double.isNaN(m.threshold()))
-                .findFirst().map(m -> new Target(m.rmse(), m.medianMillis())).orElse(null);
+                .findFirst().map(m -> new Target(m.rmse(), m.medianMillis(), m.medianCpuMillis())).orElse(null);
     }
 
     /** A method's measurements in order of increasing mean samples per pixel. */
@@ -51,8 +54,13 @@ final class BenchSummary {
     }
 
     static OptionalDouble timeToReach(List<Measurement> own, double targetRmse) {
+        return timeToReach(own, targetRmse, Measurement::medianMillis);
+    }
+
+    /** As {@link #timeToReach(List, double)} by the time {@code time} gives each measurement. */
+    static OptionalDouble timeToReach(List<Measurement> own, double targetRmse, ToDoubleFunction<Measurement> time) {
         List<Measurement> sorted = ordered(own);
-        return LogLog.timeToReach(sorted.stream().mapToDouble(Measurement::medianMillis).toArray(),
+        return LogLog.timeToReach(sorted.stream().mapToDouble(time).toArray(),
                 sorted.stream().mapToDouble(Measurement::rmse).toArray(), targetRmse);
     }
 
@@ -69,22 +77,25 @@ final class BenchSummary {
         Target target = target(rows);
         Set<String> methods = new LinkedHashSet<>();
         rows.forEach(m -> methods.add(m.method()));
-        double jitteredMillis = Double.NaN;
+        double jitteredMillis = Double.NaN, jitteredCpuMillis = Double.NaN;
         if (target != null) {
             List<Measurement> jittered = rows.stream().filter(m -> m.method().equals(TARGET_SAMPLER)).toList();
             jitteredMillis = timeToReach(jittered, target.rmse()).orElse(target.millis());
+            jitteredCpuMillis = timeToReach(jittered, target.rmse(), Measurement::medianCpuMillis)
+                    .orElse(target.cpuMillis());
         }
         List<Line> lines = new ArrayList<>();
         for (String method : methods) {
             List<Measurement> own = rows.stream().filter(m -> m.method().equals(method)).toList();
-            double millis = Double.NaN;
+            double millis = Double.NaN, cpuMillis = Double.NaN;
             boolean upper = false;
             if (target != null) {
                 millis = timeToReach(own, target.rmse()).orElse(Double.NaN);
+                cpuMillis = timeToReach(own, target.rmse(), Measurement::medianCpuMillis).orElse(Double.NaN);
                 upper = !Double.isNaN(millis) && ordered(own).get(0).rmse() <= target.rmse()
                         && !method.equals(TARGET_SAMPLER);
             }
-            lines.add(new Line(method, slope(own), millis, upper, millis / jitteredMillis));
+            lines.add(new Line(method, slope(own), millis, upper, millis / jitteredMillis, cpuMillis / jitteredCpuMillis));
         }
         return lines;
     }
@@ -99,13 +110,15 @@ final class BenchSummary {
             s.append(String.format(Locale.ROOT, "%s: target RMSE %.5f (jittered at %d samples/pixel, %.1f ms)%n",
                     scene, target.rmse(), TARGET_SAMPLES, target.millis()));
         }
-        s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s%n", "method", "slope", "ms to target", "vs jittered"));
+        s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s %12s%n", "method", "slope", "ms to target", "vs jittered",
+                "by CPU time"));
         for (Line line : lines(rows)) {
             String bound = line.upperBound() ? "<= " : "";
             String millis = Double.isNaN(line.millis()) ? "not reached" : bound + String.format(Locale.ROOT, "%.1f", line.millis());
             String ratio = Double.isNaN(line.ratio()) ? "-" : bound + String.format(Locale.ROOT, "%.2f", line.ratio());
+            String cpuRatio = Double.isNaN(line.cpuRatio()) ? "-" : bound + String.format(Locale.ROOT, "%.2f", line.cpuRatio());
             String slope = Double.isNaN(line.slope()) ? "-" : String.format(Locale.ROOT, "%.2f", line.slope());
-            s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s%n", line.method(), slope, millis, ratio));
+            s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s %12s%n", line.method(), slope, millis, ratio, cpuRatio));
         }
         String povray = againstPovray(rows);
         if (!povray.isEmpty()) {

@@ -131,7 +131,7 @@ final class PovrayAccuracy {
                 Setting s = settings.get(i);
                 double[] times = millis.get(i).stream().mapToDouble(Double::doubleValue).toArray();
                 Measurement m = new Measurement(name, s.method(), s.samples(), samplesPerPixel[i],
-                        SpeedAccuracyBench.median(times), rmse[i], ImageError.psnr(rmse[i]), s.threshold());
+                        SpeedAccuracyBench.median(times), Double.NaN, rmse[i], ImageError.psnr(rmse[i]), s.threshold());
                 log.printf(Locale.ROOT, "%s: %-20s %4d spp (mean %6.1f) %9.1f ms  rmse %.5f  psnr %5.2f dB%n", name,
                         Double.isNaN(s.threshold()) ? s.method() : s.method() + " " + s.threshold(), s.samples(),
                         samplesPerPixel[i], m.medianMillis(), rmse[i], m.psnr());

@@ -199,6 +199,7 @@ final class SpeedAccuracyBench {
     private List<Measurement> measure(String scene, List<Planned> plans, Scene world, Film reference,
                                       PovrayAccuracy.Scene povray) {
         double[][] millis = new double[plans.size()][config.runs()];
+        double[][] cpuMillis = new double[plans.size()][config.runs()];
         double[] rmse = new double[plans.size()], meanSpp = new double[plans.size()];
         for (int run = 0; run < config.runs(); run++) {
             log.printf(Locale.ROOT, "%s: round %d of %d, %d settings%n", scene, run + 1, config.runs(), plans.size());
@@ -207,6 +208,7 @@ final class SpeedAccuracyBench {
                 long start = System.nanoTime();
                 RenderResult result = Renderer.render(world, settings);
                 millis[i][run] = (System.nanoTime() - start) / 1e6;
+                cpuMillis[i][run] = result.cpuNanos() / 1e6;
                 if (run == 0) {
                     rmse[i] = ImageError.rmse(result.film(), reference);
                     meanSpp[i] = (double) EngineFeatures.samplesTaken(result, settings)
@@ -226,7 +228,7 @@ final class SpeedAccuracyBench {
             Planned plan = plans.get(i);
             Method method = plan.method();
             Measurement m = new Measurement(scene, method.name(), plan.samples(), meanSpp[i], median(millis[i]),
-                    rmse[i], ImageError.psnr(rmse[i]), method.adaptiveThreshold());
+                    median(cpuMillis[i]), rmse[i], ImageError.psnr(rmse[i]), method.adaptiveThreshold());
             log.printf(Locale.ROOT, "%s: %-20s %4d spp (mean %6.1f) %9.1f ms  rmse %.5f  psnr %5.2f dB%n", scene,
                     method.isAdaptive() ? method.name() + " " + method.adaptiveThreshold() : method.name(),
                     plan.samples(), meanSpp[i], m.medianMillis(), rmse[i], m.psnr());

@@ -10,14 +10,34 @@ import org.junit.jupiter.api.Test;
 
 class BenchSummaryTest {
 
-    /** A method whose time is proportional to samples and whose error falls as samples^slope. */
+    /**
+     * A method whose time is proportional to samples and whose error falls as samples^slope; its CPU
+     * time is twice its wall time (two threads).
+     */
     private static List<Measurement> method(String name, double msPerSample, double error1, double slope) {
+        return method(name, msPerSample, 2 * msPerSample, error1, slope);
+    }
+
+    private static List<Measurement> method(String name, double msPerSample, double cpuMsPerSample, double error1,
+                                            double slope) {
         List<Measurement> rows = new ArrayList<>();
         for (int n : new int[] {1, 4, 16, 64, 256}) {
             double rmse = error1 * Math.pow(n, slope);
-            rows.add(new Measurement("s", name, n, n, msPerSample * n, rmse, ImageError.psnr(rmse), Double.NaN));
+            rows.add(new Measurement("s", name, n, n, msPerSample * n, cpuMsPerSample * n, rmse, ImageError.psnr(rmse),
+                    Double.NaN));
         }
         return rows;
+    }
+
+    @Test
+    void theCpuRatioComesFromCpuTimes() {
+        List<Measurement> rows = new ArrayList<>(method("jittered", 2, 4, 0.1, -0.75));
+        // sobol reaches the target at n = 8 (see below): 24 ms of wall time, 96 ms of CPU time
+        rows.addAll(method("sobol", 3, 12, 0.1, -1.0));
+        BenchSummary.Line sobol = BenchSummary.lines(rows).get(1);
+        assertThat(sobol.ratio()).isCloseTo(0.75, within(1e-12));
+        assertThat(sobol.cpuRatio()).isCloseTo(96.0 / 64, within(1e-12));
+        assertThat(BenchSummary.format("s", rows)).contains("by CPU time").contains("1.50");
     }
 
     @Test
@@ -58,7 +78,7 @@ class BenchSummaryTest {
         double[] meanSpp = {2, 5, 11, 30, 70};
         for (int i = 0; i < meanSpp.length; i++) {
             double rmse = 0.05 * Math.pow(meanSpp[i], -1.25);
-            rows.add(new Measurement("s", "adaptive-jittered", 256, meanSpp[i], meanSpp[i], rmse,
+            rows.add(new Measurement("s", "adaptive-jittered", 256, meanSpp[i], meanSpp[i], 2 * meanSpp[i], rmse,
                     ImageError.psnr(rmse), 0.2 / (i + 1)));
         }
         BenchSummary.Line adaptive = BenchSummary.lines(rows).get(1);
@@ -83,7 +103,7 @@ class BenchSummaryTest {
         String text = BenchSummary.againstPovray(rows);
         assertThat(text).contains("adaptive-sobol against POV-Ray").contains("0.50").contains("worst ratio 0.50");
         // an error below our default's range is said to be so, and does not count
-        rows.add(new Measurement("s", "povray-adaptive", 81, 40, 100, 1e-6, ImageError.psnr(1e-6), 0.01));
+        rows.add(new Measurement("s", "povray-adaptive", 81, 40, 100, Double.NaN, 1e-6, ImageError.psnr(1e-6), 0.01));
         assertThat(BenchSummary.againstPovray(rows)).contains("below our default's range").contains("worst ratio 0.50");
         assertThat(BenchSummary.againstPovray(method("adaptive-sobol", 1, 0.1, -1.0))).isEmpty();
     }

@@ -61,6 +61,18 @@ class RendererTest {
         assertTrue(single.raysTraced() > 4L * WIDTH * HEIGHT, "rays: " + single.raysTraced());
     }
 
+    /** The render's CPU time is its threads' own: some, and at most what its threads could spend in its wall time. */
+    @Test
+    void cpuTimeIsTheRenderThreadsOwn() {
+        for (int threads : new int[] {1, 2}) {
+            RenderResult result = Renderer.render(SCENE, SETTINGS.withThreads(threads));
+            assertTrue(result.cpuNanos() > 0, "cpu " + result.cpuNanos());
+            // thread clocks tick a little coarser than the wall clock: a millisecond of slack per thread
+            assertTrue(result.cpuNanos() <= threads * (result.elapsedNanos() + 1_000_000L),
+                    threads + " threads: cpu " + result.cpuNanos() + " ns in " + result.elapsedNanos() + " ns");
+        }
+    }
+
     @Test
     void anotherSeedGivesAnotherJitteredImage() {
         Film a = Renderer.render(SCENE, SETTINGS).film();
