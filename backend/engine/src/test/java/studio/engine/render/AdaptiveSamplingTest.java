@@ -53,19 +53,7 @@ class AdaptiveSamplingTest {
                 List.of(new PointLight(new Vec3(0, 10, 0), Rgb.WHITE, 1, false)), Rgb.BLACK, 0.1);
     }
 
-    /** The scene of RendererTest: glass, mirror, plastic, two lights. */
-    private static final Scene MIXED = new Scene(
-            new Camera(new Vec3(0, 2, 6), new Vec3(0, 0.5, 0), UP, 50),
-            List.of(new SceneObject(new Plane(Vec3.ZERO, UP),
-                            MaterialDefaults.of(MaterialKind.CHALK, new Rgb(0.7, 0.7, 0.7))),
-                    new SceneObject(new Sphere(new Vec3(-1.2, 1, 0), 1), MaterialDefaults.of(MaterialKind.GLASS, null)),
-                    new SceneObject(new Sphere(new Vec3(1.2, 1, -0.5), 1),
-                            MaterialDefaults.of(MaterialKind.MIRROR, null)),
-                    new SceneObject(new Box(new Vec3(0, 0.5, -2), new Vec3(1, 1, 1), new Vec3(0, 30, 0)),
-                            MaterialDefaults.of(MaterialKind.PLASTIC, new Rgb(0.8, 0.2, 0.1)))),
-            List.of(new PointLight(new Vec3(3, 6, 2), Rgb.WHITE, 1, false),
-                    new PointLight(new Vec3(-4, 3, 4), new Rgb(0.3, 0.4, 1), 30, true)),
-            new Rgb(0.2, 0.3, 0.5), 0.1);
+    private static final Scene MIXED = MixedScene.SCENE;
 
     private static RenderSettings settings(int w, int h, Sampler sampler, double threshold, int threads) {
         return new RenderSettings(w, h, sampler, 6, threads, 42L, RenderSettings.DEFAULT_MIN_PATH_WEIGHT, threshold);

@@ -3,25 +3,14 @@ package studio.engine.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.List;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
-import studio.engine.camera.Camera;
-import studio.engine.geometry.Box;
-import studio.engine.geometry.Plane;
-import studio.engine.geometry.Sphere;
-import studio.engine.light.PointLight;
-import studio.engine.material.MaterialDefaults;
-import studio.engine.material.MaterialKind;
-import studio.engine.math.Rgb;
-import studio.engine.math.Vec3;
 import studio.engine.sampler.Sampler;
 import studio.engine.scene.Scene;
-import studio.engine.scene.SceneObject;
 
 /**
  * Every sampler under every sampling strategy puts its samples where it always has: small renders
@@ -34,20 +23,7 @@ import studio.engine.scene.SceneObject;
  */
 class SampledImagesUnchangedTest {
 
-    private static final Vec3 UP = new Vec3(0, 1, 0);
-    /** Glass and a mirror facing each other, a box's edges, two lights, one with fall-off. */
-    private static final Scene SCENE = new Scene(
-            new Camera(new Vec3(0, 2, 6), new Vec3(0, 0.5, 0), UP, 50),
-            List.of(new SceneObject(new Plane(Vec3.ZERO, UP),
-                            MaterialDefaults.of(MaterialKind.CHALK, new Rgb(0.7, 0.7, 0.7))),
-                    new SceneObject(new Sphere(new Vec3(-1.2, 1, 0), 1), MaterialDefaults.of(MaterialKind.GLASS, null)),
-                    new SceneObject(new Sphere(new Vec3(1.2, 1, -0.5), 1),
-                            MaterialDefaults.of(MaterialKind.MIRROR, null)),
-                    new SceneObject(new Box(new Vec3(0, 0.5, -2), new Vec3(1, 1, 1), new Vec3(0, 30, 0)),
-                            MaterialDefaults.of(MaterialKind.PLASTIC, new Rgb(0.8, 0.2, 0.1)))),
-            List.of(new PointLight(new Vec3(3, 6, 2), Rgb.WHITE, 1, false),
-                    new PointLight(new Vec3(-4, 3, 4), new Rgb(0.3, 0.4, 1), 30, true)),
-            new Rgb(0.2, 0.3, 0.5), 0.1);
+    private static final Scene SCENE = MixedScene.SCENE;
     /** 24 x 16 cuts into tiles of 16 on one thread: two tiles, so progressive sobol shares a border. */
     private static final int WIDTH = 24, HEIGHT = 16;
 

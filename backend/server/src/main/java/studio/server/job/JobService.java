@@ -382,12 +382,12 @@ public final class JobService implements Drainable, AutoCloseable {
     }
 
     /** Jobs of this member waiting to run. */
-    public int queued() {
+    int queued() {
         return executor.getQueue().size();
     }
 
     /** Jobs of this member running now. */
-    public int running() {
+    int running() {
         return executor.getActiveCount();
     }
 
