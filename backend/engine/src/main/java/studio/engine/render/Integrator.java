@@ -1,5 +1,6 @@
 package studio.engine.render;
 
+import java.util.Arrays;
 import java.util.List;
 
 import studio.engine.geometry.Hit;
@@ -43,6 +44,12 @@ final class Integrator {
     private final double[] radiance;
     private final Hit shadowHit = new Hit();
     private final Ray shadowRay = new Ray();
+    /**
+     * Per light, the object that blocked this thread's last shadow ray to it (-1: none), tested
+     * first: neighbouring points are mostly shadowed by the same object, which then spares the
+     * search through the scene (a shadow cache, as POV-Ray keeps one per light).
+     */
+    private final int[] lastOccluder;
     /** The direct light found by {@link #direct}, and the transmittance by {@link #shadowTransmittance}. */
     private double directR, directG, directB, throughR, throughG, throughB;
     long rays;
@@ -58,6 +65,8 @@ final class Integrator {
             childRays[i] = new Ray();
         }
         this.radiance = new double[3 * (maxDepth + 1)];
+        this.lastOccluder = new int[scene.lights().size()];
+        Arrays.fill(lastOccluder, -1);
     }
 
     /** Radiance arriving along a camera ray, as a colour (a convenience that allocates; the render loop uses {@link #trace}). */
@@ -168,7 +177,7 @@ final class Integrator {
             if (cos <= 0) {
                 continue;
             }
-            if (!shadowTransmittance(hit, at)) {
+            if (!shadowTransmittance(hit, at, i)) {
                 continue;
             }
             Rgb lc = light.color();
@@ -208,14 +217,20 @@ final class Integrator {
      * What fraction of a light reaches the hit point, into throughR/G/B: 0 behind anything opaque,
      * less through glass. Returns false when nothing arrives.
      */
-    private boolean shadowTransmittance(Hit from, Vec3 light) {
+    private boolean shadowTransmittance(Hit from, Vec3 light, int lightIndex) {
         double tx = light.x(), ty = light.y(), tz = light.z();
         Ray ray = Rays.spawnTowards(from, tx, ty, tz, shadowRay);
         double dist = distance(ray, tx, ty, tz);
         rays++;
         throughR = throughG = throughB = 1;
         if (!scene.hasGlass()) {
-            return !scene.occluded(ray, dist * SHADOW_END);
+            int last = lastOccluder[lightIndex];
+            if (last >= 0 && scene.occludes(last, ray, dist * SHADOW_END)) {
+                return false;
+            }
+            int occluder = scene.occluder(ray, dist * SHADOW_END);
+            lastOccluder[lightIndex] = occluder;
+            return occluder < 0;
         }
         double r = 1, g = 1, b = 1;
         for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {

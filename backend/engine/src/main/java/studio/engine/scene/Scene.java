@@ -64,6 +64,16 @@ public final class Scene {
         return geometry.occluded(ray, tMax);
     }
 
+    /** The index of an object that lies on the ray with 0 &lt; t &lt; tMax, or -1 if none does. */
+    public int occluder(Ray ray, double tMax) {
+        return geometry.occluder(ray, tMax);
+    }
+
+    /** Whether object i lies on the ray with 0 &lt; t &lt; tMax, tested as {@link #occluded} tests it. */
+    public boolean occludes(int i, Ray ray, double tMax) {
+        return geometry.occludes(i, ray, tMax);
+    }
+
     public Camera camera() {
         return camera;
     }

@@ -134,7 +134,17 @@ public final class ShapeSet {
 
     /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */
     public boolean occluded(Ray ray, double tMax) {
-        return nodeBounds == null ? occludedLinear(ray, tMax) : occludedBvh(ray, tMax);
+        return occluder(ray, tMax) >= 0;
+    }
+
+    /** The index of a shape that lies on the ray with 0 &lt; t &lt; tMax (the first one found), or -1 if none does. */
+    public int occluder(Ray ray, double tMax) {
+        return nodeBounds == null ? occluderLinear(ray, tMax) : occluderBvh(ray, tMax);
+    }
+
+    /** Whether shape i lies on the ray with 0 &lt; t &lt; tMax: the test {@link #occluded} makes of it. */
+    public boolean occludes(int i, Ray ray, double tMax) {
+        return shapes[i].occluded(ray, tMax);
     }
 
     private boolean intersectLinear(Ray ray, double tMax, Hit hit) {
@@ -150,13 +160,13 @@ public final class ShapeSet {
         return found;
     }
 
-    private boolean occludedLinear(Ray ray, double tMax) {
-        for (Shape shape : shapes) {
-            if (shape.occluded(ray, tMax)) {
-                return true;
+    private int occluderLinear(Ray ray, double tMax) {
+        for (int i = 0; i < shapes.length; i++) {
+            if (shapes[i].occluded(ray, tMax)) {
+                return i;
             }
         }
-        return false;
+        return -1;
     }
 
     private boolean intersectBvh(Ray ray, double tMax, Hit hit) {
@@ -241,10 +251,10 @@ public final class ShapeSet {
         return i < winner ? Math.min(tMax, best * (1 + Scene.TIE)) : best * (1 - Scene.TIE);
     }
 
-    private boolean occludedBvh(Ray ray, double tMax) {
+    private int occluderBvh(Ray ray, double tMax) {
         for (int i : unbounded) {
             if (shapes[i].occluded(ray, tMax)) {
-                return true;
+                return i;
             }
         }
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
@@ -267,12 +277,12 @@ public final class ShapeSet {
                     double r = spheres[k + 3];
                     if (r != 0 ? Sphere.occluded(spheres[k], spheres[k + 1], spheres[k + 2], r, ray, tMax)
                             : shapes[leafShapes[slot]].occluded(ray, tMax)) {
-                        return true;
+                        return leafShapes[slot];
                     }
                 }
             }
             node = links[o + 2];
         }
-        return false;
+        return -1;
     }
 }

@@ -68,7 +68,7 @@ class SampledImagesUnchangedTest {
     }
 
     /** FNV-1a over every bit of every channel of every pixel, row by row. */
-    private static String fingerprint(Film film) {
+    static String fingerprint(Film film) {
         long hash = 0xcbf29ce484222325L;
         for (int y = 0; y < film.height(); y++) {
             for (int x = 0; x < film.width(); x++) {

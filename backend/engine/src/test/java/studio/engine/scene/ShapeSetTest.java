@@ -81,6 +81,13 @@ class ShapeSetTest {
                 assertEquals(expected, actual, ray.toString());
                 assertEquals(expected, bvh.occluded(ray, tMax), "any-hit " + ray);
                 assertEquals(expected, linear.occluded(ray, tMax), "linear any-hit " + ray);
+                // the shadow cache's two questions: which shape blocks the ray, and does that one
+                int occluder = bvh.occluder(ray, tMax);
+                assertEquals(expected, occluder >= 0, "an occluder exactly when occluded " + ray);
+                if (expected) {
+                    assertTrue(bvh.occludes(occluder, ray, tMax), "the occluder named blocks the ray " + ray);
+                    assertTrue(linear.occludes(occluder, ray, tMax));
+                }
                 if (expected) {
                     hits++;
                     assertEquals(a.primitive, b.primitive, ray.toString());
