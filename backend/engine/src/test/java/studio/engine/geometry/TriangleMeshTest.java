@@ -18,6 +18,7 @@ import studio.engine.camera.Camera;
 import studio.engine.math.Rotation;
 import studio.engine.math.Vec3;
 import studio.engine.memory.CountingGate;
+import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.MeshData;
 import studio.engine.mesh.MeshShapes;
 
@@ -291,5 +292,66 @@ class TriangleMeshTest {
         CountingGate stingy = new CountingGate(gate.granted() / 2);
         assertTrue(CountingGate.allocatedBy(() -> new TriangleMesh(flat, Vec3.ZERO, 1, Vec3.ZERO, stingy))
                 <= gate.granted() / 2 + CountingGate.SLACK, "a refusal stops the build");
+    }
+
+    @Test
+    void aMovedMeshIsTheMeshBuiltWhereItWasMovedToWithoutBuildingItsTreeAgain() {
+        MeshData knot = MeshShapes.torusKnot(2, 3, 120, 24);
+        Vec3 rotation = new Vec3(10, 20, 30), there = new Vec3(-3.25, 0.7, 1e3);
+        TriangleMesh here = new TriangleMesh(knot, new Vec3(1, 2, 3), 0.75, rotation);
+
+        TriangleMesh moved = here.movedTo(there, MemoryGate.UNLIMITED);
+        TriangleMesh built = new TriangleMesh(knot, there, 0.75, rotation);
+
+        assertEquals(0, moved.buildNanos(), "no tree built");
+        assertTrue(built.buildNanos() > 0);
+        assertEquals(there, moved.position());
+        assertArrayEquals(built.positions(), moved.positions());
+        assertArrayEquals(built.indices(), moved.indices());
+        assertArrayEquals(built.normals(), moved.normals());
+        assertEquals(built.bounds(), moved.bounds());
+        assertSameHits(built, moved, there, 20_000);
+    }
+
+    @Test
+    void aMoveThatFlattensATriangleBuildsTheMeshAfresh() {
+        // a tiny triangle beside a large one: far from the origin its corners round onto one point
+        MeshData mesh = new MeshData(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 5, 5, 5 + 1e-9, 5, 5, 5, 5 + 1e-9, 5},
+                new int[] {0, 1, 2, 3, 4, 5}, null);
+        TriangleMesh near = new TriangleMesh(mesh, Vec3.ZERO, 1, Vec3.ZERO);
+        Vec3 far = new Vec3(1e9, 1e9, 0);
+
+        TriangleMesh moved = near.movedTo(far, MemoryGate.UNLIMITED);
+        TriangleMesh built = new TriangleMesh(mesh, far, 1, Vec3.ZERO);
+
+        assertEquals(2, near.triangleCount());
+        assertEquals(1, built.triangleCount(), "the flattened triangle is dropped");
+        assertEquals(1, moved.triangleCount());
+        assertArrayEquals(built.indices(), moved.indices());
+        assertArrayEquals(built.positions(), moved.positions());
+        assertSameHits(built, moved, new Vec3(1e9 + 0.3, 1e9 + 0.3, 0), 4_000);
+    }
+
+    /** The same hit, to the bit, for rays from around {@code centre} towards the meshes. */
+    private static void assertSameHits(TriangleMesh expected, TriangleMesh actual, Vec3 centre, int rays) {
+        Random random = new Random(5);
+        Hit a = new Hit(), b = new Hit();
+        int hits = 0;
+        for (int i = 0; i < rays; i++) {
+            Vec3 from = centre.plus(new Vec3(random.nextGaussian(), random.nextGaussian(), random.nextGaussian()).times(4));
+            Vec3 to = centre.plus(new Vec3(random.nextGaussian(), random.nextGaussian(), random.nextGaussian()));
+            Ray ray = new Ray(from, to.minus(from));
+            boolean hit = expected.intersect(ray, Double.POSITIVE_INFINITY, a);
+            assertEquals(hit, actual.intersect(ray, Double.POSITIVE_INFINITY, b));
+            assertEquals(hit, actual.occluded(ray, Double.POSITIVE_INFINITY));
+            if (hit) {
+                hits++;
+                assertEquals(a.t, b.t, 0.0);
+                assertEquals(a.px, b.px, 0.0);
+                assertEquals(a.nx, b.nx, 0.0);
+                assertEquals(a.gz, b.gz, 0.0);
+            }
+        }
+        assertTrue(hits > rays / 50, "rays that hit: " + hits);
     }
 }

@@ -17,7 +17,8 @@ import studio.server.system.MemoryBudget;
  * Meshes already read and built, by content: the OBJ text's SHA-256 and, for a built mesh (its
  * triangles placed in the world with their bounding volume hierarchy), its placement. The live view
  * sends the whole scene on every edit; with this, moving a light or another object reuses an
- * unchanged mesh as it is, and moving the mesh reuses its parsed OBJ. A digest, not the text's hash
+ * unchanged mesh as it is, and moving the mesh reuses its parsed OBJ and its tree (only the tree's
+ * boxes are fitted to the moved triangles, {@link TriangleMesh#movedTo}). A digest, not the text's hash
  * code, so that nobody can make two different meshes share an entry.
  *
  * <p>Bounded: the least recently used entries go first, and every entry holds its share of the
@@ -79,6 +80,23 @@ public final class MeshCache {
     synchronized TriangleMesh built(Placement placement) {
         Entry<TriangleMesh> entry = built.get(placement);
         return entry != null ? entry.value() : null;
+    }
+
+    /**
+     * A built mesh of the same content, scale and rotation as {@code placement} at another position
+     * (the most recently used), or null: moved there with {@link TriangleMesh#movedTo}, it is the
+     * mesh the placement asks for without building its tree again.
+     */
+    synchronized TriangleMesh sameShape(Placement placement) {
+        TriangleMesh found = null;
+        for (Map.Entry<Placement, Entry<TriangleMesh>> kept : built.entrySet()) {
+            Placement at = kept.getKey();
+            if (at.digest().equals(placement.digest()) && at.scale() == placement.scale()
+                    && at.rotation().equals(placement.rotation())) {
+                found = kept.getValue().value();
+            }
+        }
+        return found;
     }
 
     synchronized void keepBuilt(Placement placement, TriangleMesh mesh) {

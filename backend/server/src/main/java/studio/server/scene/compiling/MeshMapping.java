@@ -47,8 +47,9 @@ final class MeshMapping {
                 vec(or(mesh.rotation(), SceneDefaults.ORIGIN)));
         TriangleMesh shape = cache.built(placement);
         if (shape == null) {
-            shape = problems.attempt(path, () -> new TriangleMesh(data, placement.position(), placement.scale(),
-                    placement.rotation(), memory));
+            TriangleMesh elsewhere = cache.sameShape(placement);
+            shape = problems.attempt(path, () -> elsewhere != null ? elsewhere.movedTo(placement.position(), memory)
+                    : new TriangleMesh(data, placement.position(), placement.scale(), placement.rotation(), memory));
             if (shape != null) {
                 cache.keepBuilt(placement, shape);
             }

@@ -12,6 +12,7 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
 import studio.engine.geometry.Shape;
+import studio.engine.geometry.TriangleMesh;
 import studio.engine.mesh.MeshShapes;
 import studio.engine.mesh.ObjWriter;
 import studio.server.scene.format.SceneLimits;
@@ -55,14 +56,20 @@ class MeshCacheTest {
     }
 
     @Test
-    void movingAnotherObjectKeepsTheBuiltMeshMovingTheMeshBuildsItAgain() {
+    void movingAnotherObjectKeepsTheBuiltMeshMovingTheMeshMovesItsTree() {
         MemoryBudget memory = new MemoryBudget(1L << 30);
         MeshCache cache = new MeshCache(1_000_000, memory);
         SceneMapper mapper = new SceneMapper(SceneLimits.DEFAULTS, cache);
         Shape first = meshOf(mapper, scene(KNOT, 0, 3));
         assertThat(meshOf(mapper, scene(KNOT, 0, 4))).isSameAs(first);
-        Shape moved = meshOf(mapper, scene(KNOT, 1, 4));
+        TriangleMesh moved = (TriangleMesh) meshOf(mapper, scene(KNOT, 1, 4));
         assertThat(moved).isNotSameAs(first);
+        assertThat(((TriangleMesh) first).buildNanos()).isPositive();
+        assertThat(moved.buildNanos()).as("the tree moved with the mesh, not built again").isZero();
+        TriangleMesh builtThere = (TriangleMesh) meshOf(new SceneMapper(SceneLimits.DEFAULTS), scene(KNOT, 1, 4));
+        assertThat(moved.positions()).isEqualTo(builtThere.positions());
+        assertThat(moved.indices()).isEqualTo(builtThere.indices());
+        assertThat(moved.bounds()).isEqualTo(builtThere.bounds());
         assertThat(meshOf(mapper, scene(KNOT, 1, 5))).isSameAs(moved);
         // parsed once, built twice: three entries of 3,840 triangles, each holding its memory
         assertThat(cache.triangles()).isEqualTo(3 * 3_840);
