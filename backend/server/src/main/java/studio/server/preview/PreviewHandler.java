@@ -122,6 +122,7 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
         if (parts.refusal == null) {
             if (parts.memory == null) {
                 parts.memory = IntakeMemory.of(renderer.memory());
+                view(session).arriving();
             }
             byte[] bytes = piece.getBytes(StandardCharsets.UTF_8);
             try {
@@ -133,6 +134,7 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
         }
         if (message.isLast()) {
             if (parts.refusal != null) {
+                view(session).notArriving();
                 socket(session).sendMessage(new TextMessage(renderer.problem(null, parts.refusal)));
             } else {
                 view(session).receive(parts.bytes.toByteArray(), parts.memory); // the view owns the memory now

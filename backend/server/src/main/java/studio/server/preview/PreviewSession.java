@@ -53,6 +53,12 @@ final class PreviewSession {
     private final AtomicReference<Pending> pending = new AtomicReference<>();
     private final AtomicBoolean working = new AtomicBoolean();
     private volatile boolean closed;
+    /**
+     * A message has begun to arrive and is not yet whole: the revision being shown stops now, not
+     * once the message is read, so that receiving it (a large scene takes tens of milliseconds)
+     * does not share the cores with a render nobody will see.
+     */
+    private volatile boolean arriving;
     /** The last revision accepted (worker thread only). */
     private long lastRevision = -1;
 
@@ -62,9 +68,23 @@ final class PreviewSession {
         this.output = output;
     }
 
+    /**
+     * The first piece of a message has arrived: the revision being shown stops (within a tile),
+     * as it would once the message is whole; every new message, valid or not, ends it.
+     */
+    void arriving() {
+        arriving = true;
+    }
+
+    /** The message begun by {@link #arriving} was dropped (refused while it arrived) before it was whole. */
+    void notArriving() {
+        arriving = false;
+    }
+
     /** A message from the client: it replaces any revision not yet started, and stops the one being shown. */
     void receive(byte[] message, IntakeMemory memory) {
         Pending replaced = pending.getAndSet(new Pending(message, memory, System.nanoTime()));
+        arriving = false;
         if (replaced != null) {
             replaced.memory().close();
         }
@@ -116,9 +136,9 @@ final class PreviewSession {
         }
     }
 
-    /** Whether the revision being shown is no longer wanted. */
+    /** Whether the revision being shown is no longer wanted: the view closed, or a newer message arrived or is arriving. */
     private boolean superseded() {
-        return closed || pending.get() != null;
+        return closed || arriving || pending.get() != null;
     }
 
     private void show(Pending next) throws IOException {

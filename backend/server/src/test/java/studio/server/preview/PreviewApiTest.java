@@ -14,6 +14,7 @@ import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
 import java.net.http.WebSocketHandshakeException;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
@@ -168,6 +169,37 @@ class PreviewApiTest {
             assertFalse(client.frames.stream().anyMatch(f -> f.revision() == 1 && f.last()),
                     "revision 1's final 512-sample pass was stopped");
         }
+    }
+
+    @Test
+    void aMessageThatBeginsToArriveStopsTheRevisionBeingShown() throws Exception {
+        String heavy = SCENE.replace("\"samples\": 16", "\"samples\": 512, \"sampler\": \"jittered\"");
+        try (PreviewClient client = new PreviewClient(port)) {
+            client.send(1, heavy, 640, 480);
+            Await.until("revision 1's full-size one-sample frame", 30_000,
+                    () -> client.frames.stream().anyMatch(f -> f.header().get("width").asInt() == 640));
+            // revision 1's 512-sample pass renders now, for many seconds, on every render thread
+            double rendering = processCpuSeconds(Duration.ofSeconds(1));
+            client.sendPiece("{\"revision\": 2, \"width\": 160, \"height\": 120, \"scene\": ", false);
+            Thread.sleep(300); // it stops within a tile
+            double arriving = processCpuSeconds(Duration.ofSeconds(1));
+            client.sendPiece(SCENE + "}", true);
+            Await.until("the final frame of revision 2", 30_000,
+                    () -> client.lastFrame().last() && client.lastFrame().revision() == 2);
+
+            assertTrue(rendering > 0.8, "the cores were busy rendering revision 1: " + rendering + " s of CPU in 1 s");
+            assertTrue(arriving < rendering / 4, "while revision 2 arrives, revision 1 no longer renders: " + arriving
+                    + " s of CPU in 1 s, against " + rendering);
+            assertFalse(client.frames.stream().anyMatch(f -> f.revision() == 1 && f.last()));
+        }
+    }
+
+    /** The CPU time this process (the server and this test) takes over the given wall time. */
+    private static double processCpuSeconds(Duration over) throws InterruptedException {
+        var os = (com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+        long before = os.getProcessCpuTime();
+        Thread.sleep(over.toMillis());
+        return (os.getProcessCpuTime() - before) / 1e9;
     }
 
     @Test

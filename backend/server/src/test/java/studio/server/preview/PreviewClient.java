@@ -53,6 +53,11 @@ final class PreviewClient implements WebSocket.Listener, AutoCloseable {
         socket.sendText(message, true).get(30, TimeUnit.SECONDS);
     }
 
+    /** A piece of a message: the message goes on with the next piece, and ends with one that is {@code last}. */
+    void sendPiece(String piece, boolean last) throws Exception {
+        socket.sendText(piece, last).get(30, TimeUnit.SECONDS);
+    }
+
     Frame lastFrame() {
         return frames.isEmpty() ? null : frames.get(frames.size() - 1);
     }
