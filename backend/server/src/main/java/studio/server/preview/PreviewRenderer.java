@@ -58,12 +58,18 @@ final class PreviewRenderer {
 
     /**
      * The scene of a revision at the view's size, its building drawn on {@code memory}, which holds
-     * the message's reading already (as a request body's intake does).
+     * the message's reading already (as a request body's intake does); assembled from the view's
+     * last scene where only some objects changed ({@link SceneReuse}).
      *
      * @throws InvalidSceneException as {@code POST /api/render} would refuse it
      * @throws org.springframework.web.ErrorResponseException 503 while the memory is taken, 413 if it could never fit
      */
-    CompiledScene compile(PreviewRequest request, IntakeMemory memory) {
+    CompiledScene compile(PreviewRequest request, IntakeMemory memory, SceneReuse reuse) {
+        return reuse.compile(request, json -> compile(json, request, memory));
+    }
+
+    /** Scene JSON read at the request's view size, as {@code POST /api/render} reads it. */
+    private CompiledScene compile(byte[] json, PreviewRequest request, IntakeMemory memory) {
         Map<String, Object> overrides = new HashMap<>();
         if (request.width() > 0) {
             overrides.put("image.width", request.width());
@@ -72,7 +78,7 @@ final class PreviewRenderer {
             overrides.put("image.height", request.height());
         }
         overrides.put("image.format", "png");
-        return compiler.compile(request.scene(), overrides, threads, memory);
+        return compiler.compile(json, overrides, threads, memory);
     }
 
     /**

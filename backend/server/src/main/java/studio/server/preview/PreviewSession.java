@@ -61,11 +61,14 @@ final class PreviewSession {
     private volatile boolean arriving;
     /** The last revision accepted (worker thread only). */
     private long lastRevision = -1;
+    /** The last scene read, to read the next revision from where only some objects changed. */
+    private final SceneReuse reuse;
 
     PreviewSession(PreviewRenderer renderer, Executor worker, Output output) {
         this.renderer = renderer;
         this.worker = worker;
         this.output = output;
+        this.reuse = new SceneReuse(renderer.memory());
     }
 
     /**
@@ -94,6 +97,7 @@ final class PreviewSession {
     /** The client went away: the work in hand stops within a tile. */
     void close() {
         closed = true;
+        reuse.close();
         Pending dropped = pending.getAndSet(null);
         if (dropped != null) {
             dropped.memory().close();
@@ -102,6 +106,11 @@ final class PreviewSession {
 
     boolean closed() {
         return closed;
+    }
+
+    /** Revisions whose scene was assembled from the one before (see {@link SceneReuse}). */
+    long reusedScenes() {
+        return reuse.reused();
     }
 
     private void wake() {
@@ -150,7 +159,7 @@ final class PreviewSession {
                 throw new InvalidSceneException("revision", "must be greater than the last revision, " + lastRevision);
             }
             lastRevision = request.revision();
-            scene = renderer.compile(request, next.memory());
+            scene = renderer.compile(request, next.memory(), reuse);
         } catch (ErrorResponseException e) {
             // an invalid message or scene (400), the memory to build it is taken right now (503), or it
             // could never fit (413)

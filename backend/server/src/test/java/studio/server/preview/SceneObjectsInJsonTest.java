@@ -1,0 +1,42 @@
+package studio.server.preview;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.charset.StandardCharsets;
+
+import org.junit.jupiter.api.Test;
+
+class SceneObjectsInJsonTest {
+
+    private static int[] ranges(String scene) {
+        return SceneObjectsInJson.ranges(scene.getBytes(StandardCharsets.UTF_8));
+    }
+
+    @Test
+    void eachElementOfTheTopLevelObjectsArrayByItsBytes() {
+        String scene = "{\"camera\": {\"objects\": [1]}, \"objects\": [ {\"type\": \"sphere\", \"name\": \"é}\"},"
+                + "{\"type\": \"box\", \"size\": [1, 2, 3]} ], \"lights\": []}";
+        byte[] bytes = scene.getBytes(StandardCharsets.UTF_8);
+
+        int[] ranges = ranges(scene);
+
+        assertThat(ranges).hasSize(4);
+        assertThat(new String(bytes, ranges[0], ranges[1] - ranges[0], StandardCharsets.UTF_8))
+                .isEqualTo("{\"type\": \"sphere\", \"name\": \"é}\"}");
+        assertThat(new String(bytes, ranges[2], ranges[3] - ranges[2], StandardCharsets.UTF_8))
+                .isEqualTo("{\"type\": \"box\", \"size\": [1, 2, 3]}");
+    }
+
+    @Test
+    void nothingUnlessOneArrayOfObjectsInAWellFormedScene() {
+        assertThat(ranges("{\"objects\": []}")).isNull();
+        assertThat(ranges("{\"lights\": []}")).isNull();
+        assertThat(ranges("{\"objects\": [{}, 3]}")).isNull();
+        assertThat(ranges("{\"objects\": {\"type\": \"sphere\"}}")).isNull();
+        assertThat(ranges("{\"objects\": [{}], \"objects\": [{}]}")).isNull();
+        assertThat(ranges("{\"objects\": [{}]")).isNull();
+        assertThat(ranges("{\"objects\": [{}]} {}")).isNull();
+        assertThat(ranges("[{\"objects\": [{}]}]")).isNull();
+        assertThat(ranges("{\"objects\": [{}]}")).containsExactly(13, 15);
+    }
+}

@@ -1,0 +1,161 @@
+package studio.server.preview;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.nio.charset.StandardCharsets;
+import java.util.Map;
+import java.util.Random;
+import java.util.function.Function;
+
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.Test;
+
+import studio.engine.render.Film;
+import studio.engine.render.RenderSettings;
+import studio.engine.render.Renderer;
+import studio.engine.sampler.Sampler;
+import studio.engine.scene.Scene;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.format.InvalidSceneException;
+import studio.server.scene.reading.LazyValidation;
+import studio.server.system.MemoryBudget;
+
+/** A live view reads only the objects a revision changed, and gets the scene reading it all gives. */
+class SceneReuseTest {
+
+    private static final LazyValidation VALIDATION = new LazyValidation();
+    private static final SceneCompiler COMPILER = SceneCompiler.standalone(VALIDATION);
+    private static final Function<byte[], CompiledScene> READ =
+            json -> COMPILER.compile(json, Map.of("image.width", 48, "image.height", 36), 1);
+
+    @AfterAll
+    static void close() {
+        VALIDATION.close();
+    }
+
+    /** n spheres of several materials, a floor and a box, two lights; sphere {@code moved} shifted by dx. */
+    private static String scene(int n, int moved, double dx, String light) {
+        Random random = new Random(3);
+        String[] materials = {"{\"type\": \"plastic\", \"color\": \"#cc3333\"}", "{\"type\": \"mirror\"}",
+                "{\"type\": \"metal\", \"color\": \"#aabbcc\"}", "{\"type\": \"chalk\"}"};
+        StringBuilder objects = new StringBuilder("{\"type\": \"plane\"},\n");
+        for (int i = 0; i < n; i++) {
+            double x = random.nextDouble() * 6 - 3 + (i == moved ? dx : 0);
+            objects.append(String.format(java.util.Locale.ROOT,
+                    "  {\"type\": \"sphere\", \"center\": [%.4f, %.4f, %.4f], \"radius\": 0.15, \"material\": %s},%n",
+                    x, 0.2 + random.nextDouble() * 2, random.nextDouble() * -4, materials[i % materials.length]));
+        }
+        objects.append("  {\"type\": \"box\", \"center\": [0, 0.5, 1], \"rotation\": [0, 30, 0]}");
+        return """
+                {"image": {"width": 320, "height": 240}, "render": {"samples": 4, "sampler": "jittered"},
+                 "camera": {"position": [0, 2, 6], "lookAt": [0, 1, -1]},
+                 "lights": [%s, {"type": "point", "position": [-3, 4, 2], "intensity": 0.5}],
+                 "objects": [%s]}
+                """.formatted(light, objects);
+    }
+
+    private static final String LIGHT = "{\"type\": \"point\", \"position\": [3, 5, 4]}";
+
+    private static PreviewRequest request(long revision, String scene) {
+        return new PreviewRequest(revision, scene.getBytes(StandardCharsets.UTF_8), 48, 36);
+    }
+
+    /** Every bit of every pixel of a small render. */
+    private static double[] pixels(Scene scene) {
+        Film film = Renderer.render(scene, new RenderSettings(48, 36, Sampler.of("jittered", 4), 4, 1, 7L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0)).film();
+        double[] all = new double[48 * 36 * 3];
+        for (int y = 0, k = 0; y < 36; y++) {
+            for (int x = 0; x < 48; x++) {
+                for (int c = 0; c < 3; c++) {
+                    all[k++] = film.get(x, y, c);
+                }
+            }
+        }
+        return all;
+    }
+
+    @Test
+    void aMovedObjectIsReadAloneAndTheSceneIsTheOneReadingItAllGives() {
+        try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), READ);
+            String movedJson = scene(300, 7, 0.4, LIGHT);
+
+            CompiledScene moved = reuse.compile(request(2, movedJson), READ);
+
+            assertThat(reuse.reused()).isEqualTo(1);
+            assertThat(moved.scene().objectCount()).isEqualTo(302);
+            assertThat(moved.scene().shape(3)).as("an unchanged object is kept").isSameAs(first.scene().shape(3));
+            assertThat(moved.scene().shape(8)).isNotEqualTo(first.scene().shape(8)).isEqualTo(
+                    READ.apply(movedJson.getBytes(StandardCharsets.UTF_8)).scene().shape(8));
+            assertThat(moved.settings()).isEqualTo(first.settings());
+            CompiledScene readInFull = READ.apply(movedJson.getBytes(StandardCharsets.UTF_8));
+            assertThat(pixels(moved.scene())).isEqualTo(pixels(readInFull.scene()));
+            assertThat(pixels(moved.scene())).isNotEqualTo(pixels(first.scene()));
+        }
+    }
+
+    @Test
+    void aRevisionLikeTheLastIsTheLastScene() {
+        try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), READ);
+
+            assertThat(reuse.compile(request(2, scene(300, 7, 0, LIGHT)), READ)).isSameAs(first);
+        }
+    }
+
+    @Test
+    void changesBesideTheObjectsOrToManyOfThemAreReadInFull() {
+        try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), READ);
+            String lightMoved = LIGHT.replace("[3, 5, 4]", "[2, 5, 4]");
+
+            CompiledScene relit = reuse.compile(request(2, scene(300, 7, 0, lightMoved)), READ);
+            assertThat(relit.scene().shape(3)).isNotSameAs(first.scene().shape(3));
+            assertThat(relit.scene().lights().get(0).position().x()).isEqualTo(2);
+
+            String many = scene(300, 7, 0, lightMoved).replace("\"radius\": 0.15", "\"radius\": 0.16");
+            CompiledScene grown = reuse.compile(request(3, many), READ);
+            assertThat(grown.scene().shape(3)).isNotSameAs(relit.scene().shape(3));
+
+            CompiledScene otherSize = reuse.compile(new PreviewRequest(4, many.getBytes(StandardCharsets.UTF_8), 64, 48),
+                    json -> COMPILER.compile(json, Map.of("image.width", 64, "image.height", 48), 1));
+            assertThat(otherSize.settings().width()).isEqualTo(64);
+            assertThat(reuse.reused()).isZero();
+        }
+    }
+
+    @Test
+    void aChangedObjectThatDoesNotReadGetsItsProblemByItsPathInTheWholeScene() {
+        try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
+            reuse.compile(request(1, scene(300, 7, 0, LIGHT)), READ);
+            String bad = scene(300, 7, 0, LIGHT).replaceFirst("\"radius\": 0.15", "\"radius\": -1");
+
+            assertThatThrownBy(() -> reuse.compile(request(2, bad), READ)).isInstanceOfSatisfying(
+                    InvalidSceneException.class, e -> assertThat(e.problems()).anySatisfy(
+                            p -> assertThat(p.field()).isEqualTo("objects[1].radius")));
+            // the last scene that read is still kept
+            reuse.compile(request(3, scene(300, 7, 0.2, LIGHT)), READ);
+            assertThat(reuse.reused()).isEqualTo(1);
+        }
+    }
+
+    @Test
+    void smallScenesAreReadInFullAndAKeptSceneHoldsMemoryUntilTheViewCloses() {
+        MemoryBudget memory = new MemoryBudget(1L << 30);
+        SceneReuse reuse = new SceneReuse(memory);
+        reuse.compile(request(1, scene(10, 7, 0, LIGHT)), READ);
+        reuse.compile(request(2, scene(10, 7, 0.4, LIGHT)), READ);
+        assertThat(reuse.reused()).isZero();
+        assertThat(memory.reserved()).isZero();
+
+        reuse.compile(request(3, scene(300, 7, 0, LIGHT)), READ);
+        assertThat(memory.reserved()).isPositive();
+        reuse.close();
+        assertThat(memory.reserved()).isZero();
+        reuse.compile(request(4, scene(300, 7, 0.4, LIGHT)), READ);
+        assertThat(memory.reserved()).as("nothing kept after close").isZero();
+    }
+}
