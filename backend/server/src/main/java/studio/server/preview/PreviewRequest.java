@@ -19,10 +19,17 @@ import tools.jackson.core.json.JsonFactory;
  *
  * @param revision the client's revision number, increasing within a session
  * @param scene    the scene's JSON
+ * @param objects  where the elements of the scene's objects array lie in {@code scene}, found in the same
+ *                 pass ({@link SceneObjectsInJson}), or null
  * @param width    the view's width in pixels, or 0 for the scene's own
  * @param height   the view's height in pixels, or 0 for the scene's own
  */
-record PreviewRequest(long revision, byte[] scene, int width, int height) {
+record PreviewRequest(long revision, byte[] scene, int[] objects, int width, int height) {
+
+    /** A request whose scene's objects are found in its bytes ({@link SceneObjectsInJson#ranges}). */
+    PreviewRequest(long revision, byte[] scene, int width, int height) {
+        this(revision, scene, SceneObjectsInJson.ranges(scene), width, height);
+    }
 
     private static final JsonFactory JSON = new JsonFactory();
 
@@ -34,6 +41,7 @@ record PreviewRequest(long revision, byte[] scene, int width, int height) {
     static PreviewRequest parse(byte[] message, int maxWidth, int maxHeight) {
         Long revision = null;
         byte[] scene = null;
+        int[] objects = null;
         Integer width = null, height = null;
         List<FieldProblem> problems = new ArrayList<>();
         try (JsonParser parser = JSON.createParser(ObjectReadContext.empty(), message)) {
@@ -53,7 +61,7 @@ record PreviewRequest(long revision, byte[] scene, int width, int height) {
                             parser.skipChildren();
                         } else {
                             int start = (int) parser.currentTokenLocation().getByteOffset();
-                            parser.skipChildren();
+                            objects = SceneObjectsInJson.scan(parser, message, start); // reads the scene to its end
                             int end = (int) parser.currentLocation().getByteOffset();
                             scene = Arrays.copyOfRange(message, start, end);
                         }
@@ -82,7 +90,7 @@ record PreviewRequest(long revision, byte[] scene, int width, int height) {
         if (!problems.isEmpty()) {
             throw new InvalidSceneException(problems);
         }
-        return new PreviewRequest(revision, scene, width != null ? width : 0, height != null ? height : 0);
+        return new PreviewRequest(revision, scene, objects, width != null ? width : 0, height != null ? height : 0);
     }
 
     /** The revision number of a message that cannot be read as a whole, if it can be found; else null. */

@@ -26,48 +26,65 @@ final class SceneObjectsInJson {
      * and the rest of it well-formed as far as a streaming pass can tell.
      */
     static int[] ranges(byte[] scene) {
-        int[] found = null;
         try (JsonParser parser = JSON.createParser(ObjectReadContext.empty(), scene)) {
             if (parser.nextToken() != JsonToken.START_OBJECT) {
                 return null;
             }
-            while (parser.nextToken() == JsonToken.PROPERTY_NAME) {
-                boolean objects = parser.currentName().equals("objects");
-                JsonToken value = parser.nextToken();
-                if (!objects) {
-                    parser.skipChildren();
-                } else if (found != null || value != JsonToken.START_ARRAY) {
-                    return null;
-                } else {
-                    found = elements(parser, scene);
-                    if (found == null) {
-                        return null;
-                    }
-                }
-            }
-            if (parser.currentToken() != JsonToken.END_OBJECT || parser.nextToken() != null) {
-                return null;
-            }
+            int[] found = scan(parser, scene, 0);
+            return parser.nextToken() == null ? found : null;
         } catch (JacksonException e) {
             return null;
         }
-        return found != null && found.length > 0 ? found : null;
     }
 
-    /** The array's elements from just after its '[', each a JSON object; null if one is not. */
+    /**
+     * {@link #ranges} of a scene that a parser over {@code json} is reading, at the scene's
+     * {@code START_OBJECT}, which begins at byte {@code base}; the ranges count from there. Reads
+     * the scene to its end, as {@code skipChildren} would, whatever it finds.
+     *
+     * @throws JacksonException if the JSON is malformed, as skipping it would
+     */
+    static int[] scan(JsonParser parser, byte[] json, int base) {
+        int[] found = null;
+        boolean usable = true;
+        while (parser.nextToken() == JsonToken.PROPERTY_NAME) {
+            boolean objects = parser.currentName().equals("objects");
+            JsonToken value = parser.nextToken();
+            if (objects && found == null && usable && value == JsonToken.START_ARRAY) {
+                found = elements(parser, json);
+                usable = found != null;
+            } else {
+                usable &= !objects;
+                parser.skipChildren();
+            }
+        }
+        if (!usable || found == null || found.length == 0) {
+            return null;
+        }
+        for (int i = 0; i < found.length; i++) {
+            found[i] -= base;
+        }
+        return found;
+    }
+
+    /** The array's elements from just after its '[', each a JSON object; null if one is not (read to the array's end all the same). */
     private static int[] elements(JsonParser parser, byte[] scene) {
         int[] ranges = new int[16];
         int count = 0;
+        boolean usable = true;
         JsonToken token;
         while ((token = parser.nextToken()) != JsonToken.END_ARRAY) {
-            if (token != JsonToken.START_OBJECT) {
-                return null;
+            if (token != JsonToken.START_OBJECT || !usable) {
+                usable = false;
+                parser.skipChildren();
+                continue;
             }
             int start = (int) parser.currentTokenLocation().getByteOffset();
             parser.skipChildren();
             int end = (int) parser.currentLocation().getByteOffset();
             if (start < 0 || end > scene.length || scene[start] != '{' || scene[end - 1] != '}') {
-                return null;
+                usable = false;
+                continue;
             }
             if (count + 2 > ranges.length) {
                 ranges = Arrays.copyOf(ranges, 2 * ranges.length);
@@ -75,6 +92,6 @@ final class SceneObjectsInJson {
             ranges[count++] = start;
             ranges[count++] = end;
         }
-        return Arrays.copyOf(ranges, count);
+        return usable ? Arrays.copyOf(ranges, count) : null;
     }
 }

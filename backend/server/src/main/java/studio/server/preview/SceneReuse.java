@@ -58,7 +58,7 @@ final class SceneReuse implements AutoCloseable {
      * throws as {@code POST /api/render} would refuse it); it is also how each changed object is read.
      */
     CompiledScene compile(PreviewRequest request, Function<byte[], CompiledScene> read) {
-        int[] objects = SceneObjectsInJson.ranges(request.scene());
+        int[] objects = request.objects();
         Kept before = kept.get();
         CompiledScene assembled = objects != null && before != null ? fromKept(before, request, objects, read) : null;
         CompiledScene scene = assembled != null ? assembled : read.apply(request.scene());

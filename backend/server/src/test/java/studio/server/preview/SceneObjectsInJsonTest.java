@@ -39,4 +39,17 @@ class SceneObjectsInJsonTest {
         assertThat(ranges("[{\"objects\": [{}]}]")).isNull();
         assertThat(ranges("{\"objects\": [{}]}")).containsExactly(13, 15);
     }
+
+    @Test
+    void aLiveViewMessageFindsItsScenesObjectsInTheSamePass() {
+        String scene = "{\"lights\": [], \"objects\": [{\"type\": \"sphere\"}, {\"type\": \"plane\"}]}";
+        byte[] message = ("{\"revision\": 3, \"scene\": " + scene + ", \"width\": 64}").getBytes(StandardCharsets.UTF_8);
+
+        PreviewRequest request = PreviewRequest.parse(message, 2048, 2048);
+
+        assertThat(new String(request.scene(), StandardCharsets.UTF_8)).isEqualTo(scene);
+        assertThat(request.objects()).isEqualTo(ranges(scene)).hasSize(4);
+        assertThat(PreviewRequest.parse("{\"revision\": 4, \"scene\": {\"objects\": [1]}}"
+                .getBytes(StandardCharsets.UTF_8), 2048, 2048).objects()).isNull();
+    }
 }
