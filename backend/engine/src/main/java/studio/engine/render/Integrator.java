@@ -45,9 +45,10 @@ final class Integrator {
     private final Hit shadowHit = new Hit();
     private final Ray shadowRay = new Ray();
     /**
-     * Per light, the object that blocked this thread's last shadow ray to it (-1: none), tested
-     * first: neighbouring points are mostly shadowed by the same object, which then spares the
-     * search through the scene (a shadow cache, as POV-Ray keeps one per light).
+     * Per light, the opaque object that blocked this thread's last shadow ray to it (-1: none),
+     * tested first: neighbouring points are mostly shadowed by the same object, which then spares
+     * the search through the scene, and in a scene with glass the walk through every glass surface
+     * on the way (a shadow cache, as POV-Ray keeps one per light).
      */
     private final int[] lastOccluder;
     /** The direct light found by {@link #direct}, and the transmittance by {@link #shadowTransmittance}. */
@@ -223,11 +224,11 @@ final class Integrator {
         double dist = distance(ray, tx, ty, tz);
         rays++;
         throughR = throughG = throughB = 1;
+        int last = lastOccluder[lightIndex];
+        if (last >= 0 && scene.occludes(last, ray, dist * SHADOW_END)) {
+            return false; // an opaque object on the way: nothing arrives, whatever glass is crossed too
+        }
         if (!scene.hasGlass()) {
-            int last = lastOccluder[lightIndex];
-            if (last >= 0 && scene.occludes(last, ray, dist * SHADOW_END)) {
-                return false;
-            }
             int occluder = scene.occluder(ray, dist * SHADOW_END);
             lastOccluder[lightIndex] = occluder;
             return occluder < 0;
@@ -242,6 +243,7 @@ final class Integrator {
             }
             Material m = scene.material(shadowHit.primitive);
             if (m.kind() != MaterialKind.GLASS) {
+                lastOccluder[lightIndex] = shadowHit.primitive;
                 return false;
             }
             double cos = shadowHit.nx * ray.dx + shadowHit.ny * ray.dy + shadowHit.nz * ray.dz;
