@@ -108,11 +108,6 @@ final class PreviewSession {
         return closed;
     }
 
-    /** Revisions whose scene was assembled from the one before (see {@link SceneReuse}). */
-    long reusedScenes() {
-        return reuse.reused();
-    }
-
     private void wake() {
         if (working.compareAndSet(false, true)) {
             try {
