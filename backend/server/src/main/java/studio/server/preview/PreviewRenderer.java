@@ -65,7 +65,7 @@ final class PreviewRenderer {
      * @throws org.springframework.web.ErrorResponseException 503 while the memory is taken, 413 if it could never fit
      */
     CompiledScene compile(PreviewRequest request, IntakeMemory memory, SceneReuse reuse) {
-        return reuse.compile(request, json -> compile(json, request, memory));
+        return reuse.compile(request, memory, json -> compile(json, request, memory));
     }
 
     /** Scene JSON read at the request's view size, as {@code POST /api/render} reads it. */

@@ -19,11 +19,16 @@ final class SceneObjectsInJson {
     private SceneObjectsInJson() {
     }
 
+    /** Ints a scene's object takes in {@link #ranges}. */
+    static final int PER_OBJECT = 4;
+
     /**
-     * For each element of the scene's {@code objects} array, its first byte and the byte after its
-     * last, two ints an element ({@code [start0, end0, start1, end1, ...]}); null unless the scene is
-     * a JSON object with exactly one {@code objects} member, an array of one or more JSON objects,
-     * and the rest of it well-formed as far as a streaming pass can tell.
+     * For each element of the scene's {@code objects} array, {@value #PER_OBJECT} ints: its first
+     * byte, the byte after its last, and the same for the value of its {@code obj} member if that is
+     * a string (an inline mesh's OBJ text, quotes included; -1, -1 if there is none); null unless the
+     * scene is a JSON object with exactly one {@code objects} member, an array of one or more JSON
+     * objects, and the rest of it well-formed as far as a streaming pass can tell. A string's
+     * characters are skipped, not decoded.
      */
     static int[] ranges(byte[] scene) {
         try (JsonParser parser = JSON.createParser(ObjectReadContext.empty(), scene)) {
@@ -62,14 +67,16 @@ final class SceneObjectsInJson {
             return null;
         }
         for (int i = 0; i < found.length; i++) {
-            found[i] -= base;
+            if (found[i] >= 0) {
+                found[i] -= base;
+            }
         }
         return found;
     }
 
     /** The array's elements from just after its '[', each a JSON object; null if one is not (read to the array's end all the same). */
     private static int[] elements(JsonParser parser, byte[] scene) {
-        int[] ranges = new int[16];
+        int[] ranges = new int[4 * PER_OBJECT];
         int count = 0;
         boolean usable = true;
         JsonToken token;
@@ -80,18 +87,50 @@ final class SceneObjectsInJson {
                 continue;
             }
             int start = (int) parser.currentTokenLocation().getByteOffset();
-            parser.skipChildren();
+            int objStart = -1, objEnd = -1;
+            boolean objPending = false;
+            while (true) {
+                JsonToken member = parser.nextToken();
+                if (objPending) {
+                    // the text's closing quote: the last one before the next member's name or the '}'
+                    objEnd = closingQuoteBefore(scene, (int) parser.currentTokenLocation().getByteOffset());
+                    objStart = objEnd < 0 ? -1 : objStart;
+                    objPending = false;
+                }
+                if (member != JsonToken.PROPERTY_NAME) {
+                    break;
+                }
+                boolean obj = parser.currentName().equals("obj");
+                if (parser.nextToken() == JsonToken.VALUE_STRING && obj && objStart < 0) {
+                    objStart = (int) parser.currentTokenLocation().getByteOffset();
+                    objPending = true;
+                } else {
+                    parser.skipChildren();
+                }
+            }
             int end = (int) parser.currentLocation().getByteOffset();
-            if (start < 0 || end > scene.length || scene[start] != '{' || scene[end - 1] != '}') {
+            if (start < 0 || end > scene.length || scene[start] != '{' || scene[end - 1] != '}'
+                    || (objStart >= 0 && scene[objStart] != '"')) {
                 usable = false;
                 continue;
             }
-            if (count + 2 > ranges.length) {
+            if (count + PER_OBJECT > ranges.length) {
                 ranges = Arrays.copyOf(ranges, 2 * ranges.length);
             }
             ranges[count++] = start;
             ranges[count++] = end;
+            ranges[count++] = objStart;
+            ranges[count++] = objEnd;
         }
         return usable ? Arrays.copyOf(ranges, count) : null;
+    }
+
+    /** The byte after the '"' that ends a string value followed, after whitespace and a comma, by byte {@code next}; -1 if there is none. */
+    private static int closingQuoteBefore(byte[] json, int next) {
+        int i = next - 1;
+        while (i >= 0 && (json[i] == ' ' || json[i] == '\t' || json[i] == '\n' || json[i] == '\r' || json[i] == ',')) {
+            i--;
+        }
+        return i >= 0 && json[i] == '"' ? i + 1 : -1;
     }
 }

@@ -1,5 +1,6 @@
 package studio.server.preview;
 
+import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -7,9 +8,11 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
 
 import studio.engine.geometry.TriangleMesh;
+import studio.engine.memory.MemoryGate;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.MeshCache;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -35,6 +38,12 @@ final class SceneReuse implements AutoCloseable {
     static final int MIN_OBJECTS = 256;
     /** More changed objects than this are read in full. */
     static final int MAX_CHANGED = 8;
+    /** Smaller scenes (unless of many objects) are read in full: it costs little. */
+    static final int MIN_BYTES = 64 << 10;
+    /** Ints an object takes in a request's {@code objects}. */
+    private static final int PER = SceneObjectsInJson.PER_OBJECT;
+    /** A three-vertex OBJ text, as a JSON string, that stands in for an unchanged mesh's while its other fields are read. */
+    private static final byte[] STAND_IN = "\"v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\n\"".getBytes(StandardCharsets.US_ASCII);
     /** What a kept object holds besides its JSON, as {@code ObjectMapping} counts it. */
     private static final long BYTES_PER_OBJECT = 640;
 
@@ -57,10 +66,11 @@ final class SceneReuse implements AutoCloseable {
      * {@code read} from its whole JSON. {@code read} compiles a scene's JSON at the view's size (and
      * throws as {@code POST /api/render} would refuse it); it is also how each changed object is read.
      */
-    CompiledScene compile(PreviewRequest request, Function<byte[], CompiledScene> read) {
+    CompiledScene compile(PreviewRequest request, MemoryGate memory, Function<byte[], CompiledScene> read) {
         int[] objects = request.objects();
         Kept before = kept.get();
-        CompiledScene assembled = objects != null && before != null ? fromKept(before, request, objects, read) : null;
+        CompiledScene assembled = objects != null && before != null ? fromKept(before, request, objects, memory, read)
+                : null;
         CompiledScene scene = assembled != null ? assembled : read.apply(request.scene());
         if (assembled != null) {
             reused++;
@@ -81,29 +91,31 @@ final class SceneReuse implements AutoCloseable {
         release();
     }
 
-    private CompiledScene fromKept(Kept last, PreviewRequest request, int[] objects, Function<byte[], CompiledScene> read) {
+    private CompiledScene fromKept(Kept last, PreviewRequest request, int[] objects, MemoryGate memory,
+                                   Function<byte[], CompiledScene> read) {
         byte[] json = request.scene(), was = last.json();
         int[] wasObjects = last.objects();
-        int n = objects.length / 2;
+        int n = objects.length / PER, count = last.compiled().scene().objectCount();
         Scene scene = last.compiled().scene();
         if (request.width() != last.width() || request.height() != last.height() || objects.length != wasObjects.length
-                || scene.objectCount() != n) {
+                || count != n) {
             return null;
         }
         // the bytes around the objects: before the first, between each two and after the last
         if (!Arrays.equals(json, 0, objects[0], was, 0, wasObjects[0])
-                || !Arrays.equals(json, objects[2 * n - 1], json.length, was, wasObjects[2 * n - 1], was.length)) {
+                || !Arrays.equals(json, end(objects, n - 1), json.length, was, end(wasObjects, n - 1), was.length)) {
             return null;
         }
         for (int i = 1; i < n; i++) {
-            if (!Arrays.equals(json, objects[2 * i - 1], objects[2 * i], was, wasObjects[2 * i - 1], wasObjects[2 * i])) {
+            if (!Arrays.equals(json, end(objects, i - 1), start(objects, i), was, end(wasObjects, i - 1),
+                    start(wasObjects, i))) {
                 return null;
             }
         }
         List<Integer> changed = new ArrayList<>();
         for (int i = 0; i < n; i++) {
-            if (!Arrays.equals(json, objects[2 * i], objects[2 * i + 1], was, wasObjects[2 * i], wasObjects[2 * i + 1])) {
-                if (changed.size() == MAX_CHANGED || scene.shape(i) instanceof TriangleMesh) {
+            if (!Arrays.equals(json, start(objects, i), end(objects, i), was, start(wasObjects, i), end(wasObjects, i))) {
+                if (changed.size() == MAX_CHANGED) {
                     return null;
                 }
                 changed.add(i);
@@ -117,39 +129,102 @@ final class SceneReuse implements AutoCloseable {
             assembled.add(new SceneObject(scene.shape(i), scene.material(i)));
         }
         for (int i : changed) {
-            CompiledScene alone;
-            try {
-                alone = read.apply(alone(json, objects, i));
-            } catch (RuntimeException e) {
-                return null; // read in full, for the problems by their whole scene's paths
+            SceneObject object = scene.shape(i) instanceof TriangleMesh mesh
+                    ? movedMesh(mesh, json, objects, i, was, wasObjects, memory, read)
+                    : readAlone(alone(json, objects, json, start(objects, i), end(objects, i)), read);
+            if (object == null) {
+                return null;
             }
-            Scene one = alone.scene();
-            if (one.objectCount() != 1 || one.shape(0) instanceof TriangleMesh) {
-                return null; // meshes share one triangle limit: read in full
-            }
-            assembled.set(i, new SceneObject(one.shape(0), one.material(0)));
+            assembled.set(i, object);
         }
         CompiledScene before = last.compiled();
         return new CompiledScene(new Scene(scene.camera(), assembled, scene.lights(), scene.background(), scene.ambient()),
                 before.settings(), before.format(), before.quality(), before.fileStem());
     }
 
-    /** The scene's JSON with only its object i: the bytes before the first object, object i's, those after the last. */
-    private static byte[] alone(byte[] json, int[] objects, int i) {
-        int before = objects[0], start = objects[2 * i], end = objects[2 * i + 1], after = objects[objects.length - 1];
-        byte[] scene = new byte[before + (end - start) + (json.length - after)];
+    /** Object i read in a scene of its own; null if it does not read or is a mesh (meshes share one triangle limit). */
+    private static SceneObject readAlone(byte[] alone, Function<byte[], CompiledScene> read) {
+        CompiledScene compiled;
+        try {
+            compiled = read.apply(alone);
+        } catch (RuntimeException e) {
+            return null; // read in full, for the problems by their whole scene's paths
+        }
+        Scene one = compiled.scene();
+        if (one.objectCount() != 1 || one.shape(0) instanceof TriangleMesh) {
+            return null;
+        }
+        return new SceneObject(one.shape(0), one.material(0));
+    }
+
+    /**
+     * An inline mesh whose OBJ text is the kept one's, byte for byte, while something else of it
+     * changed: its other fields are read with a three-vertex stand-in for the text (so 3.4 MB of
+     * OBJ are neither decoded nor digested again), and if only its position or material changed,
+     * the kept mesh is moved there ({@link TriangleMesh#movedTo}: the very mesh reading it in full
+     * builds). Null for anything else.
+     */
+    private static SceneObject movedMesh(TriangleMesh kept, byte[] json, int[] objects, int i, byte[] was,
+                                         int[] wasObjects, MemoryGate memory, Function<byte[], CompiledScene> read) {
+        int objStart = objects[PER * i + 2], objEnd = objects[PER * i + 3];
+        int wasStart = wasObjects[PER * i + 2], wasEnd = wasObjects[PER * i + 3];
+        if (objStart < 0 || wasStart < 0 || !Arrays.equals(json, objStart, objEnd, was, wasStart, wasEnd)) {
+            return null;
+        }
+        byte[] element = new byte[(objStart - start(objects, i)) + STAND_IN.length + (end(objects, i) - objEnd)];
+        int at = 0;
+        System.arraycopy(json, start(objects, i), element, at, objStart - start(objects, i));
+        at += objStart - start(objects, i);
+        System.arraycopy(STAND_IN, 0, element, at, STAND_IN.length);
+        at += STAND_IN.length;
+        System.arraycopy(json, objEnd, element, at, end(objects, i) - objEnd);
+        CompiledScene compiled;
+        try {
+            compiled = read.apply(alone(json, objects, element, 0, element.length));
+        } catch (RuntimeException e) {
+            return null;
+        }
+        Scene one = compiled.scene();
+        if (one.objectCount() != 1 || !(one.shape(0) instanceof TriangleMesh placed) || placed.scale() != kept.scale()
+                || !placed.rotationDegrees().equals(kept.rotationDegrees())) {
+            return null;
+        }
+        TriangleMesh moved = placed.position().equals(kept.position()) ? kept : kept.movedTo(placed.position(), memory);
+        return new SceneObject(moved, one.material(0));
+    }
+
+    /** The scene's JSON with one object, {@code element[from, to)}: the bytes before its first object, that one, those after its last. */
+    private static byte[] alone(byte[] json, int[] objects, byte[] element, int from, int to) {
+        int before = objects[0], after = end(objects, objects.length / PER - 1);
+        byte[] scene = new byte[before + (to - from) + (json.length - after)];
         System.arraycopy(json, 0, scene, 0, before);
-        System.arraycopy(json, start, scene, before, end - start);
-        System.arraycopy(json, after, scene, before + end - start, json.length - after);
+        System.arraycopy(element, from, scene, before, to - from);
+        System.arraycopy(json, after, scene, before + to - from, json.length - after);
         return scene;
+    }
+
+    private static int start(int[] objects, int i) {
+        return objects[PER * i];
+    }
+
+    private static int end(int[] objects, int i) {
+        return objects[PER * i + 1];
     }
 
     private void keep(PreviewRequest request, int[] objects, CompiledScene scene) {
         release();
-        if (objects == null || objects.length / 2 < MIN_OBJECTS || closed) {
+        if (objects == null || closed
+                || (objects.length / PER < MIN_OBJECTS && request.scene().length < MIN_BYTES)) {
             return;
         }
-        MemoryBudget.Reservation held = memory.tryReserve(request.scene().length + BYTES_PER_OBJECT * objects.length / 2);
+        long triangles = 0;
+        for (int i = 0; i < scene.scene().objectCount(); i++) {
+            if (scene.scene().shape(i) instanceof TriangleMesh mesh) {
+                triangles += mesh.triangleCount();
+            }
+        }
+        MemoryBudget.Reservation held = memory.tryReserve(request.scene().length
+                + BYTES_PER_OBJECT * (objects.length / PER) + MeshCache.BYTES_PER_TRIANGLE * triangles);
         if (held != null) {
             kept.set(new Kept(request.scene(), objects, request.width(), request.height(), scene, held));
             if (closed) {

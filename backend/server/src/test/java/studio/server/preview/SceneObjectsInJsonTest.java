@@ -20,11 +20,26 @@ class SceneObjectsInJsonTest {
 
         int[] ranges = ranges(scene);
 
-        assertThat(ranges).hasSize(4);
+        assertThat(ranges).hasSize(8);
         assertThat(new String(bytes, ranges[0], ranges[1] - ranges[0], StandardCharsets.UTF_8))
                 .isEqualTo("{\"type\": \"sphere\", \"name\": \"é}\"}");
-        assertThat(new String(bytes, ranges[2], ranges[3] - ranges[2], StandardCharsets.UTF_8))
+        assertThat(new String(bytes, ranges[4], ranges[5] - ranges[4], StandardCharsets.UTF_8))
                 .isEqualTo("{\"type\": \"box\", \"size\": [1, 2, 3]}");
+        assertThat(ranges[2]).isEqualTo(-1);
+        assertThat(ranges[7]).isEqualTo(-1);
+    }
+
+    @Test
+    void anInlineMeshsTextByItsBytesQuotesIncludedUndecoded() {
+        String text = "\"v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3 # \\\"é\\\"\"";
+        String scene = "{\"objects\": [{\"type\": \"mesh\", \"obj\": " + text + " ,\n \"scale\": 2},"
+                + " {\"type\": \"mesh\", \"position\": [1, 2, 3], \"obj\":" + text + "}]}";
+        byte[] bytes = scene.getBytes(StandardCharsets.UTF_8);
+
+        int[] ranges = ranges(scene);
+
+        assertThat(new String(bytes, ranges[2], ranges[3] - ranges[2], StandardCharsets.UTF_8)).isEqualTo(text);
+        assertThat(new String(bytes, ranges[6], ranges[7] - ranges[6], StandardCharsets.UTF_8)).isEqualTo(text);
     }
 
     @Test
@@ -37,7 +52,7 @@ class SceneObjectsInJsonTest {
         assertThat(ranges("{\"objects\": [{}]")).isNull();
         assertThat(ranges("{\"objects\": [{}]} {}")).isNull();
         assertThat(ranges("[{\"objects\": [{}]}]")).isNull();
-        assertThat(ranges("{\"objects\": [{}]}")).containsExactly(13, 15);
+        assertThat(ranges("{\"objects\": [{}]}")).containsExactly(13, 15, -1, -1);
     }
 
     @Test
@@ -48,7 +63,7 @@ class SceneObjectsInJsonTest {
         PreviewRequest request = PreviewRequest.parse(message, 2048, 2048);
 
         assertThat(new String(request.scene(), StandardCharsets.UTF_8)).isEqualTo(scene);
-        assertThat(request.objects()).isEqualTo(ranges(scene)).hasSize(4);
+        assertThat(request.objects()).isEqualTo(ranges(scene)).hasSize(8);
         assertThat(PreviewRequest.parse("{\"revision\": 4, \"scene\": {\"objects\": [1]}}"
                 .getBytes(StandardCharsets.UTF_8), 2048, 2048).objects()).isNull();
     }

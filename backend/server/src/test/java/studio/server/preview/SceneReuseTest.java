@@ -11,6 +11,10 @@ import java.util.function.Function;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
+import studio.engine.geometry.TriangleMesh;
+import studio.engine.memory.MemoryGate;
+import studio.engine.mesh.MeshShapes;
+import studio.engine.mesh.ObjWriter;
 import studio.engine.render.Film;
 import studio.engine.render.RenderSettings;
 import studio.engine.render.Renderer;
@@ -80,10 +84,10 @@ class SceneReuseTest {
     @Test
     void aMovedObjectIsReadAloneAndTheSceneIsTheOneReadingItAllGives() {
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), READ);
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
             String movedJson = scene(300, 7, 0.4, LIGHT);
 
-            CompiledScene moved = reuse.compile(request(2, movedJson), READ);
+            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, READ);
 
             assertThat(reuse.reused()).isEqualTo(1);
             assertThat(moved.scene().objectCount()).isEqualTo(302);
@@ -100,28 +104,28 @@ class SceneReuseTest {
     @Test
     void aRevisionLikeTheLastIsTheLastScene() {
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), READ);
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
 
-            assertThat(reuse.compile(request(2, scene(300, 7, 0, LIGHT)), READ)).isSameAs(first);
+            assertThat(reuse.compile(request(2, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ)).isSameAs(first);
         }
     }
 
     @Test
     void changesBesideTheObjectsOrToManyOfThemAreReadInFull() {
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), READ);
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
             String lightMoved = LIGHT.replace("[3, 5, 4]", "[2, 5, 4]");
 
-            CompiledScene relit = reuse.compile(request(2, scene(300, 7, 0, lightMoved)), READ);
+            CompiledScene relit = reuse.compile(request(2, scene(300, 7, 0, lightMoved)), MemoryGate.UNLIMITED, READ);
             assertThat(relit.scene().shape(3)).isNotSameAs(first.scene().shape(3));
             assertThat(relit.scene().lights().get(0).position().x()).isEqualTo(2);
 
             String many = scene(300, 7, 0, lightMoved).replace("\"radius\": 0.15", "\"radius\": 0.16");
-            CompiledScene grown = reuse.compile(request(3, many), READ);
+            CompiledScene grown = reuse.compile(request(3, many), MemoryGate.UNLIMITED, READ);
             assertThat(grown.scene().shape(3)).isNotSameAs(relit.scene().shape(3));
 
             CompiledScene otherSize = reuse.compile(new PreviewRequest(4, many.getBytes(StandardCharsets.UTF_8), 64, 48),
-                    json -> COMPILER.compile(json, Map.of("image.width", 64, "image.height", 48), 1));
+                    MemoryGate.UNLIMITED, json -> COMPILER.compile(json, Map.of("image.width", 64, "image.height", 48), 1));
             assertThat(otherSize.settings().width()).isEqualTo(64);
             assertThat(reuse.reused()).isZero();
         }
@@ -130,14 +134,14 @@ class SceneReuseTest {
     @Test
     void aChangedObjectThatDoesNotReadGetsItsProblemByItsPathInTheWholeScene() {
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            reuse.compile(request(1, scene(300, 7, 0, LIGHT)), READ);
+            reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
             String bad = scene(300, 7, 0, LIGHT).replaceFirst("\"radius\": 0.15", "\"radius\": -1");
 
-            assertThatThrownBy(() -> reuse.compile(request(2, bad), READ)).isInstanceOfSatisfying(
+            assertThatThrownBy(() -> reuse.compile(request(2, bad), MemoryGate.UNLIMITED, READ)).isInstanceOfSatisfying(
                     InvalidSceneException.class, e -> assertThat(e.problems()).anySatisfy(
                             p -> assertThat(p.field()).isEqualTo("objects[1].radius")));
             // the last scene that read is still kept
-            reuse.compile(request(3, scene(300, 7, 0.2, LIGHT)), READ);
+            reuse.compile(request(3, scene(300, 7, 0.2, LIGHT)), MemoryGate.UNLIMITED, READ);
             assertThat(reuse.reused()).isEqualTo(1);
         }
     }
@@ -146,16 +150,65 @@ class SceneReuseTest {
     void smallScenesAreReadInFullAndAKeptSceneHoldsMemoryUntilTheViewCloses() {
         MemoryBudget memory = new MemoryBudget(1L << 30);
         SceneReuse reuse = new SceneReuse(memory);
-        reuse.compile(request(1, scene(10, 7, 0, LIGHT)), READ);
-        reuse.compile(request(2, scene(10, 7, 0.4, LIGHT)), READ);
+        reuse.compile(request(1, scene(10, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
+        reuse.compile(request(2, scene(10, 7, 0.4, LIGHT)), MemoryGate.UNLIMITED, READ);
         assertThat(reuse.reused()).isZero();
         assertThat(memory.reserved()).isZero();
 
-        reuse.compile(request(3, scene(300, 7, 0, LIGHT)), READ);
+        reuse.compile(request(3, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
         assertThat(memory.reserved()).isPositive();
         reuse.close();
         assertThat(memory.reserved()).isZero();
-        reuse.compile(request(4, scene(300, 7, 0.4, LIGHT)), READ);
+        reuse.compile(request(4, scene(300, 7, 0.4, LIGHT)), MemoryGate.UNLIMITED, READ);
         assertThat(memory.reserved()).as("nothing kept after close").isZero();
+    }
+
+    /** An inline mesh (a 3,840-triangle torus knot, about 200 kB of OBJ) at x, scaled, beside a sphere over a floor. */
+    private static String meshScene(String obj, double x, double scale) {
+        return """
+                {"image": {"width": 320, "height": 240}, "render": {"samples": 4, "sampler": "jittered"},
+                 "camera": {"position": [0, 2, 6], "lookAt": [0, 0.5, 0]},
+                 "lights": [%s],
+                 "objects": [{"type": "plane"},
+                             {"type": "mesh", "obj": "%s", "position": [%s, 0.8, 0], "scale": %s,
+                              "material": {"type": "metal", "color": "#c0a060"}},
+                             {"type": "sphere", "center": [1.5, 0.5, 0.5], "radius": 0.5}]}
+                """.formatted(LIGHT, obj, x, scale);
+    }
+
+    private static String knot() {
+        StringBuilder text = new StringBuilder();
+        try {
+            ObjWriter.write(MeshShapes.torusKnot(2, 3, 120, 16), text);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+        return text.toString().replace("\n", "\\n");
+    }
+
+    @Test
+    void aMovedInlineMeshKeepsItsTextUnreadAndItsTree() {
+        String knot = knot();
+        try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
+            CompiledScene first = reuse.compile(request(1, meshScene(knot, 0, 0.4)), MemoryGate.UNLIMITED, READ);
+            String movedJson = meshScene(knot, 0.25, 0.4);
+
+            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, READ);
+
+            assertThat(reuse.reused()).isEqualTo(1);
+            TriangleMesh mesh = (TriangleMesh) moved.scene().shape(1);
+            assertThat(mesh.buildNanos()).as("the kept mesh moved, its tree not built again").isZero();
+            assertThat(mesh.triangleCount()).isEqualTo(((TriangleMesh) first.scene().shape(1)).triangleCount());
+            assertThat(moved.scene().shape(2)).isSameAs(first.scene().shape(2));
+            CompiledScene readInFull = READ.apply(movedJson.getBytes(StandardCharsets.UTF_8));
+            assertThat(mesh.positions()).isEqualTo(((TriangleMesh) readInFull.scene().shape(1)).positions());
+            assertThat(pixels(moved.scene())).isEqualTo(pixels(readInFull.scene()));
+            assertThat(pixels(moved.scene())).isNotEqualTo(pixels(first.scene()));
+
+            // scaled, or another text: read in full
+            reuse.compile(request(3, meshScene(knot, 0.25, 0.5)), MemoryGate.UNLIMITED, READ);
+            reuse.compile(request(4, meshScene(knot + "# another text\\n", 0.25, 0.5)), MemoryGate.UNLIMITED, READ);
+            assertThat(reuse.reused()).isEqualTo(1);
+        }
     }
 }

@@ -28,6 +28,13 @@ import studio.server.system.MemoryBudget;
  */
 public final class MeshCache {
 
+    /**
+     * Built meshes of fewer triangles are not kept: building one takes well under a millisecond, and
+     * every placement would be an entry of its own (the live view reads a mesh's other fields with a
+     * three-vertex stand-in for its text, at every step of a drag).
+     */
+    static final int MIN_KEPT_TRIANGLES = 256;
+
     /** Positions, normals, indices, and a built mesh's BVH: as a render's estimate counts a triangle. */
     public static final long BYTES_PER_TRIANGLE = 200;
 
@@ -100,6 +107,9 @@ public final class MeshCache {
     }
 
     synchronized void keepBuilt(Placement placement, TriangleMesh mesh) {
+        if (mesh.triangleCount() < MIN_KEPT_TRIANGLES) {
+            return; // built again in less time than looking it up costs: an entry per placement is not worth keeping
+        }
         Entry<TriangleMesh> entry = admit(mesh.triangleCount(), mesh);
         if (entry != null) {
             release(built.put(placement, entry));
