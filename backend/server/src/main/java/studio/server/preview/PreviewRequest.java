@@ -26,11 +26,6 @@ import tools.jackson.core.json.JsonFactory;
  */
 record PreviewRequest(long revision, byte[] scene, int[] objects, int width, int height) {
 
-    /** A request whose scene's objects are found in its bytes ({@link SceneObjectsInJson#ranges}). */
-    PreviewRequest(long revision, byte[] scene, int width, int height) {
-        this(revision, scene, SceneObjectsInJson.ranges(scene), width, height);
-    }
-
     private static final JsonFactory JSON = new JsonFactory();
 
     /**

@@ -11,8 +11,8 @@ import studio.engine.geometry.TriangleMesh;
 import studio.engine.memory.MemoryGate;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
+import studio.server.render.RenderMemory;
 import studio.server.scene.compiling.CompiledScene;
-import studio.server.scene.compiling.MeshCache;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -44,8 +44,6 @@ final class SceneReuse implements AutoCloseable {
     private static final int PER = SceneObjectsInJson.PER_OBJECT;
     /** A three-vertex OBJ text, as a JSON string, that stands in for an unchanged mesh's while its other fields are read. */
     private static final byte[] STAND_IN = "\"v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\n\"".getBytes(StandardCharsets.US_ASCII);
-    /** What a kept object holds besides its JSON, as {@code ObjectMapping} counts it. */
-    private static final long BYTES_PER_OBJECT = 640;
 
     /** The kept revision: its scene's bytes, its objects' ranges in them, the view's size and the scene. */
     private record Kept(byte[] json, int[] objects, int width, int height, CompiledScene compiled,
@@ -217,14 +215,7 @@ final class SceneReuse implements AutoCloseable {
                 || (objects.length / PER < MIN_OBJECTS && request.scene().length < MIN_BYTES)) {
             return;
         }
-        long triangles = 0;
-        for (int i = 0; i < scene.scene().objectCount(); i++) {
-            if (scene.scene().shape(i) instanceof TriangleMesh mesh) {
-                triangles += mesh.triangleCount();
-            }
-        }
-        MemoryBudget.Reservation held = memory.tryReserve(request.scene().length
-                + BYTES_PER_OBJECT * (objects.length / PER) + MeshCache.BYTES_PER_TRIANGLE * triangles);
+        MemoryBudget.Reservation held = memory.tryReserve(request.scene().length + RenderMemory.sceneBytes(scene.scene()));
         if (held != null) {
             kept.set(new Kept(request.scene(), objects, request.width(), request.height(), scene, held));
             if (closed) {

@@ -30,16 +30,19 @@ public final class RenderMemory {
     }
 
     public static long estimate(CompiledScene compiled) {
-        Scene scene = compiled.scene();
+        long pixels = (long) compiled.settings().width() * compiled.settings().height();
+        return FIXED_BYTES + pixels * BYTES_PER_PIXEL + sceneBytes(compiled.scene());
+    }
+
+    /** What the scene itself holds: its objects and its meshes' triangles (the film and buffers aside). */
+    public static long sceneBytes(Scene scene) {
         long triangles = 0;
         for (int i = 0; i < scene.objectCount(); i++) {
             if (scene.shape(i) instanceof TriangleMesh mesh) {
                 triangles += mesh.triangleCount();
             }
         }
-        long pixels = (long) compiled.settings().width() * compiled.settings().height();
-        return FIXED_BYTES + pixels * BYTES_PER_PIXEL + triangles * BYTES_PER_TRIANGLE
-                + scene.objectCount() * BYTES_PER_OBJECT;
+        return triangles * BYTES_PER_TRIANGLE + scene.objectCount() * BYTES_PER_OBJECT;
     }
 
     /** Bytes as MiB for messages, rounded up. */

@@ -63,7 +63,14 @@ class SceneReuseTest {
     private static final String LIGHT = "{\"type\": \"point\", \"position\": [3, 5, 4]}";
 
     private static PreviewRequest request(long revision, String scene) {
-        return new PreviewRequest(revision, scene.getBytes(StandardCharsets.UTF_8), 48, 36);
+        return request(revision, scene, 48, 36);
+    }
+
+    /** The live view's message for the scene, read as the view reads it (the objects found in the same pass). */
+    private static PreviewRequest request(long revision, String scene, int width, int height) {
+        String message = "{\"revision\": " + revision + ", \"width\": " + width + ", \"height\": " + height
+                + ", \"scene\": " + scene + "}";
+        return PreviewRequest.parse(message.getBytes(StandardCharsets.UTF_8), 2048, 2048);
     }
 
     /** Every bit of every pixel of a small render. */
@@ -124,7 +131,7 @@ class SceneReuseTest {
             CompiledScene grown = reuse.compile(request(3, many), MemoryGate.UNLIMITED, READ);
             assertThat(grown.scene().shape(3)).isNotSameAs(relit.scene().shape(3));
 
-            CompiledScene otherSize = reuse.compile(new PreviewRequest(4, many.getBytes(StandardCharsets.UTF_8), 64, 48),
+            CompiledScene otherSize = reuse.compile(request(4, many, 64, 48),
                     MemoryGate.UNLIMITED, json -> COMPILER.compile(json, Map.of("image.width", 64, "image.height", 48), 1));
             assertThat(otherSize.settings().width()).isEqualTo(64);
             assertThat(reuse.reused()).isZero();
