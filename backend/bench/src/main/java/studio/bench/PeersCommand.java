@@ -75,19 +75,8 @@ public final class PeersCommand {
     }
 
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options o;
-        try {
-            o = Options.parse(args);
-            o.samples.forEach(Renderers::checkSamples);
-            for (String scene : o.scenes) {
-                if (!SCENE_FILES.containsKey(scene)) {
-                    throw new IllegalArgumentException("unknown scene '" + scene + "'; the scenes are "
-                            + String.join(", ", SCENE_FILES.keySet()));
-                }
-            }
-        } catch (IllegalArgumentException e) {
-            err.println("error: " + e.getMessage());
-            err.println(USAGE);
+        Options o = Args.options(args, Options::parse, USAGE, err);
+        if (o == null) {
             return INVALID;
         }
         if (o.help) {
@@ -248,6 +237,13 @@ public final class PeersCommand {
                     case "--sunflow-jar" -> o.sunflowJar = Path.of(Args.value(args, ++i, a));
                     case "--java" -> o.java = Path.of(Args.value(args, ++i, a));
                     default -> throw new IllegalArgumentException("unknown argument " + a);
+                }
+            }
+            o.samples.forEach(Renderers::checkSamples);
+            for (String scene : o.scenes) {
+                if (!SCENE_FILES.containsKey(scene)) {
+                    throw new IllegalArgumentException("unknown scene '" + scene + "'; the scenes are "
+                            + String.join(", ", SCENE_FILES.keySet()));
                 }
             }
             return o;

@@ -48,12 +48,8 @@ public final class BenchCommand {
 
     public static int run(String[] args, PrintStream out, PrintStream err) {
         long start = System.nanoTime();
-        Options options;
-        try {
-            options = Options.parse(args);
-        } catch (IllegalArgumentException e) {
-            err.println("error: " + e.getMessage());
-            err.println(USAGE);
+        Options options = Args.options(args, Options::parse, USAGE, err);
+        if (options == null) {
             return INVALID;
         }
         if (options.help) {

@@ -43,12 +43,8 @@ public final class KernelCommand {
     }
 
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options o;
-        try {
-            o = Options.parse(args);
-        } catch (IllegalArgumentException e) {
-            err.println("error: " + e.getMessage());
-            err.println(USAGE);
+        Options o = Args.options(args, Options::parse, USAGE, err);
+        if (o == null) {
             return INVALID;
         }
         if (o.help) {

@@ -1,5 +1,8 @@
 package studio.server.cli;
 
+import java.io.PrintStream;
+import java.util.function.Function;
+
 /** Reading option values from a command line, for the studio's sub-commands. */
 public final class Args {
 
@@ -35,6 +38,21 @@ public final class Args {
             return n;
         } catch (NumberFormatException e) {
             throw new IllegalArgumentException(option + " needs a positive whole number, not '" + v + "'");
+        }
+    }
+
+    /**
+     * A command's options read by {@code parse}, or null when the command line is not one of its
+     * own ({@code parse} threw IllegalArgumentException): then the error and the usage are on
+     * {@code err}, and the command ends with its exit code for bad arguments.
+     */
+    public static <T> T options(String[] args, Function<String[], T> parse, String usage, PrintStream err) {
+        try {
+            return parse.apply(args);
+        } catch (IllegalArgumentException e) {
+            err.println("error: " + e.getMessage());
+            err.println(usage);
+            return null;
         }
     }
 }

@@ -40,12 +40,8 @@ public final class RenderCommand {
     }
 
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options;
-        try {
-            options = Options.parse(args);
-        } catch (IllegalArgumentException e) {
-            err.println("error: " + e.getMessage());
-            err.println(USAGE);
+        Options options = Args.options(args, Options::parse, USAGE, err);
+        if (options == null) {
             return INVALID;
         }
         if (options.help) {
