@@ -1,5 +1,7 @@
 package studio.engine.camera;
 
+import java.util.Arrays;
+
 import studio.engine.geometry.Ray;
 import studio.engine.math.Vec3;
 
@@ -80,5 +82,21 @@ public final class Camera {
 
     public Vec3 backward() {
         return new Vec3(wx, wy, wz);
+    }
+
+    /** The same position, frame and field of view, to the bit: every pixel's ray is the same. */
+    @Override
+    public boolean equals(Object other) {
+        return other instanceof Camera c && position.equals(c.position)
+                && Arrays.equals(frame(), c.frame());
+    }
+
+    @Override
+    public int hashCode() {
+        return 31 * position.hashCode() + Arrays.hashCode(frame());
+    }
+
+    private double[] frame() {
+        return new double[] {ux, uy, uz, vx, vy, vz, wx, wy, wz, tanHalfFov};
     }
 }

@@ -192,6 +192,18 @@ public final class Box implements Shape {
         return v < -h ? -h : v > h ? h : v;
     }
 
+    /** The same centre, size and rotation, to the bit: the same box (everything else is worked out from them). */
+    @Override
+    public boolean equals(Object other) {
+        return other instanceof Box b && center.equals(b.center) && size.equals(b.size)
+                && rotationDegrees.equals(b.rotationDegrees);
+    }
+
+    @Override
+    public int hashCode() {
+        return java.util.Objects.hash(center, size, rotationDegrees);
+    }
+
     @Override
     public String toString() {
         return "Box[center=" + center + ", size=" + size + ", rotationDegrees=" + rotationDegrees + "]";

@@ -19,19 +19,27 @@ final class FixedSampling implements TileSampling {
     }
 
     @Override
-    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except) {
+    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except, PixelPaths paths) {
         long bad = 0;
         int step = pixels.step(), n = pixelSamples.samplesPerPixel();
         for (int y = pixels.first(tile.y()); y < tile.y() + tile.height(); y += step) {
             for (int x = pixels.first(tile.x()); x < tile.x() + tile.width(); x += step) {
-                if (except != null && except.contains(x, y)) {
+                if (except != null && except.contains(x, y) || paths != null && paths.known(x, y)) {
                     continue;
                 }
                 pixelSamples.startPixel(x, y);
                 pixelSamples.fill(0, n, xs, ys);
+                int p = paths == null ? 0 : paths.index(x, y);
+                if (paths != null) {
+                    paths.start(p);
+                }
+                tracer.recordInto(paths, p);
                 bad += tracer.trace(x, y, xs, ys, 0, n);
                 samples += n;
                 film.set(x, y, tracer.sumR / n, tracer.sumG / n, tracer.sumB / n);
+                if (paths != null) {
+                    paths.finish(p);
+                }
             }
         }
         return bad;

@@ -54,6 +54,9 @@ final class Integrator {
     /** The direct light found by {@link #direct}, and the transmittance by {@link #shadowTransmittance}. */
     private double directR, directG, directB, throughR, throughG, throughB;
     long rays;
+    /** Where the rays of the pixel being traced are recorded (null: nowhere), and that pixel's index. */
+    PixelPaths paths;
+    int pathPixel;
 
     Integrator(Scene scene, int maxDepth, double minPathWeight) {
         this.scene = scene;
@@ -98,8 +101,14 @@ final class Integrator {
         int out = 3 * depth;
         Hit hit = hits[depth];
         if (!scene.intersect(ray, Double.POSITIVE_INFINITY, hit)) {
+            if (paths != null) {
+                paths.record(pathPixel, depth, ray.dx, ray.dy, ray.dz, true);
+            }
             set(out, scene.background());
             return;
+        }
+        if (paths != null) {
+            paths.record(pathPixel, depth, hit.px, hit.py, hit.pz, false);
         }
         Material m = scene.material(hit.primitive);
         if (m.kind() == MaterialKind.FLAT) {

@@ -67,7 +67,7 @@ final class ProgressiveSobolSampling implements TileSampling {
      * tile stops there if all base samples of its 3 x 3 neighbourhood agree, else walks on.
      */
     @Override
-    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except) {
+    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except, PixelPaths paths) {
         int x0 = Math.max(0, tile.x() - 1), y0 = Math.max(0, tile.y() - 1);
         int x1 = Math.min(width, tile.x() + tile.width() + 1), y1 = Math.min(height, tile.y() + tile.height() + 1);
         int stride = x1 - x0;

@@ -80,11 +80,23 @@ public final class Renderer {
      */
     public static RenderResult render(Scene scene, RenderSettings settings, Film film, PixelLattice pixels,
                                      PixelLattice except, RenderListener listener, BooleanSupplier cancelled) {
+        return render(scene, settings, film, pixels, except, null, listener, cancelled);
+    }
+
+    /**
+     * {@link #render(Scene, RenderSettings, Film, PixelLattice, PixelLattice, RenderListener, BooleanSupplier)}
+     * that also leaves out the pixels known to {@code paths} (null: none), which the film holds
+     * from an earlier render of this scene or of one that differs only where those pixels' rays do
+     * not go, and records the rays of the pixels it renders there (see {@link PixelPaths}).
+     */
+    public static RenderResult render(Scene scene, RenderSettings settings, Film film, PixelLattice pixels,
+                                     PixelLattice except, PixelPaths paths, RenderListener listener,
+                                     BooleanSupplier cancelled) {
         if (film.width() != settings.width() || film.height() != settings.height()) {
             throw new IllegalArgumentException("the film is " + film.width() + "x" + film.height()
                     + ", the settings " + settings.width() + "x" + settings.height());
         }
-        TileRenderer.requireLattice(settings, pixels, except);
+        TileRenderer.requireLattice(settings, pixels, except, paths);
         long start = System.nanoTime();
         int tileSize = tileSize(settings.width(), settings.height(), settings.effectiveThreads());
         List<TileRect> tiles = tiles(settings.width(), settings.height(), tileSize);
@@ -114,7 +126,7 @@ public final class Renderer {
                         TileRenderer worker = workers.get();
                         long raysBefore = worker.rays(), samplesBefore = worker.samples();
                         long cpuBefore = THREADS.getCurrentThreadCpuTime();
-                        long bad = worker.render(film, tile, pixels, except);
+                        long bad = worker.render(film, tile, pixels, except, paths);
                         cpuNanos.add(THREADS.getCurrentThreadCpuTime() - cpuBefore);
                         rays.add(worker.rays() - raysBefore);
                         samples.add(worker.samples() - samplesBefore);

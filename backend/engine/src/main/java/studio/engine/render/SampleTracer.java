@@ -32,6 +32,12 @@ final class SampleTracer {
         aspect = (double) width / height;
     }
 
+    /** Records the rays of the next samples as pixel p's in {@code paths} (null: nowhere). */
+    void recordInto(PixelPaths paths, int p) {
+        integrator.paths = paths;
+        integrator.pathPixel = p;
+    }
+
     /** Rays traced so far. */
     long rays() {
         return integrator.rays;

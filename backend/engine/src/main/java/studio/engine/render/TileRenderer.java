@@ -41,7 +41,7 @@ public final class TileRenderer {
      * @throws RenderCancelledException once this worker's render is stopped
      */
     public long render(Film film, TileRect tile) {
-        return sampling.render(film, tile, PixelLattice.ALL, null);
+        return sampling.render(film, tile, PixelLattice.ALL, null, null);
     }
 
     /**
@@ -52,14 +52,33 @@ public final class TileRenderer {
      * @throws RenderCancelledException once this worker's render is stopped
      */
     public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except) {
-        requireLattice(settings, pixels, except);
-        return sampling.render(film, tile, pixels, except);
+        return render(film, tile, pixels, except, null);
     }
 
-    /** @throws IllegalArgumentException unless the pixels are every pixel or the sampling is fixed */
-    static void requireLattice(RenderSettings settings, PixelLattice pixels, PixelLattice except) {
-        if (settings.adaptive() && (!pixels.equals(PixelLattice.ALL) || except != null)) {
+    /**
+     * Renders the tile's pixels on {@code pixels}, not on {@code except} (null: none) and not known
+     * to {@code paths} (null: none) into the film, recording the rendered pixels' rays in
+     * {@code paths}; the film's other pixels are left as they are.
+     *
+     * @throws IllegalArgumentException under adaptive sampling, which renders every pixel
+     * @throws RenderCancelledException once this worker's render is stopped
+     */
+    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except, PixelPaths paths) {
+        requireLattice(settings, pixels, except, paths);
+        return sampling.render(film, tile, pixels, except, paths);
+    }
+
+    /**
+     * @throws IllegalArgumentException unless the pixels are every pixel and none are kept, or the
+     *                                  sampling is fixed; or if the paths are not the settings' size
+     */
+    static void requireLattice(RenderSettings settings, PixelLattice pixels, PixelLattice except, PixelPaths paths) {
+        if (settings.adaptive() && (!pixels.equals(PixelLattice.ALL) || except != null || paths != null)) {
             throw new IllegalArgumentException("adaptive sampling renders every pixel");
+        }
+        if (paths != null && (paths.width() != settings.width() || paths.height() != settings.height())) {
+            throw new IllegalArgumentException("the pixel paths are " + paths.width() + "x" + paths.height()
+                    + ", the settings " + settings.width() + "x" + settings.height());
         }
     }
 

@@ -11,12 +11,13 @@ sealed interface TileSampling permits FixedSampling, BatchAdaptiveSampling, Prog
 
     /**
      * Renders the tile's pixels on {@code pixels} and not on {@code except} (null: none) into
-     * the film.
+     * the film; with {@code paths} (fixed sampling only; null: none), only the pixels not known
+     * there, recording their rays.
      *
      * @return how many samples came out non-finite
      * @throws RenderCancelledException once the render's stop signal is raised
      */
-    long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except);
+    long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except, PixelPaths paths);
 
     /** Camera samples taken so far. */
     long samples();

@@ -13,6 +13,7 @@ import org.springframework.web.ErrorResponse;
 
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.Film;
+import studio.engine.render.PixelPaths;
 import studio.engine.render.RenderResult;
 import studio.engine.render.RenderSettings;
 import studio.server.render.RenderBudget;
@@ -94,15 +95,16 @@ final class PreviewRenderer {
 
     /**
      * Renders one pass into {@code film} (of the pass's settings, its memory reserved by
-     * {@link #reserve}) and encodes the pass's pixels as a frame message.
+     * {@link #reserve}), leaving out the pixels known to {@code paths} (null: none) and recording
+     * the others' there, and encodes the pass's pixels as a frame message.
      *
      * @throws studio.engine.render.RenderCancelledException when {@code superseded} turns true first
      * @throws studio.server.render.RenderTimeExceededException past the render time budget
      */
-    byte[] render(CompiledScene scene, PreviewPass pass, Film film, long revision, long receivedNanos,
-                  BooleanSupplier superseded) {
+    byte[] render(CompiledScene scene, PreviewPass pass, Film film, PixelPaths paths, long revision,
+                  long receivedNanos, BooleanSupplier superseded) {
         RenderResult rendered = budget.render(passScene(scene, pass.settings()), film, pass.pixels(), pass.except(),
-                superseded);
+                paths, superseded);
         budget.metrics().rendered(RenderMetrics.Kind.LIVE_VIEW, rendered);
         try {
             ByteArrayOutputStream image = new ByteArrayOutputStream();

@@ -1,6 +1,7 @@
 package studio.server.preview;
 
 import java.io.IOException;
+import java.util.List;
 import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -11,6 +12,7 @@ import org.springframework.web.ErrorResponseException;
 
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
+import studio.engine.render.RenderSettings;
 import studio.server.render.RenderTimeExceededException;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.format.InvalidSceneException;
@@ -63,12 +65,15 @@ final class PreviewSession {
     private long lastRevision = -1;
     /** The last scene read, to read the next revision from where only some objects changed. */
     private final SceneReuse reuse;
+    /** The one-sample film, kept to render only what the next edit can reach. */
+    private final KeptFilm keptFilm;
 
     PreviewSession(PreviewRenderer renderer, Executor worker, Output output) {
         this.renderer = renderer;
         this.worker = worker;
         this.output = output;
         this.reuse = new SceneReuse(renderer.memory());
+        this.keptFilm = new KeptFilm(renderer.memory());
     }
 
     /**
@@ -98,6 +103,7 @@ final class PreviewSession {
     void close() {
         closed = true;
         reuse.close();
+        keptFilm.close();
         Pending dropped = pending.getAndSet(null);
         if (dropped != null) {
             dropped.memory().close();
@@ -163,10 +169,21 @@ final class PreviewSession {
         } finally {
             next.memory().close(); // the passes reserve their own render memory, which counts the scene
         }
+        List<PreviewPass> passes = PreviewPass.plan(scene.settings());
+        // the one-sample passes render into the kept film, only where the edit reaches, unless the
+        // last of them is the final frame, which is always rendered afresh
+        RenderSettings oneSample = passes.get(0).settings();
+        boolean finalIsOneSample = passes.get(passes.size() - 1).settings().equals(oneSample);
+        KeptFilm.Kept kept = null;
+        if (finalIsOneSample) {
+            keptFilm.drop();
+        } else {
+            kept = keptFilm.prepare(scene.scene(), oneSample);
+        }
         Film film = null;
-        MemoryBudget.Reservation filmMemory = null;
+        MemoryBudget.Reservation passMemory = null;
         try {
-            for (PreviewPass pass : PreviewPass.plan(scene.settings())) {
+            for (PreviewPass pass : passes) {
                 // the first, coarsest pass is shown even if a newer revision is waiting: it costs little
                 // next to reading the scene, and in a drag over a scene that takes longer to read than
                 // the drag's steps, every revision would otherwise be dropped unseen until the drag stops
@@ -174,23 +191,24 @@ final class PreviewSession {
                 if (!first && superseded()) {
                     return;
                 }
+                boolean intoKept = kept != null && !pass.last();
                 byte[] frame;
                 try {
-                    if (film == null || pass.except() == null) {
-                        // a new film (the mosaic's, then the target's): its memory first
-                        if (filmMemory != null) {
-                            filmMemory.close();
+                    if (first || pass.except() == null) {
+                        // the mosaic's passes, then the target's: their memory first
+                        if (passMemory != null) {
+                            passMemory.close();
                         }
-                        filmMemory = renderer.reserve(scene, pass.settings());
-                        if (filmMemory == null) {
+                        passMemory = renderer.reserve(scene, pass.settings());
+                        if (passMemory == null) {
                             output.text(renderer.problem(request.revision(), HttpStatus.SERVICE_UNAVAILABLE,
                                     "Service Unavailable", BUSY));
                             return;
                         }
-                        film = new Film(pass.settings().width(), pass.settings().height());
+                        film = intoKept ? kept.film() : new Film(pass.settings().width(), pass.settings().height());
                     }
-                    frame = renderer.render(scene, pass, film, request.revision(), next.receivedNanos(),
-                            first ? this::closed : this::superseded);
+                    frame = renderer.render(scene, pass, film, intoKept ? kept.paths() : null, request.revision(),
+                            next.receivedNanos(), first ? this::closed : this::superseded);
                 } catch (RenderCancelledException e) {
                     return;
                 } catch (RenderTimeExceededException | InvalidSceneException e) {
@@ -201,8 +219,8 @@ final class PreviewSession {
                 output.frame(frame);
             }
         } finally {
-            if (filmMemory != null) {
-                filmMemory.close();
+            if (passMemory != null) {
+                passMemory.close();
             }
         }
     }

@@ -6,6 +6,7 @@ import java.util.function.Function;
 
 import studio.engine.render.Film;
 import studio.engine.render.PixelLattice;
+import studio.engine.render.PixelPaths;
 import studio.engine.render.RenderCancelledException;
 import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
@@ -108,8 +109,18 @@ public final class RenderBudget {
      */
     public RenderResult render(CompiledScene scene, Film film, PixelLattice pixels, PixelLattice except,
                                BooleanSupplier cancelled) {
+        return render(scene, film, pixels, except, null, cancelled);
+    }
+
+    /**
+     * {@link #render(CompiledScene, Film, PixelLattice, PixelLattice, BooleanSupplier)} leaving out
+     * the pixels known to {@code paths} (null: none) and recording the others' paths there (see
+     * {@link studio.engine.render.PixelPaths}).
+     */
+    public RenderResult render(CompiledScene scene, Film film, PixelLattice pixels, PixelLattice except,
+                               PixelPaths paths, BooleanSupplier cancelled) {
         return withinTime(cancelled, stop -> Renderer.render(scene.scene(), scene.settings(), film, pixels, except,
-                RenderListener.NONE, stop));
+                paths, RenderListener.NONE, stop));
     }
 
     /**

@@ -92,6 +92,46 @@ class PreviewApiTest {
         }
     }
 
+    /** The revision's full-size one-sample frame (pass 4 at a 320x240 view), once it has arrived. */
+    private static PreviewClient.Frame oneSampleFrame(PreviewClient client, long revision) {
+        for (PreviewClient.Frame frame : client.frames) {
+            if (frame.header().get("revision").asLong() == revision && frame.header().get("pass").asInt() == 4) {
+                return frame;
+            }
+        }
+        return null;
+    }
+
+    @Test
+    void anEditRendersAgainOnlyWhatItReachesAndShowsWhatAFreshViewShows() throws Exception {
+        // opaque (a pixel that sees glass is rendered every time), and a final pass of seconds, so
+        // that the rays counted when the one-sample frame arrives are the one-sample passes'
+        String opaque = SCENE.replace("\"glass\"", "\"plastic\"")
+                .replace("\"samples\": 16", "\"samples\": 256, \"adaptive\": 0");
+        String moved = opaque.replace("\"center\": [2, 0.5, 0]", "\"center\": [2.2, 0.5, 0.1]");
+        io.micrometer.core.instrument.Counter rays = metrics.get("studio.rays").tag("kind", "live_view").counter();
+        byte[] editedFrame, freshFrame;
+        double editedRays, freshRays;
+        try (PreviewClient edited = new PreviewClient(port)) {
+            edited.send(1, opaque, 320, 240);
+            Await.until("the one-sample frame", 30_000, () -> oneSampleFrame(edited, 1) != null);
+            double before = rays.count();
+            edited.send(2, moved, 320, 240);
+            Await.until("the edit's one-sample frame", 30_000, () -> oneSampleFrame(edited, 2) != null);
+            editedRays = rays.count() - before;
+            editedFrame = oneSampleFrame(edited, 2).image();
+        }
+        try (PreviewClient fresh = new PreviewClient(port)) {
+            double before = rays.count();
+            fresh.send(1, moved, 320, 240);
+            Await.until("the one-sample frame", 30_000, () -> oneSampleFrame(fresh, 1) != null);
+            freshRays = rays.count() - before;
+            freshFrame = oneSampleFrame(fresh, 1).image();
+        }
+        assertArrayEquals(freshFrame, editedFrame, "the same frame, to the byte");
+        assertTrue(editedRays > 0 && editedRays < freshRays / 2, "rays " + editedRays + " against " + freshRays);
+    }
+
     @Test
     void passesAreCountedAsLiveViewRendersAndOpenViewsAsSessions() throws Exception {
         Timer liveView = metrics.get("studio.render").tag("kind", "live_view").timer();

@@ -1,0 +1,363 @@
+package studio.engine.render;
+
+import java.util.Arrays;
+import java.util.List;
+
+import studio.engine.accel.Aabb;
+import studio.engine.light.PointLight;
+import studio.engine.math.Vec3;
+
+/**
+ * Where each pixel's rays went in a render of one sample a pixel, kept with its film so that a
+ * render of an edited scene into the same film can keep every pixel the edit cannot reach and
+ * render only the others (a live view's drag moves one object; most of the image stays as it
+ * was).
+ *
+ * <p>A pixel's one sample is a chain of rays: the camera ray, then what a mirror reflects, up to
+ * {@value #MAX_POINTS} rays. Kept are the points where they end (a hit, or for a ray that leaves
+ * the scene its direction), as floats. Its value depends only on the objects those rays and the
+ * shadow rays from each hit point to each light meet, so it stays the same when every changed
+ * object (before and after the change) lies off all of those segments: {@link #forget} tests
+ * them against the changed objects' boxes, widened far beyond the floats' rounding. A pixel whose
+ * rays branch (glass both reflects and refracts), that traces a longer chain, or that takes more
+ * than one sample is not kept: it is rendered every time.
+ *
+ * <p>The hit chosen among near-ties ({@link studio.engine.scene.Scene#TIE}) does not depend on
+ * the scene's tree for hits that form separate clusters, so a kept pixel is the pixel a render of
+ * the edited scene gives, to the bit (PixelPathsTest renders both and compares).
+ *
+ * <p>{@link #forget} only notes an edit; each pixel is tested against the edits made since its
+ * render when a render next comes to it (in the render's threads, and only for the pixels that
+ * render asks for: a coarse pass of a live view tests one pixel in 64). At most
+ * {@value #MAX_EDITS} edits are noted: a pixel older than those is rendered again. Each pixel is
+ * written by the one thread that renders it; {@link #forget} and {@link #forgetAll} run between
+ * renders.
+ */
+public final class PixelPaths {
+
+    /** The longest chain of rays a kept pixel may trace. */
+    public static final int MAX_POINTS = 3;
+    /** Bytes per pixel: the points' floats, a state byte and the edit it was last tested against. */
+    public static final int BYTES_PER_PIXEL = 3 * 4 * MAX_POINTS + 1 + 4;
+    /** Edits noted and not yet tested on every pixel: a pixel rendered before the oldest is forgotten. */
+    static final int MAX_EDITS = 8;
+
+    /** Not rendered since it was forgotten (or never): the next render renders it. */
+    private static final byte UNKNOWN = -1;
+    /** Being rendered, and its rays do not form a chain that can be kept. */
+    private static final byte UNKEPT = -2;
+    /** In a state of 1 or more: the low bits count the points, this bit marks the last as a direction. */
+    private static final int MISS = 8;
+    private static final int COUNT = 7;
+    /** The segments' margin as a share of the largest coordinate involved (floats round to 6e-8 of it). */
+    private static final double MARGIN = 1e-5;
+
+    private final int width, height;
+    private final float[] points;
+    private final byte[] state;
+    /** Per pixel, the edit number it was rendered at or last tested against. */
+    private final int[] tested;
+    /** The edits noted, oldest first, numbered {@code edit - edits.length + 1 .. edit}. */
+    private Edit[] edits = new Edit[0];
+    /** The number of the last edit noted; pixels tested against it are up to date. */
+    private int edit;
+
+    public PixelPaths(int width, int height) {
+        if (width < 1 || height < 1) {
+            throw new IllegalArgumentException("pixel paths need at least 1x1 pixels: " + width + "x" + height);
+        }
+        this.width = width;
+        this.height = height;
+        this.points = new float[3 * MAX_POINTS * width * height];
+        this.state = new byte[width * height];
+        this.tested = new int[width * height];
+        Arrays.fill(state, UNKNOWN);
+    }
+
+    /** The memory of the paths of width x height pixels, in bytes. */
+    public static long bytes(int width, int height) {
+        return (long) BYTES_PER_PIXEL * width * height;
+    }
+
+    public int width() {
+        return width;
+    }
+
+    public int height() {
+        return height;
+    }
+
+    /**
+     * Whether pixel (x, y) holds a kept render that no edit since has reached, testing it against
+     * the edits noted since (and forgetting it if one may reach it).
+     */
+    public boolean known(int x, int y) {
+        return known(y * width + x);
+    }
+
+    private boolean known(int p) {
+        int s = state[p];
+        if (s <= 0) {
+            return false;
+        }
+        int since = tested[p];
+        if (since == edit) {
+            return true;
+        }
+        int first = edit - edits.length + 1;
+        if (since < first - 1) {
+            state[p] = UNKNOWN; // older than the edits noted
+            return false;
+        }
+        for (int e = since + 1; e <= edit; e++) {
+            if (edits[e - first].reaches(this, p, s)) {
+                state[p] = UNKNOWN;
+                return false;
+            }
+        }
+        tested[p] = edit;
+        return true;
+    }
+
+    /** How many pixels are known, each tested against the edits noted (a scan of them all, for tests and figures). */
+    public int knownCount() {
+        int known = 0;
+        for (int p = 0; p < state.length; p++) {
+            if (known(p)) {
+                known++;
+            }
+        }
+        return known;
+    }
+
+    /** Forgets every pixel: after an edit that may reach all of them (the camera, a light, the size). */
+    public void forgetAll() {
+        Arrays.fill(state, UNKNOWN);
+        edits = new Edit[0];
+    }
+
+    /**
+     * Notes an edit: a known pixel is forgotten (when a render next asks for it) if one of the
+     * boxes may change it: if its camera ray, its later rays or a shadow ray from one of its hit
+     * points to a light may meet a box.
+     *
+     * @param boxes  the changed objects' boxes, each object's before and after the edit (bounded)
+     * @param camera the camera's position, where every pixel's first ray starts
+     * @param lights the scene's lights (unchanged by the edit)
+     */
+    public void forget(List<Aabb> boxes, Vec3 camera, List<PointLight> lights) {
+        if (boxes.isEmpty()) {
+            return;
+        }
+        double[] box = new double[6 * (boxes.size() + 1)];
+        double scale = Math.max(Math.abs(camera.x()), Math.max(Math.abs(camera.y()), Math.abs(camera.z())));
+        for (int i = 0; i < boxes.size(); i++) {
+            Aabb b = boxes.get(i);
+            if (!b.isBounded()) {
+                throw new IllegalArgumentException("an unbounded object's edit reaches every pixel: forget them all");
+            }
+            b.copyTo(box, 6 * (i + 1));
+        }
+        // box 0: the union, tested first
+        for (int k = 0; k < 3; k++) {
+            double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
+            for (int i = 1; i <= boxes.size(); i++) {
+                min = Math.min(min, box[6 * i + k]);
+                max = Math.max(max, box[6 * i + k + 3]);
+            }
+            box[k] = min;
+            box[k + 3] = max;
+            scale = Math.max(scale, Math.max(Math.abs(min), Math.abs(max)));
+        }
+        double[] light = new double[3 * lights.size()];
+        for (int i = 0; i < lights.size(); i++) {
+            Vec3 at = lights.get(i).position();
+            light[3 * i] = at.x();
+            light[3 * i + 1] = at.y();
+            light[3 * i + 2] = at.z();
+            scale = Math.max(scale, Math.max(Math.abs(at.x()), Math.max(Math.abs(at.y()), Math.abs(at.z()))));
+        }
+        Reach reach = new Reach(box, boxes.size() > 1, scale);
+        Cone[] cones = new Cone[1 + lights.size()];
+        cones[0] = Cone.of(camera.x(), camera.y(), camera.z(), box, scale);
+        for (int l = 0; l < lights.size(); l++) {
+            cones[1 + l] = Cone.of(light[3 * l], light[3 * l + 1], light[3 * l + 2], box, scale);
+        }
+        int kept = Math.min(edits.length, MAX_EDITS - 1);
+        Edit[] next = Arrays.copyOfRange(edits, edits.length - kept, edits.length + 1);
+        next[kept] = new Edit(reach, cones, camera.x(), camera.y(), camera.z(), light);
+        edits = next;
+        edit++;
+    }
+
+    /** One edit noted: its boxes, the cones around them from the camera and each light, and where those are. */
+    private record Edit(Reach reach, Cone[] cones, double cx, double cy, double cz, double[] light) {
+
+        /** Whether pixel p's rays (state s) may meet one of the edit's boxes. */
+        boolean reaches(PixelPaths paths, int p, int s) {
+            return paths.reaches(reach, cones, p, s, cx, cy, cz, light);
+        }
+    }
+
+    /** Whether pixel p's rays (state s) may meet a changed box. */
+    private boolean reaches(Reach reach, Cone[] cones, int p, int s, double ax, double ay, double az,
+                            double[] light) {
+        int count = s & COUNT;
+        boolean lastMisses = (s & MISS) != 0;
+        int o = 3 * MAX_POINTS * p;
+        for (int i = 0; i < count; i++, o += 3) {
+            double bx = points[o], by = points[o + 1], bz = points[o + 2];
+            if (i == count - 1 && lastMisses) {
+                return reach.meets(ax, ay, az, bx, by, bz, Double.POSITIVE_INFINITY);
+            }
+            if ((i > 0 || cones[0].mayMeet(bx, by, bz)) && reach.meets(ax, ay, az, bx - ax, by - ay, bz - az, 1)) {
+                return true;
+            }
+            for (int l = 0; l < light.length; l += 3) {
+                if (cones[1 + l / 3].mayMeet(bx, by, bz)
+                        && reach.meets(bx, by, bz, light[l] - bx, light[l + 1] - by, light[l + 2] - bz, 1)) {
+                    return true;
+                }
+            }
+            ax = bx;
+            ay = by;
+            az = bz;
+        }
+        return false;
+    }
+
+    /** Starts recording pixel p's rays (the renderer, before its samples). */
+    void start(int p) {
+        state[p] = 0;
+    }
+
+    /**
+     * Records where a ray at recursion {@code depth} of the pixel being rendered ended: its hit
+     * point, or with {@code miss} its direction.
+     */
+    void record(int p, int depth, double x, double y, double z, boolean miss) {
+        int s = state[p];
+        if (s < 0) {
+            return;
+        }
+        int count = s & COUNT;
+        if (depth != count || count == MAX_POINTS || (s & MISS) != 0) {
+            state[p] = UNKEPT; // a branch, a second sample, or a longer chain
+            return;
+        }
+        int o = 3 * (MAX_POINTS * p + count);
+        points[o] = (float) x;
+        points[o + 1] = (float) y;
+        points[o + 2] = (float) z;
+        state[p] = (byte) ((count + 1) | (miss ? MISS : 0));
+    }
+
+    /** Ends pixel p's recording once its value is in the film: known if its rays were kept. */
+    void finish(int p) {
+        if (state[p] <= 0) {
+            state[p] = UNKNOWN;
+        } else {
+            tested[p] = edit;
+        }
+    }
+
+    int index(int x, int y) {
+        return y * width + x;
+    }
+
+    /**
+     * A quick first test of the segments from one point (the camera, a light) to the pixels' hit
+     * points against the changed objects: the cone from the point around a sphere that holds the
+     * union box, widened past {@link Reach}'s margin and the floats' rounding (a hit point kept as
+     * floats is off by at most 1.2e-7 of its largest coordinate; seen from the apex at least half
+     * the sphere's distance away, that turns the segment by less than the widening). A segment
+     * that leaves the cone, or ends before the sphere, cannot meet the boxes; one inside is tested
+     * exactly. Without a cone (the apex within twice the sphere's radius) every segment is.
+     */
+    private record Cone(double ax, double ay, double az, double wx, double wy, double wz, double k, double minLength2,
+                        boolean active) {
+
+        static Cone of(double ax, double ay, double az, double[] union, double scale) {
+            double cx = (union[0] + union[3]) / 2, cy = (union[1] + union[4]) / 2, cz = (union[2] + union[5]) / 2;
+            double hx = (union[3] - union[0]) / 2, hy = (union[4] - union[1]) / 2, hz = (union[5] - union[2]) / 2;
+            double radius = Math.sqrt(hx * hx + hy * hy + hz * hz) * (1 + 1e-9)
+                    + 2 * MARGIN * (1 + scale + Math.abs(ax) + Math.abs(ay) + Math.abs(az));
+            double wx = cx - ax, wy = cy - ay, wz = cz - az;
+            double d2 = wx * wx + wy * wy + wz * wz, d = Math.sqrt(d2);
+            boolean active = d > 2 * radius;
+            return new Cone(ax, ay, az, wx, wy, wz, d2 - radius * radius, active ? (d - radius) * (d - radius) : 0,
+                    active);
+        }
+
+        /** Whether the segment from the apex to (px, py, pz) may meet the sphere. */
+        boolean mayMeet(double px, double py, double pz) {
+            if (!active) {
+                return true;
+            }
+            double vx = px - ax, vy = py - ay, vz = pz - az;
+            double dot = vx * wx + vy * wy + vz * wz;
+            double v2 = vx * vx + vy * vy + vz * vz;
+            return dot > 0 && dot * dot >= v2 * k && v2 >= minLength2;
+        }
+    }
+
+    /**
+     * The changed boxes (the union first, then each, if more than one), and the test of a segment
+     * or ray against them, conservative: a box is widened by a margin far beyond the rounding of
+     * the floats the points are kept in, and a NaN distance (a point on a box's plane with a zero
+     * direction component) counts as inside.
+     */
+    private record Reach(double[] box, boolean several, double scale) {
+
+        /** Whether a + t d, 0 &lt;= t &lt;= tMax, may meet a changed box. */
+        boolean meets(double ax, double ay, double az, double dx, double dy, double dz, double tMax) {
+            double size = Math.max(scale, Math.max(Math.abs(ax), Math.max(Math.abs(ay), Math.abs(az))));
+            if (tMax == 1) {
+                size = Math.max(size, Math.max(Math.abs(ax + dx), Math.max(Math.abs(ay + dy), Math.abs(az + dz))));
+            }
+            double margin = MARGIN * (1 + size);
+            if (!meets(0, ax, ay, az, dx, dy, dz, tMax, margin)) {
+                return false;
+            }
+            if (!several) {
+                return true;
+            }
+            for (int o = 6; o < box.length; o += 6) {
+                if (meets(o, ax, ay, az, dx, dy, dz, tMax, margin)) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        private boolean meets(int o, double ax, double ay, double az, double dx, double dy, double dz, double tMax,
+                              double margin) {
+            double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+            double x0 = (box[o] - margin - ax) * ix, x1 = (box[o + 3] + margin - ax) * ix;
+            double y0 = (box[o + 1] - margin - ay) * iy, y1 = (box[o + 4] + margin - ay) * iy;
+            double z0 = (box[o + 2] - margin - az) * iz, z1 = (box[o + 5] + margin - az) * iz;
+            // a NaN (0 times infinity: a point on a plane of the box, moving along it) fails every
+            // comparison and so leaves the ray inside that slab
+            double near = 0, far = tMax;
+            if (Math.min(x0, x1) > near) {
+                near = Math.min(x0, x1);
+            }
+            if (Math.max(x0, x1) < far) {
+                far = Math.max(x0, x1);
+            }
+            if (Math.min(y0, y1) > near) {
+                near = Math.min(y0, y1);
+            }
+            if (Math.max(y0, y1) < far) {
+                far = Math.max(y0, y1);
+            }
+            if (Math.min(z0, z1) > near) {
+                near = Math.min(z0, z1);
+            }
+            if (Math.max(z0, z1) < far) {
+                far = Math.max(z0, z1);
+            }
+            return !(near > far);
+        }
+    }
+}

@@ -1,0 +1,274 @@
+package studio.engine.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.UnaryOperator;
+
+import org.junit.jupiter.api.Test;
+
+import studio.engine.accel.Aabb;
+import studio.engine.camera.Camera;
+import studio.engine.geometry.Box;
+import studio.engine.geometry.Sphere;
+import studio.engine.light.PointLight;
+import studio.engine.material.MaterialDefaults;
+import studio.engine.material.MaterialKind;
+import studio.engine.math.Rgb;
+import studio.engine.math.Vec3;
+import studio.engine.sampler.Sampler;
+import studio.engine.scene.Scene;
+import studio.engine.scene.SceneEdit;
+import studio.engine.scene.SceneObject;
+
+/**
+ * A one-sample film kept with its pixels' paths and rendered again after an edit, only where the
+ * edit can reach, comes out as a fresh render of the edited scene, to the bit: the scene is 60
+ * small spheres and boxes (chalk, plastic, metal and mirrors) over a floor under three lights,
+ * edited as a live view edits it (moving objects, a mirror among them, changing a colour).
+ */
+class PixelPathsTest {
+
+    private static final int WIDTH = 96, HEIGHT = 72;
+
+    private static RenderSettings oneSample() {
+        return new RenderSettings(WIDTH, HEIGHT, Sampler.of("sobol", 1), 4, 2, 42L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
+    }
+
+    private static List<SceneObject> objects(Scene scene) {
+        List<SceneObject> objects = new ArrayList<>();
+        for (int i = 0; i < scene.objectCount(); i++) {
+            objects.add(new SceneObject(scene.shape(i), scene.material(i)));
+        }
+        return objects;
+    }
+
+    private static Scene edited(Scene scene, int index, UnaryOperator<SceneObject> edit) {
+        List<SceneObject> objects = objects(scene);
+        objects.set(index, edit.apply(objects.get(index)));
+        return new Scene(scene.camera(), objects, scene.lights(), scene.background(), scene.ambient());
+    }
+
+    private static SceneObject moved(SceneObject object, Vec3 by) {
+        if (object.shape() instanceof Sphere s) {
+            return new SceneObject(new Sphere(s.center().plus(by), s.radius()), object.material());
+        }
+        Box b = (Box) object.shape();
+        return new SceneObject(new Box(b.center().plus(by), b.size(), b.rotationDegrees()), object.material());
+    }
+
+    private static RenderResult render(Scene scene, Film film, PixelPaths paths) {
+        return Renderer.render(scene, oneSample(), film, PixelLattice.ALL, null, paths, RenderListener.NONE,
+                () -> false);
+    }
+
+    private static int firstOf(Scene scene, MaterialKind kind) {
+        for (int i = 0; i < scene.objectCount(); i++) {
+            if (scene.material(i).kind() == kind && scene.shape(i) instanceof Sphere) {
+                return i;
+            }
+        }
+        throw new AssertionError("no sphere of " + kind);
+    }
+
+    /**
+     * Renders {@code before} with paths, forgets what the edit to {@code after} reaches, renders
+     * {@code after} into the same film, and compares with a fresh render of {@code after}.
+     *
+     * @return the share of pixels kept
+     */
+    private static double keptAfterEdit(Scene before, Scene after) {
+        Film film = new Film(WIDTH, HEIGHT);
+        PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
+        render(before, film, paths);
+        List<Aabb> boxes = SceneEdit.changedBoxes(before, after);
+        paths.forget(boxes, after.camera().position(), after.lights());
+        int kept = paths.knownCount();
+        RenderResult again = render(after, film, paths);
+
+        Film fresh = Renderer.render(after, oneSample()).film();
+        for (int y = 0; y < HEIGHT; y++) {
+            for (int x = 0; x < WIDTH; x++) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(fresh.get(x, y, c), film.get(x, y, c), "pixel " + x + "," + y);
+                }
+            }
+        }
+        assertEquals(WIDTH * HEIGHT - kept, again.samplesTaken(), "only the forgotten pixels are rendered");
+        return (double) kept / (WIDTH * HEIGHT);
+    }
+
+    @Test
+    void aMovedSphereLeavesTheRestOfTheImage() {
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        int plastic = firstOf(scene, MaterialKind.PLASTIC);
+        double kept = keptAfterEdit(scene, edited(scene, plastic, o -> moved(o, new Vec3(0.15, 0.05, 0))));
+        assertTrue(kept > 0.5 && kept < 1, "kept " + kept);
+    }
+
+    @Test
+    void aMovedMirrorChangesWhatItReflectsAndNothingElse() {
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        int mirror = firstOf(scene, MaterialKind.MIRROR);
+        double kept = keptAfterEdit(scene, edited(scene, mirror, o -> moved(o, new Vec3(-0.2, 0, 0.1))));
+        assertTrue(kept > 0.5 && kept < 1, "kept " + kept);
+    }
+
+    @Test
+    void aBoxMovedIntoTheLightAndAColourChanged() {
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        Scene movedBox = edited(scene, 1, o -> moved(o, new Vec3(0, 0.4, 0.3)));
+        assertTrue(keptAfterEdit(scene, movedBox) < 1);
+        int metal = firstOf(scene, MaterialKind.METAL);
+        Scene recoloured = edited(scene, metal, o -> new SceneObject(o.shape(),
+                MaterialDefaults.of(MaterialKind.METAL, new Rgb(0.9, 0.1, 0.1))));
+        assertTrue(keptAfterEdit(scene, recoloured) < 1);
+    }
+
+    @Test
+    void keptPixelsWouldBeWrongWithoutForgetting() {
+        // the check above can fail: keeping every pixel through the same edit gives another image
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        Scene after = edited(scene, firstOf(scene, MaterialKind.MIRROR), o -> moved(o, new Vec3(-0.2, 0, 0.1)));
+        Film film = new Film(WIDTH, HEIGHT);
+        PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
+        render(scene, film, paths);
+        RenderResult again = render(after, film, paths);
+        assertTrue(again.samplesTaken() < WIDTH * HEIGHT / 10, "nearly every pixel kept: " + again.samplesTaken());
+        assertNotEquals(SampledImagesUnchangedTest.fingerprint(Renderer.render(after, oneSample()).film()),
+                SampledImagesUnchangedTest.fingerprint(film));
+    }
+
+    @Test
+    void theMosaicsLatticesRenderIntoKeptPathsAsAWholeRender() {
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        Film film = new Film(WIDTH, HEIGHT);
+        PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
+        PixelLattice before = null;
+        for (PixelLattice lattice : List.of(new PixelLattice(8, 4), new PixelLattice(4, 0), new PixelLattice(2, 0),
+                PixelLattice.ALL)) {
+            Renderer.render(scene, oneSample(), film, lattice, before, paths, RenderListener.NONE, () -> false);
+            before = lattice;
+        }
+        assertEquals(SampledImagesUnchangedTest.fingerprint(Renderer.render(scene, oneSample()).film()),
+                SampledImagesUnchangedTest.fingerprint(film));
+        assertTrue(paths.knownCount() > WIDTH * HEIGHT * 9 / 10, "known " + paths.knownCount());
+    }
+
+    @Test
+    void glassAndSeveralSamplesAreNotKept() {
+        Scene opaque = OpaqueShadowsUnchangedTest.scene();
+        List<SceneObject> objects = objects(opaque);
+        objects.add(new SceneObject(new Sphere(new Vec3(0, 1, 0), 1.2),
+                MaterialDefaults.of(MaterialKind.GLASS, Rgb.WHITE)));
+        Scene glass = new Scene(opaque.camera(), objects, opaque.lights(), opaque.background(), opaque.ambient());
+        PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
+        render(glass, new Film(WIDTH, HEIGHT), paths);
+        int centre = 0;
+        for (int y = HEIGHT / 2 - 2; y <= HEIGHT / 2 + 2; y++) {
+            for (int x = WIDTH / 2 - 2; x <= WIDTH / 2 + 2; x++) {
+                centre += paths.known(x, y) ? 1 : 0;
+            }
+        }
+        assertEquals(0, centre, "a pixel seeing the glass ball branches and is not kept");
+        assertTrue(paths.knownCount() > 0);
+
+        RenderSettings four = new RenderSettings(WIDTH, HEIGHT, Sampler.of("sobol", 4), 4, 2, 42L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
+        PixelPaths fourSamples = new PixelPaths(WIDTH, HEIGHT);
+        Renderer.render(opaque, four, new Film(WIDTH, HEIGHT), PixelLattice.ALL, null, fourSamples,
+                RenderListener.NONE, () -> false);
+        assertEquals(0, fourSamples.knownCount());
+    }
+
+    @Test
+    void editsThatReachEveryPixel() {
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        Camera turned = new Camera(new Vec3(0.1, 2.5, 5), new Vec3(0, 0.8, -0.5), new Vec3(0, 1, 0), 50);
+        assertNull(SceneEdit.changedBoxes(scene,
+                new Scene(turned, objects(scene), scene.lights(), scene.background(), scene.ambient())));
+        List<PointLight> lights = new ArrayList<>(scene.lights());
+        lights.set(0, new PointLight(new Vec3(3, 6, 2.5), Rgb.WHITE, 1, false));
+        assertNull(SceneEdit.changedBoxes(scene,
+                new Scene(scene.camera(), objects(scene), lights, scene.background(), scene.ambient())));
+        assertNull(SceneEdit.changedBoxes(scene,
+                new Scene(scene.camera(), objects(scene), scene.lights(), Rgb.WHITE, scene.ambient())));
+        assertNull(SceneEdit.changedBoxes(scene,
+                new Scene(scene.camera(), objects(scene), scene.lights(), scene.background(), 0.2)));
+        assertNull(SceneEdit.changedBoxes(scene, new Scene(scene.camera(), objects(scene).subList(0, 30),
+                scene.lights(), scene.background(), scene.ambient())), "an object fewer");
+        assertNull(SceneEdit.changedBoxes(scene, edited(scene, 0, o -> new SceneObject(o.shape(),
+                MaterialDefaults.of(MaterialKind.CHALK, Rgb.WHITE)))), "the floor plane changed");
+
+        PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
+        assertThrows(IllegalArgumentException.class, () -> paths.forget(List.of(Aabb.UNBOUNDED),
+                scene.camera().position(), scene.lights()));
+    }
+
+    @Test
+    void theSameSceneReadAgainIsNoEdit() {
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        Scene again = OpaqueShadowsUnchangedTest.scene(); // new instances of equal values
+        assertEquals(List.of(), SceneEdit.changedBoxes(scene, again));
+        assertTrue(keptAfterEdit(scene, again) > 0.95);
+        Scene moved = edited(scene, 5, o -> moved(o, new Vec3(0, 0, 0.01)));
+        assertEquals(2, SceneEdit.changedBoxes(scene, moved).size(), "the object's box before and after");
+        assertFalse(SceneEdit.changedBoxes(scene, moved).get(0).equals(SceneEdit.changedBoxes(scene, moved).get(1)));
+    }
+
+    private static void forget(PixelPaths paths, Scene before, Scene after) {
+        paths.forget(SceneEdit.changedBoxes(before, after), after.camera().position(), after.lights());
+    }
+
+    private static void assertSameFilm(Film expected, Film actual) {
+        assertEquals(SampledImagesUnchangedTest.fingerprint(expected), SampledImagesUnchangedTest.fingerprint(actual));
+    }
+
+    @Test
+    void editsNotedBeforeAndDuringARenderAllCount() {
+        // as in a drag: an edit, a coarse pass cut short by the next edit, then the whole film
+        Scene a = OpaqueShadowsUnchangedTest.scene();
+        int mirror = firstOf(a, MaterialKind.MIRROR), plastic = firstOf(a, MaterialKind.PLASTIC);
+        Scene b = edited(a, mirror, o -> moved(o, new Vec3(-0.2, 0, 0.1)));
+        Scene c = edited(b, plastic, o -> moved(o, new Vec3(0.1, 0.1, 0)));
+        Scene d = edited(c, mirror, o -> moved(o, new Vec3(0.1, 0.05, 0)));
+        Film film = new Film(WIDTH, HEIGHT);
+        PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
+        render(a, film, paths);
+        forget(paths, a, b);
+        Renderer.render(b, oneSample(), film, new PixelLattice(8, 4), null, paths, RenderListener.NONE, () -> false);
+        forget(paths, b, c);
+        forget(paths, c, d);
+        RenderResult last = render(d, film, paths);
+        assertSameFilm(Renderer.render(d, oneSample()).film(), film);
+        assertTrue(last.samplesTaken() < WIDTH * HEIGHT / 4, "rendered " + last.samplesTaken());
+    }
+
+    @Test
+    void pixelsOlderThanTheEditsNotedAreRenderedAgain() {
+        Scene a = OpaqueShadowsUnchangedTest.scene();
+        PixelPaths untouched = new PixelPaths(WIDTH, HEIGHT);
+        render(a, new Film(WIDTH, HEIGHT), untouched);
+        Scene far = edited(a, 1, o -> new SceneObject(new Sphere(new Vec3(0, 2.5, 9), 0.1), o.material()));
+        Scene farther = edited(far, 1, o -> new SceneObject(new Sphere(new Vec3(0, 2.5, 9.5), 0.1), o.material()));
+        forget(untouched, a, far); // the first edit reaches some pixels (the object's old place)
+        int afterFirst = untouched.knownCount();
+        for (int i = 0; i < PixelPaths.MAX_EDITS - 1; i++) {
+            forget(untouched, i % 2 == 0 ? far : farther, i % 2 == 0 ? farther : far);
+        }
+        assertEquals(afterFirst, untouched.knownCount(), "edits behind the camera reach nothing");
+        PixelPaths stale = new PixelPaths(WIDTH, HEIGHT);
+        render(a, new Film(WIDTH, HEIGHT), stale);
+        for (int i = 0; i <= PixelPaths.MAX_EDITS; i++) {
+            stale.forget(List.of(new Aabb(0, 2.5, 9, 0.1, 2.6, 9.1)), a.camera().position(), a.lights());
+        }
+        assertEquals(0, stale.knownCount(), "tested against none of more edits than are noted");
+    }
+}
