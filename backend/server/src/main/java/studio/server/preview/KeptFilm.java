@@ -20,9 +20,11 @@ import studio.server.system.MemoryBudget;
  * ({@link SceneEdit}): another camera, light, view size or object count forgets every pixel.
  *
  * <p>Holds the film, the paths and the last scene in the render memory while the view is open
- * (24 + {@value PixelPaths#BYTES_PER_PIXEL} bytes a pixel, and the scene's objects); when the
- * memory cannot hold them, the passes render into a film of their own, as without it. Used by the
- * view's worker, one revision at a time; {@link #close} by any thread, at once.
+ * (24 + {@value PixelPaths#BYTES_PER_PIXEL} bytes a pixel, and the scene's objects), as a
+ * yielding reservation: other work that finds the memory short takes it back, and the next
+ * revision renders every pixel. When the memory cannot hold them, the passes render into a film
+ * of their own, as without it. Used by the view's worker, one revision at a time; {@link #drop}
+ * and {@link #close} by any thread, at once.
  */
 final class KeptFilm implements AutoCloseable {
 
@@ -80,7 +82,8 @@ final class KeptFilm implements AutoCloseable {
             return null;
         }
         long pixels = (long) settings.width() * settings.height();
-        MemoryBudget.Reservation held = memory.tryReserve(pixels * BYTES_PER_PIXEL + RenderMemory.sceneBytes(scene));
+        MemoryBudget.Reservation held = memory.tryReserveYielding(pixels * BYTES_PER_PIXEL + RenderMemory.sceneBytes(scene),
+                this::drop);
         if (held == null) {
             return null;
         }
@@ -88,7 +91,7 @@ final class KeptFilm implements AutoCloseable {
                 paths != null ? paths : new PixelPaths(settings.width(), settings.height()), scene, held);
     }
 
-    /** Gives the memory back until the next {@link #prepare}: a revision that keeps nothing. */
+    /** Gives the memory back until the next {@link #prepare}: a revision that keeps nothing, or other work needs the memory. */
     void drop() {
         release();
     }

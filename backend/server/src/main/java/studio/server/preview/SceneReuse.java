@@ -29,7 +29,8 @@ import studio.server.system.MemoryBudget;
  *
  * <p>Kept only for scenes of at least {@value #MIN_OBJECTS} objects, where reading pays (10,000
  * spheres: 20-40 ms), and only while the render memory can hold the kept bytes and objects; the
- * memory is given back when the view closes. {@link #compile} is called by the view's worker, one
+ * memory is given back when the view closes, or when other work finds the memory short (a
+ * yielding reservation: the next revision is then read in full). {@link #compile} is called by the view's worker, one
  * revision at a time; {@link #close} by any thread, at once.
  */
 final class SceneReuse implements AutoCloseable {
@@ -215,7 +216,8 @@ final class SceneReuse implements AutoCloseable {
                 || (objects.length / PER < MIN_OBJECTS && request.scene().length < MIN_BYTES)) {
             return;
         }
-        MemoryBudget.Reservation held = memory.tryReserve(request.scene().length + RenderMemory.sceneBytes(scene.scene()));
+        MemoryBudget.Reservation held = memory.tryReserveYielding(
+                request.scene().length + RenderMemory.sceneBytes(scene.scene()), this::release);
         if (held != null) {
             kept.set(new Kept(request.scene(), objects, request.width(), request.height(), scene, held));
             if (closed) {

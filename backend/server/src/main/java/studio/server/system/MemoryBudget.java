@@ -1,6 +1,9 @@
 package studio.server.system;
 
 import java.time.Duration;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -20,6 +23,11 @@ import java.util.concurrent.TimeUnit;
  * other reservations that cannot grow are refused at once. So a burst of large request bodies ends
  * with one of them read and the others told to retry, instead of each holding part of the memory
  * and all of them refused.
+ *
+ * <p>What is only kept to save work later (a live view's last scene and film) holds a
+ * <em>yielding</em> reservation ({@link #tryReserveYielding}): when other work finds the memory
+ * short, the budget takes those back, oldest first, each holder told to drop what it kept, before
+ * it refuses anyone.
  */
 public final class MemoryBudget {
 
@@ -28,6 +36,8 @@ public final class MemoryBudget {
     /** The reservation waiting to grow, and by how much; null if none waits. */
     private Reservation waiter;
     private long waiterNeeds;
+    /** The yielding reservations, oldest first, with what tells each holder to drop what it keeps. */
+    private final Map<Reservation, Runnable> yielding = new LinkedHashMap<>();
 
     public MemoryBudget(long capacity) {
         if (capacity <= 0) {
@@ -75,11 +85,52 @@ public final class MemoryBudget {
         if (bytes < 0) {
             throw new IllegalArgumentException("cannot reserve a negative amount: " + bytes);
         }
-        if (bytes > 0 && bytes > freeFor(null)) {
+        if (bytes > 0 && !makeRoom(bytes, null)) {
             return null;
         }
         reserved += bytes;
         return new Reservation(bytes);
+    }
+
+    /**
+     * Reserves {@code bytes} for something only kept to save work later, if they are free now
+     * (without taking other yielding reservations back); null if not. When other work finds the
+     * memory short, the budget runs {@code giveBack} (on that work's thread, holding the budget's
+     * lock: it must only drop what it keeps, and may close the reservation) and closes the
+     * reservation.
+     */
+    public synchronized Reservation tryReserveYielding(long bytes, Runnable giveBack) {
+        if (bytes < 0) {
+            throw new IllegalArgumentException("cannot reserve a negative amount: " + bytes);
+        }
+        if (bytes > 0 && bytes > freeFor(null)) {
+            return null;
+        }
+        reserved += bytes;
+        Reservation reservation = new Reservation(bytes);
+        yielding.put(reservation, giveBack);
+        return reservation;
+    }
+
+    /** How many yielding reservations are held. */
+    public synchronized int yieldingCount() {
+        return yielding.size();
+    }
+
+    /**
+     * Takes yielding reservations back, oldest first, until {@code needed} bytes are free for
+     * {@code asker} or none is left; whether they are free.
+     */
+    private boolean makeRoom(long needed, Reservation asker) {
+        Iterator<Map.Entry<Reservation, Runnable>> oldest = yielding.entrySet().iterator();
+        while (needed > freeFor(asker) && oldest.hasNext()) {
+            Map.Entry<Reservation, Runnable> taken = oldest.next();
+            oldest.remove();
+            taken.getValue().run();
+            taken.getKey().close();
+            oldest = yielding.entrySet().iterator(); // giveBack may have closed others
+        }
+        return needed <= freeFor(asker);
     }
 
     /**
@@ -118,7 +169,7 @@ public final class MemoryBudget {
                 if (closed) {
                     throw new IllegalStateException("the reservation was given back");
                 }
-                if (more > freeFor(this)) {
+                if (!makeRoom(more, this)) {
                     return false;
                 }
                 reserved += more;
@@ -148,6 +199,7 @@ public final class MemoryBudget {
                 waiterNeeds = more;
                 try {
                     long deadline = System.nanoTime() + bound.toNanos();
+                    makeRoom(more, this);
                     while (more > capacity - reserved) {
                         long left = deadline - System.nanoTime();
                         if (left <= 0) {
@@ -183,7 +235,7 @@ public final class MemoryBudget {
                     throw new IllegalStateException("the reservation was given back");
                 }
                 long freed = bytes - Math.min(keep, bytes);
-                if (next > freeFor(this) + freed) {
+                if (!makeRoom(next - freed, this)) {
                     return null;
                 }
                 bytes -= freed;
@@ -198,6 +250,7 @@ public final class MemoryBudget {
             synchronized (MemoryBudget.this) {
                 if (!closed) {
                     closed = true;
+                    yielding.remove(this);
                     reserved -= bytes;
                     MemoryBudget.this.notifyAll();
                 }

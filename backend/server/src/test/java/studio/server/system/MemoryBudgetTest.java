@@ -30,6 +30,55 @@ class MemoryBudgetTest {
     }
 
     @Test
+    void keptThingsGiveTheirMemoryBackOldestFirstWhenWorkNeedsIt() {
+        MemoryBudget budget = new MemoryBudget(100);
+        java.util.List<String> dropped = new java.util.ArrayList<>();
+        MemoryBudget.Reservation scene = budget.tryReserveYielding(30, () -> dropped.add("scene"));
+        MemoryBudget.Reservation film = budget.tryReserveYielding(40, () -> dropped.add("film"));
+        assertThat(budget.tryReserveYielding(31, () -> dropped.add("more"))).as("kept things take no kept memory")
+                .isNull();
+        assertThat(budget.yieldingCount()).isEqualTo(2);
+
+        MemoryBudget.Reservation work = budget.tryReserve(50); // 30 free: the oldest gives way, then enough
+        assertThat(work).isNotNull();
+        assertThat(dropped).containsExactly("scene");
+        assertThat(budget.reserved()).isEqualTo(90);
+        scene.close(); // its holder closing it too gives back nothing twice
+        assertThat(budget.reserved()).isEqualTo(90);
+
+        MemoryBudget.Reservation grown = budget.tryReserve(0);
+        assertThat(grown.tryGrow(10)).isTrue();
+        assertThat(dropped).containsExactly("scene");
+        assertThat(grown.tryGrow(40)).isTrue(); // only by taking the film back
+        assertThat(dropped).containsExactly("scene", "film");
+        assertThat(budget.yieldingCount()).isZero();
+        assertThat(budget.tryReserve(1)).as("nothing kept is left to give").isNull();
+        film.close();
+        work.close();
+        grown.close();
+        assertThat(budget.reserved()).isZero();
+    }
+
+    @Test
+    void aHandOverAndAWaitTakeKeptMemoryBackToo() throws Exception {
+        MemoryBudget budget = new MemoryBudget(100);
+        MemoryBudget.Reservation kept = budget.tryReserveYielding(60, () -> { });
+        MemoryBudget.Reservation body = budget.tryReserve(30);
+        MemoryBudget.Reservation render = body.tryHandOver(60, 0); // 30 freed, 10 free: needs the kept 60
+        assertThat(render).isNotNull();
+        assertThat(budget.reserved()).isEqualTo(60);
+        render.close();
+        MemoryBudget.Reservation kept2 = budget.tryReserveYielding(70, () -> { });
+        MemoryBudget.Reservation growing = budget.tryReserve(20);
+        assertThat(growing.growOrWait(50, Duration.ofMillis(100))).isTrue();
+        assertThat(budget.yieldingCount()).isZero();
+        growing.close();
+        kept.close();
+        kept2.close();
+        assertThat(budget.reserved()).isZero();
+    }
+
+    @Test
     void forcedReservationMayGoBeyondTheBudgetAndBlocksNewWork() {
         MemoryBudget budget = new MemoryBudget(100);
         MemoryBudget.Reservation image = budget.forceReserve(150);
