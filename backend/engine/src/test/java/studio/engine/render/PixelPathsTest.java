@@ -271,4 +271,65 @@ class PixelPathsTest {
         }
         assertEquals(0, stale.knownCount(), "tested against none of more edits than are noted");
     }
+
+    @Test
+    void randomEditSequencesWithPassesCutShortEndAsFreshRenders() {
+        // what a drag and an editor do, at random: move, resize, recolour, turn a sphere to glass and
+        // back, add nothing, move the camera or a light; between edits a pass over a random lattice,
+        // sometimes cut short after a random number of tiles; after each sequence the whole film
+        java.util.Random random = new java.util.Random(2026);
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        Film film = new Film(WIDTH, HEIGHT);
+        PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
+        render(scene, film, paths);
+        MaterialKind[] kinds = MaterialKind.values();
+        int rendered = 0;
+        for (int step = 0; step < 40; step++) {
+            int index = 1 + random.nextInt(scene.objectCount() - 1);
+            int what = random.nextInt(10);
+            Scene next;
+            if (what < 5) {
+                Vec3 by = new Vec3(random.nextGaussian() * 0.2, random.nextGaussian() * 0.1, random.nextGaussian() * 0.2);
+                next = edited(scene, index, o -> moved(o, by));
+            } else if (what < 7) {
+                MaterialKind kind = kinds[random.nextInt(kinds.length)];
+                Rgb colour = new Rgb(random.nextDouble(), random.nextDouble(), random.nextDouble());
+                next = edited(scene, index, o -> new SceneObject(o.shape(), MaterialDefaults.of(kind, colour)));
+            } else if (what < 8) {
+                next = edited(scene, index, o -> o.shape() instanceof Sphere s
+                        ? new SceneObject(new Sphere(s.center(), s.radius() * (0.5 + random.nextDouble())), o.material())
+                        : o);
+            } else if (what < 9) {
+                List<PointLight> lights = new ArrayList<>(scene.lights());
+                PointLight l = lights.get(0);
+                lights.set(0, new PointLight(l.position().plus(new Vec3(0.1, 0, 0)), l.color(), l.intensity(),
+                        l.falloff()));
+                next = new Scene(scene.camera(), objects(scene), lights, scene.background(), scene.ambient());
+            } else {
+                next = scene; // the same scene again
+            }
+            List<Aabb> boxes = SceneEdit.changedBoxes(scene, next);
+            if (boxes == null) {
+                paths.forgetAll();
+            } else {
+                paths.forget(boxes, next.camera().position(), next.lights());
+            }
+            scene = next;
+            int tiles = random.nextInt(30);
+            PixelLattice lattice = List.of(new PixelLattice(8, 4), new PixelLattice(4, 0), PixelLattice.ALL)
+                    .get(random.nextInt(3));
+            java.util.concurrent.atomic.AtomicInteger asked = new java.util.concurrent.atomic.AtomicInteger();
+            try {
+                rendered += (int) Renderer.render(scene, oneSample(), film, lattice, null, paths, RenderListener.NONE,
+                        () -> asked.incrementAndGet() > tiles).samplesTaken();
+            } catch (RenderCancelledException e) {
+                // cut short: the pixels it finished are known, the others not
+            }
+            if (step % 8 == 7) {
+                rendered += (int) render(scene, film, paths).samplesTaken();
+                assertSameFilm(Renderer.render(scene, oneSample()).film(), film);
+            }
+        }
+        assertTrue(rendered < 40 * WIDTH * HEIGHT / 2, "most pixels kept over the edits: rendered " + rendered);
+    }
 }
