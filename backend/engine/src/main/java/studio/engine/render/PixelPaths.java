@@ -22,9 +22,11 @@ import studio.engine.math.Vec3;
  * rays branch (glass both reflects and refracts), that traces a longer chain, or that takes more
  * than one sample is not kept: it is rendered every time.
  *
- * <p>The hit chosen among near-ties ({@link studio.engine.scene.Scene#TIE}) does not depend on
- * the scene's tree for hits that form separate clusters, so a kept pixel is the pixel a render of
- * the edited scene gives, to the bit (PixelPathsTest renders both and compares).
+ * <p>An edit rebuilds the scene's tree, and the hit chosen among near-ties
+ * ({@link studio.engine.scene.Scene#TIE}) does not depend on the tree for hits that form separate
+ * clusters, so a kept pixel is the pixel a render of the edited scene gives, to the bit
+ * (PixelPathsTest renders both and compares); only a chain of near-ties spread over more than the
+ * tie distance could resolve differently (see {@link studio.engine.scene.ShapeSet}).
  *
  * <p>{@link #forget} only notes an edit; each pixel is tested against the edits made since its
  * render when a render next comes to it (in the render's threads, and only for the pixels that
@@ -72,11 +74,6 @@ public final class PixelPaths {
         this.state = new byte[width * height];
         this.tested = new int[width * height];
         Arrays.fill(state, UNKNOWN);
-    }
-
-    /** The memory of the paths of width x height pixels, in bytes. */
-    public static long bytes(int width, int height) {
-        return (long) BYTES_PER_PIXEL * width * height;
     }
 
     public int width() {
