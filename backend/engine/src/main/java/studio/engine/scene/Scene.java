@@ -8,7 +8,6 @@ import studio.engine.geometry.Ray;
 import studio.engine.geometry.Shape;
 import studio.engine.light.PointLight;
 import studio.engine.material.Material;
-import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
 
 /**
@@ -27,7 +26,6 @@ public final class Scene {
     private final List<PointLight> lights;
     private final Rgb background;
     private final double ambient;
-    private final boolean hasGlass;
 
     public Scene(Camera camera, List<SceneObject> objects, List<PointLight> lights, Rgb background, double ambient) {
         if (camera == null || objects == null || lights == null || background == null) {
@@ -47,7 +45,6 @@ public final class Scene {
         this.lights = List.copyOf(lights);
         this.background = background;
         this.ambient = ambient;
-        this.hasGlass = objects.stream().anyMatch(o -> o.material().kind() == MaterialKind.GLASS);
     }
 
     /**
@@ -100,10 +97,5 @@ public final class Scene {
 
     public double ambient() {
         return ambient;
-    }
-
-    /** Whether shadow rays may pass through glass (and so need more than an any-hit test). */
-    public boolean hasGlass() {
-        return hasGlass;
     }
 }
