@@ -151,6 +151,20 @@ final class PreviewSession {
         return closed || arriving || pending.get() != null;
     }
 
+    /**
+     * The kept film the revision's one-sample passes render into, only where the edit since the
+     * last revision reaches; null (they render into a film of their own) when the last of them is
+     * the final frame, which is always rendered afresh, or when the memory cannot hold it.
+     */
+    private KeptFilm.Kept keptFilmFor(CompiledScene scene, List<PreviewPass> passes) {
+        RenderSettings oneSample = passes.get(0).settings();
+        if (passes.get(passes.size() - 1).settings().equals(oneSample)) {
+            keptFilm.drop();
+            return null;
+        }
+        return keptFilm.prepare(scene.scene(), oneSample);
+    }
+
     private void show(Pending next) throws IOException {
         PreviewRequest request;
         CompiledScene scene;
@@ -170,16 +184,7 @@ final class PreviewSession {
             next.memory().close(); // the passes reserve their own render memory, which counts the scene
         }
         List<PreviewPass> passes = PreviewPass.plan(scene.settings());
-        // the one-sample passes render into the kept film, only where the edit reaches, unless the
-        // last of them is the final frame, which is always rendered afresh
-        RenderSettings oneSample = passes.get(0).settings();
-        boolean finalIsOneSample = passes.get(passes.size() - 1).settings().equals(oneSample);
-        KeptFilm.Kept kept = null;
-        if (finalIsOneSample) {
-            keptFilm.drop();
-        } else {
-            kept = keptFilm.prepare(scene.scene(), oneSample);
-        }
+        KeptFilm.Kept kept = keptFilmFor(scene, passes);
         Film film = null;
         MemoryBudget.Reservation passMemory = null;
         try {
