@@ -3,6 +3,12 @@ package studio.server.preview;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
+import java.util.List;
+
 import org.junit.jupiter.api.Test;
 import org.springframework.beans.factory.annotation.Autowired;
 import org.springframework.boot.test.context.SpringBootTest;
@@ -14,7 +20,7 @@ import studio.server.system.MemoryBudget;
 /**
  * A live view's message is read on the render memory budget as a request body is: one the budget
  * could never hold is refused with a problem while it arrives, holding nothing after, and the view
- * goes on.
+ * goes on. What views only keep (their one-sample films) gives way to a render that needs the memory.
  */
 @SpringBootTest(webEnvironment = SpringBootTest.WebEnvironment.RANDOM_PORT, properties = {
         "studio.render-memory=16MB", "studio.render-threads=1"})
@@ -43,5 +49,33 @@ class PreviewMemoryTest {
             assertTrue(client.closedWith == null, "the view stays open");
         }
         Await.until("nothing held after the view", 5_000, () -> memory.reserved() == 0);
+    }
+
+    @Test
+    void keptFilmsOfIdleViewsGiveWayToARender() throws Exception {
+        String opaque = PreviewApiTest.SCENE.replace("\"glass\"", "\"plastic\"");
+        try (PreviewClient first = new PreviewClient(port); PreviewClient second = new PreviewClient(port)) {
+            for (PreviewClient view : List.of(first, second)) {
+                view.send(1, opaque, 256, 192); // each keeps a film of 256x192: about 3 MB
+                Await.until("the final frame", 30_000, () -> view.lastFrame() != null && view.lastFrame().last());
+            }
+            Await.until("both films kept", 5_000, () -> memory.yieldingCount() == 2);
+            long kept = memory.reserved();
+            assertTrue(kept > 6_000_000, "kept " + kept);
+
+            // about 12 MB of 16: it fits only if the kept films give their memory back
+            String big = opaque.replace("\"width\": 800, \"height\": 600, \"format\": \"jpg\"",
+                    "\"width\": 480, \"height\": 320, \"format\": \"png\"").replace("\"samples\": 16", "\"samples\": 1");
+            HttpResponse<byte[]> response = HttpClient.newHttpClient().send(HttpRequest.newBuilder(
+                            URI.create("http://localhost:" + port + "/api/render")).header("Content-Type", "application/json")
+                    .POST(HttpRequest.BodyPublishers.ofString(big)).build(), HttpResponse.BodyHandlers.ofByteArray());
+            assertEquals(200, response.statusCode(), new String(response.body()));
+            assertEquals(1, memory.yieldingCount(), "the older kept film was given back, and no more than needed");
+
+            first.send(2, opaque.replace("[2, 0.5, 0]", "[2.2, 0.5, 0]"), 256, 192);
+            Await.until("the next revision's final frame", 30_000,
+                    () -> first.lastFrame() != null && first.lastFrame().revision() == 2 && first.lastFrame().last());
+        }
+        Await.until("nothing held after the views", 5_000, () -> memory.reserved() == 0);
     }
 }
