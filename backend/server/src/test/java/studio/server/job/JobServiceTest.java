@@ -299,8 +299,10 @@ class JobServiceTest {
     void jobHoldsItsRenderMemoryUntilItEndsThenOnlyItsImage() throws Exception {
         MemoryBudget memory = new MemoryBudget(1L << 30);
         JobService jobs = service(settings(1, 4), memory, Duration.ofSeconds(5));
-        JobStatus started = jobs.submit(compile(SMALL));
-        assertTrue(memory.reserved() > 64 * 48 * 40, "reserved " + memory.reserved());
+        // long enough (a few hundred ms) to be running still when the reservation is read: SMALL
+        // could finish first, leaving only its image (seen once)
+        JobStatus started = jobs.submit(compile(scene(320, 240, 64)));
+        assertTrue(memory.reserved() > 320 * 240 * 40, "reserved " + memory.reserved());
         await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
         assertEquals(jobs.image(started.id()).bytes().length, memory.reserved());
     }
