@@ -228,7 +228,9 @@ class PreviewApiTest {
                     () -> client.lastFrame().last() && client.lastFrame().revision() == 2);
 
             assertTrue(rendering > 0.8, "the cores were busy rendering revision 1: " + rendering + " s of CPU in 1 s");
-            assertTrue(arriving < rendering / 4, "while revision 2 arrives, revision 1 no longer renders: " + arriving
+            // the process's CPU time counts the other test contexts' threads too (0.66 s in one full
+            // run); a revision still rendering would keep both cores busy, as before the change (2.0)
+            assertTrue(arriving < rendering / 2, "while revision 2 arrives, revision 1 no longer renders: " + arriving
                     + " s of CPU in 1 s, against " + rendering);
             assertFalse(client.frames.stream().anyMatch(f -> f.revision() == 1 && f.last()));
         }
