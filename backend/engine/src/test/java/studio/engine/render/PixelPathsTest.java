@@ -270,6 +270,19 @@ class PixelPathsTest {
             stale.forget(List.of(new Aabb(0, 2.5, 9, 0.1, 2.6, 9.1)), a.camera().position(), a.lights());
         }
         assertEquals(0, stale.knownCount(), "tested against none of more edits than are noted");
+
+        PixelPaths many = new PixelPaths(WIDTH, HEIGHT);
+        render(a, new Film(WIDTH, HEIGHT), many);
+        List<Aabb> behind = new ArrayList<>();
+        for (int i = 0; i < PixelPaths.MAX_BOXES; i++) {
+            behind.add(new Aabb(0, 2.5, 9 + i, 0.1, 2.6, 9.1 + i)); // behind the camera: they reach nothing
+        }
+        int known = many.knownCount();
+        many.forget(behind, a.camera().position(), a.lights());
+        assertEquals(known, many.knownCount(), "as many boxes as are tested one by one");
+        behind.add(new Aabb(0, 2.5, 50, 0.1, 2.6, 50.1));
+        many.forget(behind, a.camera().position(), a.lights());
+        assertEquals(0, many.knownCount(), "one box more: every pixel rendered again, not tested against each");
     }
 
     @Test
