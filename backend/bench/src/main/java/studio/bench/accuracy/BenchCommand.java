@@ -5,6 +5,7 @@ import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -23,13 +24,13 @@ import studio.server.scene.reading.LazyValidation;
 import studio.server.scene.reading.SceneReader;
 
 /**
- * {@code studio-bench.jar accuracy [--out docs/bench] [--width W] [--height H] [--runs N]
+ * {@code studio-bench.jar accuracy [--out docs/bench] [--width W] [--height H] [--runs N] [--forks N]
  * [--reference-samples N] [--scenes scenes/bench] [--povray PATH | --no-povray]}: the
  * speed-against-accuracy benchmark of the samplers, and of POV-Ray beside them. For each scene file
  * it renders a reference with many jittered samples, measures every available sampler (and adaptive
  * sampling, when the engine has it) for time and error, and POV-Ray's fixed grid and adaptive
  * anti-aliasing against POV-Ray's own reference ({@link PovrayAccuracy}; left out when POV-Ray is
- * not installed), and writes {@code speed-accuracy.csv}, the charts, the reference images and
+ * not installed), repeats our timing in {@code --forks - 1} fresh JVMs ({@link Forks}), and writes {@code speed-accuracy.csv}, the charts, the reference images and
  * {@code summary.txt} to the output folder.
  */
 public final class BenchCommand {
@@ -37,10 +38,12 @@ public final class BenchCommand {
     /** Exit codes, as the render command's: 0 done, 1 could not read or write a file, 2 bad arguments or an invalid scene. */
     static final int OK = 0, IO_ERROR = 1, INVALID = 2;
 
-    static final int DEFAULT_WIDTH = 320, DEFAULT_HEIGHT = 240, DEFAULT_RUNS = 5, DEFAULT_REFERENCE_SAMPLES = 1024;
+    static final int DEFAULT_WIDTH = 320, DEFAULT_HEIGHT = 240, DEFAULT_RUNS = 3, DEFAULT_FORKS = 3,
+            DEFAULT_REFERENCE_SAMPLES = 1024;
 
     static final String USAGE = "usage: java -jar studio-bench.jar accuracy [--out docs/bench] [--width " + DEFAULT_WIDTH
-            + "] [--height " + DEFAULT_HEIGHT + "] [--runs " + DEFAULT_RUNS + "] [--reference-samples "
+            + "] [--height " + DEFAULT_HEIGHT + "] [--runs " + DEFAULT_RUNS + "] [--forks " + DEFAULT_FORKS
+            + "] [--reference-samples "
             + DEFAULT_REFERENCE_SAMPLES + "] [--scenes scenes/bench] [--povray /usr/bin/povray | --no-povray]";
 
     private BenchCommand() {
@@ -85,6 +88,19 @@ public final class BenchCommand {
 
         SpeedAccuracyBench bench = new SpeedAccuracyBench(
                 SpeedAccuracyBench.Config.defaults(options.runs, options.referenceSamples), err);
+        if (options.timesOnly != null) {
+            List<Measurement> times = new ArrayList<>();
+            for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
+                times.addAll(bench.timesOnly(scene.getKey(), scene.getValue()));
+            }
+            try {
+                BenchCsv.write(options.timesOnly, times);
+            } catch (IOException e) {
+                err.println("error: cannot write " + options.timesOnly + ": " + e.getMessage());
+                return IO_ERROR;
+            }
+            return OK;
+        }
         PovrayAccuracy povray = null;
         if (options.povray != null && Files.isExecutable(options.povray)) {
             try {
@@ -97,9 +113,10 @@ public final class BenchCommand {
         } else if (options.povray != null) {
             err.println("bench: no POV-Ray at " + options.povray + " (apt-get install povray), so the chart has only ours");
         }
-        err.printf(Locale.ROOT, "bench: %d scenes at %dx%d on %d threads, %d rounds (every setting once a round), reference %s at %d "
-                        + "samples/pixel; adaptive sampling %s%n", scenes.size(), options.width, options.height,
-                Runtime.getRuntime().availableProcessors(), options.runs, SpeedAccuracyBench.REFERENCE_SAMPLER,
+        err.printf(Locale.ROOT, "bench: %d scenes at %dx%d on %d threads, %d rounds (every setting once a round) in each of "
+                        + "%d JVMs, reference %s at %d samples/pixel; adaptive sampling %s%n", scenes.size(), options.width,
+                options.height, Runtime.getRuntime().availableProcessors(), options.runs, options.forks,
+                SpeedAccuracyBench.REFERENCE_SAMPLER,
                 options.referenceSamples, EngineFeatures.hasAdaptive() ? "measured" : "not in this engine, skipped");
         Map<String, List<Measurement>> rowsByScene = new LinkedHashMap<>();
         List<Measurement> all = new ArrayList<>();
@@ -115,6 +132,19 @@ public final class BenchCommand {
                     ImageFiles.write(result.reference(), "png", 1.0, image);
                 }
             }
+            if (options.forks > 1) {
+                // a fork does less than this JVM did (no references, no POV-Ray), so this JVM's time bounds it
+                Duration bound = Duration.ofNanos(System.nanoTime() - start).multipliedBy(2).plusMinutes(5);
+                Path dir = Files.createTempDirectory("studio-bench-forks");
+                List<List<Measurement>> forks = new ArrayList<>();
+                for (int fork = 2; fork <= options.forks; fork++) {
+                    forks.add(Forks.run(options.forkArguments(), dir, fork, bound, err));
+                }
+                List<Measurement> merged = Forks.merge(all, forks);
+                all.clear();
+                all.addAll(merged);
+                rowsByScene.replaceAll((scene, rows) -> merged.stream().filter(m -> m.scene().equals(scene)).toList());
+            }
             BenchCsv.write(options.out.resolve("speed-accuracy.csv"), all);
             BenchCharts.write(options.out, rowsByScene);
         } catch (IOException | java.io.UncheckedIOException e) {
@@ -123,12 +153,13 @@ public final class BenchCommand {
         }
 
         StringBuilder summary = new StringBuilder();
-        summary.append(String.format(Locale.ROOT, "Speed against accuracy, %dx%d, median of %d rounds on %d threads; "
+        summary.append(String.format(Locale.ROOT, "Speed against accuracy, %dx%d, on %d threads; time: the median over %d "
+                        + "JVMs of each one's median of %d rounds (POV-Ray: of the first JVM's rounds); "
                         + "error against %s at %d samples/pixel, RMSE in linear light, PSNR peak 1.0.%n"
                         + "slope: least squares of log RMSE against log samples/pixel (4..256; adaptive: all thresholds, "
                         + "mean samples/pixel).%n"
                         + "ms to target: time to reach jittered's RMSE at 16 samples/pixel, interpolated log-log.%n%n",
-                options.width, options.height, options.runs, Runtime.getRuntime().availableProcessors(),
+                options.width, options.height, Runtime.getRuntime().availableProcessors(), options.forks, options.runs,
                 SpeedAccuracyBench.REFERENCE_SAMPLER, options.referenceSamples));
         for (Map.Entry<String, List<Measurement>> scene : rowsByScene.entrySet()) {
             summary.append(BenchSummary.format(scene.getKey(), scene.getValue())).append('\n');
@@ -161,7 +192,10 @@ public final class BenchCommand {
     static final class Options {
         Path out = Path.of("docs/bench");
         Path scenes = Path.of("scenes/bench");
-        int width = DEFAULT_WIDTH, height = DEFAULT_HEIGHT, runs = DEFAULT_RUNS, referenceSamples = DEFAULT_REFERENCE_SAMPLES;
+        int width = DEFAULT_WIDTH, height = DEFAULT_HEIGHT, runs = DEFAULT_RUNS, forks = DEFAULT_FORKS,
+                referenceSamples = DEFAULT_REFERENCE_SAMPLES;
+        /** Set in a fork: time our settings only and write the rows here. */
+        Path timesOnly;
         /** POV-Ray's executable; null: leave POV-Ray out. */
         Path povray = Path.of("/usr/bin/povray");
         boolean help;
@@ -177,6 +211,8 @@ public final class BenchCommand {
                     case "--width" -> o.width = Args.positive(args, ++i, a);
                     case "--height" -> o.height = Args.positive(args, ++i, a);
                     case "--runs" -> o.runs = Args.positive(args, ++i, a);
+                    case "--forks" -> o.forks = Args.positive(args, ++i, a);
+                    case "--times-only" -> o.timesOnly = Path.of(Args.value(args, ++i, a));
                     case "--reference-samples" -> o.referenceSamples = Args.positive(args, ++i, a);
                     case "--povray" -> o.povray = Path.of(Args.value(args, ++i, a));
                     case "--no-povray" -> o.povray = null;
@@ -184,6 +220,12 @@ public final class BenchCommand {
                 }
             }
             return o;
+        }
+
+        /** A fork's arguments: the same scenes, size and rounds. */
+        List<String> forkArguments() {
+            return List.of("--scenes", scenes.toString(), "--width", Integer.toString(width), "--height",
+                    Integer.toString(height), "--runs", Integer.toString(runs), "--no-povray");
         }
 
         /** The image size as overrides of the scene files' fields, applied before validation. */

@@ -3,6 +3,7 @@ package studio.bench.accuracy;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
@@ -28,5 +29,31 @@ final class BenchCsv {
 
     static void write(Path file, List<Measurement> rows) throws IOException {
         Files.writeString(file, format(rows));
+    }
+
+    /** The rows {@link #format} wrote (an empty CPU time or threshold reads as NaN). */
+    static List<Measurement> parse(String csv) {
+        List<Measurement> rows = new ArrayList<>();
+        String[] lines = csv.split("\n");
+        if (lines.length == 0 || !lines[0].equals(HEADER)) {
+            throw new IllegalArgumentException("not the benchmark's CSV: " + (lines.length == 0 ? "" : lines[0]));
+        }
+        for (int i = 1; i < lines.length; i++) {
+            String[] f = lines[i].split(",", -1);
+            if (f.length != 9) {
+                throw new IllegalArgumentException("line " + (i + 1) + " has " + f.length + " fields, not 9: " + lines[i]);
+            }
+            rows.add(new Measurement(f[0], f[1], Integer.parseInt(f[2]), Double.parseDouble(f[3]),
+                    Double.parseDouble(f[4]), orNaN(f[5]), Double.parseDouble(f[6]), Double.parseDouble(f[7]), orNaN(f[8])));
+        }
+        return rows;
+    }
+
+    static List<Measurement> read(Path file) throws IOException {
+        return parse(Files.readString(file));
+    }
+
+    private static double orNaN(String field) {
+        return field.isEmpty() ? Double.NaN : Double.parseDouble(field);
     }
 }

@@ -83,15 +83,7 @@ final class SpeedAccuracyBench {
         RenderSettings base = compiled.settings();
         boolean adaptive = EngineFeatures.hasAdaptive();
 
-        // Warm-up: lets the JIT compile the hot loops (fixed and adaptive) before anything is timed.
-        for (int i = 0; i < 3; i++) {
-            Renderer.render(scene, settings(base, EngineFeatures.sampler(REFERENCE_SAMPLER, 16).orElseThrow(),
-                    Double.NaN, base.seed(), adaptive));
-            if (adaptive && adaptiveAccepts(base, "sobol")) {
-                Renderer.render(scene, settings(base, EngineFeatures.sampler("sobol", 64).orElseThrow(), 0.1,
-                        base.seed(), true));
-            }
-        }
+        warmUp(scene, base);
 
         RenderSettings referenceSettings = settings(base,
                 EngineFeatures.sampler(REFERENCE_SAMPLER, config.referenceSamples()).orElseThrow(), Double.NaN,
@@ -102,16 +94,7 @@ final class SpeedAccuracyBench {
         log.printf(Locale.ROOT, "%s: reference, %s at %d samples/pixel, %.0f ms%n", name, REFERENCE_SAMPLER,
                 config.referenceSamples(), referenceMillis);
 
-        List<Planned> fixed = new ArrayList<>();
-        for (String samplerName : EngineFeatures.SAMPLER_NAMES) {
-            for (int n : config.sampleCounts()) {
-                Optional<Sampler> sampler = EngineFeatures.sampler(samplerName, n);
-                if (sampler.isPresent()) {
-                    fixed.add(new Planned(Method.fixed(samplerName), n,
-                            settings(base, sampler.get(), Double.NaN, base.seed(), adaptive)));
-                }
-            }
-        }
+        List<Planned> fixed = fixedPlans(base);
         if (!adaptive) {
             return new SceneResult(name, measure(name, fixed, scene, reference, povray), reference, referenceMillis);
         }
@@ -132,6 +115,51 @@ final class SpeedAccuracyBench {
 
     /** A setting to measure. */
     private record Planned(Method method, int samples, RenderSettings settings) {
+    }
+
+    /**
+     * Only the times of one scene, for another JVM's share of the rounds ({@code --forks}): the same
+     * warm-up and the same settings as {@link #run} (the fixed counts and adaptive sampling on sobol),
+     * timed in the same rounds, without a reference, so each row's error is NaN.
+     */
+    List<Measurement> timesOnly(String name, CompiledScene compiled) {
+        Scene scene = compiled.scene();
+        RenderSettings base = compiled.settings();
+        warmUp(scene, base);
+        List<Planned> plans = new ArrayList<>(fixedPlans(base));
+        if (EngineFeatures.hasAdaptive() && adaptiveAccepts(base, "sobol")) {
+            plans.addAll(adaptivePlans("sobol", base));
+        }
+        return measure(name, plans, scene, null, null);
+    }
+
+    /** Lets the JIT compile the hot loops (fixed and adaptive) before anything is timed. */
+    private void warmUp(Scene scene, RenderSettings base) {
+        boolean adaptive = EngineFeatures.hasAdaptive();
+        for (int i = 0; i < 3; i++) {
+            Renderer.render(scene, settings(base, EngineFeatures.sampler(REFERENCE_SAMPLER, 16).orElseThrow(),
+                    Double.NaN, base.seed(), adaptive));
+            if (adaptive && adaptiveAccepts(base, "sobol")) {
+                Renderer.render(scene, settings(base, EngineFeatures.sampler("sobol", 64).orElseThrow(), 0.1,
+                        base.seed(), true));
+            }
+        }
+    }
+
+    /** Every sampler the engine has at each of the configured counts. */
+    private List<Planned> fixedPlans(RenderSettings base) {
+        boolean adaptive = EngineFeatures.hasAdaptive();
+        List<Planned> fixed = new ArrayList<>();
+        for (String samplerName : EngineFeatures.SAMPLER_NAMES) {
+            for (int n : config.sampleCounts()) {
+                Optional<Sampler> sampler = EngineFeatures.sampler(samplerName, n);
+                if (sampler.isPresent()) {
+                    fixed.add(new Planned(Method.fixed(samplerName), n,
+                            settings(base, sampler.get(), Double.NaN, base.seed(), adaptive)));
+                }
+            }
+        }
+        return fixed;
     }
 
     private List<Planned> adaptivePlans(String samplerName, RenderSettings base) {
@@ -193,8 +221,9 @@ final class SpeedAccuracyBench {
      * Times every setting {@code runs} times in rounds (each round renders every setting once), so a
      * slow spell of the machine, which here lasts from seconds to minutes, falls on all settings alike
      * instead of on the few measured during it; the median of each setting's runs counts. Errors come
-     * from the first round (the same seed gives the same pixels on every run). POV-Ray's settings (if
-     * {@code povray} is not null) are rendered after ours in each round.
+     * from the first round (the same seed gives the same pixels on every run; NaN without a
+     * {@code reference}). POV-Ray's settings (if {@code povray} is not null) are rendered after ours in
+     * each round.
      */
     private List<Measurement> measure(String scene, List<Planned> plans, Scene world, Film reference,
                                       PovrayAccuracy.Scene povray) {
@@ -210,7 +239,7 @@ final class SpeedAccuracyBench {
                 millis[i][run] = (System.nanoTime() - start) / 1e6;
                 cpuMillis[i][run] = result.cpuNanos() / 1e6;
                 if (run == 0) {
-                    rmse[i] = ImageError.rmse(result.film(), reference);
+                    rmse[i] = reference == null ? Double.NaN : ImageError.rmse(result.film(), reference);
                     meanSpp[i] = (double) EngineFeatures.samplesTaken(result, settings)
                             / (settings.width() * settings.height());
                 }
@@ -228,7 +257,8 @@ final class SpeedAccuracyBench {
             Planned plan = plans.get(i);
             Method method = plan.method();
             Measurement m = new Measurement(scene, method.name(), plan.samples(), meanSpp[i], median(millis[i]),
-                    median(cpuMillis[i]), rmse[i], ImageError.psnr(rmse[i]), method.adaptiveThreshold());
+                    median(cpuMillis[i]), rmse[i],
+                    Double.isNaN(rmse[i]) ? Double.NaN : ImageError.psnr(rmse[i]), method.adaptiveThreshold());
             log.printf(Locale.ROOT, "%s: %-20s %4d spp (mean %6.1f) %9.1f ms  rmse %.5f  psnr %5.2f dB%n", scene,
                     method.isAdaptive() ? method.name() + " " + method.adaptiveThreshold() : method.name(),
                     plan.samples(), meanSpp[i], m.medianMillis(), rmse[i], m.psnr());

@@ -27,7 +27,7 @@ class BenchCommandTest {
 
     @Test
     void tinyRunWritesTheCsvTheChartsAndTheSummary(@TempDir Path dir) throws IOException {
-        int code = run("--out", dir.toString(), "--width", "16", "--height", "12", "--runs", "1",
+        int code = run("--out", dir.toString(), "--width", "16", "--height", "12", "--runs", "1", "--forks", "2",
                 "--reference-samples", "16", "--scenes", BenchSceneFiles.dir().toString(), "--no-povray");
 
         assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
@@ -55,7 +55,8 @@ class BenchCommandTest {
         assertThat(dir.resolve("speed-accuracy-glass.png")).isNotEmptyFile();
         assertThat(dir.resolve("reference-stripes.png")).isNotEmptyFile();
         assertThat(Files.readString(dir.resolve("summary.txt"))).contains("soft-shadows", "target RMSE", "jittered");
-        assertThat(out.toString(StandardCharsets.UTF_8)).contains("ms to target", "vs jittered");
+        assertThat(out.toString(StandardCharsets.UTF_8)).contains("ms to target", "vs jittered", "median over 2 JVMs");
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("bench: JVM 2 times the same settings", "--times-only");
     }
 
     @Test
@@ -65,7 +66,7 @@ class BenchCommandTest {
         Path scenes = Files.createDirectories(dir.resolve("scenes"));
         Files.copy(BenchSceneFiles.dir().resolve("edges.json"), scenes.resolve("edges.json"));
         int code = run("--out", dir.resolve("out").toString(), "--width", "16", "--height", "12", "--runs", "1",
-                "--reference-samples", "16", "--scenes", scenes.toString(), "--povray", povray.toString());
+                "--forks", "1", "--reference-samples", "16", "--scenes", scenes.toString(), "--povray", povray.toString());
 
         assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
         List<String> csv = Files.readAllLines(dir.resolve("out/speed-accuracy.csv"));

@@ -1,0 +1,108 @@
+package studio.bench.accuracy;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.lang.management.ManagementFactory;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The benchmark's rounds repeated in fresh JVMs ({@code --forks}), as JMH forks its benchmarks.
+ * Renders of 20-500 ms in one JVM measure that JVM's compiled code as well as the renderer: the JIT
+ * inlines and lays out the hot loops a little differently each time, and the same setting took up to
+ * a third longer in one JVM than in the next, always the same way in both (soft-shadows' ratio to
+ * jittered came out 0.24 and 0.33 in two runs). Each fork warms up and times every setting in
+ * rounds as the first JVM did, without a reference, and writes its medians to a CSV file; a row's
+ * time is then the median over the JVMs of their medians.
+ */
+final class Forks {
+
+    private Forks() {
+    }
+
+    /**
+     * Runs this benchmark's timing in a new JVM, with this JVM's Java, class path and -X options, and
+     * reads back its rows; waits at most {@code bound}.
+     *
+     * @param arguments the accuracy command's arguments for the fork, without {@code --times-only}
+     * @throws IOException if it could not start, failed, ran over its bound or wrote no rows (the
+     *                     message has the end of its log)
+     */
+    static List<Measurement> run(List<String> arguments, Path dir, int index, Duration bound, PrintStream log)
+            throws IOException {
+        Path times = dir.resolve("times-" + index + ".csv"), output = dir.resolve("fork-" + index + ".log");
+        List<String> command = new ArrayList<>();
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        for (String option : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
+            if (option.startsWith("-X")) {
+                command.add(option);
+            }
+        }
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), "studio.bench.BenchMain", "accuracy",
+                "--times-only", times.toString()));
+        command.addAll(arguments);
+        log.printf(Locale.ROOT, "bench: JVM %d times the same settings (--times-only %s, log %s)%n", index, times, output);
+        Process process = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(output.toFile()).start();
+        try {
+            if (!process.waitFor(bound.toMillis(), TimeUnit.MILLISECONDS)) {
+                process.destroyForcibly();
+                throw new IOException("JVM " + index + " ran over " + bound.toMinutes() + " minutes\n" + tail(output));
+            }
+        } catch (InterruptedException e) {
+            process.destroyForcibly();
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted", e);
+        }
+        if (process.exitValue() != 0 || !Files.isRegularFile(times)) {
+            throw new IOException("JVM " + index + " exited " + process.exitValue() + "\n" + tail(output));
+        }
+        return BenchCsv.read(times);
+    }
+
+    /**
+     * The first JVM's rows with each time (wall and CPU) replaced by the median of that row's time over
+     * every JVM that measured it; the errors, samples and POV-Ray's rows (which no fork measures) stay.
+     */
+    static List<Measurement> merge(List<Measurement> first, List<List<Measurement>> forks) {
+        Map<String, List<Measurement>> byKey = new HashMap<>();
+        for (List<Measurement> fork : forks) {
+            for (Measurement m : fork) {
+                byKey.computeIfAbsent(key(m), k -> new ArrayList<>()).add(m);
+            }
+        }
+        List<Measurement> merged = new ArrayList<>();
+        for (Measurement m : first) {
+            List<Measurement> same = byKey.getOrDefault(key(m), List.of());
+            double[] wall = new double[same.size() + 1], cpu = new double[same.size() + 1];
+            wall[0] = m.medianMillis();
+            cpu[0] = m.medianCpuMillis();
+            for (int i = 0; i < same.size(); i++) {
+                wall[i + 1] = same.get(i).medianMillis();
+                cpu[i + 1] = same.get(i).medianCpuMillis();
+            }
+            merged.add(new Measurement(m.scene(), m.method(), m.samples(), m.meanSamplesPerPixel(),
+                    SpeedAccuracyBench.median(wall), SpeedAccuracyBench.median(cpu), m.rmse(), m.psnr(), m.threshold()));
+        }
+        return merged;
+    }
+
+    private static String key(Measurement m) {
+        return m.scene() + "," + m.method() + "," + m.samples() + "," + m.threshold();
+    }
+
+    private static String tail(Path log) {
+        try {
+            List<String> lines = Files.readAllLines(log);
+            return String.join("\n", lines.subList(Math.max(0, lines.size() - 15), lines.size()));
+        } catch (IOException e) {
+            return "(no log: " + e.getMessage() + ")";
+        }
+    }
+}

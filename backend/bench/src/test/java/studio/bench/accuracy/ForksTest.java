@@ -1,0 +1,56 @@
+package studio.bench.accuracy;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+class ForksTest {
+
+    private static Measurement row(String method, int samples, double threshold, double millis, double cpu, double rmse) {
+        return new Measurement("edges", method, samples, samples, millis, cpu, rmse, -20 * Math.log10(rmse), threshold);
+    }
+
+    @Test
+    void eachTimeBecomesTheMedianOverTheJvmsAndTheErrorsStayTheFirstJvms() {
+        List<Measurement> first = List.of(row("jittered", 16, Double.NaN, 80, 150, 0.0027),
+                row("adaptive-sobol", 256, 0.05, 40, 70, 0.0020),
+                row("povray-adaptive", 1, 0.3, 10, Double.NaN, 0.003));
+        List<Measurement> second = List.of(row("jittered", 16, Double.NaN, 100, 190, Double.NaN),
+                row("adaptive-sobol", 256, 0.05, 30, 60, Double.NaN),
+                row("adaptive-sobol", 256, 0.1, 1, 1, Double.NaN));
+        List<Measurement> third = List.of(row("jittered", 16, Double.NaN, 90, 160, Double.NaN),
+                row("adaptive-sobol", 256, 0.05, 50, 65, Double.NaN));
+
+        List<Measurement> merged = Forks.merge(first, List.of(second, third));
+
+        assertThat(merged).hasSize(3);
+        assertThat(merged.get(0).medianMillis()).isEqualTo(90);
+        assertThat(merged.get(0).medianCpuMillis()).isEqualTo(160);
+        assertThat(merged.get(0).rmse()).isEqualTo(0.0027);
+        // another threshold's row does not count for 0.05
+        assertThat(merged.get(1).medianMillis()).isEqualTo(40);
+        assertThat(merged.get(1).medianCpuMillis()).isEqualTo(65);
+        assertThat(merged.get(1).rmse()).isEqualTo(0.0020);
+        // no fork times POV-Ray: its row is the first JVM's
+        assertThat(merged.get(2)).isEqualTo(first.get(2));
+    }
+
+    @Test
+    void theCsvReadsBackWhatItWrote() {
+        List<Measurement> rows = List.of(row("jittered", 16, Double.NaN, 80.5, 150.25, 0.0027),
+                row("adaptive-sobol", 256, 0.05, 40, 70, Double.NaN),
+                row("povray-grid", 4, Double.NaN, 12, Double.NaN, 0.01));
+
+        List<Measurement> read = BenchCsv.parse(BenchCsv.format(rows));
+
+        assertThat(read).hasSize(3);
+        assertThat(read.get(0).medianMillis()).isEqualTo(80.5);
+        assertThat(read.get(0).medianCpuMillis()).isEqualTo(150.25);
+        assertThat(read.get(0).threshold()).isNaN();
+        assertThat(read.get(1).threshold()).isEqualTo(0.05);
+        assertThat(read.get(1).rmse()).isNaN();
+        assertThat(read.get(2).medianCpuMillis()).isNaN();
+    }
+}
