@@ -40,7 +40,8 @@ public final class ProcessRun {
         return nanos;
     }
 
-    private static String tail(Path log) {
+    /** The last 15 lines of a log, for an error message. */
+    public static String tail(Path log) {
         try {
             List<String> lines = Files.readAllLines(log);
             return String.join("\n", lines.subList(Math.max(0, lines.size() - 15), lines.size()));

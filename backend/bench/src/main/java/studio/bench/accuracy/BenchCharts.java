@@ -171,6 +171,11 @@ final class BenchCharts {
                 series.setLineColor(COLORS[i % COLORS.length]);
                 series.setMarkerColor(COLORS[i % COLORS.length]);
                 series.setMarker(MARKERS[i % MARKERS.length]);
+            } else if (Method.isBySamples(method)) {
+                // the default threshold as the most samples a pixel may take moves: a solid line
+                series.setLineColor(ADAPTIVE_COLOR);
+                series.setMarkerColor(ADAPTIVE_COLOR);
+                series.setMarker(SeriesMarkers.TRIANGLE_UP);
             } else {
                 series.setLineColor(ADAPTIVE_COLOR);
                 series.setMarkerColor(ADAPTIVE_COLOR);

@@ -13,6 +13,8 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
+import studio.bench.ProcessRun;
+
 /**
  * The benchmark's rounds repeated in fresh JVMs ({@code --forks}), as JMH forks its benchmarks.
  * Renders of 20-500 ms in one JVM measure that JVM's compiled code as well as the renderer: the JIT
@@ -53,7 +55,7 @@ final class Forks {
         try {
             if (!process.waitFor(bound.toMillis(), TimeUnit.MILLISECONDS)) {
                 process.destroyForcibly();
-                throw new IOException("JVM " + index + " ran over " + bound.toMinutes() + " minutes\n" + tail(output));
+                throw new IOException("JVM " + index + " ran over " + bound.toMinutes() + " minutes\n" + ProcessRun.tail(output));
             }
         } catch (InterruptedException e) {
             process.destroyForcibly();
@@ -61,7 +63,7 @@ final class Forks {
             throw new IOException("interrupted", e);
         }
         if (process.exitValue() != 0 || !Files.isRegularFile(times)) {
-            throw new IOException("JVM " + index + " exited " + process.exitValue() + "\n" + tail(output));
+            throw new IOException("JVM " + index + " exited " + process.exitValue() + "\n" + ProcessRun.tail(output));
         }
         return BenchCsv.read(times);
     }
@@ -95,14 +97,5 @@ final class Forks {
 
     private static String key(Measurement m) {
         return m.scene() + "," + m.method() + "," + m.samples() + "," + m.threshold();
-    }
-
-    private static String tail(Path log) {
-        try {
-            List<String> lines = Files.readAllLines(log);
-            return String.join("\n", lines.subList(Math.max(0, lines.size() - 15), lines.size()));
-        } catch (IOException e) {
-            return "(no log: " + e.getMessage() + ")";
-        }
     }
 }

@@ -18,6 +18,7 @@ import studio.engine.render.Renderer;
 import studio.engine.sampler.Sampler;
 import studio.engine.scene.Scene;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.format.SceneDefaults;
 
 /**
  * Measures one scene: a reference render with many jittered samples, then every available sampler
@@ -40,11 +41,16 @@ final class SpeedAccuracyBench {
      * @param adaptiveMaxSamples the most samples adaptive sampling may spend on a pixel
      */
     record Config(int runs, int referenceSamples, List<Integer> sampleCounts, List<Double> thresholds,
-                  int adaptiveMaxSamples) {
+                  int adaptiveMaxSamples, double defaultThreshold, List<Integer> defaultSampleCounts) {
 
+        /**
+         * Fixed counts 1 to 256; thresholds 0.5 to 0.01 at 256 samples at most; and the default
+         * threshold at 1 to 64 samples at most (the default sampling as {@code render.samples} moves it).
+         */
         static Config defaults(int runs, int referenceSamples) {
             return new Config(runs, referenceSamples, List.of(1, 4, 16, 64, 256),
-                    List.of(0.5, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01), 256);
+                    List.of(0.5, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01), 256, SceneDefaults.ADAPTIVE,
+                    List.of(1, 2, 4, 8, 16, 32, 64));
         }
     }
 
@@ -103,6 +109,7 @@ final class SpeedAccuracyBench {
         if (adaptiveAccepts(base, "sobol")) {
             List<Planned> all = new ArrayList<>(fixed);
             all.addAll(adaptivePlans("sobol", base));
+            all.addAll(bySamplesPlans("sobol", base));
             return new SceneResult(name, measure(name, all, scene, reference, povray), reference, referenceMillis);
         }
         List<Measurement> rows = new ArrayList<>(measure(name, fixed, scene, reference, povray));
@@ -129,6 +136,7 @@ final class SpeedAccuracyBench {
         List<Planned> plans = new ArrayList<>(fixedPlans(base));
         if (EngineFeatures.hasAdaptive() && adaptiveAccepts(base, "sobol")) {
             plans.addAll(adaptivePlans("sobol", base));
+            plans.addAll(bySamplesPlans("sobol", base));
         }
         return measure(name, plans, scene, null, null);
     }
@@ -168,6 +176,17 @@ final class SpeedAccuracyBench {
         for (double threshold : config.thresholds()) {
             plans.add(new Planned(Method.adaptive(samplerName, threshold), config.adaptiveMaxSamples(),
                     settings(base, sampler, threshold, base.seed(), true)));
+        }
+        return plans;
+    }
+
+    /** The default threshold at each of the configured most samples a pixel may take. */
+    private List<Planned> bySamplesPlans(String samplerName, RenderSettings base) {
+        List<Planned> plans = new ArrayList<>();
+        for (int n : config.defaultSampleCounts()) {
+            Sampler sampler = EngineFeatures.sampler(samplerName, n).orElseThrow();
+            plans.add(new Planned(Method.adaptiveBySamples(samplerName, config.defaultThreshold()), n,
+                    settings(base, sampler, config.defaultThreshold(), base.seed(), true)));
         }
         return plans;
     }

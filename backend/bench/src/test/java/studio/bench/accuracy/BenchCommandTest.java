@@ -35,11 +35,13 @@ class BenchCommandTest {
         assertThat(csv.get(0)).isEqualTo("scene,method,samples,mean_spp,median_ms,median_cpu_ms,rmse,psnr_db,threshold");
 
         long samplers = EngineFeatures.SAMPLER_NAMES.stream().filter(n -> EngineFeatures.sampler(n, 16).isPresent()).count();
-        int adaptiveRows = EngineFeatures.hasAdaptive() ? 7 : 0;
+        int adaptiveRows = EngineFeatures.hasAdaptive() ? 7 + 7 : 0; // by threshold, and the default threshold by samples
         int scenes = BenchSceneFiles.all().size();
         assertThat(csv).hasSize(1 + scenes * (int) (samplers * 5 + adaptiveRows));
         assertThat(csv).anySatisfy(line -> assertThat(line).startsWith("edges,jittered,16,16.000,"));
         assertThat(csv).anySatisfy(line -> assertThat(line).startsWith("stripes,regular,256,256.000,"));
+        // the default threshold at one sample a pixel at most: one sample on every pixel
+        assertThat(csv).anySatisfy(line -> assertThat(line).startsWith("edges,adaptive-sobol-samples,1,1.000,").endsWith(",0.05"));
         for (String line : csv.subList(1, csv.size())) {
             String[] fields = line.split(",", -1);
             assertThat(fields).hasSize(9);

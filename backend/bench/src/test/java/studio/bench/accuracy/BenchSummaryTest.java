@@ -107,4 +107,21 @@ class BenchSummaryTest {
         assertThat(BenchSummary.againstPovray(rows)).contains("below our default's range").contains("worst ratio 0.50");
         assertThat(BenchSummary.againstPovray(method("adaptive-sobol", 1, 0.1, -1.0))).isEmpty();
     }
+
+    @Test
+    void ourDefaultIsTheLowerOfItsCurveByThresholdAndItsCurveBySamples() {
+        // by threshold: the cheapest setting takes 4 samples (errors 0.1/4 .. 0.1/256 at 1 ms a sample)
+        List<Measurement> rows = new ArrayList<>(method("adaptive-sobol", 1, 0.1, -1.0).subList(1, 5));
+        // by samples: from one sample a pixel, at 1 ms a sample too but twice the error, so it reaches
+        // POV-Ray's 1-ray error at 2 samples, 2 ms
+        rows.addAll(method(BenchSummary.DEFAULT_BY_SAMPLES, 1, 0.2, -1.0));
+        rows.addAll(method("povray-grid", 4, 0.1, -1.0).subList(0, 2));
+        String text = BenchSummary.againstPovray(rows);
+        assertThat(text).contains("by threshold and by samples");
+        // at POV-Ray's 1 ray (error 0.1, 4 ms) ours takes 2 ms: 0.50, not the "<= 1.00" the threshold curve alone gives
+        assertThat(text).contains("rmse 0.10000       4.0 ms  0.50");
+        List<Measurement> thresholdOnly = new ArrayList<>(rows.subList(0, 4));
+        thresholdOnly.addAll(rows.subList(9, 11));
+        assertThat(BenchSummary.againstPovray(thresholdOnly)).contains("rmse 0.10000       4.0 ms  <= 1.00");
+    }
 }
