@@ -140,6 +140,7 @@ public final class BenchCommand {
                 for (int fork = 2; fork <= options.forks; fork++) {
                     forks.add(Forks.run(options.forkArguments(), dir, fork, bound, err));
                 }
+                Files.delete(dir);
                 List<Measurement> merged = Forks.merge(all, forks);
                 all.clear();
                 all.addAll(merged);

@@ -31,7 +31,8 @@ final class Forks {
 
     /**
      * Runs this benchmark's timing in a new JVM, with this JVM's Java, class path and -X options, and
-     * reads back its rows; waits at most {@code bound}.
+     * reads back its rows (its files in {@code dir} are deleted then; kept when it fails); waits at
+     * most {@code bound}.
      *
      * @param arguments the accuracy command's arguments for the fork, without {@code --times-only}
      * @throws IOException if it could not start, failed, ran over its bound or wrote no rows (the
@@ -65,7 +66,10 @@ final class Forks {
         if (process.exitValue() != 0 || !Files.isRegularFile(times)) {
             throw new IOException("JVM " + index + " exited " + process.exitValue() + "\n" + ProcessRun.tail(output));
         }
-        return BenchCsv.read(times);
+        List<Measurement> rows = BenchCsv.read(times);
+        Files.delete(times);
+        Files.delete(output);
+        return rows;
     }
 
     /**

@@ -100,24 +100,29 @@ final class SpeedAccuracyBench {
         log.printf(Locale.ROOT, "%s: reference, %s at %d samples/pixel, %.0f ms%n", name, REFERENCE_SAMPLER,
                 config.referenceSamples(), referenceMillis);
 
-        List<Planned> fixed = fixedPlans(base);
-        if (!adaptive) {
-            return new SceneResult(name, measure(name, fixed, scene, reference, povray), reference, referenceMillis);
-        }
-        // sobol first: its adaptive sampling walks one stratified sequence (see Renderer); it is measured
-        // in the same rounds as the fixed counts, so that the ratios between them see the same machine
-        if (adaptiveAccepts(base, "sobol")) {
-            List<Planned> all = new ArrayList<>(fixed);
-            all.addAll(adaptivePlans("sobol", base));
-            all.addAll(bySamplesPlans("sobol", base));
-            return new SceneResult(name, measure(name, all, scene, reference, povray), reference, referenceMillis);
-        }
-        List<Measurement> rows = new ArrayList<>(measure(name, fixed, scene, reference, povray));
-        String best = bestSampler(rows, base);
-        if (best != null) {
-            rows.addAll(measure(name, adaptivePlans(best, base), scene, reference, null));
+        List<Measurement> rows = new ArrayList<>(measure(name, oneRoundPlans(base), scene, reference, povray));
+        if (adaptive && !adaptiveAccepts(base, "sobol")) {
+            // an engine whose adaptive sampling does not walk sobol: on top of the sampler that did best
+            String best = bestSampler(rows, base);
+            if (best != null) {
+                rows.addAll(measure(name, adaptivePlans(best, base), scene, reference, null));
+            }
         }
         return new SceneResult(name, rows, reference, referenceMillis);
+    }
+
+    /**
+     * The settings timed in the same rounds: every fixed count, and, where the engine has adaptive
+     * sampling on sobol (which walks one stratified sequence, see Renderer), its two curves, so that
+     * the ratios between them all see the same machine.
+     */
+    private List<Planned> oneRoundPlans(RenderSettings base) {
+        List<Planned> plans = new ArrayList<>(fixedPlans(base));
+        if (EngineFeatures.hasAdaptive() && adaptiveAccepts(base, "sobol")) {
+            plans.addAll(adaptivePlans("sobol", base));
+            plans.addAll(bySamplesPlans("sobol", base));
+        }
+        return plans;
     }
 
     /** A setting to measure. */
@@ -133,12 +138,7 @@ final class SpeedAccuracyBench {
         Scene scene = compiled.scene();
         RenderSettings base = compiled.settings();
         warmUp(scene, base);
-        List<Planned> plans = new ArrayList<>(fixedPlans(base));
-        if (EngineFeatures.hasAdaptive() && adaptiveAccepts(base, "sobol")) {
-            plans.addAll(adaptivePlans("sobol", base));
-            plans.addAll(bySamplesPlans("sobol", base));
-        }
-        return measure(name, plans, scene, null, null);
+        return measure(name, oneRoundPlans(base), scene, null, null);
     }
 
     /** Lets the JIT compile the hot loops (fixed and adaptive) before anything is timed. */

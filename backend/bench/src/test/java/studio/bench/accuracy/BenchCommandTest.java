@@ -59,6 +59,11 @@ class BenchCommandTest {
         assertThat(Files.readString(dir.resolve("summary.txt"))).contains("soft-shadows", "target RMSE", "jittered");
         assertThat(out.toString(StandardCharsets.UTF_8)).contains("ms to target", "vs jittered", "median over 2 JVMs");
         assertThat(err.toString(StandardCharsets.UTF_8)).contains("bench: JVM 2 times the same settings", "--times-only");
+        // the fork's files are read and deleted, with their folder
+        java.util.regex.Matcher times = java.util.regex.Pattern.compile("--times-only (\\S+),")
+                .matcher(err.toString(StandardCharsets.UTF_8));
+        assertThat(times.find()).isTrue();
+        assertThat(Path.of(times.group(1)).getParent()).doesNotExist();
     }
 
     @Test
