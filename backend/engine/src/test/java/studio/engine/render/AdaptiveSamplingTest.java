@@ -34,9 +34,17 @@ class AdaptiveSamplingTest {
     private static final Vec3 UP = new Vec3(0, 1, 0);
     private static final int MIN = BatchAdaptiveSampling.MIN_BATCHES * BatchAdaptiveSampling.BATCH;
 
-    /** The fewest samples a pixel takes: the base samples with sobol, two batches with the others. */
+    /** The fewest samples a pixel takes: the base sample with sobol, two batches with the others. */
     private static int minimum(String sampler) {
         return sampler.equals("sobol") ? ProgressiveSobolSampling.BASE : MIN;
+    }
+
+    /**
+     * The fewest samples the pixel of a 1 x 1 image takes: with sobol it has no neighbours to be judged
+     * by, so it takes the first judged samples and their two halves; two batches with the others.
+     */
+    private static int loneMinimum(String sampler) {
+        return sampler.equals("sobol") ? 2 * ProgressiveSobolSampling.FIRST_JUDGED : MIN;
     }
 
     /** A white, unlit sphere of radius 1 at the origin on a black background, lit by nothing. */
@@ -97,7 +105,7 @@ class AdaptiveSamplingTest {
 
         long atEdge = samplesOfOnePixel(edge, sampler, 256, 0.02);
 
-        assertEquals(minimum(sampler), samplesOfOnePixel(centre, sampler, 256, 0.02));
+        assertEquals(loneMinimum(sampler), samplesOfOnePixel(centre, sampler, 256, 0.02));
         assertTrue(atEdge > 4 * MIN, sampler + ": samples at the edge " + atEdge);
         assertTrue(atEdge <= 256);
     }
@@ -172,8 +180,9 @@ class AdaptiveSamplingTest {
 
         RenderResult result = Renderer.render(halfWhite, settings(8, 4, Sampler.of("sobol", 64), 0.05, 1));
 
-        // the refined pixels' halves then agree and their samples have no range: they stop at 2 x BASE
-        assertEquals(ProgressiveSobolSampling.BASE * 6 * 4 + 2 * ProgressiveSobolSampling.BASE * 2 * 4, result.samplesTaken());
+        // the refined pixels' halves then agree and their samples have no range: they stop at 2 x FIRST_JUDGED
+        assertEquals(ProgressiveSobolSampling.BASE * 6 * 4 + 2 * ProgressiveSobolSampling.FIRST_JUDGED * 2 * 4,
+                result.samplesTaken());
         assertEquals(1.0, result.film().get(3, 1, 0), 0.0);
         assertEquals(0.0, result.film().get(4, 1, 0), 0.0);
     }

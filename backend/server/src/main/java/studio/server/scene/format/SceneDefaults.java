@@ -38,7 +38,7 @@ public final class SceneDefaults {
     /**
      * The adaptive-sampling threshold with the sobol sampler (0: off, every pixel takes render.samples
      * samples): sobol with adaptive sampling wins the speed-against-accuracy chart (docs/bench); flat
-     * pixels stop at 4 samples, edges take up to render.samples. With the other samplers it defaults to 0.
+     * pixels stop at 1 sample, edges take up to render.samples. With the other samplers it defaults to 0.
      */
     public static final double ADAPTIVE = 0.05;
     /** Used when a scene has no "lights" field at all; an empty list means no lights. */
