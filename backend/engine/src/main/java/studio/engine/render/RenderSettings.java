@@ -58,9 +58,12 @@ public record RenderSettings(int width, int height, Sampler sampler, int maxDept
         this(width, height, sampler, maxDepth, threads, 0L, DEFAULT_MIN_PATH_WEIGHT);
     }
 
-    /** Whether pixels stop taking samples once their estimate is good enough. */
+    /**
+     * Whether pixels stop taking samples once their estimate is good enough: with a threshold, and
+     * more than one sample a pixel to stop within (with one, every pixel takes it, as without).
+     */
     public boolean adaptive() {
-        return adaptiveThreshold > 0;
+        return adaptiveThreshold > 0 && sampler.samplesPerPixel() > 1;
     }
 
     /** The number of worker threads this render will use. */

@@ -14,6 +14,13 @@ package studio.engine.sampler;
  * the N points are a (0, m, 2)-net: every elementary interval of area 1/N (1/N x 1, 2/N x 1/2, ...,
  * 1 x 1/N) holds exactly one point, so the pattern is stratified in every aspect ratio at once.
  * Other N take the first N points of such a net.
+ *
+ * <p>One point alone is the pixel's centre, drawing nothing: any single point is a net, and the
+ * centre is the best one for a pixel whose colour varies smoothly (the midpoint rule's error falls
+ * with the square of the pixel's size, a random point's only with its size). On the four scenes of
+ * the speed-accuracy bench at one sample a pixel it gives a third less RMSE than a random point
+ * (edges 0.015 against 0.023, glass 0.039 against 0.060, soft-shadows 0.011 against 0.017, stripes
+ * 0.13 against 0.19; the regular sampler's centres against sobol's first point), for the same rays.
  */
 public record SobolSampler(int samplesPerPixel) implements Sampler {
 
@@ -26,15 +33,24 @@ public record SobolSampler(int samplesPerPixel) implements Sampler {
         return "sobol";
     }
 
-    /** Three 32-bit seeds: the index's scramble and each coordinate's. */
+    /** Three 32-bit seeds: the index's scramble and each coordinate's; none for the one-point pattern. */
     @Override
     public int draws(int size) {
-        return 3;
+        return size == 1 ? 0 : 3;
     }
 
-    /** Points first .. first + count - 1 of the sequence scrambled with the pattern's seeds. */
+    /**
+     * Points first .. first + count - 1 of the sequence scrambled with the pattern's seeds; the
+     * one-point pattern's point is the centre.
+     */
     @Override
     public void fill(PixelRandom random, int size, int first, int count, double[] xs, double[] ys) {
+        if (size == 1) {
+            if (count == 1) {
+                xs[first] = ys[first] = 0.5;
+            }
+            return;
+        }
         int indexSeed = random.nextInt(), xSeed = random.nextInt(), ySeed = random.nextInt();
         // owenScramble(b, s) = reverse(lkHash(reverse(b), s)); the reversals that cancel are left out.
         for (int i = first; i < first + count; i++) {

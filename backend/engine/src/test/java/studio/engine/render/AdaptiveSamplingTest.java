@@ -1,6 +1,7 @@
 package studio.engine.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -185,6 +186,22 @@ class AdaptiveSamplingTest {
                 result.samplesTaken());
         assertEquals(1.0, result.film().get(3, 1, 0), 0.0);
         assertEquals(0.0, result.film().get(4, 1, 0), 0.0);
+    }
+
+    @Test
+    void aThresholdAtOneSampleAPixelRendersAsWithoutOne() {
+        for (String sampler : List.of("jittered", "sobol")) {
+            RenderSettings withThreshold = settings(40, 30, Sampler.of(sampler, 1), 0.05, 2);
+
+            RenderResult adaptive = Renderer.render(MIXED, withThreshold);
+            RenderResult fixed = Renderer.render(MIXED, withThreshold.withAdaptiveThreshold(0));
+
+            assertFalse(withThreshold.adaptive(), sampler);
+            assertEquals(fixed.samplesTaken(), adaptive.samplesTaken(), sampler);
+            assertEquals(fixed.raysTraced(), adaptive.raysTraced(), sampler + ": no tile traces a ring of neighbours");
+            assertEquals(SampledImagesUnchangedTest.fingerprint(fixed.film()),
+                    SampledImagesUnchangedTest.fingerprint(adaptive.film()), sampler);
+        }
     }
 
     @Test

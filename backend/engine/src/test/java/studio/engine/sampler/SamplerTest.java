@@ -45,6 +45,22 @@ class SamplerTest {
     }
 
     @Test
+    void sobolSamplerWithOneSampleUsesThePixelCentreAndDrawsNothing() {
+        double[] xs = new double[1], ys = new double[1];
+        PixelRandom random = new PixelRandom();
+        random.reset(5, 6, 7);
+
+        Patterns.whole(new SobolSampler(1), random, xs, ys);
+
+        assertEquals(0.5, xs[0], 0.0);
+        assertEquals(0.5, ys[0], 0.0);
+        assertEquals(0, new SobolSampler(1).draws(1));
+        PixelRandom untouched = new PixelRandom();
+        untouched.reset(5, 6, 7);
+        assertEquals(untouched.nextInt(), random.nextInt(), "the pixel's stream is where it was");
+    }
+
+    @Test
     void regularSamplerRejectsNonSquareCounts() {
         for (int n : new int[] {0, -4, 2, 3, 5, 8, 12, 15, 17}) {
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new RegularSampler(n),

@@ -57,6 +57,18 @@ class PreviewPassTest {
     }
 
     @Test
+    void aOneSampleSceneWithAThresholdEndsWithItsMosaicToo() {
+        // the default sampling at render.samples 1: sobol with threshold 0.05, which one sample leaves nothing to decide
+        RenderSettings target = new RenderSettings(640, 480, new SobolSampler(1), 6, 2, 3, 1.0 / 1024, 0.05);
+
+        List<PreviewPass> passes = PreviewPass.plan(target);
+
+        assertEquals(4, passes.size());
+        assertTrue(passes.get(3).last(), "the whole one-sample film is the render itself");
+        assertFalse(target.adaptive());
+    }
+
+    @Test
     void smallViewsSkipLatticesThatWouldBeEmptyOrNoCoarser() {
         RenderSettings tiny = new RenderSettings(3, 3, new JitteredSampler(4), 6, 1, 3, 1.0 / 1024, 0);
         List<PreviewPass> passes = PreviewPass.plan(tiny);
