@@ -38,7 +38,7 @@ public final class BenchCommand {
     /** Exit codes, as the render command's: 0 done, 1 could not read or write a file, 2 bad arguments or an invalid scene. */
     static final int OK = 0, IO_ERROR = 1, INVALID = 2;
 
-    static final int DEFAULT_WIDTH = 320, DEFAULT_HEIGHT = 240, DEFAULT_RUNS = 3, DEFAULT_FORKS = 3,
+    static final int DEFAULT_WIDTH = 320, DEFAULT_HEIGHT = 240, DEFAULT_RUNS = 2, DEFAULT_FORKS = 5,
             DEFAULT_REFERENCE_SAMPLES = 1024;
 
     static final String USAGE = "usage: java -jar studio-bench.jar accuracy [--out docs/bench] [--width " + DEFAULT_WIDTH
