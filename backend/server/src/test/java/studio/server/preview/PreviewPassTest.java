@@ -47,25 +47,16 @@ class PreviewPassTest {
 
     @Test
     void aOneSampleSceneEndsWithItsMosaic() {
-        RenderSettings target = new RenderSettings(640, 480, new JitteredSampler(1), 6, 2, 3, 1.0 / 1024, 0);
+        // without a threshold, and with one (the default sampling at render.samples 1: one sample leaves nothing to adapt)
+        for (RenderSettings target : List.of(
+                new RenderSettings(640, 480, new JitteredSampler(1), 6, 2, 3, 1.0 / 1024, 0),
+                new RenderSettings(640, 480, new SobolSampler(1), 6, 2, 3, 1.0 / 1024, 0.05))) {
+            List<PreviewPass> passes = PreviewPass.plan(target);
 
-        List<PreviewPass> passes = PreviewPass.plan(target);
-
-        assertEquals(4, passes.size());
-        assertTrue(passes.get(3).last(), "the whole one-sample film is the render itself");
-        assertEquals(PixelLattice.ALL, passes.get(3).pixels());
-    }
-
-    @Test
-    void aOneSampleSceneWithAThresholdEndsWithItsMosaicToo() {
-        // the default sampling at render.samples 1: sobol with threshold 0.05, which one sample leaves nothing to decide
-        RenderSettings target = new RenderSettings(640, 480, new SobolSampler(1), 6, 2, 3, 1.0 / 1024, 0.05);
-
-        List<PreviewPass> passes = PreviewPass.plan(target);
-
-        assertEquals(4, passes.size());
-        assertTrue(passes.get(3).last(), "the whole one-sample film is the render itself");
-        assertFalse(target.adaptive());
+            assertEquals(4, passes.size(), target.toString());
+            assertTrue(passes.get(3).last(), "the whole one-sample film is the render itself");
+            assertEquals(PixelLattice.ALL, passes.get(3).pixels());
+        }
     }
 
     @Test
