@@ -189,6 +189,19 @@ class AdaptiveSamplingTest {
     }
 
     @Test
+    void sobolJudgesAPixelByAtLeastTheFirstJudgedSamples() {
+        // flat: every sample is the same; a 2 x 2 image's corner has 4 pixels around it, a column's pixel at most 3
+        Scene inside = flatSphere(new Camera(new Vec3(0, 0, 5), Vec3.ZERO, UP, 10));
+
+        RenderResult square = Renderer.render(inside, settings(2, 2, Sampler.of("sobol", 64), 0.05, 1));
+        RenderResult column = Renderer.render(inside, settings(1, 5, Sampler.of("sobol", 64), 0.05, 1));
+
+        assertEquals(4L * ProgressiveSobolSampling.BASE, square.samplesTaken());
+        // judged on their own: the first judged samples, then halves of them that agree
+        assertEquals(5L * 2 * ProgressiveSobolSampling.FIRST_JUDGED, column.samplesTaken());
+    }
+
+    @Test
     void aThresholdAtOneSampleAPixelRendersAsWithoutOne() {
         for (String sampler : List.of("jittered", "sobol")) {
             RenderSettings withThreshold = settings(40, 30, Sampler.of(sampler, 1), 0.05, 2);
