@@ -72,7 +72,7 @@ export function InspectorScene() {
           min={0}
           max={1}
           step={0.01}
-          hint="0: off. Otherwise a pixel stops taking samples (at least 4 with sobol, 8 with the others) once its estimated relative error is below this; 0.05 by default, smaller is smoother and slower; not with the regular sampler"
+          hint="0: off. Otherwise a pixel stops taking samples once its estimated relative error is below this (with sobol from 1 sample, if its 8 neighbours agree; with the others from 8); 0.05 by default, smaller is smoother and slower; not with the regular sampler"
           onCommit={(adaptive) => s.setRender({ adaptive })}
         />
         <NumberField label="Max depth" path="render.maxDepth" value={r.render.maxDepth} integer min={0} max={16} step={1} hint="Reflection/refraction bounces" onCommit={(maxDepth) => s.setRender({ maxDepth })} />

@@ -167,8 +167,10 @@ export interface RenderSettings {
   maxDepth?: number;
   seed?: number;
   /**
-   * Adaptive sampling: a pixel stops taking samples (in batches of 4, at least 8) once the standard
-   * error of its mean is within this fraction of its brightness. 0 (or absent): off. In [0, 1].
+   * Adaptive sampling: a pixel stops taking samples once its error is within this fraction of (the
+   * square root of) its brightness. With sobol it takes one sample and stops there if its 3x3
+   * neighbourhood agrees, else walks on along its sequence; with the others, batches of 4, at least
+   * 8. 0 (or absent): off; at one sample a pixel there is nothing to adapt. In [0, 1].
    */
   adaptive?: number;
 }
