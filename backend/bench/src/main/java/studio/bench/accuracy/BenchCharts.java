@@ -171,17 +171,17 @@ final class BenchCharts {
                 series.setLineColor(COLORS[i % COLORS.length]);
                 series.setMarkerColor(COLORS[i % COLORS.length]);
                 series.setMarker(MARKERS[i % MARKERS.length]);
-            } else if (Method.isBySamples(method)) {
-                // the default threshold as the most samples a pixel may take moves: a solid line
-                series.setLineColor(ADAPTIVE_COLOR);
-                series.setMarkerColor(ADAPTIVE_COLOR);
-                series.setMarker(SeriesMarkers.TRIANGLE_UP);
             } else {
                 series.setLineColor(ADAPTIVE_COLOR);
                 series.setMarkerColor(ADAPTIVE_COLOR);
-                series.setMarker(SeriesMarkers.CROSS);
-                series.setLineStyle(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f,
-                        new float[] {6f, 4f}, 0f));
+                if (Method.isBySamples(method)) {
+                    // the default threshold as the most samples a pixel may take moves: a solid line
+                    series.setMarker(SeriesMarkers.TRIANGLE_UP);
+                } else {
+                    series.setMarker(SeriesMarkers.CROSS);
+                    series.setLineStyle(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f,
+                            new float[] {6f, 4f}, 0f));
+                }
             }
         }
         return chart;

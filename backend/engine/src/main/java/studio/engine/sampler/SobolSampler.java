@@ -45,9 +45,9 @@ public record SobolSampler(int samplesPerPixel) implements Sampler {
      */
     @Override
     public void fill(PixelRandom random, int size, int first, int count, double[] xs, double[] ys) {
-        if (size == 1) {
-            if (count == 1) {
-                xs[first] = ys[first] = 0.5;
+        if (size == 1) { // first is 0 and count 0 or 1
+            for (int i = first; i < first + count; i++) {
+                xs[i] = ys[i] = 0.5;
             }
             return;
         }

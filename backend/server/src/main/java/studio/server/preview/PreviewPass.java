@@ -58,8 +58,8 @@ record PreviewPass(int number, RenderSettings settings, PixelLattice pixels, Pix
                 before = lattice;
             }
         }
-        // a target at one sample a pixel with a threshold is not adaptive either: nothing to stop within
-        boolean oneSampleIsTarget = !target.adaptive() && oneSample.equals(target.withAdaptiveThreshold(0));
+        // a target at one sample a pixel renders the same with or without a threshold (RenderSettings.adaptive)
+        boolean oneSampleIsTarget = oneSample.equals(target.withAdaptiveThreshold(0));
         passes.add(new PreviewPass(passes.size() + 1, oneSample, PixelLattice.ALL, before, oneSampleIsTarget));
         if (!oneSampleIsTarget) {
             passes.add(new PreviewPass(passes.size() + 1, target, PixelLattice.ALL, null, true));
