@@ -1,6 +1,7 @@
 package studio.engine.render;
 
 import studio.engine.camera.Camera;
+import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Ray;
 import studio.engine.scene.Scene;
 
@@ -12,10 +13,19 @@ import studio.engine.scene.Scene;
  */
 final class SampleTracer {
 
+    /**
+     * A call tracing at least this many samples first lists the objects their rays can meet
+     * ({@link PixelCandidates}); fewer would not repay the search.
+     */
+    static final int CANDIDATES_FROM = 4;
+
     private final Integrator integrator;
     private final Camera camera;
     private final StopSignal stop;
     private final Ray cameraRay = new Ray();
+    private final Frustum frustum = new Frustum();
+    /** Whether pixels list what their rays can meet: only a scene searched through a BVH gains. */
+    private boolean useCandidates;
     private final int width, height;
     private final double aspect;
     /** The radiance summed over the last call of {@link #trace}. */
@@ -25,11 +35,47 @@ final class SampleTracer {
 
     SampleTracer(Scene scene, RenderSettings settings, StopSignal stop) {
         this.stop = stop;
+        useCandidates = scene.searchesBvh();
         integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight());
         camera = scene.camera();
         width = settings.width();
         height = settings.height();
         aspect = (double) width / height;
+    }
+
+    /** A pyramid holding the camera rays of samples first .. first + count - 1 of pixel (x, y). */
+    private Frustum cameraRays(int x, int y, double[] xs, double[] ys, int first, int count) {
+        double minX = Double.POSITIVE_INFINITY, maxX = Double.NEGATIVE_INFINITY;
+        double minY = Double.POSITIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY;
+        for (int s = first; s < first + count; s++) {
+            double ndcX = ndcX(x, xs[s]), ndcY = ndcY(y, ys[s]);
+            minX = Math.min(minX, ndcX);
+            maxX = Math.max(maxX, ndcX);
+            minY = Math.min(minY, ndcY);
+            maxY = Math.max(maxY, ndcY);
+        }
+        return camera.frustum(minX, maxX, minY, maxY, aspect, frustum);
+    }
+
+    /** Normalised device x of a sample at offset dx in column x: -1 at the left edge, 1 at the right. */
+    private double ndcX(int x, double dx) {
+        return 2 * (x + dx) / width - 1;
+    }
+
+    /** Normalised device y of a sample at offset dy in row y: 1 at the top edge, -1 at the bottom. */
+    private double ndcY(int y, double dy) {
+        return 1 - 2 * (y + dy) / height;
+    }
+
+    /** From now on every ray searches the whole scene (tests compare the two ways). */
+    SampleTracer withoutCandidates() {
+        useCandidates = false;
+        return this;
+    }
+
+    /** Whether the last {@link #trace} listed the objects its camera rays can hit. */
+    boolean listedCandidates() {
+        return integrator.candidates.cameraCount >= 0;
     }
 
     /** Records the rays of the next samples as pixel p's in {@code paths} (null: nowhere). */
@@ -62,12 +108,15 @@ final class SampleTracer {
      */
     long trace(int x, int y, double[] xs, double[] ys, int first, int count) {
         long bad = 0;
+        if (count >= CANDIDATES_FROM && useCandidates) {
+            integrator.candidates.forCameraRaysIn(cameraRays(x, y, xs, ys, first, count));
+        } else {
+            integrator.candidates.none();
+        }
         double r = 0, g = 0, b = 0;
         for (int s = first; s < first + count; s++) {
             stop.check();
-            double ndcX = 2 * (x + xs[s]) / width - 1;
-            double ndcY = 1 - 2 * (y + ys[s]) / height;
-            Ray ray = camera.ray(ndcX, ndcY, aspect, cameraRay);
+            Ray ray = camera.ray(ndcX(x, xs[s]), ndcY(y, ys[s]), aspect, cameraRay);
             // Each sample starts with throughput 1: culling by the sample's share of the pixel
             // (1/N) would drop every weak reflection at high sample counts, a bias, not noise.
             integrator.trace(ray, 0, 1.0);

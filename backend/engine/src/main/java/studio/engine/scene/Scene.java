@@ -3,6 +3,7 @@ package studio.engine.scene;
 import java.util.List;
 
 import studio.engine.camera.Camera;
+import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Shape;
@@ -54,6 +55,31 @@ public final class Scene {
      */
     public boolean intersect(Ray ray, double tMax, Hit hit) {
         return geometry.intersect(ray, tMax, hit);
+    }
+
+    /** Whether the scene's objects are searched through a BVH (more than {@link ShapeSet#LINEAR_MAX}), not one by one. */
+    public boolean searchesBvh() {
+        return geometry.usesBvh();
+    }
+
+    /** The objects camera rays inside the frustum can hit, ascending, or -1 (see {@link ShapeSet#candidates}). */
+    public int candidates(Frustum frustum, int[] out, int[] stack) {
+        return geometry.candidates(frustum, out, stack);
+    }
+
+    /** {@link #intersect} for a ray that can hit only objects {@code ids[0 .. count-1]}, from {@link #candidates}. */
+    public boolean intersectAmong(int[] ids, int count, Ray ray, double tMax, Hit hit) {
+        return geometry.intersectAmong(ids, count, ray, tMax, hit);
+    }
+
+    /** The union of objects {@code ids[0 .. count-1]}'s boxes, or false (see {@link ShapeSet#boundsOf}). */
+    public boolean boundsOf(int[] ids, int count, double[] box) {
+        return geometry.boundsOf(ids, count, box);
+    }
+
+    /** {@link #occluder} for a ray that can meet only objects {@code ids[0 .. count-1]}, from {@link #candidates}. */
+    public int occluderAmong(int[] ids, int count, Ray ray, double tMax) {
+        return geometry.occluderAmong(ids, count, ray, tMax);
     }
 
     /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */

@@ -12,11 +12,14 @@ import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 
+import studio.engine.accel.Bvh;
 import studio.engine.camera.Camera;
 import studio.engine.geometry.Box;
+import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Plane;
 import studio.engine.geometry.Ray;
+import studio.engine.geometry.Rays;
 import studio.engine.geometry.Shape;
 import studio.engine.geometry.Sphere;
 import studio.engine.geometry.TriangleMesh;
@@ -202,5 +205,92 @@ class ShapeSetTest {
         assertTrue(ShapeSet.of(planes).intersect(new Ray(0, 30, 0, 0, -1, 0), Double.POSITIVE_INFINITY, hit));
         assertEquals(19, hit.primitive);
         assertFalse(ShapeSet.of(planes).occluded(new Ray(0, 30, 0, 0, 1, 0), Double.POSITIVE_INFINITY));
+    }
+
+    @Test
+    void aPixelsRaysFindAmongItsCandidatesWhatTheWholeSceneGives() {
+        Random random = new Random(21);
+        Frustum cameraRays = new Frustum(), shadowRays = new Frustum();
+        int[] ids = new int[16], shadowIds = new int[16], stack = new int[Bvh.STACK_SIZE];
+        double[] hitBox = new double[6];
+        int listed = 0, hits = 0, shadowListed = 0, shadowed = 0, lit = 0;
+        Hit a = new Hit(), b = new Hit();
+        for (int scene = 0; scene < 8; scene++) {
+            Shape[] shapes = randomScene(random, 40 + 40 * scene);
+            if (scene % 2 == 1) {
+                // no planes: the hits are bounded, so shadow rays get lists too
+                shapes = java.util.Arrays.stream(shapes).filter(s -> !(s instanceof Plane)).toArray(Shape[]::new);
+            }
+            ShapeSet set = ShapeSet.bvh(shapes);
+            Vec3 light = randomPoint(random, 14);
+            for (int pixel = 0; pixel < 400; pixel++) {
+                Camera camera = new Camera(randomPoint(random, 15), randomPoint(random, 5), new Vec3(0, 1, 0), 60);
+                double size = Math.pow(10, uniform(random, -3.5, -1));
+                double x0 = uniform(random, -1, 1 - size), y0 = uniform(random, -1, 1 - size);
+                int n = set.candidates(camera.frustum(x0, x0 + size, y0, y0 + size, 1.5, cameraRays), ids, stack);
+                if (n < 0) {
+                    continue;
+                }
+                listed++;
+                for (int k = 1; k < n; k++) {
+                    assertTrue(ids[k - 1] < ids[k], "ascending, once each");
+                }
+                boolean bounded = set.boundsOf(ids, n, hitBox);
+                int m = bounded && shadowRays.overBox(light.x(), light.y(), light.z(), hitBox)
+                        ? set.candidates(shadowRays, shadowIds, stack) : -1;
+                shadowListed += m >= 0 ? 1 : 0;
+                for (int s = 0; s < 16; s++) {
+                    double x = x0 + size * (s < 4 ? s & 1 : random.nextDouble());
+                    double y = y0 + size * (s < 4 ? s >> 1 : random.nextDouble());
+                    Ray ray = camera.ray(x, y, 1.5);
+                    boolean expected = set.intersect(ray, Double.POSITIVE_INFINITY, a);
+                    assertEquals(expected, set.intersectAmong(ids, n, ray, Double.POSITIVE_INFINITY, b), ray.toString());
+                    double tMax = uniform(random, 0, 30);
+                    assertEquals(set.occluded(ray, tMax), set.occluderAmong(ids, n, ray, tMax) >= 0, ray.toString());
+                    if (!expected) {
+                        continue;
+                    }
+                    hits++;
+                    assertEquals(a.primitive, b.primitive, ray.toString());
+                    assertEquals(a.t, b.t, 0.0);
+                    assertEquals(a.px, b.px, 0.0);
+                    if (m < 0) {
+                        continue;
+                    }
+                    assertTrue(a.px >= hitBox[0] && a.px <= hitBox[3] && a.py >= hitBox[1] && a.py <= hitBox[4]
+                            && a.pz >= hitBox[2] && a.pz <= hitBox[5], "the hit lies in the candidates' box");
+                    Ray shadow = Rays.spawnTowards(a, light.x(), light.y(), light.z());
+                    double dist = light.minus(new Vec3(shadow.ox, shadow.oy, shadow.oz)).length() * (1 - 1e-9);
+                    boolean blocked = set.occluded(shadow, dist);
+                    assertEquals(blocked, set.occluderAmong(shadowIds, m, shadow, dist) >= 0, shadow.toString());
+                    shadowed += blocked ? 1 : 0;
+                    lit += blocked ? 0 : 1;
+                }
+            }
+        }
+        assertTrue(listed > 2000 && hits > 4000, "pixels with lists " + listed + ", rays that hit " + hits);
+        assertTrue(shadowListed > 150 && shadowed > 500 && lit > 150,
+                "shadow lists " + shadowListed + ", blocked " + shadowed + ", lit " + lit);
+    }
+
+    @Test
+    void candidateListsAreShortAndSayWhenTheyWouldOverflow() {
+        Shape[] row = new Shape[100];
+        for (int i = 0; i < row.length; i++) {
+            row[i] = new Sphere(new Vec3(i, 0, 0), 0.3);
+        }
+        ShapeSet set = ShapeSet.of(row);
+        int[] ids = new int[16], stack = new int[Bvh.STACK_SIZE];
+        Frustum frustum = new Frustum();
+        // looking down at sphere 50 through a pixel a tenth of its size: it alone
+        Camera above = new Camera(new Vec3(50, 10, 0), new Vec3(50, 0, 0), new Vec3(0, 0, -1), 10);
+        assertEquals(1, set.candidates(above.frustum(-0.01, 0.01, -0.01, 0.01, 1, frustum), ids, stack));
+        assertEquals(50, ids[0]);
+        // looking along the row: all 100 lie in the pixel's pyramid, more than the list holds
+        Camera along = new Camera(new Vec3(-5, 0, 0), new Vec3(0, 0, 0), new Vec3(0, 1, 0), 10);
+        assertEquals(-1, set.candidates(along.frustum(-0.01, 0.01, -0.01, 0.01, 1, frustum), ids, stack));
+        // a linear set keeps its loop
+        assertEquals(-1, ShapeSet.of(row[0], row[1]).candidates(frustum, ids, stack));
+        assertFalse(set.boundsOf(ids, 0, new double[6]), "no candidates, no box");
     }
 }

@@ -1,0 +1,159 @@
+package studio.engine.geometry;
+
+/**
+ * A pyramid with its apex at a point, which a BVH traversal uses to find every shape a bundle of
+ * rays from that apex can meet: the camera rays of one pixel's samples (apex at the camera), or
+ * the shadow rays from a pixel's hit points to a point light (apex at the light, the pyramid
+ * holding the box of the hit points and ending behind it).
+ *
+ * <p>Given an axis {@code a} and two directions {@code e1}, {@code e2} across it, a point q lies
+ * inside when, with r = q - apex, x = e1.r / a.r lies in [x0, x1], y = e2.r / a.r in [y0, y1], and
+ * a.r is at most {@code far}. Each bound on x or y is a plane through the apex, with normal
+ * e1 - x0*a, x1*a - e1, e2 - y0*a or y1*a - e2; together they also give a.r &gt;= 0.
+ *
+ * <p>{@link #mayMeet} must never drop a box that a ray of the bundle meets, whatever the rounding:
+ * <ul>
+ *   <li>the ranges are widened by {@value #MARGIN} of their scale, far more than the few units in
+ *       the last place by which a computed ray (or a projected corner) can stray from the exact
+ *       one;</li>
+ *   <li>a box is dropped only when its corner furthest inside a plane is outside it by more than
+ *       {@value #SLACK} times the magnitudes in the plane's sum, taken from the coordinates
+ *       themselves (not from their differences to the apex). That covers the rounding of those
+ *       few operations many times over, and also a hit point reported a few units in the last
+ *       place off its ray where the pyramid is thinner than that: near the apex, with the camera
+ *       or the light far from the origin.</li>
+ * </ul>
+ * A box merely near the pyramid is kept: the ray tests decide hits.
+ */
+public final class Frustum {
+
+    /** How much the ranges are widened, relative to their scale. */
+    static final double MARGIN = 1e-9;
+    /** How far outside a plane, relative to the magnitudes summed, a box must be to be dropped. */
+    static final double SLACK = 1e-12;
+
+    private double ox, oy, oz;
+    private static final int PLANES = 5;
+    /**
+     * The planes n.r + d &gt;= 0, five doubles each: normal x, y, z, offset d, and the magnitudes
+     * of the terms the apex and d bring to the sum (for the slack).
+     */
+    private final double[] planes = new double[5 * PLANES];
+
+    /**
+     * Sets the pyramid: apex, axis a, the two directions across it (unit and perpendicular to a
+     * and each other), the ranges of x and y, and the largest a.r (infinity: no end).
+     */
+    public Frustum set(double px, double py, double pz, double ax, double ay, double az,
+                       double e1x, double e1y, double e1z, double e2x, double e2y, double e2z,
+                       double x0, double x1, double y0, double y1, double far) {
+        ox = px;
+        oy = py;
+        oz = pz;
+        double widenX = MARGIN * Math.max(1, Math.max(Math.abs(x0), Math.abs(x1)));
+        double widenY = MARGIN * Math.max(1, Math.max(Math.abs(y0), Math.abs(y1)));
+        x0 -= widenX;
+        x1 += widenX;
+        y0 -= widenY;
+        y1 += widenY;
+        plane(0, e1x - x0 * ax, e1y - x0 * ay, e1z - x0 * az, 0);
+        plane(5, x1 * ax - e1x, x1 * ay - e1y, x1 * az - e1z, 0);
+        plane(10, e2x - y0 * ax, e2y - y0 * ay, e2z - y0 * az, 0);
+        plane(15, y1 * ax - e2x, y1 * ay - e2y, y1 * az - e2z, 0);
+        // a.r <= far; with no end, a plane that keeps everything
+        boolean end = far < Double.POSITIVE_INFINITY;
+        plane(20, end ? -ax : 0, end ? -ay : 0, end ? -az : 0, end ? far * (1 + MARGIN) : 0);
+        return this;
+    }
+
+    /**
+     * The pyramid from point (px, py, pz) over the box {@code box[0 .. 5]} (minX, minY, minZ,
+     * maxX, maxY, maxZ), ending behind it: it holds every segment from the point to a point of
+     * the box. False, and unchanged, when the point is not clearly outside the box (a pyramid
+     * would have to open wider than a half-space).
+     */
+    public boolean overBox(double px, double py, double pz, double[] box) {
+        double scale = 0;
+        for (int k = 0; k < 6; k++) {
+            scale = Math.max(scale, Math.abs(box[k]));
+        }
+        double widen = MARGIN * scale;
+        double minX = box[0] - widen, minY = box[1] - widen, minZ = box[2] - widen;
+        double maxX = box[3] + widen, maxY = box[4] + widen, maxZ = box[5] + widen;
+        double ax = (minX + maxX) / 2 - px, ay = (minY + maxY) / 2 - py, az = (minZ + maxZ) / 2 - pz;
+        double len = Math.sqrt(ax * ax + ay * ay + az * az);
+        if (!(len > 0)) {
+            return false;
+        }
+        ax /= len;
+        ay /= len;
+        az /= len;
+        // e1: across the axis, from the axis's smallest component; e2 = a x e1
+        double e1x, e1y, e1z;
+        if (Math.abs(ax) <= Math.abs(ay) && Math.abs(ax) <= Math.abs(az)) {
+            e1x = 0; e1y = az; e1z = -ay;
+        } else if (Math.abs(ay) <= Math.abs(az)) {
+            e1x = -az; e1y = 0; e1z = ax;
+        } else {
+            e1x = ay; e1y = -ax; e1z = 0;
+        }
+        double e1Len = Math.sqrt(e1x * e1x + e1y * e1y + e1z * e1z);
+        e1x /= e1Len;
+        e1y /= e1Len;
+        e1z /= e1Len;
+        double e2x = ay * e1z - az * e1y, e2y = az * e1x - ax * e1z, e2z = ax * e1y - ay * e1x;
+        double x0 = Double.POSITIVE_INFINITY, x1 = Double.NEGATIVE_INFINITY;
+        double y0 = Double.POSITIVE_INFINITY, y1 = Double.NEGATIVE_INFINITY, far = 0;
+        for (int c = 0; c < 8; c++) {
+            double rx = ((c & 1) == 0 ? minX : maxX) - px;
+            double ry = ((c & 2) == 0 ? minY : maxY) - py;
+            double rz = ((c & 4) == 0 ? minZ : maxZ) - pz;
+            double s = ax * rx + ay * ry + az * rz;
+            // a corner beside or behind the point, or nearly so: the pyramid would be too wide
+            if (!(s > 1e-3 * Math.sqrt(rx * rx + ry * ry + rz * rz))) {
+                return false;
+            }
+            double x = (e1x * rx + e1y * ry + e1z * rz) / s, y = (e2x * rx + e2y * ry + e2z * rz) / s;
+            x0 = Math.min(x0, x);
+            x1 = Math.max(x1, x);
+            y0 = Math.min(y0, y);
+            y1 = Math.max(y1, y);
+            far = Math.max(far, s);
+        }
+        set(px, py, pz, ax, ay, az, e1x, e1y, e1z, e2x, e2y, e2z, x0, x1, y0, y1, far);
+        return true;
+    }
+
+    /**
+     * Whether a ray of the bundle may meet the box at {@code bounds[o .. o+5]} (minX, minY, minZ,
+     * maxX, maxY, maxZ). False only when the box lies wholly outside one of the planes.
+     */
+    public boolean mayMeet(double[] bounds, int o) {
+        double x0 = bounds[o] - ox, y0 = bounds[o + 1] - oy, z0 = bounds[o + 2] - oz;
+        double x1 = bounds[o + 3] - ox, y1 = bounds[o + 4] - oy, z1 = bounds[o + 5] - oz;
+        double mx = Math.max(Math.abs(bounds[o]), Math.abs(bounds[o + 3]));
+        double my = Math.max(Math.abs(bounds[o + 1]), Math.abs(bounds[o + 4]));
+        double mz = Math.max(Math.abs(bounds[o + 2]), Math.abs(bounds[o + 5]));
+        double[] p = planes;
+        for (int i = 0; i < PLANES * 5; i += 5) {
+            double nx = p[i], ny = p[i + 1], nz = p[i + 2];
+            // the box's corner furthest along the normal
+            double inside = (nx >= 0 ? nx * x1 : nx * x0) + (ny >= 0 ? ny * y1 : ny * y0)
+                    + (nz >= 0 ? nz * z1 : nz * z0) + p[i + 3];
+            if (inside < -SLACK * (Math.abs(nx) * mx + Math.abs(ny) * my + Math.abs(nz) * mz + p[i + 4])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private void plane(int at, double x, double y, double z, double d) {
+        planes[at] = x;
+        planes[at + 1] = y;
+        planes[at + 2] = z;
+        planes[at + 3] = d;
+        // the magnitudes the apex and the offset bring to the plane's sum
+        planes[at + 4] = Math.abs(x) * Math.abs(ox) + Math.abs(y) * Math.abs(oy) + Math.abs(z) * Math.abs(oz)
+                + Math.abs(d);
+    }
+}

@@ -1,0 +1,135 @@
+package studio.engine.geometry;
+
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+import studio.engine.camera.Camera;
+import studio.engine.math.Vec3;
+
+/**
+ * A pyramid keeps every box its rays meet, down to a box that is a single point on a ray, for
+ * cameras far from the origin and pixels a few millionths of the image wide; and it drops what
+ * lies clearly outside, so a scene's candidate lists stay short.
+ */
+class FrustumTest {
+
+    private static double uniform(Random random, double lo, double hi) {
+        return lo + (hi - lo) * random.nextDouble();
+    }
+
+    private static Vec3 randomPoint(Random random, double extent) {
+        return new Vec3(uniform(random, -extent, extent), uniform(random, -extent, extent),
+                uniform(random, -extent, extent));
+    }
+
+    /** A box that is the single point p. */
+    private static double[] pointBox(double x, double y, double z) {
+        return new double[] {x, y, z, x, y, z};
+    }
+
+    private static Camera randomCamera(Random random) {
+        double far = Math.pow(10, uniform(random, 0, 6));
+        Vec3 position = randomPoint(random, far);
+        Vec3 target = position.plus(randomPoint(random, 1).plus(new Vec3(0, 0, 1e-3)));
+        return new Camera(position, target, new Vec3(0, 1, 0), uniform(random, 5, 170));
+    }
+
+    @Test
+    void cameraRaysThroughTheRectangleMeetOnlyKeptBoxes() {
+        Random random = new Random(3);
+        Frustum frustum = new Frustum();
+        Ray ray = new Ray();
+        int dropped = 0;
+        for (int pixel = 0; pixel < 2000; pixel++) {
+            Camera camera = randomCamera(random);
+            double aspect = uniform(random, 0.2, 5);
+            // a pixel of an image up to 40,000 wide: ndc 5e-5 across
+            double size = Math.pow(10, uniform(random, -4.3, -0.5));
+            double x0 = uniform(random, -1, 1 - size), y0 = uniform(random, -1, 1 - size);
+            camera.frustum(x0, x0 + size, y0, y0 + size, aspect, frustum);
+            Vec3 o = camera.position();
+            for (int s = 0; s < 20; s++) {
+                // corners and edges as well as the inside
+                double x = s < 4 ? x0 + (s & 1) * size : x0 + size * random.nextDouble();
+                double y = s < 4 ? y0 + (s >> 1) * size : y0 + size * random.nextDouble();
+                camera.ray(x, y, aspect, ray);
+                double t = Math.pow(10, uniform(random, -6, 7));
+                double px = ray.ox + t * ray.dx, py = ray.oy + t * ray.dy, pz = ray.oz + t * ray.dz;
+                assertTrue(frustum.mayMeet(pointBox(px, py, pz), 0), "a point on a ray of the pixel, t " + t);
+                double e = 1e-3 * t;
+                assertTrue(frustum.mayMeet(new double[] {px - e, py - e, pz - e, px + e, py + e, pz + e}, 0));
+            }
+            // a point as far outside the rectangle as the rectangle is wide, in front: dropped
+            double ox = random.nextBoolean() ? x0 - size : x0 + 2 * size;
+            camera.ray(ox, y0 + size / 2, aspect, ray);
+            double t = uniform(random, 1, 100);
+            if (!frustum.mayMeet(pointBox(ray.ox + t * ray.dx, ray.oy + t * ray.dy, ray.oz + t * ray.dz), 0)) {
+                dropped++;
+            }
+            // behind the camera, on a ray of the pixel turned around: dropped
+            camera.ray(x0 + size / 2, y0 + size / 2, aspect, ray);
+            assertFalse(frustum.mayMeet(pointBox(o.x() - t * ray.dx, o.y() - t * ray.dy, o.z() - t * ray.dz), 0));
+        }
+        assertTrue(dropped == 2000, "points a pixel's width outside dropped: " + dropped);
+    }
+
+    @Test
+    void shadowPyramidHoldsEverySegmentFromThePointToTheBox() {
+        Random random = new Random(5);
+        Frustum frustum = new Frustum();
+        int made = 0, droppedBeyond = 0, droppedBeside = 0;
+        for (int i = 0; i < 3000; i++) {
+            double scale = Math.pow(10, uniform(random, -2, 5));
+            Vec3 c = randomPoint(random, scale);
+            double hx = scale * Math.pow(10, uniform(random, -6, -1)), hy = hx * uniform(random, 0, 3);
+            double hz = hx * uniform(random, 0, 3);
+            double[] box = {c.x() - hx, c.y() - hy, c.z() - hz, c.x() + hx, c.y() + hy, c.z() + hz};
+            Vec3 light = c.plus(randomPoint(random, 1).normalized().times(scale * uniform(random, 0.01, 10)));
+            if (!frustum.overBox(light.x(), light.y(), light.z(), box)) {
+                continue;
+            }
+            made++;
+            for (int s = 0; s < 20; s++) {
+                // a point of the box (corners included), then a point on its segment to the light
+                double bx = s < 8 ? box[(s & 1) * 3] : uniform(random, box[0], box[3]);
+                double by = s < 8 ? box[1 + ((s >> 1) & 1) * 3] : uniform(random, box[1], box[4]);
+                double bz = s < 8 ? box[2 + ((s >> 2) & 1) * 3] : uniform(random, box[2], box[5]);
+                double f = s % 3 == 0 ? 1 : random.nextDouble();
+                double px = light.x() + f * (bx - light.x()), py = light.y() + f * (by - light.y());
+                double pz = light.z() + f * (bz - light.z());
+                assertTrue(frustum.mayMeet(pointBox(px, py, pz), 0), "a point between the light and the box");
+            }
+            // twice as far from the light as the box's far side: dropped by the pyramid's end
+            double d = Math.sqrt(Math.pow(c.x() - light.x(), 2) + Math.pow(c.y() - light.y(), 2)
+                    + Math.pow(c.z() - light.z(), 2));
+            double reach = 2 * (d + 2 * (hx + hy + hz)) / d;
+            if (!frustum.mayMeet(pointBox(light.x() + reach * (c.x() - light.x()), light.y() + reach * (c.y() - light.y()),
+                    light.z() + reach * (c.z() - light.z())), 0)) {
+                droppedBeyond++;
+            }
+            // beside the box, as far out as the box is wide: dropped by a side
+            if (!frustum.mayMeet(pointBox(c.x() + 3 * hx + 3 * (hy + hz), c.y() + 3 * (hx + hy + hz), c.z()), 0)
+                    || !frustum.mayMeet(pointBox(c.x() - 3 * (hx + hy + hz), c.y(), c.z() - 3 * (hx + hy + hz)), 0)) {
+                droppedBeside++;
+            }
+        }
+        assertTrue(made > 2500, "pyramids made: " + made);
+        assertTrue(droppedBeyond == made, "points beyond the box dropped: " + droppedBeyond + " of " + made);
+        assertTrue(droppedBeside > made * 9 / 10, "points beside the box dropped: " + droppedBeside + " of " + made);
+    }
+
+    @Test
+    void noPyramidFromInsideOrBesideTheBox() {
+        Frustum frustum = new Frustum();
+        double[] box = {0, 0, 0, 1, 1, 1};
+
+        assertFalse(frustum.overBox(0.5, 0.5, 0.5, box), "inside");
+        assertFalse(frustum.overBox(1, 0.5, 0.5, box), "on a face");
+        assertFalse(frustum.overBox(1 + 1e-9, 0.5, 0.5, box), "just outside a face: wider than a half-space");
+        assertTrue(frustum.overBox(5, 0.5, 0.5, box));
+    }
+}
