@@ -32,7 +32,13 @@ public final class Frustum {
     /** How far outside a plane, relative to the magnitudes summed, a box must be to be dropped. */
     static final double SLACK = 1e-12;
 
+    /** A plane's part inside the pyramid is bounded only if every edge meets it at least this steeply (cosine). */
+    static final double STEEP = 1e-3;
+
     private double ox, oy, oz;
+    /** The four edge directions (x0 y0, x1 y0, x0 y1, x1 y1), x, y, z of each; unused with an end. */
+    private final double[] edges = new double[12];
+    private boolean ends;
     private static final int PLANES = 5;
     /**
      * The planes n.r + d &gt;= 0, five doubles each: normal x, y, z, offset d, and the magnitudes
@@ -60,8 +66,15 @@ public final class Frustum {
         plane(5, x1 * ax - e1x, x1 * ay - e1y, x1 * az - e1z, 0);
         plane(10, e2x - y0 * ax, e2y - y0 * ay, e2z - y0 * az, 0);
         plane(15, y1 * ax - e2x, y1 * ay - e2y, y1 * az - e2z, 0);
+        for (int c = 0; c < 4; c++) {
+            double x = (c & 1) == 0 ? x0 : x1, y = (c & 2) == 0 ? y0 : y1;
+            edges[3 * c] = ax + x * e1x + y * e2x;
+            edges[3 * c + 1] = ay + x * e1y + y * e2y;
+            edges[3 * c + 2] = az + x * e1z + y * e2z;
+        }
         // a.r <= far; with no end, a plane that keeps everything
         boolean end = far < Double.POSITIVE_INFINITY;
+        ends = end;
         plane(20, end ? -ax : 0, end ? -ay : 0, end ? -az : 0, end ? far * (1 + MARGIN) : 0);
         return this;
     }
@@ -121,6 +134,54 @@ public final class Frustum {
             far = Math.max(far, s);
         }
         set(px, py, pz, ax, ay, az, e1x, e1y, e1z, e2x, e2y, e2z, x0, x1, y0, y1, far);
+        return true;
+    }
+
+    /**
+     * Widens {@code box[0 .. 5]} (minX, minY, minZ, maxX, maxY, maxZ) to hold every point of the
+     * plane through (px, py, pz) with unit normal (nx, ny, nz) that lies inside this pyramid, and
+     * every point a ray inside it can report as a hit on the plane. That part is the quadrilateral
+     * where the four edges meet the plane, if all four meet it in front of the apex. False, and the
+     * box unchanged, when they do not (the part is unbounded), when an edge meets it at a grazing
+     * angle (cosine below {@value #STEEP}: the corner would be ill-conditioned), or when the
+     * pyramid has an end (it was made {@link #overBox}).
+     */
+    public boolean widenToPlane(double px, double py, double pz, double nx, double ny, double nz, double[] box) {
+        if (ends) {
+            return false;
+        }
+        double reach = nx * (px - ox) + ny * (py - oy) + nz * (pz - oz);
+        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
+        for (int c = 0; c < 12; c += 3) {
+            double dx = edges[c], dy = edges[c + 1], dz = edges[c + 2];
+            double along = nx * dx + ny * dy + nz * dz;
+            // in front of the apex (same sign as reach), and steep enough
+            if (!(along * reach > 0) || Math.abs(along) < STEEP * Math.sqrt(dx * dx + dy * dy + dz * dz)) {
+                return false;
+            }
+            double t = reach / along;
+            double x = ox + t * dx, y = oy + t * dy, z = oz + t * dz;
+            minX = Math.min(minX, x);
+            minY = Math.min(minY, y);
+            minZ = Math.min(minZ, z);
+            maxX = Math.max(maxX, x);
+            maxY = Math.max(maxY, y);
+            maxZ = Math.max(maxZ, z);
+        }
+        double scale = Math.max(Math.max(Math.abs(minX), Math.abs(maxX)), Math.max(Math.abs(minY), Math.abs(maxY)));
+        scale = Math.max(scale, Math.max(Math.max(Math.abs(minZ), Math.abs(maxZ)), Math.abs(ox) + Math.abs(oy) + Math.abs(oz)));
+        scale = Math.max(scale, Math.abs(px) + Math.abs(py) + Math.abs(pz));
+        double widen = MARGIN * scale;
+        if (!Double.isFinite(widen)) {
+            return false;
+        }
+        box[0] = Math.min(box[0], minX - widen);
+        box[1] = Math.min(box[1], minY - widen);
+        box[2] = Math.min(box[2], minZ - widen);
+        box[3] = Math.max(box[3], maxX + widen);
+        box[4] = Math.max(box[4], maxY + widen);
+        box[5] = Math.max(box[5], maxZ + widen);
         return true;
     }
 

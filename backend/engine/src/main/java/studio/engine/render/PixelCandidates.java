@@ -20,9 +20,10 @@ import studio.engine.scene.Scene;
  * docs/speed.md for the figures. It pays only when a pixel has several samples, and only camera
  * rays and the shadow rays from their hits use it: reflected and refracted rays go their own ways.
  *
- * <p>Shadow rays use it only when every object the camera rays can hit is bounded: a hit on a
- * plane can be anywhere on it. The pyramid for a light holds every segment from the light to the
- * box of all the pixel's possible hit points ({@link Frustum#overBox}).
+ * <p>The pyramid for a light holds every segment from the light to a box of all the pixel's
+ * possible hit points ({@link Frustum#overBox}): the camera candidates' boxes, and for a plane its
+ * part inside the camera rays' pyramid. Where that part is unbounded (the pixel sees the horizon)
+ * shadow rays search the whole scene.
  */
 final class PixelCandidates {
 
@@ -55,7 +56,7 @@ final class PixelCandidates {
     /** From now on camera rays lie inside {@code cameraRays}; lists what they can hit. */
     void forCameraRaysIn(Frustum cameraRays) {
         cameraCount = scene.candidates(cameraRays, camera, stack);
-        hitsBounded = cameraCount > 0 && scene.boundsOf(camera, cameraCount, hitBox);
+        hitsBounded = cameraCount > 0 && scene.boundsOf(camera, cameraCount, cameraRays, hitBox);
         Arrays.fill(shadowCount, hitsBounded ? UNKNOWN : -1);
     }
 

@@ -72,9 +72,9 @@ public final class Scene {
         return geometry.intersectAmong(ids, count, ray, tMax, hit);
     }
 
-    /** The union of objects {@code ids[0 .. count-1]}'s boxes, or false (see {@link ShapeSet#boundsOf}). */
-    public boolean boundsOf(int[] ids, int count, double[] box) {
-        return geometry.boundsOf(ids, count, box);
+    /** A box of where rays in the pyramid can hit objects {@code ids[0 .. count-1]}, or false (see {@link ShapeSet#boundsOf}). */
+    public boolean boundsOf(int[] ids, int count, Frustum cameraRays, double[] box) {
+        return geometry.boundsOf(ids, count, cameraRays, box);
     }
 
     /** {@link #occluder} for a ray that can meet only objects {@code ids[0 .. count-1]}, from {@link #candidates}. */

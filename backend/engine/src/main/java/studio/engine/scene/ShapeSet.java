@@ -5,9 +5,11 @@ import studio.engine.accel.Bvh;
 import studio.engine.accel.Slab;
 import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
+import studio.engine.geometry.Plane;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Shape;
 import studio.engine.geometry.Sphere;
+import studio.engine.math.Vec3;
 
 /**
  * A scene's shapes in declaration order, searched for the nearest hit under the tie rule: of hits
@@ -240,11 +242,12 @@ public final class ShapeSet {
     }
 
     /**
-     * Into {@code box[0 .. 5]}: the union of the boxes of shapes {@code ids[0 .. count-1]} (from
-     * {@link #candidates}), which holds every point where they can be hit. False when one of them
-     * is unbounded, or none is given.
+     * Into {@code box[0 .. 5]}: a box holding every point where a ray inside {@code cameraRays} can
+     * hit one of shapes {@code ids[0 .. count-1]} (from {@link #candidates} with that pyramid): the
+     * union of their boxes, and for a plane its part inside the pyramid
+     * ({@link Frustum#widenToPlane}). False when that part is unbounded, or no shape is given.
      */
-    public boolean boundsOf(int[] ids, int count, double[] box) {
+    public boolean boundsOf(int[] ids, int count, Frustum cameraRays, double[] box) {
         if (count == 0) {
             return false;
         }
@@ -253,7 +256,14 @@ public final class ShapeSet {
         for (int k = 0; k < count; k++) {
             int slot = slotOfShape[ids[k]];
             if (slot < 0) {
-                return false;
+                if (!(shapes[ids[k]] instanceof Plane plane)) {
+                    return false;
+                }
+                Vec3 p = plane.point(), n = plane.normal();
+                if (!cameraRays.widenToPlane(p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), box)) {
+                    return false;
+                }
+                continue;
             }
             int o = 6 * slot;
             for (int c = 0; c < 3; c++) {

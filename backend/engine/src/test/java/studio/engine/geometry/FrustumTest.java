@@ -132,4 +132,55 @@ class FrustumTest {
         assertFalse(frustum.overBox(1 + 1e-9, 0.5, 0.5, box), "just outside a face: wider than a half-space");
         assertTrue(frustum.overBox(5, 0.5, 0.5, box));
     }
+
+    @Test
+    void aPlanesPartInsideACameraPyramidHoldsEveryHitOnIt() {
+        Random random = new Random(8);
+        Frustum frustum = new Frustum();
+        Ray ray = new Ray();
+        Hit hit = new Hit();
+        int bounded = 0, hits = 0;
+        for (int pixel = 0; pixel < 3000; pixel++) {
+            Camera camera = randomCamera(random);
+            double aspect = uniform(random, 0.5, 2);
+            double size = Math.pow(10, uniform(random, -4.3, -0.5));
+            double x0 = uniform(random, -1, 1 - size), y0 = uniform(random, -1, 1 - size);
+            camera.frustum(x0, x0 + size, y0, y0 + size, aspect, frustum);
+            double scale = Math.abs(camera.position().x()) + Math.abs(camera.position().y()) + 1;
+            Plane plane = new Plane(camera.position().plus(randomPoint(random, scale)), randomPoint(random, 1));
+            double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                    Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+            Vec3 p = plane.point(), n = plane.normal();
+            if (!frustum.widenToPlane(p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), box)) {
+                continue;
+            }
+            bounded++;
+            for (int s = 0; s < 20; s++) {
+                double x = s < 4 ? x0 + (s & 1) * size : x0 + size * random.nextDouble();
+                double y = s < 4 ? y0 + (s >> 1) * size : y0 + size * random.nextDouble();
+                camera.ray(x, y, aspect, ray);
+                assertTrue(plane.intersect(ray, Double.POSITIVE_INFINITY, hit), "every ray of the pixel meets it");
+                hits++;
+                assertTrue(hit.px >= box[0] && hit.px <= box[3] && hit.py >= box[1] && hit.py <= box[4]
+                        && hit.pz >= box[2] && hit.pz <= box[5], "the hit lies in the box");
+            }
+        }
+        assertTrue(bounded > 300, "pixels whose part of the plane is bounded: " + bounded);
+    }
+
+    @Test
+    void aPlaneSeenToTheHorizonOrFromAnEndedPyramidHasNoBoundedPart() {
+        Frustum frustum = new Frustum();
+        Camera camera = new Camera(new Vec3(0, 1, 5), new Vec3(0, 1, 0), new Vec3(0, 1, 0), 60);
+        double[] box = {0, 0, 0, 0, 0, 0};
+        // a pixel straddling the horizon of the floor y = 0
+        camera.frustum(-0.01, 0.01, -0.01, 0.01, 1, frustum);
+        assertFalse(frustum.widenToPlane(0, 0, 0, 0, 1, 0, box), "the pixel's top edge never meets the floor");
+        // the same pixel below the horizon meets it in a bounded patch
+        camera.frustum(-0.01, 0.01, -0.6, -0.58, 1, frustum);
+        assertTrue(frustum.widenToPlane(0, 0, 0, 0, 1, 0, box));
+        assertFalse(frustum.widenToPlane(0, 2, 0, 0, 1, 0, new double[6]), "a ceiling behind the pixel's rays");
+        frustum.overBox(5, 5, 5, new double[] {0, 0, 0, 1, 1, 1});
+        assertFalse(frustum.widenToPlane(0, 0, 0, 0, 1, 0, box), "a shadow pyramid has an end");
+    }
 }

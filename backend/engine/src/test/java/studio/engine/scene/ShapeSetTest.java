@@ -218,7 +218,7 @@ class ShapeSetTest {
         for (int scene = 0; scene < 8; scene++) {
             Shape[] shapes = randomScene(random, 40 + 40 * scene);
             if (scene % 2 == 1) {
-                // no planes: the hits are bounded, so shadow rays get lists too
+                // no planes: every pixel's hits are bounded, not only where it sees a plane's bounded part
                 shapes = java.util.Arrays.stream(shapes).filter(s -> !(s instanceof Plane)).toArray(Shape[]::new);
             }
             ShapeSet set = ShapeSet.bvh(shapes);
@@ -235,7 +235,7 @@ class ShapeSetTest {
                 for (int k = 1; k < n; k++) {
                     assertTrue(ids[k - 1] < ids[k], "ascending, once each");
                 }
-                boolean bounded = set.boundsOf(ids, n, hitBox);
+                boolean bounded = set.boundsOf(ids, n, cameraRays, hitBox);
                 int m = bounded && shadowRays.overBox(light.x(), light.y(), light.z(), hitBox)
                         ? set.candidates(shadowRays, shadowIds, stack) : -1;
                 shadowListed += m >= 0 ? 1 : 0;
@@ -291,6 +291,6 @@ class ShapeSetTest {
         assertEquals(-1, set.candidates(along.frustum(-0.01, 0.01, -0.01, 0.01, 1, frustum), ids, stack));
         // a linear set keeps its loop
         assertEquals(-1, ShapeSet.of(row[0], row[1]).candidates(frustum, ids, stack));
-        assertFalse(set.boundsOf(ids, 0, new double[6]), "no candidates, no box");
+        assertFalse(set.boundsOf(ids, 0, frustum, new double[6]), "no candidates, no box");
     }
 }
