@@ -18,7 +18,8 @@ package studio.engine.geometry;
  *       one;</li>
  *   <li>a box is dropped only when its corner furthest inside a plane is outside it by more than
  *       {@value #SLACK} times the magnitudes in the plane's sum, taken from the coordinates
- *       themselves (not from their differences to the apex). That covers the rounding of those
+ *       themselves (not from their differences to the apex; for the boxes, from a bound on all of
+ *       them, {@link #within}). That covers the rounding of those
  *       few operations many times over, and also a hit point reported a few units in the last
  *       place off its ray where the pyramid is thinner than that: near the apex, with the camera
  *       or the light far from the origin.</li>
@@ -39,12 +40,14 @@ public final class Frustum {
     /** The four edge directions (x0 y0, x1 y0, x0 y1, x1 y1), x, y, z of each; unused with an end. */
     private final double[] edges = new double[12];
     private boolean ends;
-    private static final int PLANES = 5;
+    /** Doubles per plane: normal x, y, z, offset d, threshold, and for the slack |apex| and |n|. */
+    private static final int STRIDE = 7;
     /**
-     * The planes n.r + d &gt;= 0, five doubles each: normal x, y, z, offset d, and the magnitudes
-     * of the terms the apex and d bring to the sum (for the slack).
+     * The planes n.r + d &gt;= 0, four, or five with an end. A box is dropped when its corner
+     * furthest along n gives less than the threshold (see {@link #within}).
      */
-    private final double[] planes = new double[5 * PLANES];
+    private final double[] planes = new double[5 * STRIDE];
+    private int planeCount;
 
     /**
      * Sets the pyramid: apex, axis a, the two directions across it (unit and perpendicular to a
@@ -63,9 +66,9 @@ public final class Frustum {
         y0 -= widenY;
         y1 += widenY;
         plane(0, e1x - x0 * ax, e1y - x0 * ay, e1z - x0 * az, 0);
-        plane(5, x1 * ax - e1x, x1 * ay - e1y, x1 * az - e1z, 0);
-        plane(10, e2x - y0 * ax, e2y - y0 * ay, e2z - y0 * az, 0);
-        plane(15, y1 * ax - e2x, y1 * ay - e2y, y1 * az - e2z, 0);
+        plane(1, x1 * ax - e1x, x1 * ay - e1y, x1 * az - e1z, 0);
+        plane(2, e2x - y0 * ax, e2y - y0 * ay, e2z - y0 * az, 0);
+        plane(3, y1 * ax - e2x, y1 * ay - e2y, y1 * az - e2z, 0);
         for (int c = 0; c < 4; c++) {
             double x = (c & 1) == 0 ? x0 : x1, y = (c & 2) == 0 ? y0 : y1;
             edges[3 * c] = ax + x * e1x + y * e2x;
@@ -75,7 +78,8 @@ public final class Frustum {
         // a.r <= far; with no end, a plane that keeps everything
         boolean end = far < Double.POSITIVE_INFINITY;
         ends = end;
-        plane(20, end ? -ax : 0, end ? -ay : 0, end ? -az : 0, end ? far * (1 + MARGIN) : 0);
+        planeCount = end ? 5 : 4;
+        plane(4, end ? -ax : 0, end ? -ay : 0, end ? -az : 0, end ? far * (1 + MARGIN) : 0);
         return this;
     }
 
@@ -186,35 +190,48 @@ public final class Frustum {
     }
 
     /**
+     * Makes {@link #mayMeet} take every box it will be given to lie within {@code magnitude} of
+     * the origin in each coordinate: the slack of the class comment is then worked out once per
+     * plane, not per box. Until this is called, {@link #mayMeet} drops nothing.
+     */
+    public Frustum within(double magnitude) {
+        for (int i = 0; i < planeCount * STRIDE; i += STRIDE) {
+            planes[i + 4] = -SLACK * (planes[i + 6] * magnitude + planes[i + 5]);
+        }
+        return this;
+    }
+
+    /**
      * Whether a ray of the bundle may meet the box at {@code bounds[o .. o+5]} (minX, minY, minZ,
-     * maxX, maxY, maxZ). False only when the box lies wholly outside one of the planes.
+     * maxX, maxY, maxZ), which lies within the magnitude given to {@link #within}. False only when
+     * the box lies wholly outside one of the planes.
      */
     public boolean mayMeet(double[] bounds, int o) {
         double x0 = bounds[o] - ox, y0 = bounds[o + 1] - oy, z0 = bounds[o + 2] - oz;
         double x1 = bounds[o + 3] - ox, y1 = bounds[o + 4] - oy, z1 = bounds[o + 5] - oz;
-        double mx = Math.max(Math.abs(bounds[o]), Math.abs(bounds[o + 3]));
-        double my = Math.max(Math.abs(bounds[o + 1]), Math.abs(bounds[o + 4]));
-        double mz = Math.max(Math.abs(bounds[o + 2]), Math.abs(bounds[o + 5]));
         double[] p = planes;
-        for (int i = 0; i < PLANES * 5; i += 5) {
+        for (int i = 0, end = planeCount * STRIDE; i < end; i += STRIDE) {
             double nx = p[i], ny = p[i + 1], nz = p[i + 2];
             // the box's corner furthest along the normal
             double inside = (nx >= 0 ? nx * x1 : nx * x0) + (ny >= 0 ? ny * y1 : ny * y0)
                     + (nz >= 0 ? nz * z1 : nz * z0) + p[i + 3];
-            if (inside < -SLACK * (Math.abs(nx) * mx + Math.abs(ny) * my + Math.abs(nz) * mz + p[i + 4])) {
+            if (inside < p[i + 4]) {
                 return false;
             }
         }
         return true;
     }
 
-    private void plane(int at, double x, double y, double z, double d) {
+    private void plane(int index, double x, double y, double z, double d) {
+        int at = STRIDE * index;
         planes[at] = x;
         planes[at + 1] = y;
         planes[at + 2] = z;
         planes[at + 3] = d;
-        // the magnitudes the apex and the offset bring to the plane's sum
-        planes[at + 4] = Math.abs(x) * Math.abs(ox) + Math.abs(y) * Math.abs(oy) + Math.abs(z) * Math.abs(oz)
+        planes[at + 4] = Double.NaN; // no threshold until within(): nothing is dropped
+        // the magnitudes the apex and the offset bring to the plane's sum, and the normal's
+        planes[at + 5] = Math.abs(x) * Math.abs(ox) + Math.abs(y) * Math.abs(oy) + Math.abs(z) * Math.abs(oz)
                 + Math.abs(d);
+        planes[at + 6] = Math.abs(x) + Math.abs(y) + Math.abs(z);
     }
 }

@@ -66,6 +66,8 @@ public final class ShapeSet {
     /** Per leaf slot, its shape's box (six doubles); null in linear mode. */
     private final double[] slotBoxes;
     private final int nodeCount;
+    /** The largest absolute coordinate of the BVH's root box: of every box in the tree. */
+    private final double magnitude;
 
     private ShapeSet(Shape[] shapes, boolean useBvh) {
         this.shapes = shapes.clone();
@@ -84,6 +86,7 @@ public final class ShapeSet {
             slotOfShape = null;
             slotBoxes = null;
             nodeCount = 0;
+            magnitude = 0;
             return;
         }
         int[] boundedIndex = new int[boundedCount];
@@ -121,6 +124,11 @@ public final class ShapeSet {
         nodeBounds = bvh.bounds();
         nodeLinks = bvh.nodes();
         nodeCount = bvh.nodeCount();
+        double largest = 0;
+        for (int k = 0; k < 6; k++) {
+            largest = Math.max(largest, Math.abs(nodeBounds[k]));
+        }
+        magnitude = largest;
     }
 
     /** The shapes, searched linearly or through a BVH depending on their number. */
@@ -176,6 +184,7 @@ public final class ShapeSet {
         if (nodeBounds == null || unbounded.length > out.length) {
             return -1;
         }
+        frustum.within(magnitude);
         int n = 0;
         for (int i : unbounded) {
             out[n++] = i;

@@ -31,6 +31,15 @@ class FrustumTest {
         return new double[] {x, y, z, x, y, z};
     }
 
+    /** mayMeet with the slack for this box's own magnitude, as a scene gives its largest. */
+    private static boolean meets(Frustum frustum, double[] box) {
+        double magnitude = 0;
+        for (double v : box) {
+            magnitude = Math.max(magnitude, Math.abs(v));
+        }
+        return frustum.within(magnitude).mayMeet(box, 0);
+    }
+
     private static Camera randomCamera(Random random) {
         double far = Math.pow(10, uniform(random, 0, 6));
         Vec3 position = randomPoint(random, far);
@@ -59,20 +68,20 @@ class FrustumTest {
                 camera.ray(x, y, aspect, ray);
                 double t = Math.pow(10, uniform(random, -6, 7));
                 double px = ray.ox + t * ray.dx, py = ray.oy + t * ray.dy, pz = ray.oz + t * ray.dz;
-                assertTrue(frustum.mayMeet(pointBox(px, py, pz), 0), "a point on a ray of the pixel, t " + t);
+                assertTrue(meets(frustum, pointBox(px, py, pz)), "a point on a ray of the pixel, t " + t);
                 double e = 1e-3 * t;
-                assertTrue(frustum.mayMeet(new double[] {px - e, py - e, pz - e, px + e, py + e, pz + e}, 0));
+                assertTrue(meets(frustum, new double[] {px - e, py - e, pz - e, px + e, py + e, pz + e}));
             }
             // a point as far outside the rectangle as the rectangle is wide, in front: dropped
             double ox = random.nextBoolean() ? x0 - size : x0 + 2 * size;
             camera.ray(ox, y0 + size / 2, aspect, ray);
             double t = uniform(random, 1, 100);
-            if (!frustum.mayMeet(pointBox(ray.ox + t * ray.dx, ray.oy + t * ray.dy, ray.oz + t * ray.dz), 0)) {
+            if (!meets(frustum, pointBox(ray.ox + t * ray.dx, ray.oy + t * ray.dy, ray.oz + t * ray.dz))) {
                 dropped++;
             }
             // behind the camera, on a ray of the pixel turned around: dropped
             camera.ray(x0 + size / 2, y0 + size / 2, aspect, ray);
-            assertFalse(frustum.mayMeet(pointBox(o.x() - t * ray.dx, o.y() - t * ray.dy, o.z() - t * ray.dz), 0));
+            assertFalse(meets(frustum, pointBox(o.x() - t * ray.dx, o.y() - t * ray.dy, o.z() - t * ray.dz)));
         }
         assertTrue(dropped == 2000, "points a pixel's width outside dropped: " + dropped);
     }
@@ -101,19 +110,19 @@ class FrustumTest {
                 double f = s % 3 == 0 ? 1 : random.nextDouble();
                 double px = light.x() + f * (bx - light.x()), py = light.y() + f * (by - light.y());
                 double pz = light.z() + f * (bz - light.z());
-                assertTrue(frustum.mayMeet(pointBox(px, py, pz), 0), "a point between the light and the box");
+                assertTrue(meets(frustum, pointBox(px, py, pz)), "a point between the light and the box");
             }
             // twice as far from the light as the box's far side: dropped by the pyramid's end
             double d = Math.sqrt(Math.pow(c.x() - light.x(), 2) + Math.pow(c.y() - light.y(), 2)
                     + Math.pow(c.z() - light.z(), 2));
             double reach = 2 * (d + 2 * (hx + hy + hz)) / d;
-            if (!frustum.mayMeet(pointBox(light.x() + reach * (c.x() - light.x()), light.y() + reach * (c.y() - light.y()),
-                    light.z() + reach * (c.z() - light.z())), 0)) {
+            if (!meets(frustum, pointBox(light.x() + reach * (c.x() - light.x()), light.y() + reach * (c.y() - light.y()),
+                    light.z() + reach * (c.z() - light.z())))) {
                 droppedBeyond++;
             }
             // beside the box, as far out as the box is wide: dropped by a side
-            if (!frustum.mayMeet(pointBox(c.x() + 3 * hx + 3 * (hy + hz), c.y() + 3 * (hx + hy + hz), c.z()), 0)
-                    || !frustum.mayMeet(pointBox(c.x() - 3 * (hx + hy + hz), c.y(), c.z() - 3 * (hx + hy + hz)), 0)) {
+            if (!meets(frustum, pointBox(c.x() + 3 * hx + 3 * (hy + hz), c.y() + 3 * (hx + hy + hz), c.z()))
+                    || !meets(frustum, pointBox(c.x() - 3 * (hx + hy + hz), c.y(), c.z() - 3 * (hx + hy + hz)))) {
                 droppedBeside++;
             }
         }
@@ -182,5 +191,15 @@ class FrustumTest {
         assertFalse(frustum.widenToPlane(0, 2, 0, 0, 1, 0, new double[6]), "a ceiling behind the pixel's rays");
         frustum.overBox(5, 5, 5, new double[] {0, 0, 0, 1, 1, 1});
         assertFalse(frustum.widenToPlane(0, 0, 0, 0, 1, 0, box), "a shadow pyramid has an end");
+    }
+
+    @Test
+    void dropsNothingUntilToldTheBoxesMagnitude() {
+        Camera camera = new Camera(new Vec3(0, 0, 5), Vec3.ZERO, new Vec3(0, 1, 0), 40);
+        Frustum frustum = camera.frustum(-0.01, 0.01, -0.01, 0.01, 1, new Frustum());
+        double[] aside = pointBox(3, 0, 0);
+
+        assertTrue(frustum.mayMeet(aside, 0));
+        assertFalse(frustum.within(3).mayMeet(aside, 0));
     }
 }
