@@ -32,8 +32,9 @@ record Renderers(Path java, Path studioJar, Path povray, Path sunflowJar, Path b
     }
 
     /**
-     * Ours through its CLI. One sample per pixel uses the {@code regular} sampler (the pixel's centre,
-     * as the peers do); more use the scene's own sampler.
+     * Ours through its CLI, with fixed sampling as the peers': one sample per pixel uses the
+     * {@code regular} sampler (the pixel's centre, as the peers do), more the {@code jittered} one
+     * on every pixel (POV-Ray's +AM1 at threshold 0 and Sunflow's fixed anti-aliasing take them all).
      */
     List<String> ours(Path sceneJson, Path out, int samples) {
         // bin/studio runs the same jar with a class-data-sharing archive (made on its first run)
@@ -41,9 +42,7 @@ record Renderers(Path java, Path studioJar, Path povray, Path sunflowJar, Path b
                 : List.of(java.toString(), "-jar", studioJar.toString()));
         cmd.addAll(List.of("render", sceneJson.toString(), "-o", out.toString(), "--width", Integer.toString(width),
                 "--height", Integer.toString(height), "--samples", Integer.toString(samples)));
-        if (samples == 1) {
-            cmd.addAll(List.of("--sampler", "regular"));
-        }
+        cmd.addAll(List.of("--sampler", samples == 1 ? "regular" : "jittered"));
         cmd.addAll(List.of("--threads", Integer.toString(threads), "--quiet"));
         return cmd;
     }

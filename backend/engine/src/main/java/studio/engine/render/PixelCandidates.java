@@ -15,10 +15,10 @@ import studio.engine.scene.Scene;
  * searching the BVH. The pixels are the same to the bit (a ray can hit only what lies in its
  * pyramid, and the tie rule picks the same winner in declaration order).
  *
- * <p>Measured with 10,000 spheres at 16 samples a pixel, where most camera rays pass between
- * spheres deep into the tree and most of a pixel's 16 rays meet the same one or two spheres; see
- * docs/speed.md for the figures. It pays only when a pixel has several samples, and only camera
- * rays and the shadow rays from their hits use it: reflected and refracted rays go their own ways.
+ * <p>It pays where most camera rays pass between many objects deep into the tree and a pixel's
+ * rays meet the same one or two (10,000 spheres at 16 samples a pixel: see docs/speed.md), and
+ * only when a pixel has several samples. Only camera rays and the shadow rays from their hits use
+ * it: reflected and refracted rays go their own ways.
  *
  * <p>The pyramid for a light holds every segment from the light to a box of all the pixel's
  * possible hit points ({@link Frustum#overBox}): the camera candidates' boxes, and for a plane its
@@ -26,6 +26,16 @@ import studio.engine.scene.Scene;
  * shadow rays search the whole scene.
  */
 final class PixelCandidates {
+
+    /**
+     * Fewest objects for which listing pays. Measured as users meet it, whole `bin/studio`
+     * processes at 800x600 and 16 samples, alternated: with lists the still life (6 objects) took
+     * 1.09 and glass-pattern (17) 1.09 of the time without, though warm, one thread, they took
+     * 0.94 and 0.98: a render of a second or two spends much of it before the JIT has compiled the
+     * pyramids' code, and a small BVH leaves little to save. The peers' 10,000 spheres take 0.58
+     * warm.
+     */
+    static final int MIN_OBJECTS = 64;
 
     /** Most objects a pyramid may hold; with more, the rays search the BVH. */
     static final int MAX = 16;
@@ -44,6 +54,11 @@ final class PixelCandidates {
     /** The box of every point where the camera rays can hit, if {@link #hitsBounded}. */
     private final double[] hitBox = new double[6];
     private boolean hitsBounded;
+
+    /** Whether listing pays for this scene: one searched through a BVH of {@value #MIN_OBJECTS} objects or more. */
+    static boolean pay(Scene scene) {
+        return scene.searchesBvh() && scene.objectCount() >= MIN_OBJECTS;
+    }
 
     PixelCandidates(Scene scene) {
         this.scene = scene;

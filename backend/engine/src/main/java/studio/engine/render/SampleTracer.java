@@ -24,7 +24,7 @@ final class SampleTracer {
     private final StopSignal stop;
     private final Ray cameraRay = new Ray();
     private final Frustum frustum = new Frustum();
-    /** Whether pixels list what their rays can meet: only a scene searched through a BVH gains. */
+    /** Whether pixels list what their rays can meet ({@link PixelCandidates#pay}). */
     private boolean useCandidates;
     private final int width, height;
     private final double aspect;
@@ -35,7 +35,7 @@ final class SampleTracer {
 
     SampleTracer(Scene scene, RenderSettings settings, StopSignal stop) {
         this.stop = stop;
-        useCandidates = scene.searchesBvh();
+        useCandidates = PixelCandidates.pay(scene);
         integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight());
         camera = scene.camera();
         width = settings.width();

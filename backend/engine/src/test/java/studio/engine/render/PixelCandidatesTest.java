@@ -12,6 +12,7 @@ import org.junit.jupiter.api.Test;
 
 import studio.engine.camera.Camera;
 import studio.engine.geometry.Box;
+import studio.engine.geometry.Plane;
 import studio.engine.geometry.Sphere;
 import studio.engine.light.PointLight;
 import studio.engine.material.MaterialDefaults;
@@ -23,16 +24,20 @@ import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 
 /**
- * Listing what a pixel's rays can meet changes no pixel: every pixel of two scenes, traced with
- * the lists and with every ray searching the whole scene, sums to the same bits. One is a cloud of
- * 400 spheres and boxes of every material without a floor (camera and shadow rays both use
- * lists), the other the shadow fingerprint's spheres over a floor (camera rays only).
+ * Listing what a pixel's rays can meet changes no pixel: every pixel of a cloud of 400 spheres and
+ * boxes of every material, without a floor and over one (shadow lists then need the floor's part
+ * in the pixel's pyramid), traced with the lists and with every ray searching the whole scene,
+ * sums to the same bits.
  */
 class PixelCandidatesTest {
 
-    static Scene cloud() {
+    static Scene cloud(boolean floor) {
         Random random = new Random(11);
         List<SceneObject> objects = new ArrayList<>();
+        if (floor) {
+            objects.add(new SceneObject(new Plane(new Vec3(0, -0.2, 0), new Vec3(0, 1, 0)),
+                    MaterialDefaults.of(MaterialKind.CHALK, new Rgb(0.7, 0.7, 0.7))));
+        }
         MaterialKind[] kinds = MaterialKind.values();
         for (int i = 0; i < 400; i++) {
             Vec3 at = new Vec3(random.nextDouble() * 8 - 4, random.nextDouble() * 3, random.nextDouble() * 6 - 5);
@@ -50,7 +55,7 @@ class PixelCandidatesTest {
 
     @Test
     void everyPixelSumsToTheSameBitsWithAndWithoutLists() {
-        for (Scene scene : List.of(cloud(), OpaqueShadowsUnchangedTest.scene())) {
+        for (Scene scene : List.of(cloud(false), cloud(true))) {
             RenderSettings settings = new RenderSettings(64, 48, Sampler.of("jittered", 16), 4, 1, 1L,
                     RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
             SampleTracer listing = new SampleTracer(scene, settings, new StopSignal());
@@ -75,7 +80,8 @@ class PixelCandidatesTest {
                 }
             }
             assertTrue(listed > settings.width() * settings.height() / 2, "pixels that listed: " + listed);
-            assertEquals(searching.rays(), listing.rays(), "the same rays traced");
+            // (the rays counted may differ: a list may name a glass occluder first where the BVH
+            // named an opaque one, and the walk through the glass then counts its rays)
         }
     }
 
@@ -83,7 +89,7 @@ class PixelCandidatesTest {
     void fewSamplesOrFewObjectsSearchAsBefore() {
         RenderSettings settings = new RenderSettings(640, 480, Sampler.of("jittered", 16), 4, 1, 1L,
                 RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
-        SampleTracer tracer = new SampleTracer(cloud(), settings, new StopSignal());
+        SampleTracer tracer = new SampleTracer(cloud(false), settings, new StopSignal());
         double[] xs = {0.1, 0.6, 0.3, 0.8}, ys = {0.2, 0.4, 0.7, 0.9};
 
         tracer.trace(320, 240, xs, ys, 0, SampleTracer.CANDIDATES_FROM - 1);
@@ -97,5 +103,10 @@ class PixelCandidatesTest {
         SampleTracer small = new SampleTracer(three, settings, new StopSignal());
         small.trace(320, 240, xs, ys, 0, 4);
         assertFalse(small.listedCandidates(), "one object: the linear loop");
+        Scene sixty = OpaqueShadowsUnchangedTest.scene();
+        assertTrue(sixty.searchesBvh() && sixty.objectCount() < PixelCandidates.MIN_OBJECTS);
+        SampleTracer fewer = new SampleTracer(sixty, settings, new StopSignal());
+        fewer.trace(320, 240, xs, ys, 0, 4);
+        assertFalse(fewer.listedCandidates(), "a BVH too small to repay listing");
     }
 }
