@@ -39,6 +39,8 @@ public final class Frustum {
     private double ox, oy, oz;
     /** The four edge directions (x0 y0, x1 y0, x0 y1, x1 y1), x, y, z of each; unused with an end. */
     private final double[] edges = new double[12];
+    /** The axis the edges were made from (each edge's component along it is 1). */
+    private final double[] edgesAxis = new double[3];
     private boolean ends;
     /** Doubles per plane: normal x, y, z, offset d, threshold, and for the slack |apex| and |n|. */
     private static final int STRIDE = 7;
@@ -69,6 +71,9 @@ public final class Frustum {
         plane(1, x1 * ax - e1x, x1 * ay - e1y, x1 * az - e1z, 0);
         plane(2, e2x - y0 * ax, e2y - y0 * ay, e2z - y0 * az, 0);
         plane(3, y1 * ax - e2x, y1 * ay - e2y, y1 * az - e2z, 0);
+        edgesAxis[0] = ax;
+        edgesAxis[1] = ay;
+        edgesAxis[2] = az;
         for (int c = 0; c < 4; c++) {
             double x = (c & 1) == 0 ? x0 : x1, y = (c & 2) == 0 ? y0 : y1;
             edges[3 * c] = ax + x * e1x + y * e2x;
@@ -186,6 +191,58 @@ public final class Frustum {
         box[3] = Math.max(box[3], maxX + widen);
         box[4] = Math.max(box[4], maxY + widen);
         box[5] = Math.max(box[5], maxZ + widen);
+        return true;
+    }
+
+    /**
+     * Widens {@code box[0 .. 5]} to hold the part of the box at {@code shape[o .. o+5]} that lies
+     * inside this pyramid (an end-less one, as {@link #widenToPlane}): every point where a ray
+     * inside it can hit a shape within that box. The part is bounded by the box itself and by the
+     * pyramid's slice between the box's nearest and furthest distances along the axis, which is
+     * the hull of its four edges' points at those two distances. Returns false, and leaves the
+     * box unchanged, when the pyramid has an end.
+     */
+    public boolean widenToPart(double[] shape, int o, double[] box) {
+        if (ends) {
+            return false;
+        }
+        double ax = edgesAxis[0], ay = edgesAxis[1], az = edgesAxis[2];
+        // the box's nearest and furthest distances along the axis, from its corners
+        double near = (ax >= 0 ? ax * (shape[o] - ox) : ax * (shape[o + 3] - ox))
+                + (ay >= 0 ? ay * (shape[o + 1] - oy) : ay * (shape[o + 4] - oy))
+                + (az >= 0 ? az * (shape[o + 2] - oz) : az * (shape[o + 5] - oz));
+        double far = (ax >= 0 ? ax * (shape[o + 3] - ox) : ax * (shape[o] - ox))
+                + (ay >= 0 ? ay * (shape[o + 4] - oy) : ay * (shape[o + 1] - oy))
+                + (az >= 0 ? az * (shape[o + 5] - oz) : az * (shape[o + 2] - oz));
+        double scale = Math.abs(ox) + Math.abs(oy) + Math.abs(oz);
+        for (int k = 0; k < 6; k++) {
+            scale = Math.max(scale, Math.abs(shape[o + k]));
+        }
+        // the distances rounded outwards; nothing behind the apex
+        double slack = MARGIN * (scale + Math.abs(near) + Math.abs(far));
+        near = Math.max(0, near - slack);
+        far += slack;
+        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
+        for (int c = 0; c < 12; c += 3) {
+            for (int end = 0; end < 2; end++) {
+                double s = end == 0 ? near : far;
+                double x = ox + s * edges[c], y = oy + s * edges[c + 1], z = oz + s * edges[c + 2];
+                minX = Math.min(minX, x);
+                minY = Math.min(minY, y);
+                minZ = Math.min(minZ, z);
+                maxX = Math.max(maxX, x);
+                maxY = Math.max(maxY, y);
+                maxZ = Math.max(maxZ, z);
+            }
+        }
+        double widen = MARGIN * (scale + far);
+        box[0] = Math.min(box[0], Math.max(shape[o], minX - widen));
+        box[1] = Math.min(box[1], Math.max(shape[o + 1], minY - widen));
+        box[2] = Math.min(box[2], Math.max(shape[o + 2], minZ - widen));
+        box[3] = Math.max(box[3], Math.min(shape[o + 3], maxX + widen));
+        box[4] = Math.max(box[4], Math.min(shape[o + 4], maxY + widen));
+        box[5] = Math.max(box[5], Math.min(shape[o + 5], maxZ + widen));
         return true;
     }
 

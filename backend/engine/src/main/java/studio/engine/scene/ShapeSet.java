@@ -253,8 +253,9 @@ public final class ShapeSet {
     /**
      * Into {@code box[0 .. 5]}: a box holding every point where a ray inside {@code cameraRays} can
      * hit one of shapes {@code ids[0 .. count-1]} (from {@link #candidates} with that pyramid): the
-     * union of their boxes, and for a plane its part inside the pyramid
-     * ({@link Frustum#widenToPlane}). False when that part is unbounded, or no shape is given.
+     * union of the parts of their boxes inside the pyramid ({@link Frustum#widenToPart}), and for a
+     * plane its part inside it ({@link Frustum#widenToPlane}). False when a plane's part is
+     * unbounded, or when nothing can be hit.
      */
     public boolean boundsOf(int[] ids, int count, Frustum cameraRays, double[] box) {
         if (count == 0) {
@@ -274,13 +275,9 @@ public final class ShapeSet {
                 }
                 continue;
             }
-            int o = 6 * slot;
-            for (int c = 0; c < 3; c++) {
-                box[c] = Math.min(box[c], slotBoxes[o + c]);
-                box[c + 3] = Math.max(box[c + 3], slotBoxes[o + c + 3]);
-            }
+            cameraRays.widenToPart(slotBoxes, 6 * slot, box);
         }
-        return true;
+        return box[0] <= box[3] && box[1] <= box[4] && box[2] <= box[5];
     }
 
     /**

@@ -202,4 +202,50 @@ class FrustumTest {
         assertTrue(frustum.mayMeet(aside, 0));
         assertFalse(frustum.within(3).mayMeet(aside, 0));
     }
+
+    @Test
+    void aBoxsPartInsideACameraPyramidHoldsEveryPointOfItOnTheRays() {
+        Random random = new Random(9);
+        Frustum frustum = new Frustum();
+        Ray ray = new Ray();
+        int tighter = 0, points = 0;
+        for (int pixel = 0; pixel < 3000; pixel++) {
+            Camera camera = randomCamera(random);
+            double aspect = uniform(random, 0.5, 2);
+            double size = Math.pow(10, uniform(random, -4.3, -0.5));
+            double x0 = uniform(random, -1, 1 - size), y0 = uniform(random, -1, 1 - size);
+            camera.frustum(x0, x0 + size, y0, y0 + size, aspect, frustum);
+            // a box around a point on the pixel's middle ray, up to 100 times the distance across
+            camera.ray(x0 + size / 2, y0 + size / 2, aspect, ray);
+            double t = Math.pow(10, uniform(random, -3, 4));
+            double h = t * Math.pow(10, uniform(random, -5, 2));
+            double cx = ray.ox + t * ray.dx, cy = ray.oy + t * ray.dy, cz = ray.oz + t * ray.dz;
+            double[] shape = {cx - h * uniform(random, 0.1, 1), cy - h * uniform(random, 0.1, 1),
+                    cz - h * uniform(random, 0.1, 1), cx + h * uniform(random, 0.1, 1), cy + h * uniform(random, 0.1, 1),
+                    cz + h * uniform(random, 0.1, 1)};
+            double[] part = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                    Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+            assertTrue(frustum.widenToPart(shape, 0, part));
+            for (int s = 0; s < 40; s++) {
+                double x = s < 4 ? x0 + (s & 1) * size : x0 + size * random.nextDouble();
+                double y = s < 4 ? y0 + (s >> 1) * size : y0 + size * random.nextDouble();
+                camera.ray(x, y, aspect, ray);
+                double u = t * uniform(random, 0, 3);
+                double px = ray.ox + u * ray.dx, py = ray.oy + u * ray.dy, pz = ray.oz + u * ray.dz;
+                if (px < shape[0] || px > shape[3] || py < shape[1] || py > shape[4] || pz < shape[2] || pz > shape[5]) {
+                    continue;
+                }
+                points++;
+                assertTrue(px >= part[0] && px <= part[3] && py >= part[1] && py <= part[4]
+                        && pz >= part[2] && pz <= part[5], "a point of the box on a ray of the pixel");
+            }
+            double kept = (part[3] - part[0]) * (part[4] - part[1]) * (part[5] - part[2]);
+            double whole = (shape[3] - shape[0]) * (shape[4] - shape[1]) * (shape[5] - shape[2]);
+            tighter += kept < whole / 2 ? 1 : 0;
+        }
+        assertTrue(points > 20000, "points tested: " + points);
+        assertTrue(tighter > 1000, "parts less than half their box: " + tighter);
+        frustum.overBox(5, 5, 5, new double[] {0, 0, 0, 1, 1, 1});
+        assertFalse(frustum.widenToPart(new double[] {0, 0, 0, 1, 1, 1}, 0, new double[6]), "a shadow pyramid has an end");
+    }
 }
