@@ -41,6 +41,8 @@ public final class Frustum {
     private final double[] edges = new double[12];
     /** The axis the edges were made from (each edge's component along it is 1). */
     private final double[] edgesAxis = new double[3];
+    /** Scratch: the box of the points added since it was last emptied (minX, minY, minZ, maxX, maxY, maxZ). */
+    private final double[] hull = new double[6];
     private boolean ends;
     /** Doubles per plane: normal x, y, z, offset d, threshold, and for the slack |apex| and |n|. */
     private static final int STRIDE = 7;
@@ -160,8 +162,7 @@ public final class Frustum {
             return false;
         }
         double reach = nx * (px - ox) + ny * (py - oy) + nz * (pz - oz);
-        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
-        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
+        emptyHull();
         for (int c = 0; c < 12; c += 3) {
             double dx = edges[c], dy = edges[c + 1], dz = edges[c + 2];
             double along = nx * dx + ny * dy + nz * dz;
@@ -170,27 +171,17 @@ public final class Frustum {
                 return false;
             }
             double t = reach / along;
-            double x = ox + t * dx, y = oy + t * dy, z = oz + t * dz;
-            minX = Math.min(minX, x);
-            minY = Math.min(minY, y);
-            minZ = Math.min(minZ, z);
-            maxX = Math.max(maxX, x);
-            maxY = Math.max(maxY, y);
-            maxZ = Math.max(maxZ, z);
+            addToHull(ox + t * dx, oy + t * dy, oz + t * dz);
         }
-        double scale = Math.max(Math.max(Math.abs(minX), Math.abs(maxX)), Math.max(Math.abs(minY), Math.abs(maxY)));
-        scale = Math.max(scale, Math.max(Math.max(Math.abs(minZ), Math.abs(maxZ)), Math.abs(ox) + Math.abs(oy) + Math.abs(oz)));
-        scale = Math.max(scale, Math.abs(px) + Math.abs(py) + Math.abs(pz));
+        double scale = Math.max(Math.abs(ox) + Math.abs(oy) + Math.abs(oz), Math.abs(px) + Math.abs(py) + Math.abs(pz));
+        for (double v : hull) {
+            scale = Math.max(scale, Math.abs(v));
+        }
         double widen = MARGIN * scale;
         if (!Double.isFinite(widen)) {
             return false;
         }
-        box[0] = Math.min(box[0], minX - widen);
-        box[1] = Math.min(box[1], minY - widen);
-        box[2] = Math.min(box[2], minZ - widen);
-        box[3] = Math.max(box[3], maxX + widen);
-        box[4] = Math.max(box[4], maxY + widen);
-        box[5] = Math.max(box[5], maxZ + widen);
+        widenByHull(widen, null, 0, box);
         return true;
     }
 
@@ -222,28 +213,40 @@ public final class Frustum {
         double slack = MARGIN * (scale + Math.abs(near) + Math.abs(far));
         near = Math.max(0, near - slack);
         far += slack;
-        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
-        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
+        emptyHull();
         for (int c = 0; c < 12; c += 3) {
-            for (int end = 0; end < 2; end++) {
-                double s = end == 0 ? near : far;
-                double x = ox + s * edges[c], y = oy + s * edges[c + 1], z = oz + s * edges[c + 2];
-                minX = Math.min(minX, x);
-                minY = Math.min(minY, y);
-                minZ = Math.min(minZ, z);
-                maxX = Math.max(maxX, x);
-                maxY = Math.max(maxY, y);
-                maxZ = Math.max(maxZ, z);
-            }
+            addToHull(ox + near * edges[c], oy + near * edges[c + 1], oz + near * edges[c + 2]);
+            addToHull(ox + far * edges[c], oy + far * edges[c + 1], oz + far * edges[c + 2]);
         }
-        double widen = MARGIN * (scale + far);
-        box[0] = Math.min(box[0], Math.max(shape[o], minX - widen));
-        box[1] = Math.min(box[1], Math.max(shape[o + 1], minY - widen));
-        box[2] = Math.min(box[2], Math.max(shape[o + 2], minZ - widen));
-        box[3] = Math.max(box[3], Math.min(shape[o + 3], maxX + widen));
-        box[4] = Math.max(box[4], Math.min(shape[o + 4], maxY + widen));
-        box[5] = Math.max(box[5], Math.min(shape[o + 5], maxZ + widen));
+        widenByHull(MARGIN * (scale + far), shape, o, box);
         return true;
+    }
+
+    private void emptyHull() {
+        hull[0] = hull[1] = hull[2] = Double.POSITIVE_INFINITY;
+        hull[3] = hull[4] = hull[5] = Double.NEGATIVE_INFINITY;
+    }
+
+    private void addToHull(double x, double y, double z) {
+        hull[0] = Math.min(hull[0], x);
+        hull[1] = Math.min(hull[1], y);
+        hull[2] = Math.min(hull[2], z);
+        hull[3] = Math.max(hull[3], x);
+        hull[4] = Math.max(hull[4], y);
+        hull[5] = Math.max(hull[5], z);
+    }
+
+    /** Widens {@code box} by the hull grown by {@code widen} on every side, clipped to {@code clip[o .. o+5]} (null: not). */
+    private void widenByHull(double widen, double[] clip, int o, double[] box) {
+        for (int k = 0; k < 3; k++) {
+            double low = hull[k] - widen, high = hull[k + 3] + widen;
+            if (clip != null) {
+                low = Math.max(clip[o + k], low);
+                high = Math.min(clip[o + k + 3], high);
+            }
+            box[k] = Math.min(box[k], low);
+            box[k + 3] = Math.max(box[k + 3], high);
+        }
     }
 
     /**

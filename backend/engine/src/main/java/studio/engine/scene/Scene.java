@@ -62,7 +62,7 @@ public final class Scene {
         return geometry.usesBvh();
     }
 
-    /** The objects camera rays inside the frustum can hit, ascending, or -1 (see {@link ShapeSet#candidates}). */
+    /** Into {@code out}, ascending: the objects rays inside the pyramid can meet; how many, or -1 (see {@link ShapeSet#candidates}). */
     public int candidates(Frustum frustum, int[] out, int[] stack) {
         return geometry.candidates(frustum, out, stack);
     }

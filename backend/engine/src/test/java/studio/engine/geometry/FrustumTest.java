@@ -47,6 +47,27 @@ class FrustumTest {
         return new Camera(position, target, new Vec3(0, 1, 0), uniform(random, 5, 170));
     }
 
+    /** A pixel, a square of normalised device coordinates from (x0, y0) and size across, of a camera. */
+    private record Pixel(Camera camera, double aspect, double x0, double y0, double size) {
+
+        /** A random camera's pixel, of an image up to 40,000 wide (5e-5 across), and its pyramid into frustum. */
+        static Pixel random(Random random, double minAspect, double maxAspect, Frustum frustum) {
+            Camera camera = randomCamera(random);
+            double aspect = uniform(random, minAspect, maxAspect);
+            double size = Math.pow(10, uniform(random, -4.3, -0.5));
+            double x0 = uniform(random, -1, 1 - size), y0 = uniform(random, -1, 1 - size);
+            camera.frustum(x0, x0 + size, y0, y0 + size, aspect, frustum);
+            return new Pixel(camera, aspect, x0, y0, size);
+        }
+
+        /** Into out: the ray through the pixel's corner s (0 to 3), or for s of 4 on through a random point in it. */
+        Ray ray(int s, Random random, Ray out) {
+            double x = s < 4 ? x0 + (s & 1) * size : x0 + size * random.nextDouble();
+            double y = s < 4 ? y0 + (s >> 1) * size : y0 + size * random.nextDouble();
+            return camera.ray(x, y, aspect, out);
+        }
+    }
+
     @Test
     void cameraRaysThroughTheRectangleMeetOnlyKeptBoxes() {
         Random random = new Random(3);
@@ -54,18 +75,12 @@ class FrustumTest {
         Ray ray = new Ray();
         int dropped = 0;
         for (int pixel = 0; pixel < 2000; pixel++) {
-            Camera camera = randomCamera(random);
-            double aspect = uniform(random, 0.2, 5);
-            // a pixel of an image up to 40,000 wide: ndc 5e-5 across
-            double size = Math.pow(10, uniform(random, -4.3, -0.5));
-            double x0 = uniform(random, -1, 1 - size), y0 = uniform(random, -1, 1 - size);
-            camera.frustum(x0, x0 + size, y0, y0 + size, aspect, frustum);
+            Pixel p = Pixel.random(random, 0.2, 5, frustum);
+            Camera camera = p.camera();
+            double aspect = p.aspect(), x0 = p.x0(), y0 = p.y0(), size = p.size();
             Vec3 o = camera.position();
             for (int s = 0; s < 20; s++) {
-                // corners and edges as well as the inside
-                double x = s < 4 ? x0 + (s & 1) * size : x0 + size * random.nextDouble();
-                double y = s < 4 ? y0 + (s >> 1) * size : y0 + size * random.nextDouble();
-                camera.ray(x, y, aspect, ray);
+                p.ray(s, random, ray);
                 double t = Math.pow(10, uniform(random, -6, 7));
                 double px = ray.ox + t * ray.dx, py = ray.oy + t * ray.dy, pz = ray.oz + t * ray.dz;
                 assertTrue(meets(frustum, pointBox(px, py, pz)), "a point on a ray of the pixel, t " + t);
@@ -150,31 +165,26 @@ class FrustumTest {
         Hit hit = new Hit();
         int bounded = 0, hits = 0;
         for (int pixel = 0; pixel < 3000; pixel++) {
-            Camera camera = randomCamera(random);
-            double aspect = uniform(random, 0.5, 2);
-            double size = Math.pow(10, uniform(random, -4.3, -0.5));
-            double x0 = uniform(random, -1, 1 - size), y0 = uniform(random, -1, 1 - size);
-            camera.frustum(x0, x0 + size, y0, y0 + size, aspect, frustum);
+            Pixel p = Pixel.random(random, 0.5, 2, frustum);
+            Camera camera = p.camera();
             double scale = Math.abs(camera.position().x()) + Math.abs(camera.position().y()) + 1;
             Plane plane = new Plane(camera.position().plus(randomPoint(random, scale)), randomPoint(random, 1));
             double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
                     Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-            Vec3 p = plane.point(), n = plane.normal();
-            if (!frustum.widenToPlane(p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), box)) {
+            Vec3 at = plane.point(), n = plane.normal();
+            if (!frustum.widenToPlane(at.x(), at.y(), at.z(), n.x(), n.y(), n.z(), box)) {
                 continue;
             }
             bounded++;
             for (int s = 0; s < 20; s++) {
-                double x = s < 4 ? x0 + (s & 1) * size : x0 + size * random.nextDouble();
-                double y = s < 4 ? y0 + (s >> 1) * size : y0 + size * random.nextDouble();
-                camera.ray(x, y, aspect, ray);
+                p.ray(s, random, ray);
                 assertTrue(plane.intersect(ray, Double.POSITIVE_INFINITY, hit), "every ray of the pixel meets it");
                 hits++;
                 assertTrue(hit.px >= box[0] && hit.px <= box[3] && hit.py >= box[1] && hit.py <= box[4]
                         && hit.pz >= box[2] && hit.pz <= box[5], "the hit lies in the box");
             }
         }
-        assertTrue(bounded > 300, "pixels whose part of the plane is bounded: " + bounded);
+        assertTrue(bounded > 300 && hits == 20 * bounded, "pixels whose part of the plane is bounded: " + bounded);
     }
 
     @Test
@@ -210,13 +220,10 @@ class FrustumTest {
         Ray ray = new Ray();
         int tighter = 0, points = 0;
         for (int pixel = 0; pixel < 3000; pixel++) {
-            Camera camera = randomCamera(random);
-            double aspect = uniform(random, 0.5, 2);
-            double size = Math.pow(10, uniform(random, -4.3, -0.5));
-            double x0 = uniform(random, -1, 1 - size), y0 = uniform(random, -1, 1 - size);
-            camera.frustum(x0, x0 + size, y0, y0 + size, aspect, frustum);
+            Pixel p = Pixel.random(random, 0.5, 2, frustum);
+            Camera camera = p.camera();
             // a box around a point on the pixel's middle ray, up to 100 times the distance across
-            camera.ray(x0 + size / 2, y0 + size / 2, aspect, ray);
+            camera.ray(p.x0() + p.size() / 2, p.y0() + p.size() / 2, p.aspect(), ray);
             double t = Math.pow(10, uniform(random, -3, 4));
             double h = t * Math.pow(10, uniform(random, -5, 2));
             double cx = ray.ox + t * ray.dx, cy = ray.oy + t * ray.dy, cz = ray.oz + t * ray.dz;
@@ -227,9 +234,7 @@ class FrustumTest {
                     Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
             assertTrue(frustum.widenToPart(shape, 0, part));
             for (int s = 0; s < 40; s++) {
-                double x = s < 4 ? x0 + (s & 1) * size : x0 + size * random.nextDouble();
-                double y = s < 4 ? y0 + (s >> 1) * size : y0 + size * random.nextDouble();
-                camera.ray(x, y, aspect, ray);
+                p.ray(s, random, ray);
                 double u = t * uniform(random, 0, 3);
                 double px = ray.ox + u * ray.dx, py = ray.oy + u * ray.dy, pz = ray.oz + u * ray.dz;
                 if (px < shape[0] || px > shape[3] || py < shape[1] || py > shape[4] || pz < shape[2] || pz > shape[5]) {
