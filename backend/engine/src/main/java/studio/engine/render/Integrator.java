@@ -101,12 +101,21 @@ final class Integrator {
      * throughput so far (1 for a camera ray). Allocates nothing: rays and hits are reused per depth.
      */
     void trace(Ray ray, int depth, double weight) {
+        trace(ray, depth, weight, -1);
+    }
+
+    /**
+     * {@link #trace(Ray, int, double)} for a ray that most likely ends on object {@code likely}
+     * (-1: none): one refracted into a glass object, or reflected inside it, leaves it next, and
+     * testing it first lets the search skip everything beyond.
+     */
+    private void trace(Ray ray, int depth, double weight, int likely) {
         rays++;
         int out = 3 * depth;
         Hit hit = hits[depth];
         boolean found = depth == 0 && candidates.cameraCount >= 0
                 ? scene.intersectAmong(candidates.camera, candidates.cameraCount, ray, Double.POSITIVE_INFINITY, hit)
-                : scene.intersect(ray, Double.POSITIVE_INFINITY, hit);
+                : scene.intersect(ray, Double.POSITIVE_INFINITY, hit, likely);
         if (!found) {
             if (paths != null) {
                 paths.record(pathPixel, depth, ray.dx, ray.dy, ray.dz, true);
@@ -311,7 +320,8 @@ final class Integrator {
         double wr = weight * reflectance;
         if (wr > minPathWeight) {
             double rx = dx + 2 * cosI * nx, ry = dy + 2 * cosI * ny, rz = dz + 2 * cosI * nz;
-            trace(Rays.spawn(hit, rx, ry, rz, childRays[depth]), depth + 1, wr);
+            // reflected inside the object (from its back face), the ray meets it again
+            trace(Rays.spawn(hit, rx, ry, rz, childRays[depth]), depth + 1, wr, front ? -1 : hit.primitive);
             r = radiance[child] * reflectance;
             g = radiance[child + 1] * reflectance;
             b = radiance[child + 2] * reflectance;
@@ -323,7 +333,8 @@ final class Integrator {
             if (wt > minPathWeight) {
                 double c = eta * cosI - Math.sqrt(k);
                 double tx = eta * dx + c * nx, ty = eta * dy + c * ny, tz = eta * dz + c * nz;
-                trace(Rays.spawn(hit, tx, ty, tz, childRays[depth]), depth + 1, wt);
+                // refracted into the object, the ray leaves it next
+                trace(Rays.spawn(hit, tx, ty, tz, childRays[depth]), depth + 1, wt, front ? hit.primitive : -1);
                 r += radiance[child] * tint.r() * transmittance;
                 g += radiance[child + 1] * tint.g() * transmittance;
                 b += radiance[child + 2] * tint.b() * transmittance;

@@ -57,6 +57,11 @@ public final class Scene {
         return geometry.intersect(ray, tMax, hit);
     }
 
+    /** {@link #intersect(Ray, double, Hit)}, testing object {@code likely} first (-1: none); the same hit. */
+    public boolean intersect(Ray ray, double tMax, Hit hit, int likely) {
+        return geometry.intersect(ray, tMax, hit, likely);
+    }
+
     /** Whether the scene's objects are searched through a BVH (more than {@link ShapeSet#LINEAR_MAX}), not one by one. */
     public boolean searchesBvh() {
         return geometry.usesBvh();

@@ -156,7 +156,15 @@ public final class ShapeSet {
 
     /** The nearest hit with 0 &lt; t &lt; tMax under the tie rule; sets {@code hit.primitive} to the shape's index. */
     public boolean intersect(Ray ray, double tMax, Hit hit) {
-        return nodeBounds == null ? intersectLinear(ray, tMax, hit) : intersectBvh(ray, tMax, hit);
+        return nodeBounds == null ? intersectLinear(ray, tMax, hit) : intersectBvh(ray, tMax, hit, -1);
+    }
+
+    /**
+     * {@link #intersect(Ray, double, Hit)}, testing shape {@code likely} first (-1: none), which lets
+     * the BVH skip every node beyond its hit. The same hit: it is one more visiting order.
+     */
+    public boolean intersect(Ray ray, double tMax, Hit hit, int likely) {
+        return nodeBounds == null ? intersectLinear(ray, tMax, hit) : intersectBvh(ray, tMax, hit, likely);
     }
 
     /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */
@@ -321,10 +329,14 @@ public final class ShapeSet {
         return -1;
     }
 
-    private boolean intersectBvh(Ray ray, double tMax, Hit hit) {
+    private boolean intersectBvh(Ray ray, double tMax, Hit hit, int likely) {
         // best = t of the current winner, winner = its index (MAX_VALUE: none yet).
         double best = tMax;
         int winner = Integer.MAX_VALUE;
+        if (likely >= 0 && shapes[likely].intersect(ray, tMax, hit)) {
+            best = hit.t;
+            winner = likely;
+        }
         for (int i : unbounded) {
             if (shapes[i].intersect(ray, limit(i, winner, best, tMax), hit)) {
                 best = hit.t;

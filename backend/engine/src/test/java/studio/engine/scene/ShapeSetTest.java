@@ -73,7 +73,7 @@ class ShapeSetTest {
             Shape[] shapes = randomScene(random, 20 + 20 * scene);
             ShapeSet linear = ShapeSet.linear(shapes), bvh = ShapeSet.bvh(shapes);
             assertTrue(bvh.usesBvh());
-            Hit a = new Hit(), b = new Hit();
+            Hit a = new Hit(), b = new Hit(), c = new Hit();
             for (int i = 0; i < 1000; i++) {
                 Ray ray = randomRay(random, shapes);
                 double tMax = random.nextInt(4) == 0 ? uniform(random, 0, 40) : Double.POSITIVE_INFINITY;
@@ -97,6 +97,15 @@ class ShapeSetTest {
                     assertEquals(a.t, b.t, 0.0);
                     assertEquals(a.px, b.px, 0.0);
                     assertEquals(a.nx, b.nx, 0.0);
+                }
+                // the likely shape tested first, whether it is the winner or any other: the same hit
+                int likely = expected && random.nextBoolean() ? a.primitive : random.nextInt(shapes.length);
+                assertEquals(expected, bvh.intersect(ray, tMax, c, likely), "likely " + likely + ", " + ray);
+                if (expected) {
+                    assertEquals(a.primitive, c.primitive, "likely " + likely + ", " + ray);
+                    assertEquals(a.t, c.t, 0.0);
+                    assertEquals(a.px, c.px, 0.0);
+                    assertEquals(a.nx, c.nx, 0.0);
                 }
             }
         }
@@ -149,7 +158,8 @@ class ShapeSetTest {
             for (int y = 0; y < 128; y++) {
                 for (int x = 0; x < 128; x++) {
                     Ray ray = camera.ray(2 * (x + 0.5) / 128 - 1, 1 - 2 * (y + 0.5) / 128, 1.0);
-                    boolean found = set.intersect(ray, Double.POSITIVE_INFINITY, hit);
+                    boolean found = set.intersect(ray, Double.POSITIVE_INFINITY, hit,
+                            (x + y) % 3 == 0 ? -1 : (x * 7 + y) % shapes.length);
                     assertEquals(linear.intersect(ray, Double.POSITIVE_INFINITY, reference), found);
                     if (!found) {
                         continue;
