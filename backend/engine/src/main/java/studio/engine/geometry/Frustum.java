@@ -33,7 +33,11 @@ public final class Frustum {
     /** How far outside a plane, relative to the magnitudes summed, a box must be to be dropped. */
     static final double SLACK = 1e-12;
 
-    /** A plane's part inside the pyramid is bounded only if every edge meets it at least this steeply (cosine). */
+    /**
+     * The smallest cosine taken where a pyramid would otherwise open too wide or a corner be
+     * ill-conditioned: between an edge and a plane it meets ({@link #widenToPlane}), and between
+     * the axis and a box's corner ({@link #overBox}).
+     */
     static final double STEEP = 1e-3;
 
     private double ox, oy, oz;
@@ -43,7 +47,6 @@ public final class Frustum {
     private final double[] edgesAxis = new double[3];
     /** Scratch: the box of the points added since it was last emptied (minX, minY, minZ, maxX, maxY, maxZ). */
     private final double[] hull = new double[6];
-    private boolean ends;
     /** Doubles per plane: normal x, y, z, offset d, threshold, and for the slack |apex| and |n|. */
     private static final int STRIDE = 7;
     /**
@@ -84,7 +87,6 @@ public final class Frustum {
         }
         // a.r <= far; with no end, a plane that keeps everything
         boolean end = far < Double.POSITIVE_INFINITY;
-        ends = end;
         planeCount = end ? 5 : 4;
         plane(4, end ? -ax : 0, end ? -ay : 0, end ? -az : 0, end ? far * (1 + MARGIN) : 0);
         return this;
@@ -134,7 +136,7 @@ public final class Frustum {
             double rz = ((c & 4) == 0 ? minZ : maxZ) - pz;
             double s = ax * rx + ay * ry + az * rz;
             // a corner beside or behind the point, or nearly so: the pyramid would be too wide
-            if (!(s > 1e-3 * Math.sqrt(rx * rx + ry * ry + rz * rz))) {
+            if (!(s > STEEP * Math.sqrt(rx * rx + ry * ry + rz * rz))) {
                 return false;
             }
             double x = (e1x * rx + e1y * ry + e1z * rz) / s, y = (e2x * rx + e2y * ry + e2z * rz) / s;
@@ -158,7 +160,7 @@ public final class Frustum {
      * pyramid has an end (it was made {@link #overBox}).
      */
     public boolean widenToPlane(double px, double py, double pz, double nx, double ny, double nz, double[] box) {
-        if (ends) {
+        if (ends()) {
             return false;
         }
         double reach = nx * (px - ox) + ny * (py - oy) + nz * (pz - oz);
@@ -194,7 +196,7 @@ public final class Frustum {
      * box unchanged, when the pyramid has an end.
      */
     public boolean widenToPart(double[] shape, int o, double[] box) {
-        if (ends) {
+        if (ends()) {
             return false;
         }
         double ax = edgesAxis[0], ay = edgesAxis[1], az = edgesAxis[2];
@@ -220,6 +222,11 @@ public final class Frustum {
         }
         widenByHull(MARGIN * (scale + far), shape, o, box);
         return true;
+    }
+
+    /** Whether the pyramid has an end (made {@link #overBox}); its edges are then unused. */
+    private boolean ends() {
+        return planeCount == 5;
     }
 
     private void emptyHull() {

@@ -31,7 +31,7 @@ final class PixelCandidates {
     /**
      * Fewest objects for which listing pays. Measured as users meet it, whole {@code bin/studio}
      * processes at 800x600 and 16 samples, alternated: with lists the still life (6 objects) took
-     * 1.09 and glass-pattern (17) 1.09 of the time without, though warm, one thread, they took
+     * 1.09 and glass-pattern (16) 1.09 of the time without, though warm, one thread, they took
      * 0.94 and 0.98: a render of a second or two spends much of it before the JIT has compiled the
      * pyramids' code, and a small BVH leaves little to save. The peers' 10,000 spheres take 0.58
      * warm.
@@ -52,9 +52,8 @@ final class PixelCandidates {
     /** Per light, the objects that can shadow a camera ray's hit, as {@link #camera}. */
     private final int[][] shadow;
     private final int[] shadowCount;
-    /** The box of every point where the camera rays can hit, if {@link #hitsBounded}. */
+    /** A box of every point where the camera rays can hit, while a light's list is {@link #UNKNOWN}. */
     private final double[] hitBox = new double[6];
-    private boolean hitsBounded;
 
     /** Whether listing pays for this scene: one searched through a BVH of {@value #MIN_OBJECTS} objects or more. */
     static boolean pay(Scene scene) {
@@ -72,7 +71,7 @@ final class PixelCandidates {
     /** From now on camera rays lie inside {@code cameraRays}; lists what they can hit. */
     void forCameraRaysIn(Frustum cameraRays) {
         cameraCount = scene.candidates(cameraRays, camera, stack);
-        hitsBounded = cameraCount > 0 && scene.boundsOf(camera, cameraCount, cameraRays, hitBox);
+        boolean hitsBounded = cameraCount > 0 && scene.boundsOf(camera, cameraCount, cameraRays, hitBox);
         Arrays.fill(shadowCount, hitsBounded ? UNKNOWN : -1);
     }
 
@@ -82,7 +81,6 @@ final class PixelCandidates {
             return; // no camera list, so no shadow lists either
         }
         cameraCount = -1;
-        hitsBounded = false;
         Arrays.fill(shadowCount, -1);
     }
 

@@ -242,14 +242,9 @@ public final class ShapeSet {
     public boolean intersectAmong(int[] ids, int count, Ray ray, double tMax, Hit hit) {
         boolean found = false;
         double limit = tMax;
-        double[] spheres = leafSpheres;
         for (int k = 0; k < count; k++) {
             int i = ids[k];
-            int slot = slotOfShape[i];
-            int o = 4 * slot;
-            if (slot >= 0 && spheres[o + 3] != 0
-                    ? Sphere.intersect(spheres[o], spheres[o + 1], spheres[o + 2], spheres[o + 3], ray, limit, hit)
-                    : shapes[i].intersect(ray, limit, hit)) {
+            if (intersect(i, slotOfShape[i], ray, limit, hit)) {
                 found = true;
                 hit.primitive = i;
                 limit = hit.t * (1 - Scene.TIE);
@@ -266,9 +261,6 @@ public final class ShapeSet {
      * unbounded, or when nothing can be hit.
      */
     public boolean boundsOf(int[] ids, int count, Frustum cameraRays, double[] box) {
-        if (count == 0) {
-            return false;
-        }
         box[0] = box[1] = box[2] = Double.POSITIVE_INFINITY;
         box[3] = box[4] = box[5] = Double.NEGATIVE_INFINITY;
         for (int k = 0; k < count; k++) {
@@ -293,18 +285,34 @@ public final class ShapeSet {
      * {@link #candidates}): the first of them that lies on the ray, or -1.
      */
     public int occluderAmong(int[] ids, int count, Ray ray, double tMax) {
-        double[] spheres = leafSpheres;
         for (int k = 0; k < count; k++) {
             int i = ids[k];
-            int slot = slotOfShape[i];
-            int o = 4 * slot;
-            if (slot >= 0 && spheres[o + 3] != 0
-                    ? Sphere.occluded(spheres[o], spheres[o + 1], spheres[o + 2], spheres[o + 3], ray, tMax)
-                    : shapes[i].occluded(ray, tMax)) {
+            if (occluded(i, slotOfShape[i], ray, tMax)) {
                 return i;
             }
         }
         return -1;
+    }
+
+    /**
+     * Shape i, at leaf slot {@code slot} (-1: not in the tree), asked for a hit before limit: a
+     * sphere through the slot's centre and radius, any other shape through {@link Shape}.
+     */
+    private boolean intersect(int i, int slot, Ray ray, double limit, Hit hit) {
+        int k = 4 * slot;
+        double[] spheres = leafSpheres;
+        return slot >= 0 && spheres[k + 3] != 0
+                ? Sphere.intersect(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3], ray, limit, hit)
+                : shapes[i].intersect(ray, limit, hit);
+    }
+
+    /** {@link #intersect(int, int, Ray, double, Hit)}'s any-hit question. */
+    private boolean occluded(int i, int slot, Ray ray, double tMax) {
+        int k = 4 * slot;
+        double[] spheres = leafSpheres;
+        return slot >= 0 && spheres[k + 3] != 0
+                ? Sphere.occluded(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3], ray, tMax)
+                : shapes[i].occluded(ray, tMax);
     }
 
     private boolean intersectLinear(Ray ray, double tMax, Hit hit) {
@@ -348,7 +356,6 @@ public final class ShapeSet {
         boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
         double[] nb = nodeBounds;
         int[] links = nodeLinks;
-        double[] spheres = leafSpheres;
         int[] stack = hit.sceneStack;
         double[] stackEntry = hit.sceneStackEntry;
         int sp = 0, node = 0;
@@ -382,11 +389,7 @@ public final class ShapeSet {
                 } else {
                     for (int slot = links[o], end = slot + count; slot < end; slot++) {
                         int i = leafShapes[slot];
-                        double limit = limit(i, winner, best, tMax);
-                        int k = 4 * slot;
-                        double r = spheres[k + 3];
-                        if (r != 0 ? Sphere.intersect(spheres[k], spheres[k + 1], spheres[k + 2], r, ray, limit, hit)
-                                : shapes[i].intersect(ray, limit, hit)) {
+                        if (intersect(i, slot, ray, limit(i, winner, best, tMax), hit)) {
                             best = hit.t;
                             winner = i;
                             cull = Math.min(tMax, best * (1 + Scene.TIE));
@@ -426,7 +429,6 @@ public final class ShapeSet {
         boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
         double[] nb = nodeBounds;
         int[] links = nodeLinks;
-        double[] spheres = leafSpheres;
         int node = 0, end = nodeCount;
         while (node < end) {
             int o = 3 * node;
@@ -437,10 +439,7 @@ public final class ShapeSet {
                     continue;
                 }
                 for (int slot = links[o], last = slot + count; slot < last; slot++) {
-                    int k = 4 * slot;
-                    double r = spheres[k + 3];
-                    if (r != 0 ? Sphere.occluded(spheres[k], spheres[k + 1], spheres[k + 2], r, ray, tMax)
-                            : shapes[leafShapes[slot]].occluded(ray, tMax)) {
+                    if (occluded(leafShapes[slot], slot, ray, tMax)) {
                         return leafShapes[slot];
                     }
                 }
