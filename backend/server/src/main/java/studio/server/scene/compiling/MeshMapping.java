@@ -36,7 +36,7 @@ final class MeshMapping {
     /** The mesh placed in the scene, or null (and a problem) if it cannot be. */
     TriangleMesh of(ObjectDto.Mesh mesh, String path) {
         String text = meshText(mesh, path);
-        String digest = text != null ? MeshCache.digest(text) : null;
+        String digest = text != null ? cache.keyOf(text) : null;
         MeshData data = text != null ? meshData(text, digest, meshField(mesh, path)) : null;
         if (data == null) {
             return null;

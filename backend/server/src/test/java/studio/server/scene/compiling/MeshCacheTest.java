@@ -83,6 +83,14 @@ class MeshCacheTest {
     }
 
     @Test
+    void aCacheThatKeepsNothingHashesNoText() {
+        assertThat(MeshCache.none().keyOf(KNOT)).isNull();
+        MeshCache cache = new MeshCache(1_000_000, MemoryBudget.unlimited());
+        assertThat(cache.keyOf(KNOT)).hasSize(64).isEqualTo(cache.keyOf(KNOT))
+                .isNotEqualTo(cache.keyOf(KNOT.replaceFirst("v ", "v  ")));
+    }
+
+    @Test
     void theOldestEntriesGoFirstAndGiveTheirMemoryBack() {
         MemoryBudget memory = new MemoryBudget(1L << 30);
         MeshCache cache = new MeshCache(2 * 3_840, memory);
