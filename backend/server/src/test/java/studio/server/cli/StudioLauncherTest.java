@@ -1,0 +1,96 @@
+package studio.server.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * {@code bin/studio}, the launcher, run with a stand-in JDK 25 whose {@code java} writes down its
+ * arguments: the JVM options it picks for each kind of command.
+ */
+class StudioLauncherTest {
+
+    private static final Path LAUNCHER = Path.of("../../bin/studio").toAbsolutePath().normalize();
+    private static final String QUICK_COMPILER = "-XX:TieredStopAtLevel=1";
+
+    @TempDir
+    Path dir;
+    private Path calls;
+
+    @BeforeEach
+    void standInJdk() throws IOException {
+        Path bin = Files.createDirectories(dir.resolve("jdk/bin"));
+        Files.writeString(dir.resolve("jdk/release"), "JAVA_VERSION=\"25.0.1\"\n");
+        calls = dir.resolve("calls");
+        Path java = bin.resolve("java");
+        // writes down its arguments; as `-Djarmode=tools -jar J extract --destination D` it makes D
+        Files.writeString(java, """
+                #!/usr/bin/env bash
+                echo "$*" >> '%s'
+                for ((i = 1; i < $#; i++)); do
+                  if [[ "${!i}" == --destination ]]; then next=$((i + 1)); mkdir -p "${!next}"; fi
+                done
+                """.formatted(calls));
+        Files.setPosixFilePermissions(java, PosixFilePermissions.fromString("rwxr-xr-x"));
+        Files.writeString(dir.resolve("studio.jar"), "a jar");
+    }
+
+    /** The options of the JVM the launcher ends with (its last call: the render or the service). */
+    private String launched(String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of("bash", LAUNCHER.toString()));
+        command.addAll(List.of(args));
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
+        builder.environment().put("JAVA", dir.resolve("jdk/bin/java").toString());
+        builder.environment().put("STUDIO_JAR", dir.resolve("studio.jar").toString());
+        Process process = builder.start();
+        String output = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertThat(process.waitFor(30, TimeUnit.SECONDS)).as("the launcher finished").isTrue();
+        assertThat(process.exitValue()).as(output).isZero();
+        List<String> lines = Files.readAllLines(calls);
+        String last = lines.get(lines.size() - 1);
+        return last.substring(0, last.indexOf(" -jar "));
+    }
+
+    @Test
+    void aRenderOfAtMostAMillionSamplesTakesTheQuickCompilerAlone() throws Exception {
+        assertThat(launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "1"))
+                .contains("-XX:+UseParallelGC", QUICK_COMPILER, "-XX:AOTCache=");
+        assertThat(launched("render", "s.json", "--samples", "2", "-o", "x.png", "--height", "600", "--width", "800"))
+                .contains(QUICK_COMPILER);
+        assertThat(launched("render", "s.json", "--width", "1000", "--height", "1000", "--samples", "1"))
+                .contains(QUICK_COMPILER);
+    }
+
+    @Test
+    void aLongerRenderOrOneWhoseSizeTheSceneGivesKeepsBothCompilers() throws Exception {
+        assertThat(launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "16"))
+                .contains("-XX:+UseParallelGC").doesNotContain(QUICK_COMPILER);
+        assertThat(launched("render", "s.json", "--width", "1001", "--height", "1000", "--samples", "1"))
+                .doesNotContain(QUICK_COMPILER);
+        assertThat(launched("render", "s.json", "--samples", "1")).doesNotContain(QUICK_COMPILER);
+        assertThat(launched("render", "s.json", "--width", "800", "--height", "600")).doesNotContain(QUICK_COMPILER);
+        assertThat(launched("render", "s.json", "--width", "8", "--height", "6", "--samples", "x"))
+                .doesNotContain(QUICK_COMPILER);
+        assertThat(launched("render", "s.json", "--width", "8", "--height", "6", "--samples", "999999999999"))
+                .doesNotContain(QUICK_COMPILER);
+        assertThat(launched("render", "s.json", "--width", "8", "--height", "6", "--samples"))
+                .doesNotContain(QUICK_COMPILER);
+    }
+
+    @Test
+    void theServiceKeepsTheJvmsDefaults() throws Exception {
+        assertThat(launched()).doesNotContain("-XX:+UseParallelGC", QUICK_COMPILER).contains("-XX:AOTCache=");
+        assertThat(launched("--server.port=8081", "--samples", "1")).doesNotContain(QUICK_COMPILER);
+    }
+}
