@@ -30,8 +30,12 @@ class StudioLauncherTest {
 
     @BeforeEach
     void standInJdk() throws IOException {
+        standInJdk("25.0.1");
+    }
+
+    private void standInJdk(String version) throws IOException {
         Path bin = Files.createDirectories(dir.resolve("jdk/bin"));
-        Files.writeString(dir.resolve("jdk/release"), "JAVA_VERSION=\"25.0.1\"\n");
+        Files.writeString(dir.resolve("jdk/release"), "JAVA_VERSION=\"" + version + "\"\n");
         calls = dir.resolve("calls");
         Path java = bin.resolve("java");
         // writes down its arguments; as `-Djarmode=tools -jar J extract --destination D` it makes D
@@ -48,6 +52,13 @@ class StudioLauncherTest {
 
     /** The options of the JVM the launcher ends with (its last call: the render or the service). */
     private String launched(String... args) throws Exception {
+        List<String> lines = calls(args);
+        String last = lines.get(lines.size() - 1);
+        return last.substring(0, last.indexOf(" -jar "));
+    }
+
+    /** Every call the launcher made of the stand-in java, in order. */
+    private List<String> calls(String... args) throws Exception {
         List<String> command = new ArrayList<>(List.of("bash", LAUNCHER.toString()));
         command.addAll(List.of(args));
         ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
@@ -57,9 +68,38 @@ class StudioLauncherTest {
         String output = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertThat(process.waitFor(30, TimeUnit.SECONDS)).as("the launcher finished").isTrue();
         assertThat(process.exitValue()).as(output).isZero();
-        List<String> lines = Files.readAllLines(calls);
-        String last = lines.get(lines.size() - 1);
-        return last.substring(0, last.indexOf(" -jar "));
+        return Files.readAllLines(calls);
+    }
+
+    /** The jar a call runs: the word after {@code -jar}. */
+    private static String jarOf(String call) {
+        String after = call.substring(call.indexOf(" -jar ") + " -jar ".length());
+        return after.substring(0, after.indexOf(' '));
+    }
+
+    @Test
+    void onJdk17TheArchiveIsRecordedWithTheJarItIsUsedWith() throws Exception {
+        standInJdk("17.0.15");
+        List<String> calls = calls("render", "s.json", "--width", "800", "--height", "600", "--samples", "1");
+
+        String training = calls.stream().filter(c -> c.contains("-XX:ArchiveClassesAtExit=")).findFirst().orElseThrow();
+        String render = calls.get(calls.size() - 1);
+        assertThat(render).contains("-XX:SharedArchiveFile=", "-XX:+UseParallelGC", QUICK_COMPILER);
+        // JDK 17 refuses an archive recorded with the jar at any other path
+        assertThat(jarOf(training)).isEqualTo(jarOf(render)).endsWith("studio-cds/studio.jar");
+        assertThat(dir.resolve("studio-cds/stamp")).exists();
+        assertThat(calls("render", "s.json")).as("recorded once").hasSize(calls.size() + 1);
+    }
+
+    @Test
+    void onJdk25TheCacheIsRecordedApartAndMovedIntoPlace() throws Exception {
+        List<String> calls = calls("render", "s.json");
+
+        String training = calls.stream().filter(c -> c.contains("-XX:AOTCacheOutput=")).findFirst().orElseThrow();
+        assertThat(training).contains("studio-cds.tmp.");
+        assertThat(jarOf(calls.get(calls.size() - 1))).endsWith("studio-cds/studio.jar");
+        assertThat(dir.resolve("studio-cds/stamp")).exists();
+        assertThat(dir.resolve("studio-cds/java")).content().contains(" aot");
     }
 
     @Test
