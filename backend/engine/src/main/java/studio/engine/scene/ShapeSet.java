@@ -1,5 +1,7 @@
 package studio.engine.scene;
 
+import java.util.Arrays;
+
 import studio.engine.accel.Aabb;
 import studio.engine.accel.Bvh;
 import studio.engine.accel.Slab;
@@ -108,7 +110,7 @@ public final class ShapeSet {
         leafSpheres = new double[4 * boundedCount];
         slotOfShape = new int[shapes.length];
         slotBoxes = new double[6 * boundedCount];
-        java.util.Arrays.fill(slotOfShape, -1);
+        Arrays.fill(slotOfShape, -1);
         for (int slot = 0; slot < boundedCount; slot++) {
             leafShapes[slot] = boundedIndex[order[slot]];
             slotOfShape[leafShapes[slot]] = slot;
@@ -258,7 +260,7 @@ public final class ShapeSet {
      * hit one of shapes {@code ids[0 .. count-1]} (from {@link #candidates} with that pyramid): the
      * union of the parts of their boxes inside the pyramid ({@link Frustum#widenToPart}), and for a
      * plane its part inside it ({@link Frustum#widenToPlane}). False when a plane's part is
-     * unbounded, or when nothing can be hit.
+     * unbounded, when the pyramid has an end (it is not a camera's), or when nothing can be hit.
      */
     public boolean boundsOf(int[] ids, int count, Frustum cameraRays, double[] box) {
         box[0] = box[1] = box[2] = Double.POSITIVE_INFINITY;
@@ -275,7 +277,7 @@ public final class ShapeSet {
                 }
                 continue;
             }
-            cameraRays.widenToPart(slotBoxes, 6 * slot, box);
+            cameraRays.widenToPart(slotBoxes, 6 * slot, box); // an ended pyramid leaves the box empty
         }
         return box[0] <= box[3] && box[1] <= box[4] && box[2] <= box[5];
     }
@@ -341,7 +343,7 @@ public final class ShapeSet {
         // best = t of the current winner, winner = its index (MAX_VALUE: none yet).
         double best = tMax;
         int winner = Integer.MAX_VALUE;
-        if (likely >= 0 && shapes[likely].intersect(ray, tMax, hit)) {
+        if (likely >= 0 && intersect(likely, slotOfShape[likely], ray, tMax, hit)) {
             best = hit.t;
             winner = likely;
         }

@@ -302,5 +302,9 @@ class ShapeSetTest {
         // a linear set keeps its loop
         assertEquals(-1, ShapeSet.of(row[0], row[1]).candidates(frustum, ids, stack));
         assertFalse(set.boundsOf(ids, 0, frustum, new double[6]), "no candidates, no box");
+        ids[0] = 50;
+        assertTrue(set.boundsOf(ids, 1, above.frustum(-0.01, 0.01, -0.01, 0.01, 1, frustum), new double[6]));
+        frustum.overBox(50, 10, 0, new double[] {49, -1, -1, 51, 1, 1});
+        assertFalse(set.boundsOf(ids, 1, frustum, new double[6]), "a shadow pyramid (it has an end) bounds no hits");
     }
 }
