@@ -1,13 +1,10 @@
 package studio.server.scene.reading;
 
-import java.lang.annotation.Annotation;
-import java.lang.reflect.AnnotatedParameterizedType;
-import java.lang.reflect.AnnotatedType;
 import java.lang.reflect.Constructor;
-import java.lang.reflect.Field;
 import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.ParameterizedType;
 import java.lang.reflect.RecordComponent;
-import java.math.BigDecimal;
+import java.lang.reflect.Type;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -15,30 +12,13 @@ import java.util.Map;
 import java.util.function.Function;
 import java.util.function.Predicate;
 
-import org.hibernate.validator.constraints.CodePointLength;
-
-import com.fasterxml.jackson.annotation.JsonSubTypes;
-import com.fasterxml.jackson.annotation.JsonTypeInfo;
-
-import jakarta.validation.Constraint;
-import jakarta.validation.constraints.DecimalMax;
-import jakarta.validation.constraints.DecimalMin;
-import jakarta.validation.constraints.Max;
-import jakarta.validation.constraints.Min;
-import jakarta.validation.constraints.NotNull;
-import jakarta.validation.constraints.Pattern;
-import jakarta.validation.constraints.Positive;
-import jakarta.validation.constraints.PositiveOrZero;
 import tools.jackson.databind.JsonNode;
 import tools.jackson.databind.node.ObjectNode;
 
-import studio.server.scene.format.Finite;
-import studio.server.scene.format.NonZeroVector;
-import studio.server.scene.format.Vector;
-
 /**
  * The fast path of {@link SceneReader}: binds a scene tree straight to its records when every value
- * is plainly valid, with the Bean Validation constraints read once off the records' fields. It
+ * is plainly valid, checking the records' Bean Validation constraints as {@link SceneConstraints}
+ * lists them (generated from the annotations, which it never reads itself). It
  * gives no messages: anything it is not sure of (an unknown field, a value of another JSON type, a
  * broken rule, a null) makes it answer null, and the scene takes the full path (Jackson binding and
  * Hibernate Validator), which names every problem. So it may only ever be stricter than the full
@@ -53,8 +33,10 @@ import studio.server.scene.format.Vector;
  * spheres, a seventh of the live view's 150 ms for a full-size frame; 0.07 against 0.15 ms for the
  * still life; 5.4 against 5.8 ms for a 3.4 MB scene that is mostly one inline mesh's text.
  *
- * <p>It knows the constraints the scene records use (listed in {@link #check}); a record field with
- * any other constraint fails construction, so a new rule cannot be skipped silently.
+ * <p>It knows the constraints the scene records use ({@link FieldRule}): a record field with any
+ * other constraint fails {@code SceneConstraintsTest}, which also fails when the table is out of date
+ * with the annotations, and a field missing from the table fails construction. So a new rule cannot
+ * be skipped silently.
  */
 final class FastPathBinder {
 
@@ -127,29 +109,32 @@ final class FastPathBinder {
             reader.complete(known);
             return reader;
         }
-        JsonTypeInfo info = type.getAnnotation(JsonTypeInfo.class);
-        JsonSubTypes subTypes = type.getAnnotation(JsonSubTypes.class);
-        if (type.isInterface() && info != null && info.use() == JsonTypeInfo.Id.NAME
-                && info.include() == JsonTypeInfo.As.PROPERTY && subTypes != null) {
-            Map<String, RecordReader> byName = new HashMap<>();
-            for (JsonSubTypes.Type sub : subTypes.value()) {
-                RecordReader reader = new RecordReader(sub.value(), info.property());
-                byName.put(sub.name(), reader);
-                reader.complete(known);
-            }
-            String property = info.property();
-            Reader polymorphic = node -> {
-                JsonNode id = node.get(property);
-                RecordReader reader = id != null && id.isString() ? byName.get(id.stringValue()) : null;
-                if (reader == null) {
-                    throw notSure();
-                }
-                return reader.read(node);
-            };
-            known.put(type, polymorphic);
-            return polymorphic;
+        SceneConstraints.Subtypes subtypes = SceneConstraints.SUBTYPES.get(type);
+        if (subtypes == null) {
+            throw new IllegalStateException("the fast path cannot read " + type.getName());
         }
-        throw new IllegalStateException("the fast path cannot read " + type.getName());
+        String property = subtypes.property();
+        Map<String, RecordReader> byName = new HashMap<>();
+        for (Map.Entry<String, Class<?>> sub : subtypes.byName().entrySet()) {
+            RecordReader reader = new RecordReader(sub.getValue(), property);
+            byName.put(sub.getKey(), reader);
+            reader.complete(known);
+        }
+        Reader polymorphic = node -> {
+            JsonNode id = node.get(property);
+            RecordReader reader = id != null && id.isString() ? byName.get(id.stringValue()) : null;
+            if (reader == null) {
+                throw notSure();
+            }
+            return reader.read(node);
+        };
+        known.put(type, polymorphic);
+        return polymorphic;
+    }
+
+    /** A record type's name in {@link SceneConstraints}: {@code ObjectDto.Sphere}. */
+    static String keyOf(Class<?> type) {
+        return type.getName().substring(type.getPackageName().length() + 1).replace('$', '.');
     }
 
     /** A record from a JSON object: every member must be one of its components (or the type id). */
@@ -179,18 +164,10 @@ final class FastPathBinder {
                 RecordComponent component = components[i];
                 types[i] = component.getType();
                 index.put(component.getName(), i);
-                Field field;
-                try {
-                    field = type.getDeclaredField(component.getName());
-                } catch (NoSuchFieldException e) {
-                    throw new IllegalStateException(e);
-                }
-                String where = type.getSimpleName() + "." + component.getName();
-                List<Annotation> annotations = new ArrayList<>(List.of(field.getAnnotations()));
-                annotations.addAll(List.of(field.getAnnotatedType().getAnnotations()));
-                checks[i] = checkOf(annotations, where);
+                String where = keyOf(type) + "." + component.getName();
+                checks[i] = checkOf(where);
                 if (List.class.isAssignableFrom(component.getType())) {
-                    readers[i] = listReader(field.getAnnotatedType(), known, where);
+                    readers[i] = listReader(component.getGenericType(), known, where);
                 } else {
                     readers[i] = readerOf(component.getType(), known);
                 }
@@ -233,17 +210,14 @@ final class FastPathBinder {
         }
     }
 
-    /** A list from a JSON array; its elements' own constraints are the type argument's annotations. */
-    private static Reader listReader(AnnotatedType listType, Map<Class<?>, Reader> known, String where) {
-        if (!(listType instanceof AnnotatedParameterizedType parameterized)) {
-            throw new IllegalStateException("the fast path needs the element type of " + where);
-        }
-        AnnotatedType element = parameterized.getAnnotatedActualTypeArguments()[0];
-        if (!(element.getType() instanceof Class<?> elementType)) {
+    /** A list from a JSON array; its elements' own rules are listed under the field's name and "[]". */
+    private static Reader listReader(Type listType, Map<Class<?>, Reader> known, String where) {
+        if (!(listType instanceof ParameterizedType parameterized)
+                || !(parameterized.getActualTypeArguments()[0] instanceof Class<?> elementType)) {
             throw new IllegalStateException("the fast path needs a plain element type at " + where);
         }
         Reader elementReader = readerOf(elementType, known);
-        Predicate<Object> elementCheck = checkOf(List.of(element.getAnnotations()), where + "[]");
+        Predicate<Object> elementCheck = checkOf(where + "[]");
         return node -> {
             if (!node.isArray()) {
                 throw notSure();
@@ -260,102 +234,17 @@ final class FastPathBinder {
         };
     }
 
-    /** All the constraints among {@code annotations}, as one test; null passes every rule but @NotNull. */
-    private static Predicate<Object> checkOf(List<Annotation> annotations, String where) {
+    /** All the rules of a field (or of a list's elements), as one test. */
+    private static Predicate<Object> checkOf(String where) {
+        List<FieldRule> rules = SceneConstraints.RULES.get(where);
+        if (rules == null) {
+            throw new IllegalStateException("SceneConstraints has no rules for " + where
+                    + ": regenerate it (the command is in its class comment)");
+        }
         Predicate<Object> all = value -> true;
-        for (Annotation annotation : annotations) {
-            Predicate<Object> rule = check(annotation, where);
-            if (rule != null) {
-                all = all.and(rule);
-            }
+        for (FieldRule rule : rules) {
+            all = all.and(rule.check());
         }
         return all;
-    }
-
-    /** One constraint as a test, null for an annotation that is not a constraint. */
-    private static Predicate<Object> check(Annotation annotation, String where) {
-        if (annotation instanceof NotNull) {
-            return value -> value != null;
-        }
-        if (annotation instanceof Finite) {
-            return value -> value == null || Double.isFinite((Double) value);
-        }
-        if (annotation instanceof Positive) {
-            return value -> value == null || signum(value) > 0;
-        }
-        if (annotation instanceof PositiveOrZero) {
-            return value -> value == null || signum(value) >= 0;
-        }
-        if (annotation instanceof Min min) {
-            return value -> value == null || ((Number) value).longValue() >= min.value();
-        }
-        if (annotation instanceof Max max) {
-            return value -> value == null || ((Number) value).longValue() <= max.value();
-        }
-        if (annotation instanceof DecimalMin min) {
-            BigDecimal bound = new BigDecimal(min.value());
-            return value -> value == null || finite(value)
-                    && (min.inclusive() ? decimal(value).compareTo(bound) >= 0 : decimal(value).compareTo(bound) > 0);
-        }
-        if (annotation instanceof DecimalMax max) {
-            BigDecimal bound = new BigDecimal(max.value());
-            return value -> value == null || finite(value)
-                    && (max.inclusive() ? decimal(value).compareTo(bound) <= 0 : decimal(value).compareTo(bound) < 0);
-        }
-        if (annotation instanceof Pattern pattern) {
-            if (pattern.flags().length > 0) {
-                throw new IllegalStateException("the fast path has no regex flags, at " + where);
-            }
-            java.util.regex.Pattern regex = java.util.regex.Pattern.compile(pattern.regexp());
-            return value -> value == null || regex.matcher((String) value).matches();
-        }
-        if (annotation instanceof CodePointLength length
-                && length.normalizationStrategy() == CodePointLength.NormalizationStrategy.NONE) {
-            return value -> {
-                if (value == null) {
-                    return true;
-                }
-                int count = ((String) value).codePointCount(0, ((String) value).length());
-                return count >= length.min() && count <= length.max();
-            };
-        }
-        if (annotation instanceof Vector) {
-            return value -> value == null || ((List<?>) value).size() == 3;
-        }
-        if (annotation instanceof NonZeroVector) {
-            return value -> {
-                if (value == null) {
-                    return true;
-                }
-                for (Object component : (List<?>) value) {
-                    if (!(component instanceof Double d) || d != 0) {
-                        return true;
-                    }
-                }
-                return false;
-            };
-        }
-        if (annotation.annotationType().isAnnotationPresent(Constraint.class)) {
-            throw new IllegalStateException("the fast path does not know the constraint @"
-                    + annotation.annotationType().getSimpleName() + " at " + where);
-        }
-        return null;
-    }
-
-    /** Finite and not -0.0 (left to the full path, whose decimal rules compare it in their own way). */
-    private static boolean finite(Object value) {
-        return !(value instanceof Double d) || Double.isFinite(d) && Double.compare(d, -0.0) != 0;
-    }
-
-    private static int signum(Object value) {
-        if (value instanceof Double d) {
-            // as Hibernate Validator: -0.0 is negative (refused by @PositiveOrZero); NaN here -1, refused
-            return d > 0 ? 1 : Double.compare(d, 0.0) == 0 ? 0 : -1;
-        }
-        return Long.signum(((Number) value).longValue());
-    }
-
-    private static BigDecimal decimal(Object value) {
-        return value instanceof Double d ? new BigDecimal(d) : BigDecimal.valueOf(((Number) value).longValue());
     }
 }

@@ -1,0 +1,182 @@
+package studio.server.scene.reading;
+
+import static java.util.Map.entry;
+
+import java.util.List;
+import java.util.Map;
+
+import studio.server.scene.format.LightDto;
+import studio.server.scene.format.MaterialDto;
+import studio.server.scene.format.ObjectDto;
+
+/**
+ * Generated from the scene records' annotations by SceneConstraintsTest, which fails when this
+ * file differs from what it would write; regenerate it rather than edit it:
+ * {@code mvn -f backend/pom.xml -pl engine,server test -Dtest=SceneConstraintsTest
+ * -Dsurefire.failIfNoSpecifiedTests=false -Dscene-constraints.write=true}.
+ *
+ * <p>The constraints {@link FastPathBinder} checks, as data: per record field ("Type.field", and
+ * "Type.field[]" for a list's elements) the rules its annotations state, and per polymorphic
+ * type its type property and kinds.
+ */
+final class SceneConstraints {
+
+    private SceneConstraints() {
+    }
+
+    /** A polymorphic type: the JSON property that names the kind, and each kind's record. */
+    record Subtypes(String property, Map<String, Class<?>> byName) {
+    }
+
+    static final Map<String, List<FieldRule>> RULES = Map.ofEntries(
+            entry("SceneDto.version", List.of(new FieldRule.Min(1L), new FieldRule.Max(1L))),
+            entry("SceneDto.name", List.of(new FieldRule.CodePointLength(0, 200))),
+            entry("SceneDto.image", List.of()),
+            entry("ImageDto.width", List.of(new FieldRule.Positive())),
+            entry("ImageDto.height", List.of(new FieldRule.Positive())),
+            entry("ImageDto.format", List.of(new FieldRule.Pattern("jpg|png"))),
+            entry("ImageDto.quality", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("SceneDto.camera", List.of()),
+            entry("CameraDto.position", List.of(new FieldRule.Vector())),
+            entry("CameraDto.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("CameraDto.lookAt", List.of(new FieldRule.Vector())),
+            entry("CameraDto.lookAt[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("CameraDto.up", List.of(new FieldRule.Vector(), new FieldRule.NonZeroVector())),
+            entry("CameraDto.up[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("CameraDto.fov", List.of(
+                    new FieldRule.DecimalMin("0", false),
+                    new FieldRule.DecimalMax("180", false),
+                    new FieldRule.Finite())),
+            entry("SceneDto.background", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("SceneDto.ambient", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("SceneDto.render", List.of()),
+            entry("RenderDto.sampler", List.of(new FieldRule.Pattern("regular|random|jittered|multijittered|sobol"))),
+            entry("RenderDto.samples", List.of(new FieldRule.Positive())),
+            entry("RenderDto.maxDepth", List.of(new FieldRule.PositiveOrZero())),
+            entry("RenderDto.seed", List.of()),
+            entry("RenderDto.adaptive", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("SceneDto.lights", List.of()),
+            entry("SceneDto.lights[]", List.of(new FieldRule.NotNull())),
+            entry("LightDto.Point.position", List.of(new FieldRule.Vector())),
+            entry("LightDto.Point.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("LightDto.Point.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("LightDto.Point.intensity", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1e6", true),
+                    new FieldRule.Finite())),
+            entry("LightDto.Point.falloff", List.of()),
+            entry("LightDto.Point.name", List.of(new FieldRule.CodePointLength(0, 200))),
+            entry("SceneDto.objects", List.of(new FieldRule.NotNull())),
+            entry("SceneDto.objects[]", List.of(new FieldRule.NotNull())),
+            entry("ObjectDto.Sphere.center", List.of(new FieldRule.Vector())),
+            entry("ObjectDto.Sphere.center[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Sphere.radius", List.of(new FieldRule.Positive(), new FieldRule.Finite())),
+            entry("ObjectDto.Sphere.material", List.of()),
+            entry("MaterialDto.Flat.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("MaterialDto.Chalk.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("MaterialDto.Chalk.diffuse", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Plastic.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("MaterialDto.Plastic.diffuse", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Plastic.specular", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Plastic.shininess", List.of(
+                    new FieldRule.DecimalMin("1", true),
+                    new FieldRule.DecimalMax("10000", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Metal.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("MaterialDto.Metal.diffuse", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Metal.specular", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Metal.shininess", List.of(
+                    new FieldRule.DecimalMin("1", true),
+                    new FieldRule.DecimalMax("10000", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Metal.reflectivity", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Mirror.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("MaterialDto.Mirror.reflectivity", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Glass.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("MaterialDto.Glass.ior", List.of(
+                    new FieldRule.DecimalMin("1", true),
+                    new FieldRule.DecimalMax("4", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Glass.specular", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1", true),
+                    new FieldRule.Finite())),
+            entry("MaterialDto.Glass.shininess", List.of(
+                    new FieldRule.DecimalMin("1", true),
+                    new FieldRule.DecimalMax("10000", true),
+                    new FieldRule.Finite())),
+            entry("ObjectDto.Sphere.name", List.of(new FieldRule.CodePointLength(0, 200))),
+            entry("ObjectDto.Box.center", List.of(new FieldRule.Vector())),
+            entry("ObjectDto.Box.center[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Box.size", List.of(new FieldRule.Vector())),
+            entry("ObjectDto.Box.size[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.Positive(),
+                    new FieldRule.Finite())),
+            entry("ObjectDto.Box.rotation", List.of(new FieldRule.Vector())),
+            entry("ObjectDto.Box.rotation[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Box.material", List.of()),
+            entry("ObjectDto.Box.name", List.of(new FieldRule.CodePointLength(0, 200))),
+            entry("ObjectDto.Plane.point", List.of(new FieldRule.Vector())),
+            entry("ObjectDto.Plane.point[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Plane.normal", List.of(new FieldRule.Vector(), new FieldRule.NonZeroVector())),
+            entry("ObjectDto.Plane.normal[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Plane.material", List.of()),
+            entry("ObjectDto.Plane.name", List.of(new FieldRule.CodePointLength(0, 200))),
+            entry("ObjectDto.Mesh.obj", List.of()),
+            entry("ObjectDto.Mesh.file", List.of(
+                    new FieldRule.Pattern("(?!.*\\.\\.)(?!.*/\\.)(?!.*//)[A-Za-z0-9_-][A-Za-z0-9._/-]*\\.obj"))),
+            entry("ObjectDto.Mesh.position", List.of(new FieldRule.Vector())),
+            entry("ObjectDto.Mesh.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Mesh.scale", List.of(new FieldRule.Positive(), new FieldRule.Finite())),
+            entry("ObjectDto.Mesh.rotation", List.of(new FieldRule.Vector())),
+            entry("ObjectDto.Mesh.rotation[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Mesh.material", List.of()),
+            entry("ObjectDto.Mesh.name", List.of(new FieldRule.CodePointLength(0, 200))));
+
+    static final Map<Class<?>, Subtypes> SUBTYPES = Map.ofEntries(
+            entry(LightDto.class, new Subtypes("type", Map.ofEntries(
+                    entry("point", LightDto.Point.class)))),
+            entry(ObjectDto.class, new Subtypes("type", Map.ofEntries(
+                    entry("sphere", ObjectDto.Sphere.class),
+                    entry("box", ObjectDto.Box.class),
+                    entry("plane", ObjectDto.Plane.class),
+                    entry("mesh", ObjectDto.Mesh.class)))),
+            entry(MaterialDto.class, new Subtypes("type", Map.ofEntries(
+                    entry("flat", MaterialDto.Flat.class),
+                    entry("chalk", MaterialDto.Chalk.class),
+                    entry("plastic", MaterialDto.Plastic.class),
+                    entry("metal", MaterialDto.Metal.class),
+                    entry("mirror", MaterialDto.Mirror.class),
+                    entry("glass", MaterialDto.Glass.class)))));
+}

@@ -1,0 +1,218 @@
+package studio.server.scene.reading;
+
+import java.lang.annotation.Annotation;
+import java.lang.reflect.AnnotatedParameterizedType;
+import java.lang.reflect.AnnotatedType;
+import java.lang.reflect.Field;
+import java.lang.reflect.RecordComponent;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+
+import com.fasterxml.jackson.annotation.JsonSubTypes;
+import com.fasterxml.jackson.annotation.JsonTypeInfo;
+
+/**
+ * Writes {@link SceneConstraints}' source from the scene records' annotations: walks the records
+ * from the root type as {@link FastPathBinder} does (record fields, list elements, polymorphic
+ * interfaces) and turns every constraint into its {@link FieldRule}.
+ */
+final class SceneConstraintsSource {
+
+    private static final Set<Class<?>> SCALARS = Set.of(Double.class, Integer.class, Long.class, Boolean.class,
+            String.class);
+
+    private final Map<String, List<FieldRule>> rules = new LinkedHashMap<>();
+    private final Map<Class<?>, SceneConstraints.Subtypes> subtypes = new LinkedHashMap<>();
+    private final Set<Class<?>> seen = new java.util.HashSet<>();
+    private final Set<String> imports = new TreeSet<>();
+
+    private SceneConstraintsSource() {
+    }
+
+    /** The rules and subtypes read off the annotations of the records reachable from {@code root}. */
+    static SceneConstraintsSource of(Class<?> root) {
+        SceneConstraintsSource source = new SceneConstraintsSource();
+        source.walk(root);
+        return source;
+    }
+
+    Map<String, List<FieldRule>> rules() {
+        return rules;
+    }
+
+    Map<Class<?>, SceneConstraints.Subtypes> subtypes() {
+        return subtypes;
+    }
+
+    private void walk(Class<?> type) {
+        if (SCALARS.contains(type) || !seen.add(type)) {
+            return;
+        }
+        if (type.isRecord()) {
+            for (RecordComponent component : type.getRecordComponents()) {
+                String key = FastPathBinder.keyOf(type) + "." + component.getName();
+                Field field;
+                try {
+                    field = type.getDeclaredField(component.getName());
+                } catch (NoSuchFieldException e) {
+                    throw new IllegalStateException(e);
+                }
+                List<Annotation> annotations = new ArrayList<>(List.of(field.getAnnotations()));
+                annotations.addAll(List.of(field.getAnnotatedType().getAnnotations()));
+                rules.put(key, rulesOf(annotations, key));
+                if (List.class.isAssignableFrom(component.getType())) {
+                    if (!(field.getAnnotatedType() instanceof AnnotatedParameterizedType list)) {
+                        throw new IllegalStateException("no element type at " + key);
+                    }
+                    AnnotatedType element = list.getAnnotatedActualTypeArguments()[0];
+                    if (!(element.getType() instanceof Class<?> elementType)) {
+                        throw new IllegalStateException("no plain element type at " + key);
+                    }
+                    rules.put(key + "[]", rulesOf(List.of(element.getAnnotations()), key + "[]"));
+                    walk(elementType);
+                } else {
+                    walk(component.getType());
+                }
+            }
+            return;
+        }
+        JsonTypeInfo info = type.getAnnotation(JsonTypeInfo.class);
+        JsonSubTypes types = type.getAnnotation(JsonSubTypes.class);
+        if (!type.isInterface() || info == null || info.use() != JsonTypeInfo.Id.NAME
+                || info.include() != JsonTypeInfo.As.PROPERTY || types == null) {
+            throw new IllegalStateException("the fast path cannot read " + type.getName());
+        }
+        Map<String, Class<?>> byName = new LinkedHashMap<>();
+        for (JsonSubTypes.Type sub : types.value()) {
+            byName.put(sub.name(), sub.value());
+        }
+        subtypes.put(type, new SceneConstraints.Subtypes(info.property(), byName));
+        for (Class<?> sub : byName.values()) {
+            walk(sub);
+        }
+    }
+
+    /** The distinct rules, in order (a constraint that may sit on a field and a type use is on both). */
+    private static List<FieldRule> rulesOf(List<Annotation> annotations, String where) {
+        Set<FieldRule> out = new LinkedHashSet<>();
+        for (Annotation annotation : annotations) {
+            FieldRule rule = FieldRule.of(annotation, where);
+            if (rule != null) {
+                out.add(rule);
+            }
+        }
+        return List.copyOf(out);
+    }
+
+    /** The Java source of {@code SceneConstraints}. */
+    String javaSource() {
+        StringBuilder body = new StringBuilder();
+        body.append("    static final Map<String, List<FieldRule>> RULES = Map.ofEntries(\n");
+        int n = 0;
+        for (Map.Entry<String, List<FieldRule>> e : rules.entrySet()) {
+            List<String> items = new ArrayList<>();
+            for (FieldRule rule : e.getValue()) {
+                items.add(javaOf(rule));
+            }
+            String line = "            entry(" + literal(e.getKey()) + ", List.of(" + String.join(", ", items) + "))";
+            if (line.length() > 118) {
+                line = "            entry(" + literal(e.getKey()) + ", List.of(\n                    "
+                        + String.join(",\n                    ", items) + "))";
+            }
+            body.append(line).append(++n < rules.size() ? ",\n" : ");\n");
+        }
+        body.append("\n    static final Map<Class<?>, Subtypes> SUBTYPES = Map.ofEntries(\n");
+        n = 0;
+        for (Map.Entry<Class<?>, SceneConstraints.Subtypes> e : subtypes.entrySet()) {
+            body.append("            entry(").append(classLiteral(e.getKey())).append(", new Subtypes(")
+                    .append(literal(e.getValue().property())).append(", Map.ofEntries(\n");
+            int m = 0;
+            for (Map.Entry<String, Class<?>> sub : e.getValue().byName().entrySet()) {
+                body.append("                    entry(").append(literal(sub.getKey())).append(", ")
+                        .append(classLiteral(sub.getValue())).append(")")
+                        .append(++m < e.getValue().byName().size() ? ",\n" : ")))");
+            }
+            body.append(++n < subtypes.size() ? ",\n" : ");\n");
+        }
+        StringBuilder out = new StringBuilder();
+        out.append("package studio.server.scene.reading;\n\n");
+        out.append("import static java.util.Map.entry;\n\n");
+        out.append("import java.util.List;\nimport java.util.Map;\n\n");
+        for (String name : imports) {
+            out.append("import ").append(name).append(";\n");
+        }
+        out.append("""
+
+                /**
+                 * Generated from the scene records' annotations by SceneConstraintsTest, which fails when this
+                 * file differs from what it would write; regenerate it rather than edit it:
+                 * {@code mvn -f backend/pom.xml -pl engine,server test -Dtest=SceneConstraintsTest
+                 * -Dsurefire.failIfNoSpecifiedTests=false -Dscene-constraints.write=true}.
+                 *
+                 * <p>The constraints {@link FastPathBinder} checks, as data: per record field ("Type.field", and
+                 * "Type.field[]" for a list's elements) the rules its annotations state, and per polymorphic
+                 * type its type property and kinds.
+                 */
+                final class SceneConstraints {
+
+                    private SceneConstraints() {
+                    }
+
+                    /** A polymorphic type: the JSON property that names the kind, and each kind's record. */
+                    record Subtypes(String property, Map<String, Class<?>> byName) {
+                    }
+
+                """);
+        out.append(body);
+        out.append("}\n");
+        return out.toString();
+    }
+
+    private String classLiteral(Class<?> type) {
+        Class<?> top = type;
+        while (top.getEnclosingClass() != null) {
+            top = top.getEnclosingClass();
+        }
+        imports.add(top.getName());
+        return FastPathBinder.keyOf(type) + ".class";
+    }
+
+    /** {@code new FieldRule.Min(1L)}: the rule's record built from its components. */
+    private static String javaOf(FieldRule rule) {
+        List<String> args = new ArrayList<>();
+        for (RecordComponent component : rule.getClass().getRecordComponents()) {
+            Object value;
+            try {
+                value = component.getAccessor().invoke(rule);
+            } catch (ReflectiveOperationException e) {
+                throw new IllegalStateException(e);
+            }
+            args.add(value instanceof String s ? literal(s) : value instanceof Long l ? l + "L" : String.valueOf(value));
+        }
+        return "new FieldRule." + rule.getClass().getSimpleName() + "(" + String.join(", ", args) + ")";
+    }
+
+    private static String literal(String text) {
+        StringBuilder out = new StringBuilder("\"");
+        for (char c : text.toCharArray()) {
+            switch (c) {
+                case '"' -> out.append("\\\"");
+                case '\\' -> out.append("\\\\");
+                case '\n' -> out.append("\\n");
+                default -> {
+                    if (c < 0x20 || c > 0x7e) {
+                        out.append(String.format("\\u%04x", (int) c));
+                    } else {
+                        out.append(c);
+                    }
+                }
+            }
+        }
+        return out.append('"').toString();
+    }
+}
