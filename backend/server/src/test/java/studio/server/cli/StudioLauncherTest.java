@@ -113,6 +113,29 @@ class StudioLauncherTest {
     }
 
     @Test
+    void aQuickRenderInlinesTheBvhBoxTestIntoItsTraversalAndNothingElseDoes() throws Exception {
+        String quick = launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "1");
+        List<String> inlined = new ArrayList<>();
+        for (String option : quick.split(" ")) {
+            if (option.startsWith("-XX:CompileCommand=inline,")) {
+                inlined.add(option.substring("-XX:CompileCommand=inline,".length()));
+            }
+        }
+        assertThat(quick).contains("-XX:CompileCommand=quiet");
+        assertThat(inlined).containsExactlyInAnyOrder("java/lang/Math.max", "java/lang/Math.min",
+                "studio/engine/accel/Slab.entryWithoutNaN");
+        // a command naming a method that is not there would be silently ignored
+        for (String method : inlined) {
+            Class<?> type = Class.forName(method.substring(0, method.lastIndexOf('.')).replace('/', '.'));
+            String name = method.substring(method.lastIndexOf('.') + 1);
+            assertThat(type.getDeclaredMethods()).as(method).anyMatch(m -> m.getName().equals(name));
+        }
+        assertThat(launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "16"))
+                .doesNotContain("CompileCommand");
+        assertThat(launched()).doesNotContain("CompileCommand");
+    }
+
+    @Test
     void aLongerRenderOrOneWhoseSizeTheSceneGivesKeepsBothCompilers() throws Exception {
         assertThat(launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "16"))
                 .contains("-XX:+UseParallelGC").doesNotContain(QUICK_COMPILER);
