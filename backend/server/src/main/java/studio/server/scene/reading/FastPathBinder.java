@@ -4,7 +4,6 @@ import java.lang.reflect.Constructor;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.ParameterizedType;
 import java.lang.reflect.RecordComponent;
-import java.lang.reflect.Type;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -54,10 +53,43 @@ final class FastPathBinder {
         Object read(JsonNode node);
     }
 
+    /**
+     * Where the binder finds the rules of a record's field, or of its elements for a list (null:
+     * none are known, which fails construction), and the kinds of a polymorphic type (null: it is
+     * not one). At run time {@link #GENERATED}; {@code SceneConstraintsTest} walks the records
+     * through the binder with the annotations instead, and writes down what it was asked.
+     */
+    interface Constraints {
+        List<FieldRule> rulesOf(Class<?> record, RecordComponent component, boolean elements);
+
+        SceneConstraints.Subtypes subtypesOf(Class<?> type);
+    }
+
+    /** The rules and kinds as {@link SceneConstraints} lists them. */
+    static final Constraints GENERATED = new Constraints() {
+        @Override
+        public List<FieldRule> rulesOf(Class<?> record, RecordComponent component, boolean elements) {
+            return SceneConstraints.RULES.get(keyOf(record, component, elements));
+        }
+
+        @Override
+        public SceneConstraints.Subtypes subtypesOf(Class<?> type) {
+            return SceneConstraints.SUBTYPES.get(type);
+        }
+    };
+
+    private final Constraints constraints;
+    /** The readers made so far, by type (each type is read by one reader). */
+    private final Map<Class<?>, Reader> known = new HashMap<>();
     private final Reader root;
 
     FastPathBinder(Class<?> rootType) {
-        this.root = readerOf(rootType, new HashMap<>());
+        this(rootType, GENERATED);
+    }
+
+    FastPathBinder(Class<?> rootType, Constraints constraints) {
+        this.constraints = constraints;
+        this.root = readerOf(rootType);
     }
 
     /** The records bound from {@code tree}, all constraints holding, or null: take the full path. */
@@ -94,7 +126,7 @@ final class FastPathBinder {
         };
     }
 
-    private static Reader readerOf(Class<?> type, Map<Class<?>, Reader> known) {
+    private Reader readerOf(Class<?> type) {
         Reader scalar = SCALARS.get(type);
         if (scalar != null) {
             return scalar;
@@ -106,10 +138,10 @@ final class FastPathBinder {
         if (type.isRecord()) {
             RecordReader reader = new RecordReader(type, null);
             known.put(type, reader);
-            reader.complete(known);
+            reader.complete();
             return reader;
         }
-        SceneConstraints.Subtypes subtypes = SceneConstraints.SUBTYPES.get(type);
+        SceneConstraints.Subtypes subtypes = constraints.subtypesOf(type);
         if (subtypes == null) {
             throw new IllegalStateException("the fast path cannot read " + type.getName());
         }
@@ -118,7 +150,7 @@ final class FastPathBinder {
         for (Map.Entry<String, Class<?>> sub : subtypes.byName().entrySet()) {
             RecordReader reader = new RecordReader(sub.getValue(), property);
             byName.put(sub.getKey(), reader);
-            reader.complete(known);
+            reader.complete();
         }
         Reader polymorphic = node -> {
             JsonNode id = node.get(property);
@@ -137,8 +169,13 @@ final class FastPathBinder {
         return type.getName().substring(type.getPackageName().length() + 1).replace('$', '.');
     }
 
+    /** A field's name in {@link SceneConstraints}: {@code ObjectDto.Sphere.center}, with "[]" for its elements. */
+    static String keyOf(Class<?> record, RecordComponent component, boolean elements) {
+        return keyOf(record) + "." + component.getName() + (elements ? "[]" : "");
+    }
+
     /** A record from a JSON object: every member must be one of its components (or the type id). */
-    private static final class RecordReader implements Reader {
+    private final class RecordReader implements Reader {
         private final Class<?> type;
         private final String typeProperty;
         private final Map<String, Integer> index = new HashMap<>();
@@ -155,7 +192,7 @@ final class FastPathBinder {
         }
 
         @SuppressWarnings("unchecked")
-        void complete(Map<Class<?>, Reader> known) {
+        void complete() {
             RecordComponent[] components = type.getRecordComponents();
             readers = new Reader[components.length];
             checks = new Predicate[components.length];
@@ -164,13 +201,9 @@ final class FastPathBinder {
                 RecordComponent component = components[i];
                 types[i] = component.getType();
                 index.put(component.getName(), i);
-                String where = keyOf(type) + "." + component.getName();
-                checks[i] = checkOf(where);
-                if (List.class.isAssignableFrom(component.getType())) {
-                    readers[i] = listReader(component.getGenericType(), known, where);
-                } else {
-                    readers[i] = readerOf(component.getType(), known);
-                }
+                checks[i] = checkOf(type, component, false);
+                readers[i] = List.class.isAssignableFrom(component.getType())
+                        ? listReader(type, component) : readerOf(component.getType());
             }
             try {
                 constructor = type.getDeclaredConstructor(types);
@@ -210,14 +243,15 @@ final class FastPathBinder {
         }
     }
 
-    /** A list from a JSON array; its elements' own rules are listed under the field's name and "[]". */
-    private static Reader listReader(Type listType, Map<Class<?>, Reader> known, String where) {
-        if (!(listType instanceof ParameterizedType parameterized)
+    /** A list from a JSON array; its elements have rules of their own. */
+    private Reader listReader(Class<?> record, RecordComponent component) {
+        if (!(component.getGenericType() instanceof ParameterizedType parameterized)
                 || !(parameterized.getActualTypeArguments()[0] instanceof Class<?> elementType)) {
-            throw new IllegalStateException("the fast path needs a plain element type at " + where);
+            throw new IllegalStateException("the fast path needs a plain element type at "
+                    + keyOf(record, component, false));
         }
-        Reader elementReader = readerOf(elementType, known);
-        Predicate<Object> elementCheck = checkOf(where + "[]");
+        Predicate<Object> elementCheck = checkOf(record, component, true);
+        Reader elementReader = readerOf(elementType);
         return node -> {
             if (!node.isArray()) {
                 throw notSure();
@@ -235,10 +269,10 @@ final class FastPathBinder {
     }
 
     /** All the rules of a field (or of a list's elements), as one test. */
-    private static Predicate<Object> checkOf(String where) {
-        List<FieldRule> rules = SceneConstraints.RULES.get(where);
+    private Predicate<Object> checkOf(Class<?> record, RecordComponent component, boolean elements) {
+        List<FieldRule> rules = constraints.rulesOf(record, component, elements);
         if (rules == null) {
-            throw new IllegalStateException("SceneConstraints has no rules for " + where
+            throw new IllegalStateException("SceneConstraints has no rules for " + keyOf(record, component, elements)
                     + ": regenerate it (the command is in its class comment)");
         }
         Predicate<Object> all = value -> true;

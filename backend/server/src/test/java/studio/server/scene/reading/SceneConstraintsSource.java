@@ -2,7 +2,6 @@ package studio.server.scene.reading;
 
 import java.lang.annotation.Annotation;
 import java.lang.reflect.AnnotatedParameterizedType;
-import java.lang.reflect.AnnotatedType;
 import java.lang.reflect.Field;
 import java.lang.reflect.RecordComponent;
 import java.util.ArrayList;
@@ -17,27 +16,24 @@ import com.fasterxml.jackson.annotation.JsonSubTypes;
 import com.fasterxml.jackson.annotation.JsonTypeInfo;
 
 /**
- * Writes {@link SceneConstraints}' source from the scene records' annotations: walks the records
- * from the root type as {@link FastPathBinder} does (record fields, list elements, polymorphic
- * interfaces) and turns every constraint into its {@link FieldRule}.
+ * Writes {@link SceneConstraints}' source from the scene records' annotations: builds a
+ * {@link FastPathBinder} over them that asks these annotations for each field's rules and each
+ * polymorphic type's kinds, and writes down every answer, so the table holds exactly what the
+ * binder asks for.
  */
-final class SceneConstraintsSource {
-
-    private static final Set<Class<?>> SCALARS = Set.of(Double.class, Integer.class, Long.class, Boolean.class,
-            String.class);
+final class SceneConstraintsSource implements FastPathBinder.Constraints {
 
     private final Map<String, List<FieldRule>> rules = new LinkedHashMap<>();
     private final Map<Class<?>, SceneConstraints.Subtypes> subtypes = new LinkedHashMap<>();
-    private final Set<Class<?>> seen = new java.util.HashSet<>();
     private final Set<String> imports = new TreeSet<>();
 
     private SceneConstraintsSource() {
     }
 
-    /** The rules and subtypes read off the annotations of the records reachable from {@code root}. */
+    /** The rules and kinds the annotations state for the records a binder of {@code root} reads. */
     static SceneConstraintsSource of(Class<?> root) {
         SceneConstraintsSource source = new SceneConstraintsSource();
-        source.walk(root);
+        new FastPathBinder(root, source);
         return source;
     }
 
@@ -49,52 +45,46 @@ final class SceneConstraintsSource {
         return subtypes;
     }
 
-    private void walk(Class<?> type) {
-        if (SCALARS.contains(type) || !seen.add(type)) {
-            return;
+    /** A field's constraints on the field and its type; a list's elements' on its type argument. */
+    @Override
+    public List<FieldRule> rulesOf(Class<?> record, RecordComponent component, boolean elements) {
+        String key = FastPathBinder.keyOf(record, component, elements);
+        Field field;
+        try {
+            field = record.getDeclaredField(component.getName());
+        } catch (NoSuchFieldException e) {
+            throw new IllegalStateException(e);
         }
-        if (type.isRecord()) {
-            for (RecordComponent component : type.getRecordComponents()) {
-                String key = FastPathBinder.keyOf(type) + "." + component.getName();
-                Field field;
-                try {
-                    field = type.getDeclaredField(component.getName());
-                } catch (NoSuchFieldException e) {
-                    throw new IllegalStateException(e);
-                }
-                List<Annotation> annotations = new ArrayList<>(List.of(field.getAnnotations()));
-                annotations.addAll(List.of(field.getAnnotatedType().getAnnotations()));
-                rules.put(key, rulesOf(annotations, key));
-                if (List.class.isAssignableFrom(component.getType())) {
-                    if (!(field.getAnnotatedType() instanceof AnnotatedParameterizedType list)) {
-                        throw new IllegalStateException("no element type at " + key);
-                    }
-                    AnnotatedType element = list.getAnnotatedActualTypeArguments()[0];
-                    if (!(element.getType() instanceof Class<?> elementType)) {
-                        throw new IllegalStateException("no plain element type at " + key);
-                    }
-                    rules.put(key + "[]", rulesOf(List.of(element.getAnnotations()), key + "[]"));
-                    walk(elementType);
-                } else {
-                    walk(component.getType());
-                }
-            }
-            return;
+        List<Annotation> annotations = new ArrayList<>();
+        if (elements) {
+            // the binder asks only of a List<E> with a plain class E
+            AnnotatedParameterizedType list = (AnnotatedParameterizedType) field.getAnnotatedType();
+            annotations.addAll(List.of(list.getAnnotatedActualTypeArguments()[0].getAnnotations()));
+        } else {
+            annotations.addAll(List.of(field.getAnnotations()));
+            annotations.addAll(List.of(field.getAnnotatedType().getAnnotations()));
         }
+        List<FieldRule> found = rulesOf(annotations, key);
+        rules.put(key, found);
+        return found;
+    }
+
+    /** A sealed interface Jackson reads by a type name in a property; null for any other type. */
+    @Override
+    public SceneConstraints.Subtypes subtypesOf(Class<?> type) {
         JsonTypeInfo info = type.getAnnotation(JsonTypeInfo.class);
         JsonSubTypes types = type.getAnnotation(JsonSubTypes.class);
         if (!type.isInterface() || info == null || info.use() != JsonTypeInfo.Id.NAME
                 || info.include() != JsonTypeInfo.As.PROPERTY || types == null) {
-            throw new IllegalStateException("the fast path cannot read " + type.getName());
+            return null;
         }
         Map<String, Class<?>> byName = new LinkedHashMap<>();
         for (JsonSubTypes.Type sub : types.value()) {
             byName.put(sub.name(), sub.value());
         }
-        subtypes.put(type, new SceneConstraints.Subtypes(info.property(), byName));
-        for (Class<?> sub : byName.values()) {
-            walk(sub);
-        }
+        SceneConstraints.Subtypes found = new SceneConstraints.Subtypes(info.property(), byName);
+        subtypes.put(type, found);
+        return found;
     }
 
     /** The distinct rules, in order (a constraint that may sit on a field and a type use is on both). */
