@@ -265,8 +265,9 @@ final class Integrator {
             return occluder < 0;
         }
         double r = 1, g = 1, b = 1;
+        int inside = -1; // the glass object the ray has entered, which it most likely leaves next
         for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {
-            if (!scene.intersect(ray, dist * SHADOW_END, shadowHit)) {
+            if (!scene.intersect(ray, dist * SHADOW_END, shadowHit, inside)) {
                 throughR = r;
                 throughG = g;
                 throughB = b;
@@ -279,6 +280,7 @@ final class Integrator {
             }
             double cos = shadowHit.nx * ray.dx + shadowHit.ny * ray.dy + shadowHit.nz * ray.dz;
             boolean entering = shadowHit.gx * ray.dx + shadowHit.gy * ray.dy + shadowHit.gz * ray.dz < 0;
+            inside = entering ? shadowHit.primitive : -1;
             // |cos|: a smooth mesh's shading normal may lean past the side its triangle is crossed from
             double transmitted = 1 - (entering ? Fresnel.reflectance(Math.abs(cos), 1, m.ior())
                     : Fresnel.reflectance(Math.abs(cos), m.ior(), 1));

@@ -40,6 +40,16 @@ import studio.engine.math.Vec3;
  * (record, then its centre): on one thread, 10,000 spheres in a block, primary plus one shadow ray,
  * 1,209 to 1,392 ns per ray before and 1,144 to 1,229 after (three alternating runs each).
  *
+ * <p>A ray that most likely ends on one shape (refracted into a glass object, or reflected inside
+ * it; {@link #intersect(Ray, double, Hit, int)}) tests that shape first. If the shape stands apart
+ * (no other shape's box comes near its own, {@link #standsApart}) and the ray, from its origin to
+ * where a hit could still win, stays inside the shape's box, no other bounded shape can be hit on
+ * the way, and the tree is not searched at all: the same hit, found with one test instead of the
+ * shape's test, a walk down the tree and the same test again in its leaf. In glass-pattern (a
+ * glass sphere and box in front of striped boards) 30% of the searches are such rays, with 27% of
+ * the node visits; warm, 800x600, 16 jittered samples, 2 threads, three alternated JVMs (medians
+ * of the last 4 of 8 renders): 1,650-1,760 ms against 2,047-2,112 before.
+ *
  * <p>A bundle of rays inside one pyramid (a pixel's camera rays, or their shadow rays to a light)
  * can instead list the few shapes in the pyramid once ({@link #candidates}) and test only those,
  * in declaration order as the linear loop does ({@link #intersectAmong}, {@link #occluderAmong});
@@ -49,6 +59,8 @@ public final class ShapeSet {
 
     /** Scenes with at most this many shapes use the linear loop. */
     public static final int LINEAR_MAX = 4;
+    /** {@link #apartMargin} as a fraction of the scene's largest coordinate. */
+    static final double APART_MARGIN = 1e-7;
 
     private final Shape[] shapes;
     /** Indices of the unbounded shapes, ascending; null in linear mode. */
@@ -70,6 +82,16 @@ public final class ShapeSet {
     private final int nodeCount;
     /** The largest absolute coordinate of the BVH's root box: of every box in the tree. */
     private final double magnitude;
+    /**
+     * Per leaf slot, whether its shape stands apart: {@link #UNKNOWN} until first asked, then
+     * {@link #APART} or {@link #NEAR} (see {@link #standsApart}). Worked out when a search first
+     * needs it, by any thread: every thread works out the same answer.
+     */
+    private final byte[] slotApart;
+    /** How far beyond a shape's box a segment may reach and still count as inside it; twice this, no other box may come. */
+    private final double apartMargin;
+
+    private static final byte UNKNOWN = 0, APART = 1, NEAR = 2;
 
     private ShapeSet(Shape[] shapes, boolean useBvh) {
         this.shapes = shapes.clone();
@@ -89,6 +111,8 @@ public final class ShapeSet {
             slotBoxes = null;
             nodeCount = 0;
             magnitude = 0;
+            slotApart = null;
+            apartMargin = 0;
             return;
         }
         int[] boundedIndex = new int[boundedCount];
@@ -131,6 +155,8 @@ public final class ShapeSet {
             largest = Math.max(largest, Math.abs(nodeBounds[k]));
         }
         magnitude = largest;
+        slotApart = new byte[boundedCount];
+        apartMargin = Math.max(APART_MARGIN * largest, Double.MIN_NORMAL);
     }
 
     /** The shapes, searched linearly or through a BVH depending on their number. */
@@ -177,6 +203,11 @@ public final class ShapeSet {
     /** The index of a shape that lies on the ray with 0 &lt; t &lt; tMax (the first one found), or -1 if none does. */
     public int occluder(Ray ray, double tMax) {
         return nodeBounds == null ? occluderLinear(ray, tMax) : occluderBvh(ray, tMax);
+    }
+
+    /** Shape i's leaf slot, or -1 for an unbounded shape or a set without a tree (for tests). */
+    int slotOf(int i) {
+        return slotOfShape == null ? -1 : slotOfShape[i];
     }
 
     /** Whether shape i lies on the ray with 0 &lt; t &lt; tMax: the test {@link #occluded} makes of it. */
@@ -353,6 +384,10 @@ public final class ShapeSet {
                 winner = i;
             }
         }
+        if (winner != Integer.MAX_VALUE && likely >= 0 && alone(likely, ray, Math.min(tMax, best * (1 + Scene.TIE)))) {
+            hit.primitive = winner;
+            return true;
+        }
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
         boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
@@ -410,6 +445,74 @@ public final class ShapeSet {
         }
         hit.primitive = winner;
         return true;
+    }
+
+    /**
+     * Whether the ray's part from its origin to {@code end} (where a hit could still win) lies in
+     * bounded shape i's box, widened by {@link #apartMargin}, and i {@link #standsApart}: then no
+     * other bounded shape can be hit on it, and the tree need not be searched.
+     */
+    private boolean alone(int i, Ray ray, double end) {
+        int slot = slotOfShape[i];
+        return slot >= 0 && inBox(slot, ray.ox, ray.oy, ray.oz)
+                && inBox(slot, ray.ox + end * ray.dx, ray.oy + end * ray.dy, ray.oz + end * ray.dz)
+                && standsApart(slot);
+    }
+
+    /** Whether the point lies in the box of slot {@code slot} widened by {@link #apartMargin} (false for a NaN). */
+    private boolean inBox(int slot, double x, double y, double z) {
+        double[] b = slotBoxes;
+        int o = 6 * slot;
+        double m = apartMargin;
+        return x >= b[o] - m && y >= b[o + 1] - m && z >= b[o + 2] - m
+                && x <= b[o + 3] + m && y <= b[o + 4] + m && z <= b[o + 5] + m;
+    }
+
+    /**
+     * Whether no other slot's box comes within twice {@link #apartMargin} of this slot's box
+     * (touching counts as coming near). A segment inside this box widened by the margin then
+     * stays further than the margin from every other bounded shape, far more than the rounding of
+     * any intersection test (about 1e-15 of the coordinates), so none of them can report a hit on
+     * it. A glass object standing apart, as glass usually does, is the case this serves: a ray
+     * refracted into it, or reflected inside it, needs only its own test (and the planes').
+     */
+    boolean standsApart(int slot) {
+        byte known = slotApart[slot];
+        if (known == UNKNOWN) {
+            known = nothingNear(slot) ? APART : NEAR;
+            slotApart[slot] = known;
+        }
+        return known == APART;
+    }
+
+    /** The tree searched for another slot whose box overlaps this slot's, widened by twice the margin. */
+    private boolean nothingNear(int slot) {
+        double m = 2 * apartMargin;
+        int o = 6 * slot;
+        double x0 = slotBoxes[o] - m, y0 = slotBoxes[o + 1] - m, z0 = slotBoxes[o + 2] - m;
+        double x1 = slotBoxes[o + 3] + m, y1 = slotBoxes[o + 4] + m, z1 = slotBoxes[o + 5] + m;
+        int node = 0;
+        while (node < nodeCount) {
+            int n = 6 * node, l = 3 * node;
+            if (overlaps(nodeBounds, n, x0, y0, z0, x1, y1, z1)) {
+                int count = nodeLinks[l + 1];
+                if (count < 0) {
+                    node++;
+                    continue;
+                }
+                for (int s = nodeLinks[l], last = s + count; s < last; s++) {
+                    if (s != slot && overlaps(slotBoxes, 6 * s, x0, y0, z0, x1, y1, z1)) {
+                        return false;
+                    }
+                }
+            }
+            node = nodeLinks[l + 2];
+        }
+        return true;
+    }
+
+    private static boolean overlaps(double[] b, int o, double x0, double y0, double z0, double x1, double y1, double z1) {
+        return b[o] <= x1 && b[o + 1] <= y1 && b[o + 2] <= z1 && b[o + 3] >= x0 && b[o + 4] >= y0 && b[o + 5] >= z0;
     }
 
     /** Hits shape i must come before to win against the current winner (see the class comment). */

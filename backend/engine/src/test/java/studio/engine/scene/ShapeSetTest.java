@@ -181,6 +181,93 @@ class ShapeSetTest {
         }
     }
 
+    /**
+     * Shapes far apart, with here and there a neighbour that touches another's box or reaches
+     * into it. Rays that enter a shape (spawned from its surface as the integrator
+     * spawns a refracted ray) or start deep inside it, asked with that shape as the likely one:
+     * where it stands apart the tree is not searched, and the hit is the full search's to the bit.
+     */
+    @Test
+    void aRayInsideAShapeThatStandsApartFindsTheFullSearchsHitWithoutTheTree() {
+        Random random = new Random(31);
+        int apart = 0, near = 0, inside = 0;
+        for (int scene = 0; scene < 6; scene++) {
+            List<Shape> list = new ArrayList<>();
+            list.add(new Plane(new Vec3(0, -60, 0), new Vec3(0, 1, 0)));
+            for (int i = 0; i < 40; i++) {
+                Vec3 c = randomPoint(random, 50);
+                Shape shape = switch (random.nextInt(3)) {
+                    case 0 -> new Sphere(c, uniform(random, 0.5, 3));
+                    case 1 -> new Box(c, new Vec3(uniform(random, 0.5, 4), uniform(random, 0.5, 4), uniform(random, 0.5, 4)),
+                            new Vec3(uniform(random, -180, 180), uniform(random, -180, 180), 0));
+                    default -> new TriangleMesh(MeshShapes.icosphere(1), c, uniform(random, 0.5, 2), Vec3.ZERO);
+                };
+                list.add(shape);
+                if (i % 5 == 0) {
+                    // a neighbour whose box touches this one's, or which reaches into it
+                    double reach = shape.bounds().maxX() + (random.nextBoolean() ? 0.5 : -0.2);
+                    list.add(new Sphere(new Vec3(reach, c.y(), c.z()), 0.5));
+                }
+            }
+            Shape[] shapes = list.toArray(Shape[]::new);
+            ShapeSet set = ShapeSet.bvh(shapes), linear = ShapeSet.linear(shapes);
+            Hit a = new Hit(), b = new Hit(), c = new Hit(), entry = new Hit();
+            for (int i = 1; i < shapes.length; i++) {
+                boolean standsApart = set.standsApart(set.slotOf(i));
+                apart += standsApart ? 1 : 0;
+                near += standsApart ? 0 : 1;
+                for (int k = 0; k < 40; k++) {
+                    Vec3 target = shapes[i] instanceof Sphere sp ? sp.center() : shapes[i] instanceof Box bx ? bx.center()
+                            : ((TriangleMesh) shapes[i]).position();
+                    Vec3 from = target.plus(randomUnit(random).times(40));
+                    Ray toward = new Ray(from, target.minus(from).plus(randomUnit(random).times(0.3)));
+                    if (!linear.intersect(toward, Double.POSITIVE_INFINITY, entry) || entry.primitive != i) {
+                        continue;
+                    }
+                    Ray ray = k % 4 == 0 ? new Ray(target, randomUnit(random).times(uniform(random, 0.1, 10)))
+                            : Rays.spawn(entry, toward.dx, toward.dy, toward.dz);
+                    inside++;
+                    double tMax = k % 3 == 0 ? uniform(random, 0, 5) : Double.POSITIVE_INFINITY;
+                    boolean expected = linear.intersect(ray, tMax, a);
+                    assertEquals(expected, set.intersect(ray, tMax, b, -1), ray.toString());
+                    assertEquals(expected, set.intersect(ray, tMax, c, i), "likely " + i + ", " + ray);
+                    if (expected) {
+                        assertEquals(a.primitive, c.primitive, ray.toString());
+                        assertEquals(b.primitive, c.primitive, ray.toString());
+                        assertEquals(Double.doubleToRawLongBits(b.t), Double.doubleToRawLongBits(c.t));
+                        assertEquals(Double.doubleToRawLongBits(b.px), Double.doubleToRawLongBits(c.px));
+                        assertEquals(Double.doubleToRawLongBits(b.py), Double.doubleToRawLongBits(c.py));
+                        assertEquals(Double.doubleToRawLongBits(b.pz), Double.doubleToRawLongBits(c.pz));
+                        assertEquals(Double.doubleToRawLongBits(b.nx), Double.doubleToRawLongBits(c.nx));
+                        assertEquals(Double.doubleToRawLongBits(b.gz), Double.doubleToRawLongBits(c.gz));
+                    }
+                }
+            }
+        }
+        assertTrue(apart > 100 && near > 50 && inside > 5000, "apart " + apart + ", near " + near + ", rays " + inside);
+    }
+
+    @Test
+    void aShapeStandsApartOnlyWhenNoOtherBoxComesWithinTwiceTheMargin() {
+        // the largest coordinate is about 100, so the margin is about 1e-5
+        Sphere far = new Sphere(new Vec3(100, 0, 0), 1);
+        Sphere a = new Sphere(new Vec3(0, 0, 0), 1);
+        Box touching = new Box(new Vec3(0, 2, 0), new Vec3(2, 2, 2)); // its face on the sphere's top
+        Sphere b = new Sphere(new Vec3(0, 0, 20), 1);
+        Sphere closeToB = new Sphere(new Vec3(0, 0, 22 + 1e-6), 1);
+        Sphere c = new Sphere(new Vec3(0, 0, -20), 1);
+        Sphere clearOfC = new Sphere(new Vec3(0, 0, -22 - 1e-3), 1);
+        ShapeSet set = ShapeSet.bvh(far, a, touching, b, closeToB, c, clearOfC);
+
+        assertTrue(set.standsApart(set.slotOf(0)));
+        assertFalse(set.standsApart(set.slotOf(1)));
+        assertFalse(set.standsApart(set.slotOf(2)));
+        assertFalse(set.standsApart(set.slotOf(3)), "within twice the margin");
+        assertFalse(set.standsApart(set.slotOf(4)));
+        assertTrue(set.standsApart(set.slotOf(5)), "a thousandth away, far more than the margin");
+        assertTrue(set.standsApart(set.slotOf(6)));
+    }
+
     @Test
     void aClearlyNearerLaterShapeStillWinsThroughTheBvh() {
         List<Shape> shapes = new ArrayList<>();
