@@ -8,9 +8,10 @@ import studio.engine.math.Vec3;
 import studio.engine.scene.Scene;
 
 /**
- * The objects one pixel's samples can meet, found once for all of them: a pixel's camera rays
- * all lie in one thin pyramid from the camera, and the shadow rays from where they hit to a light
- * in one from the light. A BVH traversal with each pyramid ({@link Scene#candidates}) lists the
+ * The objects one pixel's samples can meet, found once for all of them (and for a few pixels
+ * beside it in its row: {@link SampleTracer#LIST_RUN}): a pixel's camera rays all lie in one thin
+ * pyramid from the camera, and the shadow rays from where they hit to a light in one from the
+ * light. A BVH traversal with each pyramid ({@link Scene#candidates}) lists the
  * few objects inside it, and each ray then tests only those, in declaration order, instead of
  * searching the BVH. The pixels are the same to the bit (a ray can hit only what lies in its
  * pyramid, and the tie rule picks the same winner in declaration order).

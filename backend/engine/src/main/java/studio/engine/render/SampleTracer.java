@@ -18,6 +18,15 @@ final class SampleTracer {
      * ({@link PixelCandidates}); fewer would not repay the search.
      */
     static final int CANDIDATES_FROM = 4;
+    /**
+     * Pixels of a row listed together: one pyramid over runs of this many pixels (from a column
+     * that is a multiple of it), its lists kept while the pixels traced stay in the run. A run's
+     * lists hold those of each of its pixels, so the pixels are the same to the bit; the rays test
+     * a few more objects each, and the pyramids' searches, which took a third of the 10,000 spheres'
+     * render, happen a quarter as often. Warm, 800x600, 16 jittered samples, 2 threads, medians of
+     * the last 8 of 16 renders in one JVM: one pixel 437 ms, runs of 2 379, of 4 327, of 8 344.
+     */
+    static final int LIST_RUN = 4;
 
     private final Integrator integrator;
     private final Camera camera;
@@ -27,6 +36,8 @@ final class SampleTracer {
     /** Whether pixels list what their rays can meet ({@link PixelCandidates#pay}). */
     private boolean useCandidates;
     private final int width, height;
+    /** The row and first column of the run of pixels whose lists {@link PixelCandidates} holds (row -1: none). */
+    private int listedRow = -1, listedFrom;
     private final double aspect;
     /** The radiance summed over the last call of {@link #trace}. */
     double sumR, sumG, sumB;
@@ -43,18 +54,10 @@ final class SampleTracer {
         aspect = (double) width / height;
     }
 
-    /** A pyramid holding the camera rays of samples first .. first + count - 1 of pixel (x, y). */
-    private Frustum cameraRays(int x, int y, double[] xs, double[] ys, int first, int count) {
-        double minX = Double.POSITIVE_INFINITY, maxX = Double.NEGATIVE_INFINITY;
-        double minY = Double.POSITIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY;
-        for (int s = first; s < first + count; s++) {
-            double ndcX = ndcX(x, xs[s]), ndcY = ndcY(y, ys[s]);
-            minX = Math.min(minX, ndcX);
-            maxX = Math.max(maxX, ndcX);
-            minY = Math.min(minY, ndcY);
-            maxY = Math.max(maxY, ndcY);
-        }
-        return camera.frustum(minX, maxX, minY, maxY, aspect, frustum);
+    /** A pyramid holding every camera ray through pixels from .. from + LIST_RUN - 1 of row y (those inside the image). */
+    private Frustum cameraRays(int from, int y) {
+        int to = Math.min(width, from + LIST_RUN);
+        return camera.frustum(ndcX(from, 0), ndcX(to, 0), ndcY(y, 1), ndcY(y, 0), aspect, frustum);
     }
 
     /** Normalised device x of a sample at offset dx in column x: -1 at the left edge, 1 at the right. */
@@ -109,9 +112,14 @@ final class SampleTracer {
     long trace(int x, int y, double[] xs, double[] ys, int first, int count) {
         long bad = 0;
         if (count >= CANDIDATES_FROM && useCandidates) {
-            integrator.candidates.forCameraRaysIn(cameraRays(x, y, xs, ys, first, count));
+            if (y != listedRow || x < listedFrom || x >= listedFrom + LIST_RUN) {
+                listedRow = y;
+                listedFrom = x - x % LIST_RUN;
+                integrator.candidates.forCameraRaysIn(cameraRays(listedFrom, y));
+            }
         } else {
             integrator.candidates.none();
+            listedRow = -1;
         }
         double r = 0, g = 0, b = 0;
         for (int s = first; s < first + count; s++) {

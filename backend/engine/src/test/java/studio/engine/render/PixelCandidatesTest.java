@@ -85,6 +85,39 @@ class PixelCandidatesTest {
         }
     }
 
+    /**
+     * Lists are kept for a run of pixels in a row: pixels visited in any order (as adaptive
+     * sampling revisits them), with samples on their edges, still sum to the same bits.
+     */
+    @Test
+    void pixelsVisitedInAnyOrderWithSamplesOnTheirEdgesSumToTheSameBits() {
+        Scene scene = cloud(true);
+        RenderSettings settings = new RenderSettings(61, 45, Sampler.of("jittered", 16), 4, 1, 1L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
+        SampleTracer listing = new SampleTracer(scene, settings, new StopSignal());
+        SampleTracer searching = new SampleTracer(scene, settings, new StopSignal()).withoutCandidates();
+        Random random = new Random(8);
+        double[] xs = new double[8], ys = new double[8];
+        double[] edges = {0, Math.nextDown(1.0), 1e-12, 0.5};
+        int listed = 0;
+        for (int k = 0; k < 6000; k++) {
+            int x = random.nextInt(settings.width()), y = random.nextInt(settings.height());
+            for (int s = 0; s < xs.length; s++) {
+                xs[s] = s < 4 ? edges[s] : random.nextDouble();
+                ys[s] = s < 4 ? edges[(s + k) % 4] : random.nextDouble();
+            }
+            int count = SampleTracer.CANDIDATES_FROM + random.nextInt(xs.length - SampleTracer.CANDIDATES_FROM + 1);
+            listing.trace(x, y, xs, ys, 0, count);
+            searching.trace(x, y, xs, ys, 0, count);
+            listed += listing.listedCandidates() ? 1 : 0;
+            String at = "pixel " + x + ", " + y;
+            assertEquals(searching.sumR, listing.sumR, 0.0, at);
+            assertEquals(searching.sumG, listing.sumG, 0.0, at);
+            assertEquals(searching.sumB, listing.sumB, 0.0, at);
+        }
+        assertTrue(listed > 3000, "pixels that listed: " + listed);
+    }
+
     @Test
     void fewSamplesOrFewObjectsSearchAsBefore() {
         RenderSettings settings = new RenderSettings(640, 480, Sampler.of("jittered", 16), 4, 1, 1L,
