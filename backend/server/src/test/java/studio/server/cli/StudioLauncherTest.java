@@ -15,6 +15,11 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import studio.engine.material.MaterialKind;
+import studio.engine.scene.Scene;
+import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.reading.LazyValidation;
+
 /**
  * {@code bin/studio}, the launcher, run with a stand-in JDK 25 whose {@code java} writes down its
  * arguments: the JVM options it picks for each kind of command.
@@ -100,6 +105,30 @@ class StudioLauncherTest {
         assertThat(jarOf(calls.get(calls.size() - 1))).endsWith("studio-cds/studio.jar");
         assertThat(dir.resolve("studio-cds/stamp")).exists();
         assertThat(dir.resolve("studio-cds/java")).content().contains(" aot");
+    }
+
+    /**
+     * The training run renders bin/training-scene.json at 16 samples, a valid scene with objects
+     * enough for pixel candidates (64, PixelCandidates.MIN_OBJECTS) and glass among them, so the
+     * cache's profiles cover those paths.
+     */
+    @Test
+    void theTrainingRunRendersAValidSceneWithGlassAndEnoughObjectsForPixelCandidates() throws Exception {
+        List<String> calls = calls("render", "s.json");
+        String training = calls.stream().filter(c -> c.contains("-XX:AOTCacheOutput=")).findFirst().orElseThrow();
+        Path scene = LAUNCHER.getParent().resolve("training-scene.json");
+        assertThat(training).contains(" render " + scene + " ", "--samples 16");
+
+        try (LazyValidation validation = new LazyValidation()) {
+            Scene compiled = SceneCompiler.standalone(validation).compile(Files.readAllBytes(scene)).scene();
+            assertThat(compiled.objectCount()).isGreaterThanOrEqualTo(64);
+            assertThat(compiled.searchesBvh()).isTrue();
+            boolean glass = false;
+            for (int i = 0; i < compiled.objectCount(); i++) {
+                glass |= compiled.material(i).kind() == MaterialKind.GLASS;
+            }
+            assertThat(glass).as("glass among the objects").isTrue();
+        }
     }
 
     @Test
