@@ -53,11 +53,23 @@ class PixelCandidatesTest {
                 new Rgb(0.1, 0.1, 0.15), 0.1);
     }
 
+    /** 16 jittered samples, depth 4, one thread, fixed sampling. */
+    private static RenderSettings jittered16(int width, int height) {
+        return new RenderSettings(width, height, Sampler.of("jittered", 16), 4, 1, 1L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
+    }
+
+    /** The last call's sums of both tracers, to the bit. */
+    private static void assertSameSums(SampleTracer searching, SampleTracer listing, String at) {
+        assertEquals(searching.sumR, listing.sumR, 0.0, at);
+        assertEquals(searching.sumG, listing.sumG, 0.0, at);
+        assertEquals(searching.sumB, listing.sumB, 0.0, at);
+    }
+
     @Test
     void everyPixelSumsToTheSameBitsWithAndWithoutLists() {
         for (Scene scene : List.of(cloud(false), cloud(true))) {
-            RenderSettings settings = new RenderSettings(64, 48, Sampler.of("jittered", 16), 4, 1, 1L,
-                    RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
+            RenderSettings settings = jittered16(64, 48);
             SampleTracer listing = new SampleTracer(scene, settings, new StopSignal());
             SampleTracer searching = new SampleTracer(scene, settings, new StopSignal()).withoutCandidates();
             Random random = new Random(5);
@@ -73,10 +85,7 @@ class PixelCandidatesTest {
                     searching.trace(x, y, xs, ys, 0, 16);
                     listed += listing.listedCandidates() ? 1 : 0;
                     assertFalse(searching.listedCandidates());
-                    String at = "pixel " + x + ", " + y;
-                    assertEquals(searching.sumR, listing.sumR, 0.0, at);
-                    assertEquals(searching.sumG, listing.sumG, 0.0, at);
-                    assertEquals(searching.sumB, listing.sumB, 0.0, at);
+                    assertSameSums(searching, listing, "pixel " + x + ", " + y);
                 }
             }
             assertTrue(listed > settings.width() * settings.height() / 2, "pixels that listed: " + listed);
@@ -92,8 +101,7 @@ class PixelCandidatesTest {
     @Test
     void pixelsVisitedInAnyOrderWithSamplesOnTheirEdgesSumToTheSameBits() {
         Scene scene = cloud(true);
-        RenderSettings settings = new RenderSettings(61, 45, Sampler.of("jittered", 16), 4, 1, 1L,
-                RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
+        RenderSettings settings = jittered16(61, 45);
         SampleTracer listing = new SampleTracer(scene, settings, new StopSignal());
         SampleTracer searching = new SampleTracer(scene, settings, new StopSignal()).withoutCandidates();
         Random random = new Random(8);
@@ -110,10 +118,7 @@ class PixelCandidatesTest {
             listing.trace(x, y, xs, ys, 0, count);
             searching.trace(x, y, xs, ys, 0, count);
             listed += listing.listedCandidates() ? 1 : 0;
-            String at = "pixel " + x + ", " + y;
-            assertEquals(searching.sumR, listing.sumR, 0.0, at);
-            assertEquals(searching.sumG, listing.sumG, 0.0, at);
-            assertEquals(searching.sumB, listing.sumB, 0.0, at);
+            assertSameSums(searching, listing, "pixel " + x + ", " + y);
         }
         assertTrue(listed > 3000, "pixels that listed: " + listed);
     }
