@@ -384,7 +384,9 @@ public final class ShapeSet {
                 winner = i;
             }
         }
-        if (winner != Integer.MAX_VALUE && likely >= 0 && alone(likely, ray, Math.min(tMax, best * (1 + Scene.TIE)))) {
+        // Any shape may still win a tie up to best*(1+TIE), so nodes are culled only beyond that.
+        double cull = winner == Integer.MAX_VALUE ? tMax : Math.min(tMax, best * (1 + Scene.TIE));
+        if (winner != Integer.MAX_VALUE && likely >= 0 && alone(likely, ray, cull)) {
             hit.primitive = winner;
             return true;
         }
@@ -396,8 +398,6 @@ public final class ShapeSet {
         int[] stack = hit.sceneStack;
         double[] stackEntry = hit.sceneStackEntry;
         int sp = 0, node = 0;
-        // Any shape may still win a tie up to best*(1+TIE), so nodes are culled only beyond that.
-        double cull = winner == Integer.MAX_VALUE ? tMax : Math.min(tMax, best * (1 + Scene.TIE));
         double entry = Slab.entry(nb, 0, ox, oy, oz, ix, iy, iz, nanFree, cull);
         while (true) {
             if (entry <= cull) {
