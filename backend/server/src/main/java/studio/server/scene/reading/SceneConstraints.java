@@ -5,9 +5,13 @@ import static java.util.Map.entry;
 import java.util.List;
 import java.util.Map;
 
+import studio.server.scene.format.CameraDto;
+import studio.server.scene.format.ImageDto;
 import studio.server.scene.format.LightDto;
 import studio.server.scene.format.MaterialDto;
 import studio.server.scene.format.ObjectDto;
+import studio.server.scene.format.RenderDto;
+import studio.server.scene.format.SceneDto;
 
 /**
  * Generated from the scene records' annotations by SceneConstraintsTest, which fails when this
@@ -17,7 +21,7 @@ import studio.server.scene.format.ObjectDto;
  *
  * <p>The constraints {@link FastPathBinder} checks, as data: per record field ("Type.field", and
  * "Type.field[]" for a list's elements) the rules its annotations state, and per polymorphic
- * type its type property and kinds.
+ * type its type property and kinds; and each record's constructor, called directly.
  */
 final class SceneConstraints {
 
@@ -179,4 +183,76 @@ final class SceneConstraints {
                     entry("metal", MaterialDto.Metal.class),
                     entry("mirror", MaterialDto.Mirror.class),
                     entry("glass", MaterialDto.Glass.class)))));
+
+    /** A record of {@code type} from its components' values, in declaration order. */
+    @SuppressWarnings("unchecked")
+    static Object make(Class<?> type, Object[] v) {
+        if (type == ImageDto.class) {
+            return new ImageDto((Integer) v[0], (Integer) v[1], (String) v[2], (Double) v[3]);
+        }
+        if (type == CameraDto.class) {
+            return new CameraDto((List<Double>) v[0], (List<Double>) v[1], (List<Double>) v[2], (Double) v[3]);
+        }
+        if (type == RenderDto.class) {
+            return new RenderDto((String) v[0], (Integer) v[1], (Integer) v[2], (Long) v[3], (Double) v[4]);
+        }
+        if (type == LightDto.Point.class) {
+            return new LightDto.Point((List<Double>) v[0], (String) v[1], (Double) v[2], (Boolean) v[3], (String) v[4]);
+        }
+        if (type == MaterialDto.Flat.class) {
+            return new MaterialDto.Flat((String) v[0]);
+        }
+        if (type == MaterialDto.Chalk.class) {
+            return new MaterialDto.Chalk((String) v[0], (Double) v[1]);
+        }
+        if (type == MaterialDto.Plastic.class) {
+            return new MaterialDto.Plastic((String) v[0], (Double) v[1], (Double) v[2], (Double) v[3]);
+        }
+        if (type == MaterialDto.Metal.class) {
+            return new MaterialDto.Metal((String) v[0], (Double) v[1], (Double) v[2], (Double) v[3], (Double) v[4]);
+        }
+        if (type == MaterialDto.Mirror.class) {
+            return new MaterialDto.Mirror((String) v[0], (Double) v[1]);
+        }
+        if (type == MaterialDto.Glass.class) {
+            return new MaterialDto.Glass((String) v[0], (Double) v[1], (Double) v[2], (Double) v[3]);
+        }
+        if (type == ObjectDto.Sphere.class) {
+            return new ObjectDto.Sphere((List<Double>) v[0], (Double) v[1], (MaterialDto) v[2], (String) v[3]);
+        }
+        if (type == ObjectDto.Box.class) {
+            return new ObjectDto.Box(
+                    (List<Double>) v[0],
+                    (List<Double>) v[1],
+                    (List<Double>) v[2],
+                    (MaterialDto) v[3],
+                    (String) v[4]);
+        }
+        if (type == ObjectDto.Plane.class) {
+            return new ObjectDto.Plane((List<Double>) v[0], (List<Double>) v[1], (MaterialDto) v[2], (String) v[3]);
+        }
+        if (type == ObjectDto.Mesh.class) {
+            return new ObjectDto.Mesh(
+                    (String) v[0],
+                    (String) v[1],
+                    (List<Double>) v[2],
+                    (Double) v[3],
+                    (List<Double>) v[4],
+                    (MaterialDto) v[5],
+                    (String) v[6]);
+        }
+        if (type == SceneDto.class) {
+            return new SceneDto(
+                    (Integer) v[0],
+                    (String) v[1],
+                    (ImageDto) v[2],
+                    (CameraDto) v[3],
+                    (String) v[4],
+                    (Double) v[5],
+                    (RenderDto) v[6],
+                    (List<LightDto>) v[7],
+                    (List<ObjectDto>) v[8]);
+        }
+        throw new IllegalArgumentException("no record the fast path reads: " + type.getName());
+    }
 }

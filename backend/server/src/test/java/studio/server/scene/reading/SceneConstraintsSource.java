@@ -2,9 +2,13 @@ package studio.server.scene.reading;
 
 import java.lang.annotation.Annotation;
 import java.lang.reflect.AnnotatedParameterizedType;
+import java.lang.reflect.Constructor;
 import java.lang.reflect.Field;
+import java.lang.reflect.ParameterizedType;
 import java.lang.reflect.RecordComponent;
+import java.lang.reflect.Type;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -18,13 +22,15 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
 /**
  * Writes {@link SceneConstraints}' source from the scene records' annotations: builds a
  * {@link FastPathBinder} over them that asks these annotations for each field's rules and each
- * polymorphic type's kinds, and writes down every answer, so the table holds exactly what the
- * binder asks for.
+ * polymorphic type's kinds and each record's constructor, and writes down every answer, so the
+ * table holds exactly what the binder asks for.
  */
 final class SceneConstraintsSource implements FastPathBinder.Constraints {
 
     private final Map<String, List<FieldRule>> rules = new LinkedHashMap<>();
     private final Map<Class<?>, SceneConstraints.Subtypes> subtypes = new LinkedHashMap<>();
+    /** The records the binder makes, in the order it first asks. */
+    private final Set<Class<?>> records = new LinkedHashSet<>();
     private final Set<String> imports = new TreeSet<>();
 
     private SceneConstraintsSource() {
@@ -87,6 +93,30 @@ final class SceneConstraintsSource implements FastPathBinder.Constraints {
         return found;
     }
 
+    /** Reflection's canonical constructor (the generated table calls each one directly). */
+    @Override
+    public FastPathBinder.RecordMaker makerOf(Class<?> type) {
+        records.add(type);
+        Class<?>[] types = Arrays.stream(type.getRecordComponents()).map(RecordComponent::getType).toArray(Class<?>[]::new);
+        Constructor<?> constructor;
+        try {
+            constructor = type.getDeclaredConstructor(types);
+        } catch (NoSuchMethodException e) {
+            throw new IllegalStateException(e);
+        }
+        return values -> {
+            try {
+                return constructor.newInstance(values);
+            } catch (ReflectiveOperationException e) {
+                throw new IllegalStateException(e);
+            }
+        };
+    }
+
+    Set<Class<?>> records() {
+        return records;
+    }
+
     /** The distinct rules, in order (a constraint that may sit on a field and a type use is on both). */
     private static List<FieldRule> rulesOf(List<Annotation> annotations, String where) {
         Set<FieldRule> out = new LinkedHashSet<>();
@@ -129,6 +159,26 @@ final class SceneConstraintsSource implements FastPathBinder.Constraints {
             }
             body.append(++n < subtypes.size() ? ",\n" : ");\n");
         }
+        body.append("""
+
+                    /** A record of {@code type} from its components' values, in declaration order. */
+                    @SuppressWarnings("unchecked")
+                    static Object make(Class<?> type, Object[] v) {
+                """);
+        for (Class<?> record : records) {
+            List<String> args = new ArrayList<>();
+            RecordComponent[] components = record.getRecordComponents();
+            for (int i = 0; i < components.length; i++) {
+                args.add("(" + sourceName(components[i].getGenericType()) + ") v[" + i + "]");
+            }
+            String call = "return new " + FastPathBinder.keyOf(record) + "(";
+            String oneLine = "            " + call + String.join(", ", args) + ");";
+            body.append("        if (type == ").append(classLiteral(record)).append(") {\n")
+                    .append(oneLine.length() <= 120 ? oneLine
+                            : "            " + call + "\n                    " + String.join(",\n                    ", args) + ");")
+                    .append("\n        }\n");
+        }
+        body.append("        throw new IllegalArgumentException(\"no record the fast path reads: \" + type.getName());\n    }\n");
         StringBuilder out = new StringBuilder();
         out.append("package studio.server.scene.reading;\n\n");
         out.append("import static java.util.Map.entry;\n\n");
@@ -146,7 +196,7 @@ final class SceneConstraintsSource implements FastPathBinder.Constraints {
                  *
                  * <p>The constraints {@link FastPathBinder} checks, as data: per record field ("Type.field", and
                  * "Type.field[]" for a list's elements) the rules its annotations state, and per polymorphic
-                 * type its type property and kinds.
+                 * type its type property and kinds; and each record's constructor, called directly.
                  */
                 final class SceneConstraints {
 
@@ -170,6 +220,17 @@ final class SceneConstraintsSource implements FastPathBinder.Constraints {
         }
         imports.add(top.getName());
         return FastPathBinder.keyOf(type) + ".class";
+    }
+
+    /** A component's type as the source spells it: {@code Double}, {@code List<ObjectDto>}. */
+    private String sourceName(Type type) {
+        if (type instanceof Class<?> plain) {
+            return plain.getPackageName().equals("java.lang") ? plain.getSimpleName() : classLiteral(plain).replace(".class", "");
+        }
+        if (type instanceof ParameterizedType generic && generic.getRawType() == List.class) {
+            return "List<" + sourceName(generic.getActualTypeArguments()[0]) + ">";
+        }
+        throw new IllegalStateException("the generated table cannot name the type " + type.getTypeName());
     }
 
     /** {@code new FieldRule.Min(1L)}: the rule's record built from its components. */
