@@ -317,6 +317,13 @@ class SceneMapperTest {
     }
 
     @Test
+    void rejectsLookAtThatDiffersFromPositionOnlyInTheSignOfZero() {
+        FieldProblem problem = onlyProblem("{'camera':{'position':[0,2,3],'lookAt':[-0.0,2,3]},'objects':[]}",
+                SceneLimits.DEFAULTS);
+        assertThat(problem).isEqualTo(new FieldProblem("camera.lookAt", "must differ from camera.position"));
+    }
+
+    @Test
     void reportsEveryMappingProblemTogether() {
         List<FieldProblem> problems = problems("""
                 {'image':{'width':65,'height':49},'render':{'sampler':'regular','samples':10,'maxDepth':4},
