@@ -15,8 +15,10 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import studio.engine.geometry.TriangleMesh;
 import studio.engine.material.MaterialKind;
 import studio.engine.scene.Scene;
+import studio.server.scene.compiling.MeshFiles;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.reading.LazyValidation;
 
@@ -109,25 +111,28 @@ class StudioLauncherTest {
 
     /**
      * The training run renders bin/training-scene.json at 16 samples, a valid scene with objects
-     * enough for pixel candidates (64, PixelCandidates.MIN_OBJECTS) and glass among them, so the
-     * cache's profiles cover those paths.
+     * enough for pixel candidates (64, PixelCandidates.MIN_OBJECTS), glass and a mesh from its file
+     * among them, so the cache's profiles cover those paths.
      */
     @Test
-    void theTrainingRunRendersAValidSceneWithGlassAndEnoughObjectsForPixelCandidates() throws Exception {
+    void theTrainingRunRendersAValidSceneWithGlassAMeshAndEnoughObjectsForPixelCandidates() throws Exception {
         List<String> calls = calls("render", "s.json");
         String training = calls.stream().filter(c -> c.contains("-XX:AOTCacheOutput=")).findFirst().orElseThrow();
         Path scene = LAUNCHER.getParent().resolve("training-scene.json");
         assertThat(training).contains(" render " + scene + " ", "--samples 16");
 
         try (LazyValidation validation = new LazyValidation()) {
-            Scene compiled = SceneCompiler.standalone(validation).compile(Files.readAllBytes(scene)).scene();
+            Scene compiled = SceneCompiler.standalone(validation, MeshFiles.in(scene.getParent()))
+                    .compile(Files.readAllBytes(scene)).scene();
             assertThat(compiled.objectCount()).isGreaterThanOrEqualTo(64);
             assertThat(compiled.searchesBvh()).isTrue();
-            boolean glass = false;
+            boolean glass = false, mesh = false;
             for (int i = 0; i < compiled.objectCount(); i++) {
                 glass |= compiled.material(i).kind() == MaterialKind.GLASS;
+                mesh |= compiled.shape(i) instanceof TriangleMesh;
             }
             assertThat(glass).as("glass among the objects").isTrue();
+            assertThat(mesh).as("a mesh among the objects").isTrue();
         }
     }
 
