@@ -64,8 +64,9 @@ public final class SceneCompiler {
     }
 
     /**
-     * A compiler outside Spring (the CLI, the benchmark, tests) with this server's default limits;
-     * the caller owns the validator (e.g. a {@link LazyValidation}) and closes it.
+     * A compiler outside Spring (the CLI, the benchmark, tests) with this server's default limits,
+     * reading as a process that reads one scene does ({@link SceneReader#forOneScene}); the caller
+     * owns the validator (e.g. a {@link LazyValidation}) and closes it.
      */
     public static SceneCompiler standalone(Supplier<Validator> validator) {
         return standalone(validator, MeshFiles.none());
@@ -73,7 +74,7 @@ public final class SceneCompiler {
 
     /** As {@link #standalone(Supplier)}, reading meshes' files from {@code meshFiles}. */
     public static SceneCompiler standalone(Supplier<Validator> validator, MeshFiles meshFiles) {
-        return new SceneCompiler(new SceneReader(validator), new SceneMapper(SceneLimits.DEFAULTS), meshFiles);
+        return new SceneCompiler(SceneReader.forOneScene(validator), new SceneMapper(SceneLimits.DEFAULTS), meshFiles);
     }
 
     public CompiledScene compile(byte[] json) {

@@ -40,8 +40,8 @@ class FastPathBinderTest {
 
     private static final ValidatorFactory VALIDATION = Validation.byProvider(HibernateValidator.class).configure()
             .defaultLocale(Locale.ENGLISH).buildValidatorFactory();
-    private static final SceneReader FAST = new SceneReader(VALIDATION::getValidator, true);
-    private static final SceneReader FULL = new SceneReader(VALIDATION::getValidator, false);
+    private static final SceneReader FAST = new SceneReader(VALIDATION::getValidator, true, true);
+    private static final SceneReader FULL = new SceneReader(VALIDATION::getValidator, false, true);
     private static final FastPathBinder BINDER = new FastPathBinder(SceneDto.class);
     private static final JsonMapper JSON = JsonMapper.builder().build();
     private static final JsonNodeFactory NODES = JsonNodeFactory.instance;

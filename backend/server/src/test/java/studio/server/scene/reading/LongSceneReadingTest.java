@@ -28,8 +28,8 @@ class LongSceneReadingTest {
 
     private static final ValidatorFactory VALIDATION = Validation.byProvider(HibernateValidator.class).configure()
             .defaultLocale(Locale.ENGLISH).buildValidatorFactory();
-    private static final SceneReader FAST = new SceneReader(VALIDATION::getValidator, true);
-    private static final SceneReader FULL = new SceneReader(VALIDATION::getValidator, false);
+    private static final SceneReader FAST = new SceneReader(VALIDATION::getValidator, true, true);
+    private static final SceneReader FULL = new SceneReader(VALIDATION::getValidator, false, true);
     private static final int N = 1500;
 
     @AfterAll

@@ -32,8 +32,8 @@ class MalformedJsonTest {
 
     private static final ValidatorFactory VALIDATION = Validation.byProvider(HibernateValidator.class).configure()
             .defaultLocale(Locale.ENGLISH).buildValidatorFactory();
-    private static final SceneReader FAST = new SceneReader(VALIDATION::getValidator, true);
-    private static final SceneReader FULL = new SceneReader(VALIDATION::getValidator, false);
+    private static final SceneReader FAST = new SceneReader(VALIDATION::getValidator, true, true);
+    private static final SceneReader FULL = new SceneReader(VALIDATION::getValidator, false, true);
 
     /** What gives a message away as the library's rather than the user's. */
     private static final Pattern LIBRARY_WORDS = Pattern.compile("`|Feature|[A-Z]+_[A-Z]+|\\w\\(\\)|java\\.|jackson"

@@ -22,7 +22,8 @@ import studio.server.scene.examples.ExampleSceneFiles;
 
 /**
  * {@link PlainTreeReader} reads exactly the tree {@link SceneReader}'s mapper reads, node class for
- * node class, or leaves the bytes to the mapper.
+ * node class, with Jackson's parser of fractions and with the JDK's, or leaves the bytes to the
+ * mapper.
  */
 class PlainTreeReaderTest {
 
@@ -77,18 +78,26 @@ class PlainTreeReaderTest {
                 "{\"a\": 1, \"a\": 2}", "{\"o\": {\"b\": 1, \"b\": 1}}", "{\"a\":}", "{\"a\": 1", "{\"a\": [1, 2}",
                 "{\"a\": 01}", "{\"a\": NaN}", "{'a': 1}", "{a: 1}", "{\"a\": 1,}", "{\"a\": \"\u0001\"}",
                 "{\"a\": 1} // comment")) {
-            assertThat(PlainTreeReader.read(bad.getBytes(StandardCharsets.UTF_8))).as(bad).isNull();
+            for (boolean fastDoubles : new boolean[] {true, false}) {
+                assertThat(PlainTreeReader.read(bad.getBytes(StandardCharsets.UTF_8), fastDoubles)).as(bad).isNull();
+            }
         }
         String deep = "{\"a\": " + "[".repeat(5000) + "]".repeat(5000) + "}";
-        assertThat(PlainTreeReader.read(deep.getBytes(StandardCharsets.UTF_8))).isNull();
+        assertThat(PlainTreeReader.read(deep.getBytes(StandardCharsets.UTF_8), true)).isNull();
     }
 
-    /** The plain reader's tree, asserted equal to the mapper's with every node of the same class. */
+    /**
+     * The plain reader's tree, with either parser of fractions, asserted equal to the mapper's with
+     * every node of the same class.
+     */
     private static JsonNode assertSameTree(byte[] json) {
-        JsonNode plain = PlainTreeReader.read(json);
         JsonNode mapped = MAPPER.readTree(json);
-        assertThat(plain).as(new String(json, StandardCharsets.UTF_8)).isNotNull().isEqualTo(mapped);
-        assertSameClasses(plain, mapped);
+        JsonNode plain = null;
+        for (boolean fastDoubles : new boolean[] {true, false}) {
+            plain = PlainTreeReader.read(json, fastDoubles);
+            assertThat(plain).as(new String(json, StandardCharsets.UTF_8)).isNotNull().isEqualTo(mapped);
+            assertSameClasses(plain, mapped);
+        }
         return plain;
     }
 
