@@ -46,11 +46,11 @@ public final class SceneReader {
     private static final FastPathBinder FAST_PATH = new FastPathBinder(SceneDto.class);
 
     /**
-     * The data-binding mapper, built on first use: a valid scene's bytes are read by
+     * The full path's data-binding mapper, built on first use: a valid scene's bytes are read by
      * {@link PlainTreeReader} and bound by the fast path without it (building it took 25-42 ms of a
      * cold command line).
      */
-    static final class Full {
+    static final class FullPath {
         static final JsonMapper MAPPER = JsonMapper.builder()
                 .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
                 .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
@@ -125,7 +125,7 @@ public final class SceneReader {
                     return fast;
                 }
             }
-            scene = Full.MAPPER.treeToValue(tree, SceneDto.class);
+            scene = FullPath.MAPPER.treeToValue(tree, SceneDto.class);
         } catch (JacksonException e) {
             throw new InvalidSceneException(withNulls(nulls, List.of(problemOf(e))));
         }
@@ -144,9 +144,9 @@ public final class SceneReader {
         if (plain != null) {
             return plain;
         }
-        try (JsonParser parser = Full.MAPPER.createParser(json)) {
+        try (JsonParser parser = FullPath.MAPPER.createParser(json)) {
             try {
-                return Full.MAPPER.readTree(parser);
+                return FullPath.MAPPER.readTree(parser);
             } catch (MismatchedInputException trailing) {
                 // reading a tree can only mismatch on content after the scene (FAIL_ON_TRAILING_TOKENS)
                 TokenStreamLocation at = trailing.getLocation();

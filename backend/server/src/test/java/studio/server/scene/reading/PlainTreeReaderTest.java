@@ -27,7 +27,7 @@ import studio.server.scene.examples.ExampleSceneFiles;
  */
 class PlainTreeReaderTest {
 
-    private static final JsonMapper MAPPER = SceneReader.Full.MAPPER;
+    private static final JsonMapper MAPPER = SceneReader.FullPath.MAPPER;
 
     @Test
     void readsEveryExampleSceneAsTheMapperDoes() throws IOException {
