@@ -185,6 +185,26 @@ class StudioLauncherTest {
                 .doesNotContain(QUICK_COMPILER);
     }
 
+    /**
+     * A longer render runs without on-stack replacement unless its scene file names a mesh, whose
+     * one-pass reading and tree building need it; a short one, on C1 alone, keeps it.
+     */
+    @Test
+    void aLongerRenderOfASceneWithoutMeshesRunsWithoutOnStackReplacement() throws Exception {
+        String noOsr = "-XX:-UseOnStackReplacement";
+        Path spheres = Files.writeString(dir.resolve("spheres.json"),
+                "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}");
+        Path mesh = Files.writeString(dir.resolve("mesh.json"),
+                "{\"objects\": [{\"type\" :\n \"mesh\", \"file\": \"knot.obj\"}]}");
+        assertThat(launched("render", spheres.toString(), "-o", "x.png", "--samples", "16")).contains(noOsr);
+        assertThat(launched("render", "--threads", "2", "-o", "x.png", spheres.toString())).contains(noOsr);
+        assertThat(launched("render", mesh.toString(), "--samples", "16")).doesNotContain(noOsr);
+        assertThat(launched("render", spheres.toString(), "--width", "800", "--height", "600", "--samples", "1"))
+                .doesNotContain(noOsr);
+        assertThat(launched("render", dir.resolve("missing.json").toString())).doesNotContain(noOsr);
+        assertThat(launched()).doesNotContain(noOsr);
+    }
+
     @Test
     void theServiceKeepsTheJvmsDefaults() throws Exception {
         assertThat(launched()).doesNotContain("-XX:+UseParallelGC", QUICK_COMPILER).contains("-XX:AOTCache=");
