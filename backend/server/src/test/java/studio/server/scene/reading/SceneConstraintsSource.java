@@ -2,13 +2,11 @@ package studio.server.scene.reading;
 
 import java.lang.annotation.Annotation;
 import java.lang.reflect.AnnotatedParameterizedType;
-import java.lang.reflect.Constructor;
 import java.lang.reflect.Field;
 import java.lang.reflect.ParameterizedType;
 import java.lang.reflect.RecordComponent;
 import java.lang.reflect.Type;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -93,28 +91,13 @@ final class SceneConstraintsSource implements FastPathBinder.Constraints {
         return found;
     }
 
-    /** Reflection's canonical constructor (the generated table calls each one directly). */
+    /** Notes a record the binder makes, for the table's constructor calls; this binder binds nothing. */
     @Override
     public FastPathBinder.RecordMaker makerOf(Class<?> type) {
         records.add(type);
-        Class<?>[] types = Arrays.stream(type.getRecordComponents()).map(RecordComponent::getType).toArray(Class<?>[]::new);
-        Constructor<?> constructor;
-        try {
-            constructor = type.getDeclaredConstructor(types);
-        } catch (NoSuchMethodException e) {
-            throw new IllegalStateException(e);
-        }
         return values -> {
-            try {
-                return constructor.newInstance(values);
-            } catch (ReflectiveOperationException e) {
-                throw new IllegalStateException(e);
-            }
+            throw new UnsupportedOperationException("the table's writer only notes what the binder asks for");
         };
-    }
-
-    Set<Class<?>> records() {
-        return records;
     }
 
     /** The distinct rules, in order (a constraint that may sit on a field and a type use is on both). */
