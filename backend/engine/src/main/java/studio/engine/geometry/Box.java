@@ -22,6 +22,12 @@ public final class Box implements Shape {
     private final double cx, cy, cz, hx, hy, hz;
     /** World-from-box rotation, row major. */
     private final double m00, m01, m02, m10, m11, m12, m20, m21, m22;
+    /**
+     * Whether the rotation is exactly none, so the ray needs no turning into the box's frame: the
+     * same numbers as turning it by the identity (1 * x + 0 * y + 0 * z is x, but for the sign of
+     * a zero, which no result of the test depends on).
+     */
+    private final boolean axisAligned;
 
     public Box(Vec3 center, Vec3 size, Vec3 rotationDegrees) {
         if (!center.isFinite()) {
@@ -42,6 +48,8 @@ public final class Box implements Shape {
         m00 = r.get(0, 0); m01 = r.get(0, 1); m02 = r.get(0, 2);
         m10 = r.get(1, 0); m11 = r.get(1, 1); m12 = r.get(1, 2);
         m20 = r.get(2, 0); m21 = r.get(2, 1); m22 = r.get(2, 2);
+        axisAligned = m00 == 1 && m11 == 1 && m22 == 1
+                && m01 == 0 && m02 == 0 && m10 == 0 && m12 == 0 && m20 == 0 && m21 == 0;
     }
 
     public Box(Vec3 center, Vec3 size) {
@@ -63,12 +71,18 @@ public final class Box implements Shape {
     @Override
     public boolean intersect(Ray ray, double tMax, Hit hit) {
         double px = ray.ox - cx, py = ray.oy - cy, pz = ray.oz - cz;
-        double ox = m00 * px + m10 * py + m20 * pz;
-        double oy = m01 * px + m11 * py + m21 * pz;
-        double oz = m02 * px + m12 * py + m22 * pz;
-        double dx = m00 * ray.dx + m10 * ray.dy + m20 * ray.dz;
-        double dy = m01 * ray.dx + m11 * ray.dy + m21 * ray.dz;
-        double dz = m02 * ray.dx + m12 * ray.dy + m22 * ray.dz;
+        double ox, oy, oz, dx, dy, dz;
+        if (axisAligned) {
+            ox = px; oy = py; oz = pz;
+            dx = ray.dx; dy = ray.dy; dz = ray.dz;
+        } else {
+            ox = m00 * px + m10 * py + m20 * pz;
+            oy = m01 * px + m11 * py + m21 * pz;
+            oz = m02 * px + m12 * py + m22 * pz;
+            dx = m00 * ray.dx + m10 * ray.dy + m20 * ray.dz;
+            dy = m01 * ray.dx + m11 * ray.dy + m21 * ray.dz;
+            dz = m02 * ray.dx + m12 * ray.dy + m22 * ray.dz;
+        }
 
         double tNear = Double.NEGATIVE_INFINITY, tFar = Double.POSITIVE_INFINITY;
         int nearAxis = -1, farAxis = -1;
@@ -156,8 +170,14 @@ public final class Box implements Shape {
             } else {
                 ax = m02; ay = m12; az = m22; h = hz;
             }
-            double o = ax * px + ay * py + az * pz;
-            double d = ax * ray.dx + ay * ray.dy + az * ray.dz;
+            double o, d;
+            if (axisAligned) {
+                o = axis == 0 ? px : axis == 1 ? py : pz;
+                d = axis == 0 ? ray.dx : axis == 1 ? ray.dy : ray.dz;
+            } else {
+                o = ax * px + ay * py + az * pz;
+                d = ax * ray.dx + ay * ray.dy + az * ray.dz;
+            }
             if (d == 0) {
                 if (o < -h || o > h) {
                     return false;

@@ -230,6 +230,51 @@ class BoxTest {
         }
     }
 
+    /**
+     * An unrotated box takes rays as they are, without turning them into its frame: the same
+     * numbers as turning them, which a box turned half a turn about any axis does (its matrix is
+     * exact, its set of points the same, and every product a sign change).
+     */
+    @Test
+    void unrotatedBoxHitsAsTheSameBoxTurnedHalfATurn() {
+        Random random = new Random(11);
+        Vec3 center = new Vec3(0.2, 0.1, -0.3), size = new Vec3(1, 2, 1.5);
+        Box unrotated = new Box(center, size);
+        Box[] turned = {new Box(center, size, new Vec3(180, 0, 0)), new Box(center, size, new Vec3(0, 180, 0)),
+                new Box(center, size, new Vec3(0, 0, 180))};
+        Hit expected = new Hit(), actual = new Hit();
+        int hits = 0;
+        for (int i = 0; i < 20_000; i++) {
+            double[] o = {uniform(random, -3, 3), uniform(random, -3, 3), uniform(random, -3, 3)};
+            double[] d = new double[3];
+            for (int k = 0; k < 3; k++) {
+                d[k] = uniform(random, -1.2, 1.2) - o[k];
+            }
+            if (random.nextInt(5) == 0) {
+                d[random.nextInt(3)] = 0;
+            }
+            Ray ray = new Ray(o[0], o[1], o[2], d[0], d[1], d[2]);
+            double tMax = random.nextInt(4) == 0 ? Double.POSITIVE_INFINITY : uniform(random, 0, 5);
+            boolean intersects = unrotated.intersect(ray, tMax, actual);
+            hits += intersects ? 1 : 0;
+            for (Box box : turned) {
+                String what = box + " " + ray + " tMax=" + tMax;
+                assertEquals(box.intersect(ray, tMax, expected), intersects, what);
+                assertEquals(box.occluded(ray, tMax), unrotated.occluded(ray, tMax), what);
+                if (intersects) {
+                    assertEquals(expected.t, actual.t, 0.0, what);
+                    assertEquals(expected.px, actual.px, 0.0, what);
+                    assertEquals(expected.py, actual.py, 0.0, what);
+                    assertEquals(expected.pz, actual.pz, 0.0, what);
+                    assertEquals(expected.nx, actual.nx, 0.0, what);
+                    assertEquals(expected.ny, actual.ny, 0.0, what);
+                    assertEquals(expected.nz, actual.nz, 0.0, what);
+                }
+            }
+        }
+        assertTrue(hits > 2000, "the sample should contain hits: " + hits);
+    }
+
     @Test
     void boxRejectsZeroNegativeAndNonFiniteSize() {
         assertThrows(IllegalArgumentException.class, () -> new Box(Vec3.ZERO, Vec3.ZERO));
