@@ -32,14 +32,14 @@ final class PixelCandidates {
     /**
      * Fewest objects for which listing pays. Measured as users meet it, whole {@code bin/studio}
      * processes at 800x600 and 16 samples, alternated: with lists the still life (6 objects) took
-     * 1.09 and glass-pattern (16) 1.09 of the time without, though warm, one thread, they took
-     * 0.94 and 0.98: a render of a second or two spends much of it before the JIT has compiled the
-     * pyramids' code, and a small BVH leaves little to save. The peers' 10,000 spheres take 0.58
-     * warm.
+     * 1.09 of the time without, though warm, one thread, 0.94: a render of a second or two spends
+     * much of it before the JIT has compiled the pyramids' code, and a small tree leaves little to
+     * save. From 8 objects on, with lists no longer than {@link #longest}, warm renders gain (see
+     * there) and whole processes lose nothing.
      */
-    static final int MIN_OBJECTS = 64;
+    static final int MIN_OBJECTS = 8;
 
-    /** Most objects a pyramid may hold; with more, the rays search the BVH. */
+    /** Most objects a list may hold in any scene; with more, the rays search the BVH. */
     static final int MAX = 16;
     /** A light's list not yet worked out for this pixel. */
     private static final int UNKNOWN = -2;
@@ -48,7 +48,7 @@ final class PixelCandidates {
     private final Frustum frustum = new Frustum();
     private final int[] stack = new int[Bvh.STACK_SIZE];
     /** The objects the camera rays can hit, ascending; {@link #cameraCount} of them, or -1: all. */
-    final int[] camera = new int[MAX];
+    final int[] camera;
     int cameraCount = -1;
     /** Per light, the objects that can shadow a camera ray's hit, as {@link #camera}. */
     private final int[][] shadow;
@@ -56,15 +56,36 @@ final class PixelCandidates {
     /** A box of every point where the camera rays can hit, while a light's list is {@link #UNKNOWN}. */
     private final double[] hitBox = new double[6];
 
-    /** Whether listing pays for this scene: one searched through a BVH of {@value #MIN_OBJECTS} objects or more. */
+    /**
+     * Whether listing pays for this scene: one searched through a BVH of {@value #MIN_OBJECTS}
+     * objects or more, whose planes (in every list) leave room for others in a list of
+     * {@link #longest} objects.
+     */
     static boolean pay(Scene scene) {
-        return scene.searchesBvh() && scene.objectCount() >= MIN_OBJECTS;
+        return scene.searchesBvh() && scene.objectCount() >= MIN_OBJECTS
+                && scene.unboundedCount() < longest(scene.objectCount());
+    }
+
+    /**
+     * The longest list worth testing among n objects: log2 n rounded down, at most {@value #MAX}
+     * (0 for an empty scene).
+     * A ray's search of the tree tests about two boxes at each of its log2 n levels, and testing an
+     * object costs about as much as two boxes, so a longer list costs more than the search it spares.
+     * Warm, 800x600, 16 samples, 2 threads, alternated JVMs, against no lists: glass-pattern (16
+     * objects) 0.89-0.91 of the time with lists of at most 4, 0.92-0.93 with lists of up to 16;
+     * six-materials (8 objects) 0.75-0.81; mirror-room (6 planes and 2 objects), which the planes
+     * leave without lists, 1.02-1.08 when it listed them anyway.
+     */
+    static int longest(int objects) {
+        return objects <= 0 ? 0 : Math.min(MAX, 31 - Integer.numberOfLeadingZeros(objects));
     }
 
     PixelCandidates(Scene scene) {
         this.scene = scene;
         int lights = scene.lights().size();
-        shadow = new int[lights][MAX];
+        int longest = longest(scene.objectCount());
+        camera = new int[longest];
+        shadow = new int[lights][longest];
         shadowCount = new int[lights];
         Arrays.fill(shadowCount, -1);
     }

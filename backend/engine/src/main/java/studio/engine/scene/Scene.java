@@ -110,6 +110,11 @@ public final class Scene {
         return shapes.length;
     }
 
+    /** How many objects are unbounded (planes), which every {@link #candidates} list holds. */
+    public int unboundedCount() {
+        return geometry.unboundedCount();
+    }
+
     public Shape shape(int index) {
         return shapes[index];
     }

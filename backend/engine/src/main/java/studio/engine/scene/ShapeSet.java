@@ -63,6 +63,8 @@ public final class ShapeSet {
     static final double APART_MARGIN = 1e-7;
 
     private final Shape[] shapes;
+    /** How many of the shapes are unbounded (planes). */
+    private final int unboundedCount;
     /** Indices of the unbounded shapes, ascending; null in linear mode. */
     private final int[] unbounded;
     /** The BVH over the bounded shapes (leaf slots hold shape indices), or null. */
@@ -101,6 +103,7 @@ public final class ShapeSet {
                 boundedCount++;
             }
         }
+        unboundedCount = shapes.length - boundedCount;
         if (!useBvh || boundedCount == 0) {
             unbounded = null;
             nodeBounds = null;
@@ -180,6 +183,11 @@ public final class ShapeSet {
 
     public int size() {
         return shapes.length;
+    }
+
+    /** How many shapes have no bounds (planes): every {@link #candidates} list holds them. */
+    public int unboundedCount() {
+        return unboundedCount;
     }
 
     /** The nearest hit with 0 &lt; t &lt; tMax under the tie rule; sets {@code hit.primitive} to the shape's index. */

@@ -141,10 +141,115 @@ class PixelCandidatesTest {
         SampleTracer small = new SampleTracer(three, settings, new StopSignal());
         small.trace(320, 240, xs, ys, 0, 4);
         assertFalse(small.listedCandidates(), "one object: the linear loop");
-        Scene sixty = OpaqueShadowsUnchangedTest.scene();
-        assertTrue(sixty.searchesBvh() && sixty.objectCount() < PixelCandidates.MIN_OBJECTS);
-        SampleTracer fewer = new SampleTracer(sixty, settings, new StopSignal());
+        Scene six = row(5, 1, 0);
+        assertTrue(six.searchesBvh() && six.objectCount() < PixelCandidates.MIN_OBJECTS);
+        SampleTracer fewer = new SampleTracer(six, settings, new StopSignal());
         fewer.trace(320, 240, xs, ys, 0, 4);
         assertFalse(fewer.listedCandidates(), "a BVH too small to repay listing");
+    }
+
+    /**
+     * A scene of spheres, the first {@code along} one behind the other on the axis of the view, the
+     * others beside it (1 to 3.1 to the left and right), and planes behind the camera: the centre
+     * pixels' pyramid meets the spheres along the axis and no other.
+     */
+    private static Scene row(int spheres, int planes, int along) {
+        List<SceneObject> objects = new ArrayList<>();
+        var chalk = MaterialDefaults.of(MaterialKind.CHALK, Rgb.WHITE);
+        for (int i = 0; i < planes; i++) {
+            objects.add(new SceneObject(new Plane(new Vec3(0, 0, 20 + i), new Vec3(0, 0, -1)), chalk));
+        }
+        for (int i = 0; i < spheres; i++) {
+            int j = i - along;
+            Vec3 at = i < along ? new Vec3(0, 0, -2.0 * i) : new Vec3((j % 2 == 0 ? 1 : -1) * (1 + 0.3 * (j / 2)), 0, 0);
+            objects.add(new SceneObject(new Sphere(at, 0.2), chalk));
+        }
+        return new Scene(new Camera(new Vec3(0, 0, 8), Vec3.ZERO, new Vec3(0, 1, 0), 50), objects,
+                List.of(new PointLight(new Vec3(0, 5, 8), Rgb.WHITE, 1, false)), Rgb.BLACK, 0.1);
+    }
+
+    @Test
+    void listsHoldAtMostLog2OfTheObjects() {
+        assertEquals(0, PixelCandidates.longest(0));
+        assertEquals(0, PixelCandidates.longest(1));
+        assertEquals(2, PixelCandidates.longest(7));
+        assertEquals(3, PixelCandidates.longest(8));
+        assertEquals(4, PixelCandidates.longest(16));
+        assertEquals(4, PixelCandidates.longest(31));
+        assertEquals(13, PixelCandidates.longest(10_000));
+        assertEquals(PixelCandidates.MAX, PixelCandidates.longest(1 << 20));
+    }
+
+    /** The centre pixel of 640x480, at 16 samples. */
+    private static boolean centreListed(Scene scene) {
+        RenderSettings settings = jittered16(640, 480);
+        SampleTracer tracer = new SampleTracer(scene, settings, new StopSignal());
+        double[] xs = new double[16], ys = new double[16];
+        for (int s = 0; s < 16; s++) {
+            xs[s] = (s % 4 + 0.5) / 4;
+            ys[s] = (s / 4 + 0.5) / 4;
+        }
+        tracer.trace(320, 240, xs, ys, 0, 16);
+        return tracer.listedCandidates();
+    }
+
+    @Test
+    void aPixelWhosePyramidHoldsMoreThanTheLongestListSearchesTheTree() {
+        // 16 objects: lists of at most 4; the centre pixels' pyramid holds the spheres along the axis
+        assertTrue(centreListed(row(16, 0, 1)));
+        assertTrue(centreListed(row(16, 0, 4)));
+        assertFalse(centreListed(row(16, 0, 5)));
+    }
+
+    @Test
+    void planesThatFillTheLongestListLeaveTheSceneWithoutLists() {
+        // 8 objects: lists of at most 3, and every list holds the planes
+        assertFalse(PixelCandidates.pay(row(2, 6, 0)), "6 planes of 8 objects");
+        assertFalse(PixelCandidates.pay(row(5, 3, 0)), "3 planes of 8 objects");
+        assertTrue(PixelCandidates.pay(row(6, 2, 0)), "2 planes of 8 objects");
+        assertTrue(centreListed(row(6, 2, 0)));
+    }
+
+    /** A small scene (16 objects: glass before boards over a floor), as the peer benchmark's glass. */
+    @Test
+    void aSmallSceneWithGlassSumsToTheSameBitsWithAndWithoutLists() {
+        List<SceneObject> objects = new ArrayList<>();
+        objects.add(new SceneObject(new Sphere(new Vec3(-1.2, 2.6, 0.5), 1.1),
+                MaterialDefaults.of(MaterialKind.GLASS, Rgb.WHITE)));
+        objects.add(new SceneObject(new Box(new Vec3(1.6, 2.6, 0.6), new Vec3(1.4, 1.4, 1.4), new Vec3(20, 35, 0)),
+                MaterialDefaults.of(MaterialKind.GLASS, new Rgb(0.7, 0.9, 0.8))));
+        objects.add(new SceneObject(new Plane(Vec3.ZERO, new Vec3(0, 1, 0)),
+                MaterialDefaults.of(MaterialKind.CHALK, new Rgb(0.4, 0.4, 0.35))));
+        objects.add(new SceneObject(new Box(new Vec3(0, 3.25, -2.6), new Vec3(6, 6, 0.1)),
+                MaterialDefaults.of(MaterialKind.CHALK, Rgb.WHITE)));
+        for (int i = 0; i < 6; i++) {
+            objects.add(new SceneObject(new Box(new Vec3(-2.5 + i, 3.25, -2.5), new Vec3(0.45, 6, 0.05)),
+                    MaterialDefaults.of(MaterialKind.CHALK, new Rgb(0.1, 0.2, 0.5))));
+            objects.add(new SceneObject(new Box(new Vec3(0, 0.75 + i, -2.48), new Vec3(6, 0.45, 0.05)),
+                    MaterialDefaults.of(MaterialKind.PLASTIC, new Rgb(0.6, 0.1, 0.1))));
+        }
+        Scene scene = new Scene(new Camera(new Vec3(0, 3.2, 7), new Vec3(0, 3, 0), new Vec3(0, 1, 0), 45), objects,
+                List.of(new PointLight(new Vec3(2, 6, 6), Rgb.WHITE, 0.9, false)), new Rgb(0.1, 0.1, 0.1), 0.15);
+        assertEquals(16, scene.objectCount());
+        RenderSettings settings = new RenderSettings(48, 36, Sampler.of("jittered", 16), 8, 1, 1L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
+        SampleTracer listing = new SampleTracer(scene, settings, new StopSignal());
+        SampleTracer searching = new SampleTracer(scene, settings, new StopSignal()).withoutCandidates();
+        Random random = new Random(3);
+        double[] xs = new double[16], ys = new double[16];
+        int listed = 0;
+        for (int y = 0; y < settings.height(); y++) {
+            for (int x = 0; x < settings.width(); x++) {
+                for (int s = 0; s < 16; s++) {
+                    xs[s] = (s % 4 + random.nextDouble()) / 4;
+                    ys[s] = (s / 4 + random.nextDouble()) / 4;
+                }
+                listing.trace(x, y, xs, ys, 0, 16);
+                searching.trace(x, y, xs, ys, 0, 16);
+                listed += listing.listedCandidates() ? 1 : 0;
+                assertSameSums(searching, listing, "pixel " + x + ", " + y);
+            }
+        }
+        assertTrue(listed > settings.width() * settings.height() / 4, "pixels that listed: " + listed);
     }
 }

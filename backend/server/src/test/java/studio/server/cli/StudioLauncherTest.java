@@ -110,9 +110,9 @@ class StudioLauncherTest {
     }
 
     /**
-     * The training run renders bin/training-scene.json at 16 samples, a valid scene with objects
-     * enough for pixel candidates (64, PixelCandidates.MIN_OBJECTS), glass and a mesh from its file
-     * among them, so the cache's profiles cover those paths.
+     * The training run renders bin/training-scene.json at 16 samples, a valid scene with 64 objects
+     * or more (pixel candidates, in lists of up to 6), glass and a mesh from its file among them, so
+     * the cache's profiles cover those paths.
      */
     @Test
     void theTrainingRunRendersAValidSceneWithGlassAMeshAndEnoughObjectsForPixelCandidates() throws Exception {
