@@ -66,28 +66,37 @@ class PixelCandidatesTest {
         assertEquals(searching.sumB, listing.sumB, 0.0, at);
     }
 
+    /**
+     * Traces every pixel at 16 jittered samples with lists and with every ray searching the whole
+     * scene, asserting the same sums to the bit; returns how many pixels listed.
+     */
+    private static int listedPixelsSummingAlike(Scene scene, RenderSettings settings, long seed) {
+        SampleTracer listing = new SampleTracer(scene, settings, new StopSignal());
+        SampleTracer searching = new SampleTracer(scene, settings, new StopSignal()).withoutCandidates();
+        Random random = new Random(seed);
+        double[] xs = new double[16], ys = new double[16];
+        int listed = 0;
+        for (int y = 0; y < settings.height(); y++) {
+            for (int x = 0; x < settings.width(); x++) {
+                for (int s = 0; s < 16; s++) {
+                    xs[s] = (s % 4 + random.nextDouble()) / 4;
+                    ys[s] = (s / 4 + random.nextDouble()) / 4;
+                }
+                listing.trace(x, y, xs, ys, 0, 16);
+                searching.trace(x, y, xs, ys, 0, 16);
+                listed += listing.listedCandidates() ? 1 : 0;
+                assertFalse(searching.listedCandidates());
+                assertSameSums(searching, listing, "pixel " + x + ", " + y);
+            }
+        }
+        return listed;
+    }
+
     @Test
     void everyPixelSumsToTheSameBitsWithAndWithoutLists() {
         for (Scene scene : List.of(cloud(false), cloud(true))) {
             RenderSettings settings = jittered16(64, 48);
-            SampleTracer listing = new SampleTracer(scene, settings, new StopSignal());
-            SampleTracer searching = new SampleTracer(scene, settings, new StopSignal()).withoutCandidates();
-            Random random = new Random(5);
-            double[] xs = new double[16], ys = new double[16];
-            int listed = 0;
-            for (int y = 0; y < settings.height(); y++) {
-                for (int x = 0; x < settings.width(); x++) {
-                    for (int s = 0; s < 16; s++) {
-                        xs[s] = (s % 4 + random.nextDouble()) / 4;
-                        ys[s] = (s / 4 + random.nextDouble()) / 4;
-                    }
-                    listing.trace(x, y, xs, ys, 0, 16);
-                    searching.trace(x, y, xs, ys, 0, 16);
-                    listed += listing.listedCandidates() ? 1 : 0;
-                    assertFalse(searching.listedCandidates());
-                    assertSameSums(searching, listing, "pixel " + x + ", " + y);
-                }
-            }
+            int listed = listedPixelsSummingAlike(scene, settings, 5);
             assertTrue(listed > settings.width() * settings.height() / 2, "pixels that listed: " + listed);
             // (the rays counted may differ: a list may name a glass occluder first where the BVH
             // named an opaque one, and the walk through the glass then counts its rays)
@@ -161,7 +170,8 @@ class PixelCandidatesTest {
         }
         for (int i = 0; i < spheres; i++) {
             int j = i - along;
-            Vec3 at = i < along ? new Vec3(0, 0, -2.0 * i) : new Vec3((j % 2 == 0 ? 1 : -1) * (1 + 0.3 * (j / 2)), 0, 0);
+            double beside = (j % 2 == 0 ? 1 : -1) * (1 + 0.3 * (j / 2));
+            Vec3 at = i < along ? new Vec3(0, 0, -2.0 * i) : new Vec3(beside, 0, 0);
             objects.add(new SceneObject(new Sphere(at, 0.2), chalk));
         }
         return new Scene(new Camera(new Vec3(0, 0, 8), Vec3.ZERO, new Vec3(0, 1, 0), 50), objects,
@@ -233,23 +243,7 @@ class PixelCandidatesTest {
         assertEquals(16, scene.objectCount());
         RenderSettings settings = new RenderSettings(48, 36, Sampler.of("jittered", 16), 8, 1, 1L,
                 RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
-        SampleTracer listing = new SampleTracer(scene, settings, new StopSignal());
-        SampleTracer searching = new SampleTracer(scene, settings, new StopSignal()).withoutCandidates();
-        Random random = new Random(3);
-        double[] xs = new double[16], ys = new double[16];
-        int listed = 0;
-        for (int y = 0; y < settings.height(); y++) {
-            for (int x = 0; x < settings.width(); x++) {
-                for (int s = 0; s < 16; s++) {
-                    xs[s] = (s % 4 + random.nextDouble()) / 4;
-                    ys[s] = (s / 4 + random.nextDouble()) / 4;
-                }
-                listing.trace(x, y, xs, ys, 0, 16);
-                searching.trace(x, y, xs, ys, 0, 16);
-                listed += listing.listedCandidates() ? 1 : 0;
-                assertSameSums(searching, listing, "pixel " + x + ", " + y);
-            }
-        }
+        int listed = listedPixelsSummingAlike(scene, settings, 3);
         assertTrue(listed > settings.width() * settings.height() / 4, "pixels that listed: " + listed);
     }
 }
