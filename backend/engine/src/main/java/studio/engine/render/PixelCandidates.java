@@ -75,9 +75,10 @@ final class PixelCandidates {
      * 0.92-0.93 with lists of up to 16; six-materials (8 objects) 0.75-0.81; mirror-room (6 planes
      * and 2 objects), which the planes leave without lists, 1.02-1.08 when it listed them anyway
      * (the same classes against themselves: 0.98-1.03). Whole processes: glass-pattern 0.95 of
-     * the time (lists of up to 16: 1.02), six-materials 0.96, the 10,000 spheres 1.02 (lists of 13
-     * instead of 16; keeping 16 from 64 objects on took them to 0.99 but glass-pattern to
-     * 1.02-1.06).
+     * the time (lists of up to 16: 1.02), six-materials 0.96, the 10,000 spheres 1.02: not from
+     * their own lists (13 long instead of 16; 16 from 128 objects on gave 1.00 against 13) but from
+     * the start-up cache's training scene (72 objects), whose lists are shorter now; 16 from 64
+     * objects on, the training scene's too, took the spheres to 0.99 and glass-pattern to 1.02-1.06.
      */
     static int longest(int objects) {
         return objects <= 0 ? 0 : Math.min(MAX, 31 - Integer.numberOfLeadingZeros(objects));
