@@ -16,10 +16,11 @@ import studio.engine.scene.Scene;
  * searching the BVH. The pixels are the same to the bit (a ray can hit only what lies in its
  * pyramid, and the tie rule picks the same winner in declaration order).
  *
- * <p>It pays where most camera rays pass between many objects deep into the tree and a pixel's
- * rays meet the same one or two (10,000 spheres at 16 samples a pixel: see docs/speed.md), and
- * only when a pixel has several samples. Only camera rays and the shadow rays from their hits use
- * it: reflected and refracted rays go their own ways.
+ * <p>It pays most where camera rays pass between many objects deep into the tree and a pixel's
+ * rays meet the same one or two (10,000 spheres at 16 samples a pixel: see docs/speed.md), also in
+ * scenes of a few objects while the lists stay short ({@link #longest}), and only when a pixel has
+ * several samples. Only camera rays and the shadow rays from their hits use it: reflected and
+ * refracted rays go their own ways.
  *
  * <p>The pyramid for a light holds every segment from the light to a box of all the pixel's
  * possible hit points ({@link Frustum#overBox}, {@link Scene#boundsOf}): the part of each camera
