@@ -249,6 +249,7 @@ final class SpeedAccuracyBench {
         double[][] millis = new double[plans.size()][config.runs()];
         double[][] cpuMillis = new double[plans.size()][config.runs()];
         double[] rmse = new double[plans.size()], meanSpp = new double[plans.size()];
+        warmUpRound(scene, plans, world);
         for (int run = 0; run < config.runs(); run++) {
             log.printf(Locale.ROOT, "%s: round %d of %d, %d settings%n", scene, run + 1, config.runs(), plans.size());
             for (int i = 0; i < plans.size(); i++) {
@@ -284,6 +285,17 @@ final class SpeedAccuracyBench {
             rows.add(m);
         }
         return rows;
+    }
+
+    /**
+     * Renders every setting once, untimed, as JMH's warm-up iterations do: otherwise the first
+     * timed round also times the JIT compiling each setting's code beside the render threads.
+     */
+    private void warmUpRound(String scene, List<Planned> plans, Scene world) {
+        log.printf(Locale.ROOT, "%s: warm-up round, %d settings%n", scene, plans.size());
+        for (Planned plan : plans) {
+            Renderer.render(world, plan.settings());
+        }
     }
 
     /** The settings with the sampler, the seed and (if the engine has it) the adaptive threshold swapped. */
