@@ -54,8 +54,10 @@ async function sceneOf(page) {
 
 /** Where a world point shows in the 3D preview's camera view, in page pixels (the render camera, as three.js frames it). */
 async function previewPixel(page, scene, point) {
-  // opening a scene mounts a new preview: wait for its canvas
+  // opening a scene mounts a new preview: wait for its canvas, and for two frames drawn since the
+  // last change (a view switched just before, on a busy machine, may not be on the canvas yet)
   await page.getByTestId('preview-3d').locator('canvas').waitFor();
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
   const box = await page.getByTestId('preview-3d').locator('canvas').boundingBox();
   const c = scene.camera ?? {};
   const camera = new PerspectiveCamera(c.fov ?? 50, box.width / box.height, 0.01, 1e4);
@@ -420,7 +422,7 @@ try {
     const at = await previewPixel(page, scene, centre);
     await page.mouse.click(at.x, at.y);
     const centerX = page.getByLabel('Center x');
-    await centerX.waitFor({ timeout: 3000 });
+    await centerX.waitFor({ timeout: 10000 });
     const x0 = Number(await centerX.inputValue());
     expect(x0 === centre[0], `clicking the sphere in 3D did not select it (${x0})`);
 
