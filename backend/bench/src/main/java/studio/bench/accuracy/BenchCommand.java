@@ -30,8 +30,9 @@ import studio.server.scene.reading.SceneReader;
  * it renders a reference with many jittered samples, measures every available sampler (and adaptive
  * sampling, when the engine has it) for time and error, and POV-Ray's fixed grid and adaptive
  * anti-aliasing against POV-Ray's own reference ({@link PovrayAccuracy}; left out when POV-Ray is
- * not installed), repeats our timing in {@code --forks - 1} fresh JVMs ({@link Forks}), and writes {@code speed-accuracy.csv}, the charts, the reference images and
- * {@code summary.txt} to the output folder.
+ * not installed), repeats our timing in {@code --forks - 1} fresh JVMs ({@link Forks}), and writes
+ * {@code speed-accuracy.csv}, each JVM's own times ({@code speed-accuracy-jvms.csv}, with more than
+ * one JVM), the charts, the reference images and {@code summary.txt} to the output folder.
  */
 public final class BenchCommand {
 
@@ -120,6 +121,7 @@ public final class BenchCommand {
                 options.referenceSamples, EngineFeatures.hasAdaptive() ? "measured" : "not in this engine, skipped");
         Map<String, List<Measurement>> rowsByScene = new LinkedHashMap<>();
         List<Measurement> all = new ArrayList<>();
+        List<List<Measurement>> jvms = List.of();
         try {
             Files.createDirectories(options.out);
             for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
@@ -141,6 +143,8 @@ public final class BenchCommand {
                     forks.add(Forks.run(options.forkArguments(), dir, fork, bound, err));
                 }
                 Files.delete(dir);
+                jvms = Forks.withFirstErrors(all, forks);
+                Files.writeString(options.out.resolve("speed-accuracy-jvms.csv"), BenchCsv.formatByJvm(jvms));
                 List<Measurement> merged = Forks.merge(all, forks);
                 all.clear();
                 all.addAll(merged);
@@ -159,11 +163,14 @@ public final class BenchCommand {
                         + "error against %s at %d samples/pixel, RMSE in linear light, PSNR peak 1.0.%n"
                         + "slope: least squares of log RMSE against log samples/pixel (4..256; adaptive: all thresholds, "
                         + "mean samples/pixel).%n"
-                        + "ms to target: time to reach jittered's RMSE at 16 samples/pixel, interpolated log-log.%n%n",
+                        + "ms to target: time to reach jittered's RMSE at 16 samples/pixel, interpolated log-log%s.%n%n",
                 options.width, options.height, Runtime.getRuntime().availableProcessors(), options.forks, options.runs,
-                SpeedAccuracyBench.REFERENCE_SAMPLER, options.referenceSamples));
+                SpeedAccuracyBench.REFERENCE_SAMPLER, options.referenceSamples,
+                jvms.size() > 1 ? "; vs jittered: the median over the JVMs of each one's own ratio" : ""));
         for (Map.Entry<String, List<Measurement>> scene : rowsByScene.entrySet()) {
-            summary.append(BenchSummary.format(scene.getKey(), scene.getValue())).append('\n');
+            List<List<Measurement>> sceneJvms = jvms.stream()
+                    .map(rows -> rows.stream().filter(m -> m.scene().equals(scene.getKey())).toList()).toList();
+            summary.append(BenchSummary.format(scene.getKey(), scene.getValue(), sceneJvms)).append('\n');
         }
         double seconds = (System.nanoTime() - start) / 1e9;
         summary.append(String.format(Locale.ROOT, "bench took %.1f s%n", seconds));

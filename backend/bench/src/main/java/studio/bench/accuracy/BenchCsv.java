@@ -31,6 +31,18 @@ final class BenchCsv {
         Files.writeString(file, format(rows));
     }
 
+    /** Each JVM's rows, numbered from 1 in a first column {@code jvm}, in the format of {@link #format}. */
+    static String formatByJvm(List<List<Measurement>> jvms) {
+        StringBuilder csv = new StringBuilder("jvm,").append(HEADER).append('\n');
+        for (int k = 0; k < jvms.size(); k++) {
+            String[] lines = format(jvms.get(k)).split("\n");
+            for (int i = 1; i < lines.length; i++) {
+                csv.append(k + 1).append(',').append(lines[i]).append('\n');
+            }
+        }
+        return csv.toString();
+    }
+
     /** The rows {@link #format} wrote (an empty CPU time or threshold reads as NaN). */
     static List<Measurement> parse(String csv) {
         List<Measurement> rows = new ArrayList<>();

@@ -1,6 +1,7 @@
 package studio.bench.accuracy;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -74,6 +75,43 @@ final class BenchSummary {
 
     /** One line per method of one scene's rows, in the order the methods first appear. */
     static List<Line> lines(List<Measurement> rows) {
+        return lines(rows, List.of());
+    }
+
+    /**
+     * As {@link #lines(List)}, with each ratio to jittered, where the scene was timed in two JVMs or
+     * more ({@code jvms}: each one's rows of the scene, with errors), the median over the JVMs of
+     * each one's own ratio, both times from the same JVM: a slower JVM, or a slow spell of the
+     * machine over one JVM's run, then moves both times of a ratio alike.
+     */
+    static List<Line> lines(List<Measurement> rows, List<List<Measurement>> jvms) {
+        List<Line> lines = ratiosOfMedians(rows);
+        if (jvms.size() < 2) {
+            return lines;
+        }
+        List<Line> paired = new ArrayList<>();
+        for (Line line : lines) {
+            double[] ratios = new double[jvms.size()], cpuRatios = new double[jvms.size()];
+            for (int j = 0; j < jvms.size(); j++) {
+                Line own = ratiosOfMedians(jvms.get(j)).stream()
+                        .filter(l -> l.method().equals(line.method())).findFirst().orElse(null);
+                ratios[j] = own == null ? Double.NaN : own.ratio();
+                cpuRatios[j] = own == null ? Double.NaN : own.cpuRatio();
+            }
+            paired.add(new Line(line.method(), line.slope(), line.millis(), line.upperBound(),
+                    medianOfMeasured(ratios), medianOfMeasured(cpuRatios)));
+        }
+        return paired;
+    }
+
+    /** The median of the values that are not NaN (POV-Ray is timed in the first JVM only); NaN if none is. */
+    private static double medianOfMeasured(double[] values) {
+        double[] measured = Arrays.stream(values).filter(v -> !Double.isNaN(v)).toArray();
+        return measured.length == 0 ? Double.NaN : SpeedAccuracyBench.median(measured);
+    }
+
+    /** The lines with each ratio to jittered taken between the rows' own times. */
+    private static List<Line> ratiosOfMedians(List<Measurement> rows) {
         Target target = target(rows);
         Set<String> methods = new LinkedHashSet<>();
         rows.forEach(m -> methods.add(m.method()));
@@ -102,6 +140,11 @@ final class BenchSummary {
 
     /** The printed table of one scene. */
     static String format(String scene, List<Measurement> rows) {
+        return format(scene, rows, List.of());
+    }
+
+    /** The printed table of one scene, its ratios to jittered paired by JVM as {@link #lines(List, List)} pairs them. */
+    static String format(String scene, List<Measurement> rows, List<List<Measurement>> jvms) {
         StringBuilder s = new StringBuilder();
         Target target = target(rows);
         if (target == null) {
@@ -112,7 +155,7 @@ final class BenchSummary {
         }
         s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s %12s%n", "method", "slope", "ms to target", "vs jittered",
                 "by CPU time"));
-        for (Line line : lines(rows)) {
+        for (Line line : lines(rows, jvms)) {
             String bound = line.upperBound() ? "<= " : "";
             String millis = Double.isNaN(line.millis()) ? "not reached" : bound + String.format(Locale.ROOT, "%.1f", line.millis());
             String ratio = Double.isNaN(line.ratio()) ? "-" : bound + String.format(Locale.ROOT, "%.2f", line.ratio());

@@ -99,6 +99,29 @@ final class Forks {
         return merged;
     }
 
+    /**
+     * The first JVM's rows, then each fork's, every row with the error of the first JVM's row of the
+     * same setting (a fork renders no reference); a setting the first JVM did not measure is left out.
+     */
+    static List<List<Measurement>> withFirstErrors(List<Measurement> first, List<List<Measurement>> forks) {
+        Map<String, Measurement> firstByKey = new HashMap<>();
+        first.forEach(m -> firstByKey.put(key(m), m));
+        List<List<Measurement>> jvms = new ArrayList<>();
+        jvms.add(List.copyOf(first));
+        for (List<Measurement> fork : forks) {
+            List<Measurement> rows = new ArrayList<>();
+            for (Measurement m : fork) {
+                Measurement own = firstByKey.get(key(m));
+                if (own != null) {
+                    rows.add(new Measurement(m.scene(), m.method(), m.samples(), own.meanSamplesPerPixel(),
+                            m.medianMillis(), m.medianCpuMillis(), own.rmse(), own.psnr(), m.threshold()));
+                }
+            }
+            jvms.add(rows);
+        }
+        return jvms;
+    }
+
     private static String key(Measurement m) {
         return m.scene() + "," + m.method() + "," + m.samples() + "," + m.threshold();
     }

@@ -57,7 +57,15 @@ class BenchCommandTest {
         assertThat(dir.resolve("speed-accuracy-glass.png")).isNotEmptyFile();
         assertThat(dir.resolve("reference-stripes.png")).isNotEmptyFile();
         assertThat(Files.readString(dir.resolve("summary.txt"))).contains("soft-shadows", "target RMSE", "jittered");
-        assertThat(out.toString(StandardCharsets.UTF_8)).contains("ms to target", "vs jittered", "median over 2 JVMs");
+        assertThat(out.toString(StandardCharsets.UTF_8)).contains("ms to target", "vs jittered", "median over 2 JVMs",
+                "the median over the JVMs of each one's own ratio");
+        // each JVM's own medians, both JVMs' rows, every one with the first JVM's error
+        List<String> jvms = Files.readAllLines(dir.resolve("speed-accuracy-jvms.csv"));
+        assertThat(jvms.get(0)).isEqualTo("jvm," + csv.get(0));
+        assertThat(jvms).hasSize(1 + 2 * (csv.size() - 1));
+        assertThat(jvms).anySatisfy(line -> assertThat(line).startsWith("1,edges,jittered,16,"))
+                .anySatisfy(line -> assertThat(line).startsWith("2,edges,jittered,16,"));
+        assertThat(jvms.subList(1, jvms.size())).allSatisfy(line -> assertThat(line.split(",", -1)[7]).isNotEqualTo("NaN"));
         assertThat(err.toString(StandardCharsets.UTF_8)).contains("bench: JVM 2 times the same settings", "--times-only");
         // the fork's files are read and deleted, with their folder
         java.util.regex.Matcher times = java.util.regex.Pattern.compile("--times-only (\\S+),")

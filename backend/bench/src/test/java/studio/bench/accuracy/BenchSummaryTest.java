@@ -41,6 +41,39 @@ class BenchSummaryTest {
     }
 
     @Test
+    void ratiosToJitteredArePairedByJvm() {
+        // sobol takes 0.75 of jittered's time to the target in each JVM; the second JVM is twice as slow
+        // throughout, and the third only while it rendered jittered (a slow spell, or worse compiled code)
+        List<Measurement> first = new ArrayList<>(method("jittered", 2, 0.1, -0.75));
+        first.addAll(method("sobol", 3, 0.1, -1.0));
+        List<Measurement> second = new ArrayList<>(method("jittered", 4, 0.1, -0.75));
+        second.addAll(method("sobol", 6, 0.1, -1.0));
+        List<Measurement> third = new ArrayList<>(method("jittered", 4, 0.1, -0.75));
+        third.addAll(method("sobol", 3, 0.1, -1.0));
+        // the medians over the JVMs: jittered 4 ms a sample, sobol 3
+        List<Measurement> medians = new ArrayList<>(method("jittered", 4, 0.1, -0.75));
+        medians.addAll(method("sobol", 3, 0.1, -1.0));
+
+        assertThat(BenchSummary.lines(medians).get(1).ratio()).isCloseTo(0.375, within(1e-12));
+        BenchSummary.Line sobol = BenchSummary.lines(medians, List.of(first, second, third)).get(1);
+        assertThat(sobol.ratio()).isCloseTo(0.75, within(1e-12));
+        assertThat(sobol.cpuRatio()).isCloseTo(0.75, within(1e-12));
+        assertThat(sobol.millis()).as("the time itself is still the medians'").isCloseTo(24, within(1e-9));
+        assertThat(BenchSummary.format("s", medians, List.of(first, second, third))).contains("0.75").doesNotContain("0.38");
+    }
+
+    @Test
+    void aMethodTimedInOneJvmOnlyTakesThatJvmsRatio() {
+        List<Measurement> first = new ArrayList<>(method("jittered", 2, 0.1, -0.75));
+        first.addAll(method("povray-grid", 4, 0.1, -0.75));
+        List<Measurement> second = method("jittered", 4, 0.1, -0.75);
+
+        BenchSummary.Line povray = BenchSummary.lines(first, List.of(first, second)).get(1);
+
+        assertThat(povray.ratio()).isCloseTo(2, within(1e-12));
+    }
+
+    @Test
     void targetIsJitteredAtSixteenSamples() {
         List<Measurement> rows = method("jittered", 2, 0.1, -0.75);
         BenchSummary.Target target = BenchSummary.target(rows);

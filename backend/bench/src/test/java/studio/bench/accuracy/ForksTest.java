@@ -38,6 +38,33 @@ class ForksTest {
     }
 
     @Test
+    void eachJvmsRowsTakeTheFirstJvmsErrors() {
+        List<Measurement> first = List.of(row("jittered", 16, Double.NaN, 80, 150, 0.0027),
+                row("adaptive-sobol", 256, 0.05, 40, 70, 0.0020));
+        List<Measurement> second = List.of(row("jittered", 16, Double.NaN, 100, 190, Double.NaN),
+                row("adaptive-sobol", 256, 0.1, 1, 1, Double.NaN));
+
+        List<List<Measurement>> jvms = Forks.withFirstErrors(first, List.of(second));
+
+        assertThat(jvms).hasSize(2);
+        assertThat(jvms.get(0)).isEqualTo(first);
+        // the second JVM's own times, the first JVM's error; a threshold the first did not measure is left out
+        assertThat(jvms.get(1)).containsExactly(row("jittered", 16, Double.NaN, 100, 190, 0.0027));
+    }
+
+    @Test
+    void eachJvmsRowsAreWrittenWithItsNumber() {
+        List<Measurement> first = List.of(row("jittered", 16, Double.NaN, 80, 150, 0.0027));
+        List<Measurement> second = List.of(row("jittered", 16, Double.NaN, 100, 190, 0.0027));
+
+        String csv = BenchCsv.formatByJvm(List.of(first, second));
+
+        assertThat(csv.lines().toList()).containsExactly("jvm," + BenchCsv.HEADER,
+                "1," + BenchCsv.format(first).lines().skip(1).findFirst().orElseThrow(),
+                "2," + BenchCsv.format(second).lines().skip(1).findFirst().orElseThrow());
+    }
+
+    @Test
     void theCsvReadsBackWhatItWrote() {
         List<Measurement> rows = List.of(row("jittered", 16, Double.NaN, 80.5, 150.25, 0.0027),
                 row("adaptive-sobol", 256, 0.05, 40, 70, Double.NaN),
