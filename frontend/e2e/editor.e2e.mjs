@@ -52,12 +52,17 @@ async function sceneOf(page) {
   return scene;
 }
 
+/** Waits until the page has drawn two frames: whatever changed before is on the canvases then. */
+async function twoFrames(page) {
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+}
+
 /** Where a world point shows in the 3D preview's camera view, in page pixels (the render camera, as three.js frames it). */
 async function previewPixel(page, scene, point) {
   // opening a scene mounts a new preview: wait for its canvas, and for two frames drawn since the
   // last change (a view switched just before, on a busy machine, may not be on the canvas yet)
   await page.getByTestId('preview-3d').locator('canvas').waitFor();
-  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+  await twoFrames(page);
   const box = await page.getByTestId('preview-3d').locator('canvas').boundingBox();
   const c = scene.camera ?? {};
   const camera = new PerspectiveCamera(c.fov ?? 50, box.width / box.height, 0.01, 1e4);
@@ -76,7 +81,7 @@ async function openScene(page, scene) {
 
 /** The 3D preview's pixels [r, g, b] at page points, read from its canvas once a frame is drawn. */
 async function previewColours(page, points) {
-  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+  await twoFrames(page);
   const canvas = page.getByTestId('preview-3d').locator('canvas');
   const box = await canvas.boundingBox();
   return canvas.evaluate((c, { points, box }) => {

@@ -17,14 +17,17 @@ final class BenchCsv {
 
     static String format(List<Measurement> rows) {
         StringBuilder csv = new StringBuilder(HEADER).append('\n');
-        for (Measurement m : rows) {
-            csv.append(String.format(Locale.ROOT, "%s,%s,%d,%.3f,%.3f,%s,%.6g,%.3f,%s\n", m.scene(), m.method(),
-                    m.samples(), m.meanSamplesPerPixel(), m.medianMillis(),
-                    Double.isNaN(m.medianCpuMillis()) ? "" : String.format(Locale.ROOT, "%.3f", m.medianCpuMillis()),
-                    m.rmse(), m.psnr(),
-                    Double.isNaN(m.threshold()) ? "" : String.format(Locale.ROOT, "%s", m.threshold())));
-        }
+        rows.forEach(m -> csv.append(line(m)).append('\n'));
         return csv.toString();
+    }
+
+    /** One row's fields, in the order of {@link #HEADER}. */
+    private static String line(Measurement m) {
+        return String.format(Locale.ROOT, "%s,%s,%d,%.3f,%.3f,%s,%.6g,%.3f,%s", m.scene(), m.method(),
+                m.samples(), m.meanSamplesPerPixel(), m.medianMillis(),
+                Double.isNaN(m.medianCpuMillis()) ? "" : String.format(Locale.ROOT, "%.3f", m.medianCpuMillis()),
+                m.rmse(), m.psnr(),
+                Double.isNaN(m.threshold()) ? "" : String.format(Locale.ROOT, "%s", m.threshold()));
     }
 
     static void write(Path file, List<Measurement> rows) throws IOException {
@@ -35,9 +38,8 @@ final class BenchCsv {
     static String formatByJvm(List<List<Measurement>> jvms) {
         StringBuilder csv = new StringBuilder("jvm,").append(HEADER).append('\n');
         for (int k = 0; k < jvms.size(); k++) {
-            String[] lines = format(jvms.get(k)).split("\n");
-            for (int i = 1; i < lines.length; i++) {
-                csv.append(k + 1).append(',').append(lines[i]).append('\n');
+            for (Measurement m : jvms.get(k)) {
+                csv.append(k + 1).append(',').append(line(m)).append('\n');
             }
         }
         return csv.toString();

@@ -3,9 +3,11 @@ package studio.bench.accuracy;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.function.ToDoubleFunction;
@@ -89,12 +91,17 @@ final class BenchSummary {
         if (jvms.size() < 2) {
             return lines;
         }
+        List<Map<String, Line>> byJvm = new ArrayList<>();
+        for (List<Measurement> jvm : jvms) {
+            Map<String, Line> own = new HashMap<>();
+            ratiosOfMedians(jvm).forEach(line -> own.put(line.method(), line));
+            byJvm.add(own);
+        }
         List<Line> paired = new ArrayList<>();
         for (Line line : lines) {
             double[] ratios = new double[jvms.size()], cpuRatios = new double[jvms.size()];
             for (int j = 0; j < jvms.size(); j++) {
-                Line own = ratiosOfMedians(jvms.get(j)).stream()
-                        .filter(l -> l.method().equals(line.method())).findFirst().orElse(null);
+                Line own = byJvm.get(j).get(line.method());
                 ratios[j] = own == null ? Double.NaN : own.ratio();
                 cpuRatios[j] = own == null ? Double.NaN : own.cpuRatio();
             }
