@@ -237,9 +237,10 @@ final class SpeedAccuracyBench {
     }
 
     /**
-     * Times every setting {@code runs} times in rounds (each round renders every setting once), so a
-     * slow spell of the machine, which here lasts from seconds to minutes, falls on all settings alike
-     * instead of on the few measured during it; the median of each setting's runs counts. Errors come
+     * Times every setting {@code runs} times in rounds (each round renders every setting once, a
+     * short one a few times: see {@link RoundTiming}), so a slow spell of the machine, which here
+     * lasts from seconds to minutes, falls on all settings alike instead of on the few measured
+     * during it; the median of each setting's rounds counts. Errors come
      * from the first round (the same seed gives the same pixels on every run; NaN without a
      * {@code reference}). POV-Ray's settings (if {@code povray} is not null) are rendered after ours in
      * each round.
@@ -254,11 +255,11 @@ final class SpeedAccuracyBench {
             log.printf(Locale.ROOT, "%s: round %d of %d, %d settings%n", scene, run + 1, config.runs(), plans.size());
             for (int i = 0; i < plans.size(); i++) {
                 RenderSettings settings = plans.get(i).settings();
-                long start = System.nanoTime();
-                RenderResult result = Renderer.render(world, settings);
-                millis[i][run] = (System.nanoTime() - start) / 1e6;
-                cpuMillis[i][run] = result.cpuNanos() / 1e6;
+                RoundTiming timing = RoundTiming.of(() -> Renderer.render(world, settings));
+                millis[i][run] = timing.millis();
+                cpuMillis[i][run] = timing.cpuMillis();
                 if (run == 0) {
+                    RenderResult result = timing.first();
                     rmse[i] = reference == null ? Double.NaN : ImageError.rmse(result.film(), reference);
                     meanSpp[i] = (double) EngineFeatures.samplesTaken(result, settings)
                             / (settings.width() * settings.height());
