@@ -9,8 +9,9 @@ import studio.engine.render.RenderResult;
 /**
  * One setting's time in one round: a render shorter than {@link #FILL_MILLIS} is repeated until
  * the round's renders of it fill that long (at most {@link #MAX_RENDERS}), and the median of them
- * counts, wall and CPU time apart. A render of 15 ms measures a scheduler's tick and a collector's
- * pause as much as the render; the 256-sample renders, which take most of a round, render once.
+ * counts, wall and CPU time apart. One render of 15-60 ms measured the machine's moment as much
+ * as the render (on the chart's stripes, one JVM timed threshold 0.5 slower than 0.2, which does
+ * more work); the 256-sample renders, which take most of a round, still render once.
  *
  * @param millis    median wall time of the renders, in ms
  * @param cpuMillis median CPU time of the renders' threads, in ms
