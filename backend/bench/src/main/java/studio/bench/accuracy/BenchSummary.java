@@ -75,16 +75,12 @@ final class BenchSummary {
                 fitted.stream().mapToDouble(Measurement::rmse).toArray());
     }
 
-    /** One line per method of one scene's rows, in the order the methods first appear. */
-    static List<Line> lines(List<Measurement> rows) {
-        return lines(rows, List.of());
-    }
-
     /**
-     * As {@link #lines(List)}, with each ratio to jittered, where the scene was timed in two JVMs or
-     * more ({@code jvms}: each one's rows of the scene, with errors), the median over the JVMs of
-     * each one's own ratio, both times from the same JVM: a slower JVM, or a slow spell of the
-     * machine over one JVM's run, then moves both times of a ratio alike.
+     * One line per method of one scene's rows, in the order the methods first appear. Each ratio to
+     * jittered is that of the rows' own times, or, where the scene was timed in two JVMs or more
+     * ({@code jvms}: each one's rows of the scene, with errors; empty for one JVM), the median over
+     * the JVMs of each one's own ratio, both times from the same JVM: a slower JVM, or a slow spell
+     * of the machine over one JVM's run, then moves both times of a ratio alike.
      */
     static List<Line> lines(List<Measurement> rows, List<List<Measurement>> jvms) {
         List<Line> lines = ratiosOfMedians(rows);
@@ -145,12 +141,7 @@ final class BenchSummary {
         return lines;
     }
 
-    /** The printed table of one scene. */
-    static String format(String scene, List<Measurement> rows) {
-        return format(scene, rows, List.of());
-    }
-
-    /** The printed table of one scene, its ratios to jittered paired by JVM as {@link #lines(List, List)} pairs them. */
+    /** The printed table of one scene, its ratios to jittered as {@link #lines} takes them. */
     static String format(String scene, List<Measurement> rows, List<List<Measurement>> jvms) {
         StringBuilder s = new StringBuilder();
         Target target = target(rows);

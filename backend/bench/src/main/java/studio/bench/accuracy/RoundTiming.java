@@ -15,10 +15,9 @@ import studio.engine.render.RenderResult;
  *
  * @param millis    median wall time of the renders, in ms
  * @param cpuMillis median CPU time of the renders' threads, in ms
- * @param renders   how many renders were timed
  * @param first     the first render's result (its image gives the setting's error)
  */
-record RoundTiming(double millis, double cpuMillis, int renders, RenderResult first) {
+record RoundTiming(double millis, double cpuMillis, RenderResult first) {
 
     /** Renders shorter than this are repeated within a round until they fill it. */
     static final double FILL_MILLIS = 250;
@@ -47,6 +46,6 @@ record RoundTiming(double millis, double cpuMillis, int renders, RenderResult fi
             n++;
         } while (total < FILL_MILLIS && n < MAX_RENDERS);
         return new RoundTiming(SpeedAccuracyBench.median(Arrays.copyOf(wall, n)),
-                SpeedAccuracyBench.median(Arrays.copyOf(cpu, n)), n, first);
+                SpeedAccuracyBench.median(Arrays.copyOf(cpu, n)), first);
     }
 }

@@ -34,10 +34,10 @@ class BenchSummaryTest {
         List<Measurement> rows = new ArrayList<>(method("jittered", 2, 4, 0.1, -0.75));
         // sobol reaches the target at n = 8 (see below): 24 ms of wall time, 96 ms of CPU time
         rows.addAll(method("sobol", 3, 12, 0.1, -1.0));
-        BenchSummary.Line sobol = BenchSummary.lines(rows).get(1);
+        BenchSummary.Line sobol = BenchSummary.lines(rows, List.of()).get(1);
         assertThat(sobol.ratio()).isCloseTo(0.75, within(1e-12));
         assertThat(sobol.cpuRatio()).isCloseTo(96.0 / 64, within(1e-12));
-        assertThat(BenchSummary.format("s", rows)).contains("by CPU time").contains("1.50");
+        assertThat(BenchSummary.format("s", rows, List.of())).contains("by CPU time").contains("1.50");
     }
 
     @Test
@@ -54,7 +54,7 @@ class BenchSummaryTest {
         List<Measurement> medians = new ArrayList<>(method("jittered", 4, 0.1, -0.75));
         medians.addAll(method("sobol", 3, 0.1, -1.0));
 
-        assertThat(BenchSummary.lines(medians).get(1).ratio()).isCloseTo(0.375, within(1e-12));
+        assertThat(BenchSummary.lines(medians, List.of()).get(1).ratio()).isCloseTo(0.375, within(1e-12));
         BenchSummary.Line sobol = BenchSummary.lines(medians, List.of(first, second, third)).get(1);
         assertThat(sobol.ratio()).isCloseTo(0.75, within(1e-12));
         assertThat(sobol.cpuRatio()).isCloseTo(0.75, within(1e-12));
@@ -86,7 +86,7 @@ class BenchSummaryTest {
         List<Measurement> rows = new ArrayList<>(method("jittered", 2, 0.1, -0.75));
         rows.addAll(method("random", 2, 0.1, -0.5));
         rows.addAll(method("sobol", 3, 0.1, -1.0));
-        List<BenchSummary.Line> lines = BenchSummary.lines(rows);
+        List<BenchSummary.Line> lines = BenchSummary.lines(rows, List.of());
         assertThat(lines).extracting(BenchSummary.Line::method).containsExactly("jittered", "random", "sobol");
 
         BenchSummary.Line jittered = lines.get(0), random = lines.get(1), sobol = lines.get(2);
@@ -114,18 +114,18 @@ class BenchSummaryTest {
             rows.add(new Measurement("s", "adaptive-jittered", 256, meanSpp[i], meanSpp[i], 2 * meanSpp[i], rmse,
                     ImageError.psnr(rmse), 0.2 / (i + 1)));
         }
-        BenchSummary.Line adaptive = BenchSummary.lines(rows).get(1);
+        BenchSummary.Line adaptive = BenchSummary.lines(rows, List.of()).get(1);
         assertThat(adaptive.slope()).isCloseTo(-1.25, within(1e-12));
-        assertThat(BenchSummary.format("s", rows)).contains("adaptive-jittered", "-1.25", "target RMSE");
+        assertThat(BenchSummary.format("s", rows, List.of())).contains("adaptive-jittered", "-1.25", "target RMSE");
     }
 
     @Test
     void aMethodNeverReachingTheTargetSaysSo() {
         List<Measurement> rows = new ArrayList<>(method("jittered", 2, 0.1, -0.75));
         rows.addAll(method("regular", 2, 0.5, -0.1));
-        BenchSummary.Line regular = BenchSummary.lines(rows).get(1);
+        BenchSummary.Line regular = BenchSummary.lines(rows, List.of()).get(1);
         assertThat(regular.millis()).isNaN();
-        assertThat(BenchSummary.format("s", rows)).contains("not reached");
+        assertThat(BenchSummary.format("s", rows, List.of())).contains("not reached");
     }
 
     @Test
