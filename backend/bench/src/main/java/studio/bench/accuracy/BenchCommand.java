@@ -26,7 +26,8 @@ import studio.server.scene.reading.SceneReader;
 /**
  * {@code studio-bench.jar accuracy [--out docs/bench] [--width W] [--height H] [--runs N] [--forks N]
  * [--reference-samples N] [--scenes scenes/bench] [--povray PATH | --no-povray]}: the
- * speed-against-accuracy benchmark of the samplers, and of POV-Ray beside them. For each scene file
+ * speed-against-accuracy benchmark of the samplers, and of POV-Ray beside them. Each scene is rendered
+ * at its file's own image size, or at {@code --width} and {@code --height} where given. For each scene file
  * it renders a reference with many jittered samples, measures every available sampler (and adaptive
  * sampling, when the engine has it) for time and error, and POV-Ray's fixed grid and adaptive
  * anti-aliasing against POV-Ray's own reference ({@link PovrayAccuracy}; left out when POV-Ray is
@@ -39,11 +40,10 @@ public final class BenchCommand {
     /** Exit codes, as the render command's: 0 done, 1 could not read or write a file, 2 bad arguments or an invalid scene. */
     static final int OK = 0, IO_ERROR = 1, INVALID = 2;
 
-    static final int DEFAULT_WIDTH = 320, DEFAULT_HEIGHT = 240, DEFAULT_RUNS = 2, DEFAULT_FORKS = 5,
-            DEFAULT_REFERENCE_SAMPLES = 1024;
+    static final int DEFAULT_RUNS = 2, DEFAULT_FORKS = 5, DEFAULT_REFERENCE_SAMPLES = 1024;
 
-    static final String USAGE = "usage: java -jar studio-bench.jar accuracy [--out docs/bench] [--width " + DEFAULT_WIDTH
-            + "] [--height " + DEFAULT_HEIGHT + "] [--runs " + DEFAULT_RUNS + "] [--forks " + DEFAULT_FORKS
+    static final String USAGE = "usage: java -jar studio-bench.jar accuracy [--out docs/bench] [--width W --height H "
+            + "(default: each scene file's own)] [--runs " + DEFAULT_RUNS + "] [--forks " + DEFAULT_FORKS
             + "] [--reference-samples "
             + DEFAULT_REFERENCE_SAMPLES + "] [--scenes scenes/bench] [--povray /usr/bin/povray | --no-povray]";
 
@@ -71,8 +71,10 @@ public final class BenchCommand {
                 try {
                     byte[] json = Files.readAllBytes(file);
                     MeshFiles meshes = MeshFiles.in(file.toAbsolutePath().getParent());
-                    scenes.put(stem(file), compiler.compile(json, options.overrides(), 0, meshes));
-                    forPovray.put(stem(file), ResolvedScene.of(reader.read(json), options.width, options.height, meshes));
+                    CompiledScene compiled = compiler.compile(json, options.overrides(), 0, meshes);
+                    scenes.put(stem(file), compiled);
+                    forPovray.put(stem(file), ResolvedScene.of(reader.read(json), compiled.settings().width(),
+                            compiled.settings().height(), meshes));
                 } catch (InvalidSceneException e) {
                     err.println("error: invalid scene " + file + ": " + e.getMessage());
                     return INVALID;
@@ -106,7 +108,7 @@ public final class BenchCommand {
         if (options.povray != null && Files.isExecutable(options.povray)) {
             try {
                 povray = new PovrayAccuracy(options.povray, Files.createTempDirectory("studio-bench-povray"),
-                        options.width, options.height, Runtime.getRuntime().availableProcessors(), err);
+                        Runtime.getRuntime().availableProcessors(), err);
             } catch (IOException e) {
                 err.println("error: cannot make a folder for POV-Ray's files: " + e.getMessage());
                 return IO_ERROR;
@@ -114,9 +116,9 @@ public final class BenchCommand {
         } else if (options.povray != null) {
             err.println("bench: no POV-Ray at " + options.povray + " (apt-get install povray), so the chart has only ours");
         }
-        err.printf(Locale.ROOT, "bench: %d scenes at %dx%d on %d threads, %d rounds (every setting once a round) in each of "
-                        + "%d JVMs, reference %s at %d samples/pixel; adaptive sampling %s%n", scenes.size(), options.width,
-                options.height, Runtime.getRuntime().availableProcessors(), options.runs, options.forks,
+        err.printf(Locale.ROOT, "bench: %d scenes (%s) on %d threads, %d rounds (every setting once a round) in each of "
+                        + "%d JVMs, reference %s at %d samples/pixel; adaptive sampling %s%n", scenes.size(), sizes(scenes),
+                Runtime.getRuntime().availableProcessors(), options.runs, options.forks,
                 SpeedAccuracyBench.REFERENCE_SAMPLER,
                 options.referenceSamples, EngineFeatures.hasAdaptive() ? "measured" : "not in this engine, skipped");
         Map<String, List<Measurement>> rowsByScene = new LinkedHashMap<>();
@@ -158,19 +160,20 @@ public final class BenchCommand {
         }
 
         StringBuilder summary = new StringBuilder();
-        summary.append(String.format(Locale.ROOT, "Speed against accuracy, %dx%d, on %d threads; time: the median over %d "
+        summary.append(String.format(Locale.ROOT, "Speed against accuracy, on %d threads; time: the median over %d "
                         + "JVMs of each one's median of %d rounds (POV-Ray: of the first JVM's rounds); "
                         + "error against %s at %d samples/pixel, RMSE in linear light, PSNR peak 1.0.%n"
                         + "slope: least squares of log RMSE against log samples/pixel (4..256; adaptive: all thresholds, "
                         + "mean samples/pixel).%n"
                         + "ms to target: time to reach jittered's RMSE at 16 samples/pixel, interpolated log-log%s.%n%n",
-                options.width, options.height, Runtime.getRuntime().availableProcessors(), options.forks, options.runs,
+                Runtime.getRuntime().availableProcessors(), options.forks, options.runs,
                 SpeedAccuracyBench.REFERENCE_SAMPLER, options.referenceSamples,
                 jvms.size() > 1 ? "; vs jittered: the median over the JVMs of each one's own ratio" : ""));
         for (Map.Entry<String, List<Measurement>> scene : rowsByScene.entrySet()) {
             List<List<Measurement>> sceneJvms = jvms.stream()
                     .map(rows -> rows.stream().filter(m -> m.scene().equals(scene.getKey())).toList()).toList();
-            summary.append(BenchSummary.format(scene.getKey(), scene.getValue(), sceneJvms)).append('\n');
+            summary.append(BenchSummary.format(scene.getKey() + " at " + size(scenes.get(scene.getKey())), scene.getValue(),
+                    sceneJvms)).append('\n');
         }
         double seconds = (System.nanoTime() - start) / 1e9;
         summary.append(String.format(Locale.ROOT, "bench took %.1f s%n", seconds));
@@ -191,6 +194,16 @@ public final class BenchCommand {
         }
     }
 
+    /** A scene's image size, as {@code 640x480}. */
+    static String size(CompiledScene scene) {
+        return scene.settings().width() + "x" + scene.settings().height();
+    }
+
+    /** Each scene's name and image size, as {@code edges 640x480, glass 320x240}. */
+    static String sizes(Map<String, CompiledScene> scenes) {
+        return String.join(", ", scenes.entrySet().stream().map(e -> e.getKey() + " " + size(e.getValue())).toList());
+    }
+
     static String stem(Path file) {
         String name = file.getFileName().toString();
         return name.substring(0, name.length() - ".json".length());
@@ -200,8 +213,9 @@ public final class BenchCommand {
     static final class Options {
         Path out = Path.of("docs/bench");
         Path scenes = Path.of("scenes/bench");
-        int width = DEFAULT_WIDTH, height = DEFAULT_HEIGHT, runs = DEFAULT_RUNS, forks = DEFAULT_FORKS,
-                referenceSamples = DEFAULT_REFERENCE_SAMPLES;
+        /** The image size for every scene; null: each scene file's own. */
+        Integer width, height;
+        int runs = DEFAULT_RUNS, forks = DEFAULT_FORKS, referenceSamples = DEFAULT_REFERENCE_SAMPLES;
         /** Set in a fork: time our settings only and write the rows here. */
         Path timesOnly;
         /** POV-Ray's executable; null: leave POV-Ray out. */
@@ -230,15 +244,29 @@ public final class BenchCommand {
             return o;
         }
 
-        /** A fork's arguments: the same scenes, size and rounds. */
+        /** A fork's arguments: the same scenes, sizes and rounds. */
         List<String> forkArguments() {
-            return List.of("--scenes", scenes.toString(), "--width", Integer.toString(width), "--height",
-                    Integer.toString(height), "--runs", Integer.toString(runs), "--no-povray");
+            List<String> arguments = new ArrayList<>(List.of("--scenes", scenes.toString()));
+            if (width != null) {
+                arguments.addAll(List.of("--width", width.toString()));
+            }
+            if (height != null) {
+                arguments.addAll(List.of("--height", height.toString()));
+            }
+            arguments.addAll(List.of("--runs", Integer.toString(runs), "--no-povray"));
+            return arguments;
         }
 
-        /** The image size as overrides of the scene files' fields, applied before validation. */
+        /** The image size given on the command line, as overrides of the scene files' fields, applied before validation. */
         Map<String, Object> overrides() {
-            return Map.of("image.width", width, "image.height", height);
+            Map<String, Object> overrides = new LinkedHashMap<>();
+            if (width != null) {
+                overrides.put("image.width", width);
+            }
+            if (height != null) {
+                overrides.put("image.height", height);
+            }
+            return overrides;
         }
 
     }

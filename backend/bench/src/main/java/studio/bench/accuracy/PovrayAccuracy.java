@@ -48,14 +48,12 @@ final class PovrayAccuracy {
 
     private final Path povray;
     private final Path work;
-    private final int width, height, threads;
+    private final int threads;
     private final PrintStream log;
 
-    PovrayAccuracy(Path povray, Path work, int width, int height, int threads, PrintStream log) {
+    PovrayAccuracy(Path povray, Path work, int threads, PrintStream log) {
         this.povray = povray;
         this.work = work;
-        this.width = width;
-        this.height = height;
         this.threads = threads;
         this.log = log;
     }
@@ -80,26 +78,29 @@ final class PovrayAccuracy {
         Path pov = Files.writeString(dir.resolve("scene.pov"), PovrayScene.of(scene, name));
         Path out = dir.resolve("reference.png");
         long start = System.nanoTime();
-        ProcessRun.time(command(pov, out, width * REFERENCE_SCALE, height * REFERENCE_SCALE,
+        ProcessRun.time(command(pov, out, scene.width() * REFERENCE_SCALE, scene.height() * REFERENCE_SCALE,
                 List.of("+A0.0", "+AM1", "+R" + REFERENCE_GRID)), out, dir.resolve("reference.log"));
         log.printf(Locale.ROOT, "%s: POV-Ray reference, %d samples/pixel, %.0f ms%n", name,
                 REFERENCE_SCALE * REFERENCE_SCALE * REFERENCE_GRID * REFERENCE_GRID, (System.nanoTime() - start) / 1e6);
-        return new Scene(name, dir, pov, PovrayImage.linear(out, REFERENCE_SCALE), settings());
+        return new Scene(name, dir, pov, scene.width(), scene.height(), PovrayImage.linear(out, REFERENCE_SCALE), settings());
     }
 
     /** One scene's POV-Ray settings and what they measured so far. */
     final class Scene {
         private final String name;
         private final Path dir, pov;
+        private final int width, height;
         private final double[] reference;
         private final List<Setting> settings;
         private final List<List<Double>> millis = new ArrayList<>();
         private final double[] rmse, samplesPerPixel;
 
-        Scene(String name, Path dir, Path pov, double[] reference, List<Setting> settings) {
+        Scene(String name, Path dir, Path pov, int width, int height, double[] reference, List<Setting> settings) {
             this.name = name;
             this.dir = dir;
             this.pov = pov;
+            this.width = width;
+            this.height = height;
             this.reference = reference;
             this.settings = settings;
             this.rmse = new double[settings.size()];

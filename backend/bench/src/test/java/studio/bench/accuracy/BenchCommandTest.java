@@ -79,8 +79,9 @@ class BenchCommandTest {
         Path povray = Path.of("/usr/bin/povray");
         Assumptions.assumeTrue(Files.isExecutable(povray), "POV-Ray is not installed (apt-get install povray)");
         Path scenes = Files.createDirectories(dir.resolve("scenes"));
-        Files.copy(BenchSceneFiles.dir().resolve("edges.json"), scenes.resolve("edges.json"));
-        int code = run("--out", dir.resolve("out").toString(), "--width", "16", "--height", "12", "--runs", "1",
+        // POV-Ray renders at the scene file's own size, as ours does
+        copyAtSize("edges.json", scenes, 16, 12);
+        int code = run("--out", dir.resolve("out").toString(), "--runs", "1",
                 "--forks", "1", "--reference-samples", "16", "--scenes", scenes.toString(), "--povray", povray.toString());
 
         assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
@@ -94,6 +95,50 @@ class BenchCommandTest {
         assertThat(Double.parseDouble(one.split(",")[6])).isGreaterThan(Double.parseDouble(many.split(",")[6]));
         assertThat(one.split(",")[5]).as("POV-Ray's CPU time is not measured").isEmpty();
         assertThat(Files.readString(dir.resolve("out/summary.txt"))).contains("against POV-Ray", "worst ratio");
+    }
+
+    @Test
+    void eachSceneIsRenderedAtItsFilesOwnSizeUnlessTheCommandLineGivesOne(@TempDir Path dir) throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        copyAtSize("edges.json", scenes, 24, 18);
+        copyAtSize("stripes.json", scenes, 16, 12);
+
+        int code = run("--out", dir.resolve("own").toString(), "--runs", "1", "--forks", "2", "--reference-samples", "4",
+                "--scenes", scenes.toString(), "--no-povray");
+
+        assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
+        assertThat(imageSize(dir.resolve("own/reference-edges.png"))).isEqualTo("24x18");
+        assertThat(imageSize(dir.resolve("own/reference-stripes.png"))).isEqualTo("16x12");
+        assertThat(Files.readString(dir.resolve("own/summary.txt"))).contains("edges at 24x18: target RMSE",
+                "stripes at 16x12: target RMSE");
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("2 scenes (edges 24x18, stripes 16x12)");
+        // the second JVM is not told a size, so it renders the files' own too
+        assertThat(BenchCommand.Options.parse(new String[] {"--scenes", "s", "--runs", "3"}).forkArguments())
+                .containsExactly("--scenes", "s", "--runs", "3", "--no-povray");
+
+        code = run("--out", dir.resolve("given").toString(), "--width", "8", "--height", "6", "--runs", "1", "--forks", "2",
+                "--reference-samples", "4", "--scenes", scenes.toString(), "--no-povray");
+
+        assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
+        assertThat(imageSize(dir.resolve("given/reference-edges.png"))).isEqualTo("8x6");
+        assertThat(imageSize(dir.resolve("given/reference-stripes.png"))).isEqualTo("8x6");
+        assertThat(Files.readString(dir.resolve("given/summary.txt"))).contains("edges at 8x6:", "stripes at 8x6:");
+        assertThat(BenchCommand.Options.parse(new String[] {"--scenes", "s", "--width", "8", "--height", "6"}).forkArguments())
+                .containsExactly("--scenes", "s", "--width", "8", "--height", "6", "--runs", "2", "--no-povray");
+    }
+
+    /** A bench scene file copied into {@code to} with its image size set to {@code width} x {@code height}. */
+    private static void copyAtSize(String name, Path to, int width, int height) throws IOException {
+        String json = Files.readString(BenchSceneFiles.dir().resolve(name));
+        String resized = json.replaceFirst("\"image\": \\{[^}]*\\}",
+                "\"image\": {\"width\": " + width + ", \"height\": " + height + "}");
+        assertThat(resized).as(name + "'s image field").isNotEqualTo(json);
+        Files.writeString(to.resolve(name), resized);
+    }
+
+    private static String imageSize(Path png) throws IOException {
+        java.awt.image.BufferedImage image = javax.imageio.ImageIO.read(png.toFile());
+        return image.getWidth() + "x" + image.getHeight();
     }
 
     @Test
