@@ -17,7 +17,8 @@ import studio.engine.scene.Scene;
 /**
  * Whitted-style ray tracing in linear light: direct light from point lights with hard shadows,
  * an ambient term, mirror reflection and Fresnel-weighted refraction, recursing up to maxDepth and
- * only where a material asks for it and the path's weight can still change the pixel.
+ * only where a material asks for it and the path's weight can still change the pixel. At glass,
+ * a weak branch of the split plays a {@link BranchRoulette}.
  *
  * <p>Shadows through glass: a shadow ray passes through glass surfaces, losing the Fresnel
  * reflectance at each and taking the glass's tint on the way in, so glass casts a lighter, tinted
@@ -38,6 +39,8 @@ final class Integrator {
     private final Scene scene;
     private final int maxDepth;
     private final double minPathWeight;
+    /** Decides which weak branches at glass are traced; the caller starts each sample on it. */
+    final BranchRoulette roulette;
     /** Per recursion depth: the hit, the ray a surface at that depth spawns, and the radiance found. */
     private final Hit[] hits;
     private final Ray[] childRays;
@@ -61,10 +64,16 @@ final class Integrator {
     /** What the current pixel's camera rays and their shadow rays can meet; set by the caller. */
     final PixelCandidates candidates;
 
+    /** Tracing every branch at glass (no roulette): each ray's radiance is a deterministic function of it. */
     Integrator(Scene scene, int maxDepth, double minPathWeight) {
+        this(scene, maxDepth, minPathWeight, BranchRoulette.none());
+    }
+
+    Integrator(Scene scene, int maxDepth, double minPathWeight, BranchRoulette roulette) {
         this.scene = scene;
         this.maxDepth = maxDepth;
         this.minPathWeight = minPathWeight;
+        this.roulette = roulette;
         this.hits = new Hit[maxDepth + 1];
         this.childRays = new Ray[maxDepth + 1];
         for (int i = 0; i < hits.length; i++) {
@@ -307,7 +316,11 @@ final class Integrator {
         return Math.sqrt(x * x + y * y + z * z);
     }
 
-    /** Fresnel-weighted reflection plus refraction (or total internal reflection), into radiance[3 (depth + 1) ..]. */
+    /**
+     * Fresnel-weighted reflection plus refraction (or total internal reflection), into
+     * radiance[3 (depth + 1) ..]; a branch too weak to change the pixel is left out, and a weak one
+     * plays the roulette.
+     */
     private void glass(Material m, Hit hit, double dx, double dy, double dz, boolean front, int depth, double weight) {
         // n points against the incoming ray, into the medium the ray comes from.
         double nx = front ? hit.nx : -hit.nx, ny = front ? hit.ny : -hit.ny, nz = front ? hit.nz : -hit.nz;
@@ -320,26 +333,29 @@ final class Integrator {
         int child = 3 * (depth + 1);
         double r = 0, g = 0, b = 0;
         double wr = weight * reflectance;
-        if (wr > minPathWeight) {
+        double countR = wr > minPathWeight ? roulette.factor(wr) : 0;
+        if (countR > 0) {
             double rx = dx + 2 * cosI * nx, ry = dy + 2 * cosI * ny, rz = dz + 2 * cosI * nz;
             // reflected inside the object (from its back face), the ray meets it again
-            trace(Rays.spawn(hit, rx, ry, rz, childRays[depth]), depth + 1, wr, front ? -1 : hit.primitive);
-            r = radiance[child] * reflectance;
-            g = radiance[child + 1] * reflectance;
-            b = radiance[child + 2] * reflectance;
+            trace(Rays.spawn(hit, rx, ry, rz, childRays[depth]), depth + 1, wr * countR, front ? -1 : hit.primitive);
+            double kr = reflectance * countR;
+            r = radiance[child] * kr;
+            g = radiance[child + 1] * kr;
+            b = radiance[child + 2] * kr;
         }
         if (k > 0) {
             Rgb tint = front ? m.color() : Rgb.WHITE;
-            double transmittance = 1 - reflectance;
-            double wt = weight * transmittance * tint.max();
-            if (wt > minPathWeight) {
+            double wt = weight * (1 - reflectance) * tint.max();
+            double countT = wt > minPathWeight ? roulette.factor(wt) : 0;
+            if (countT > 0) {
                 double c = eta * cosI - Math.sqrt(k);
                 double tx = eta * dx + c * nx, ty = eta * dy + c * ny, tz = eta * dz + c * nz;
                 // refracted into the object, the ray leaves it next
-                trace(Rays.spawn(hit, tx, ty, tz, childRays[depth]), depth + 1, wt, front ? hit.primitive : -1);
-                r += radiance[child] * tint.r() * transmittance;
-                g += radiance[child + 1] * tint.g() * transmittance;
-                b += radiance[child + 2] * tint.b() * transmittance;
+                trace(Rays.spawn(hit, tx, ty, tz, childRays[depth]), depth + 1, wt * countT, front ? hit.primitive : -1);
+                double kt = (1 - reflectance) * countT;
+                r += radiance[child] * tint.r() * kt;
+                g += radiance[child + 1] * tint.g() * kt;
+                b += radiance[child + 2] * tint.b() * kt;
             }
         }
         radiance[child] = r;

@@ -47,7 +47,8 @@ final class SampleTracer {
     SampleTracer(Scene scene, RenderSettings settings, StopSignal stop) {
         this.stop = stop;
         useCandidates = PixelCandidates.pay(scene);
-        integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight());
+        integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight(),
+                new BranchRoulette(BranchRoulette.BELOW, settings.seed()));
         camera = scene.camera();
         width = settings.width();
         height = settings.height();
@@ -127,6 +128,7 @@ final class SampleTracer {
             Ray ray = camera.ray(ndcX(x, xs[s]), ndcY(y, ys[s]), aspect, cameraRay);
             // Each sample starts with throughput 1: culling by the sample's share of the pixel
             // (1/N) would drop every weak reflection at high sample counts, a bias, not noise.
+            integrator.roulette.startSample(x, y, s);
             integrator.trace(ray, 0, 1.0);
             double cr = integrator.r(), cg = integrator.g(), cb = integrator.b();
             if (Double.isFinite(cr) && Double.isFinite(cg) && Double.isFinite(cb)) {

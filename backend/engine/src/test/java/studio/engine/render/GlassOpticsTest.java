@@ -93,27 +93,51 @@ class GlassOpticsTest {
     }
 
     @Test
-    void glassCubeOnWhiteRendersWithoutNonFiniteSamplesAndCreatesNoLight() {
+    void glassCubeOnWhiteCreatesNoLightAlongAnyRay() {
         // White background, clear glass, no lights: every path ends on the background with weight <= 1.
-        Camera camera = new Camera(new Vec3(3, 2.5, 4), Vec3.ZERO, UP, 40);
-        Scene scene = new Scene(camera, List.of(new SceneObject(new Box(Vec3.ZERO, new Vec3(2, 2, 2)), GLASS)),
-                List.of(), Rgb.WHITE, 0.1);
+        Scene scene = glassCubeOnWhite();
+        Integrator integrator = new Integrator(scene, 12, 0);
+        Ray ray = new Ray();
+        for (int y = 0; y < 128; y++) {
+            for (int x = 0; x < 128; x++) {
+                scene.camera().ray(2 * (x + 0.5) / 128 - 1, 1 - 2 * (y + 0.5) / 128, 1, ray);
+                Rgb c = integrator.radiance(ray);
+                for (double v : new double[] {c.r(), c.g(), c.b()}) {
+                    assertTrue(v >= 0 && v <= 1 + 1e-12, "pixel " + x + "," + y + " = " + c);
+                }
+            }
+        }
+    }
+
+    @Test
+    void glassCubeOnWhiteRendersWithoutNonFiniteSamplesAndAsBrightAsTheFullSplit() {
+        // A render plays the roulette on weak branches: a pixel may come out a little above 1, the image on average not.
+        Scene scene = glassCubeOnWhite();
 
         RenderResult result = Renderer.render(scene, new RenderSettings(128, 128, new JitteredSampler(4), 12, 2,
                 1L, 0));
 
         assertEquals(0, result.nonFiniteSamples());
         Film film = result.film();
+        double sum = 0;
         for (int y = 0; y < 128; y++) {
             for (int x = 0; x < 128; x++) {
                 for (int ch = 0; ch < 3; ch++) {
                     double v = film.get(x, y, ch);
-                    assertTrue(v >= 0 && v <= 1 + 1e-12, "pixel " + x + "," + y + " = " + v);
+                    assertTrue(v >= 0 && v < 1.5, "pixel " + x + "," + y + " = " + v);
+                    sum += v;
                 }
             }
         }
+        assertTrue(sum / (3 * 128 * 128) <= 1, "mean " + sum / (3 * 128 * 128));
         assertEquals(1.0, film.get(0, 0, 0), 0.0, "background corner");
         assertTrue(film.get(64, 64, 0) > 0.2, "the cube's centre is not black: " + film.get(64, 64, 0));
+    }
+
+    private static Scene glassCubeOnWhite() {
+        Camera camera = new Camera(new Vec3(3, 2.5, 4), Vec3.ZERO, UP, 40);
+        return new Scene(camera, List.of(new SceneObject(new Box(Vec3.ZERO, new Vec3(2, 2, 2)), GLASS)),
+                List.of(), Rgb.WHITE, 0.1);
     }
 
     @Test

@@ -19,7 +19,9 @@ import studio.engine.scene.Scene;
  * machines all depend on a pixel's samples never moving. The fingerprints were recorded from the
  * renderer before samplers had index access (when a pixel drew whole patterns from its random
  * stream: one of N, or under batch-adaptive sampling one of 4 per batch, and progressive sobol
- * walked one sequence a run at a time). Change them only with a deliberate change of the samples.
+ * walked one sequence a run at a time), and recorded again when weak branches at glass began to
+ * play a roulette ({@link BranchRoulette}), whose draws are as fixed as the samples. Change them
+ * only with a deliberate change of the samples or of how a sample is traced.
  */
 class SampledImagesUnchangedTest {
 
@@ -31,25 +33,25 @@ class SampledImagesUnchangedTest {
     static Stream<Arguments> renders() {
         return Stream.of(
                 // fixed: one pattern of N per pixel
-                Arguments.of("regular", 9, 0.0, "c2d1d4186b738ad3", 3456L),
-                Arguments.of("random", 16, 0.0, "7e9645865d133cd8", 6144L),
-                Arguments.of("jittered", 16, 0.0, "2bfc15042744cea3", 6144L),
-                Arguments.of("multijittered", 16, 0.0, "3f42a782f6560721", 6144L),
-                Arguments.of("multijittered", 12, 0.0, "4b74739fac7f5ef0", 4608L),
-                Arguments.of("sobol", 16, 0.0, "0738998e9f64d0a2", 6144L),
+                Arguments.of("regular", 9, 0.0, "8b6920100e114989", 3456L),
+                Arguments.of("random", 16, 0.0, "34a8f19cb3040b43", 6144L),
+                Arguments.of("jittered", 16, 0.0, "278ef04661bd24e0", 6144L),
+                Arguments.of("multijittered", 16, 0.0, "f5dec247d8db6990", 6144L),
+                Arguments.of("multijittered", 12, 0.0, "1910b5938404cfb4", 4608L),
+                Arguments.of("sobol", 16, 0.0, "4af92d3ba7d41295", 6144L),
                 // batch-adaptive: patterns of 4, the last partial when N is not a multiple of 4
-                Arguments.of("random", 16, 0.05, "30f44c317e64ea19", 3656L),
-                Arguments.of("jittered", 16, 0.05, "5ff63003f6f8ddd3", 3628L),
-                Arguments.of("multijittered", 16, 0.05, "732fe5459c91f1cf", 3632L),
-                Arguments.of("random", 9, 0.05, "424fb35a663d9494", 3152L),
-                Arguments.of("jittered", 9, 0.05, "9b30b17d633f8368", 3150L),
-                Arguments.of("multijittered", 9, 0.05, "e89aec675a0ac206", 3151L),
-                Arguments.of("multijittered", 18, 0.05, "ff30c9e59ddbf2e2", 3692L),
+                Arguments.of("random", 16, 0.05, "849b25cba78f0521", 3656L),
+                Arguments.of("jittered", 16, 0.05, "778f57346733746c", 3644L),
+                Arguments.of("multijittered", 16, 0.05, "993019cfae0aa5d3", 3632L),
+                Arguments.of("random", 9, 0.05, "67d38506be045ebe", 3152L),
+                Arguments.of("jittered", 9, 0.05, "d37e94e494e0c553", 3151L),
+                Arguments.of("multijittered", 9, 0.05, "53f4008025666784", 3150L),
+                Arguments.of("multijittered", 18, 0.05, "2157fc9fe1c5152a", 3692L),
                 // progressive sobol: one sequence, 1 base sample, then 4, then doubling; a maximum that is not a
                 // power of two ends on a partial run (recorded again when the base went from 4 samples to 1)
-                Arguments.of("sobol", 16, 0.05, "ffa36ad5e43b968a", 3167L),
-                Arguments.of("sobol", 9, 0.05, "3264115d1124abd7", 2600L),
-                Arguments.of("sobol", 64, 0.05, "e4c7ea422f083985", 3855L));
+                Arguments.of("sobol", 16, 0.05, "71b6c622c3a7bbbf", 3167L),
+                Arguments.of("sobol", 9, 0.05, "2612fa812ada4695", 2600L),
+                Arguments.of("sobol", 64, 0.05, "8ac600467218ca98", 3871L));
     }
 
     @ParameterizedTest(name = "{0} {1} adaptive {2}")
