@@ -311,6 +311,14 @@ final class Integrator {
         return false;
     }
 
+    /**
+     * How many times a branch of path weight {@code w} at glass counts: 0 (not traced) when it is
+     * too weak to change the pixel, else as its roulette decides (1 for a branch that is not weak).
+     */
+    private double branchCount(double w) {
+        return w > minPathWeight ? roulette.factor(w) : 0;
+    }
+
     private static double distance(Ray ray, double tx, double ty, double tz) {
         double x = tx - ray.ox, y = ty - ray.oy, z = tz - ray.oz;
         return Math.sqrt(x * x + y * y + z * z);
@@ -333,7 +341,7 @@ final class Integrator {
         int child = 3 * (depth + 1);
         double r = 0, g = 0, b = 0;
         double wr = weight * reflectance;
-        double countR = wr > minPathWeight ? roulette.factor(wr) : 0;
+        double countR = branchCount(wr);
         if (countR > 0) {
             double rx = dx + 2 * cosI * nx, ry = dy + 2 * cosI * ny, rz = dz + 2 * cosI * nz;
             // reflected inside the object (from its back face), the ray meets it again
@@ -346,7 +354,7 @@ final class Integrator {
         if (k > 0) {
             Rgb tint = front ? m.color() : Rgb.WHITE;
             double wt = weight * (1 - reflectance) * tint.max();
-            double countT = wt > minPathWeight ? roulette.factor(wt) : 0;
+            double countT = branchCount(wt);
             if (countT > 0) {
                 double c = eta * cosI - Math.sqrt(k);
                 double tx = eta * dx + c * nx, ty = eta * dy + c * ny, tz = eta * dz + c * nz;
