@@ -31,7 +31,8 @@ import studio.server.scene.reading.SceneReader;
  * it renders a reference with many jittered samples, measures every available sampler (and adaptive
  * sampling, when the engine has it) for time and error, and POV-Ray's fixed grid and adaptive
  * anti-aliasing against POV-Ray's own reference ({@link PovrayAccuracy}; left out when POV-Ray is
- * not installed), repeats our timing in {@code --forks - 1} fresh JVMs ({@link Forks}), and writes
+ * not installed), repeats the timing (ours and POV-Ray's) in {@code --forks - 1} fresh JVMs
+ * ({@link Forks}), and writes
  * {@code speed-accuracy.csv}, each JVM's own times ({@code speed-accuracy-jvms.csv}, with more than
  * one JVM), the charts, the reference images and {@code summary.txt} to the output folder.
  */
@@ -91,19 +92,6 @@ public final class BenchCommand {
 
         SpeedAccuracyBench bench = new SpeedAccuracyBench(
                 SpeedAccuracyBench.Config.defaults(options.runs, options.referenceSamples), err);
-        if (options.timesOnly != null) {
-            List<Measurement> times = new ArrayList<>();
-            for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
-                times.addAll(bench.timesOnly(scene.getKey(), scene.getValue()));
-            }
-            try {
-                BenchCsv.write(options.timesOnly, times);
-            } catch (IOException e) {
-                err.println("error: cannot write " + options.timesOnly + ": " + e.getMessage());
-                return IO_ERROR;
-            }
-            return OK;
-        }
         PovrayAccuracy povray = null;
         if (options.povray != null && Files.isExecutable(options.povray)) {
             try {
@@ -115,6 +103,21 @@ public final class BenchCommand {
             }
         } else if (options.povray != null) {
             err.println("bench: no POV-Ray at " + options.povray + " (apt-get install povray), so the chart has only ours");
+        }
+        if (options.timesOnly != null) {
+            List<Measurement> times = new ArrayList<>();
+            try {
+                for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
+                    PovrayAccuracy.Scene povrayScene = povray == null ? null
+                            : povray.prepareTimesOnly(scene.getKey(), forPovray.get(scene.getKey()));
+                    times.addAll(bench.timesOnly(scene.getKey(), scene.getValue(), povrayScene));
+                }
+                BenchCsv.write(options.timesOnly, times);
+            } catch (IOException | java.io.UncheckedIOException e) {
+                err.println("error: " + e.getMessage());
+                return IO_ERROR;
+            }
+            return OK;
         }
         err.printf(Locale.ROOT, "bench: %d scenes (%s) on %d threads, %d rounds (every setting once a round) in each of "
                         + "%d JVMs, reference %s at %d samples/pixel; adaptive sampling %s%n", scenes.size(), sizes(scenes),
@@ -137,12 +140,12 @@ public final class BenchCommand {
                 }
             }
             if (options.forks > 1) {
-                // a fork does less than this JVM did (no references, no POV-Ray), so this JVM's time bounds it
+                // a fork does less than this JVM did (no references), so this JVM's time bounds it
                 Duration bound = Duration.ofNanos(System.nanoTime() - start).multipliedBy(2).plusMinutes(5);
                 Path dir = Files.createTempDirectory("studio-bench-forks");
                 List<List<Measurement>> forks = new ArrayList<>();
                 for (int fork = 2; fork <= options.forks; fork++) {
-                    forks.add(Forks.run(options.forkArguments(), dir, fork, bound, err));
+                    forks.add(Forks.run(options.forkArguments(povray != null), dir, fork, bound, err));
                 }
                 Files.delete(dir);
                 jvms = Forks.withFirstErrors(all, forks);
@@ -161,7 +164,7 @@ public final class BenchCommand {
 
         StringBuilder summary = new StringBuilder();
         summary.append(String.format(Locale.ROOT, "Speed against accuracy, on %d threads; time: the median over %d "
-                        + "JVMs of each one's median of %d rounds (POV-Ray: of the first JVM's rounds); "
+                        + "JVMs of each one's median of %d rounds (POV-Ray's too, started by each JVM); "
                         + "error against %s at %d samples/pixel, RMSE in linear light, PSNR peak 1.0.%n"
                         + "slope: least squares of log RMSE against log samples/pixel (4..256; adaptive: all thresholds, "
                         + "mean samples/pixel).%n"
@@ -244,8 +247,8 @@ public final class BenchCommand {
             return o;
         }
 
-        /** A fork's arguments: the same scenes, sizes and rounds. */
-        List<String> forkArguments() {
+        /** A fork's arguments: the same scenes, sizes and rounds, and POV-Ray if this JVM ran it. */
+        List<String> forkArguments(boolean withPovray) {
             List<String> arguments = new ArrayList<>(List.of("--scenes", scenes.toString()));
             if (width != null) {
                 arguments.addAll(List.of("--width", width.toString()));
@@ -253,7 +256,8 @@ public final class BenchCommand {
             if (height != null) {
                 arguments.addAll(List.of("--height", height.toString()));
             }
-            arguments.addAll(List.of("--runs", Integer.toString(runs), "--no-povray"));
+            arguments.addAll(List.of("--runs", Integer.toString(runs)));
+            arguments.addAll(withPovray ? List.of("--povray", povray.toString()) : List.of("--no-povray"));
             return arguments;
         }
 

@@ -21,8 +21,13 @@ import studio.bench.ProcessRun;
  * inlines and lays out the hot loops a little differently each time, and the same setting took up to
  * a third longer in one JVM than in the next, always the same way in both (soft-shadows' ratio to
  * jittered came out 0.24 and 0.33 in two runs). Each fork warms up and times every setting in
- * rounds as the first JVM did, without a reference, and writes its medians to a CSV file; a row's
- * time is then the median over the JVMs of their medians.
+ * rounds as the first JVM did, POV-Ray's too when the first JVM ran it, without a reference, and
+ * writes its medians to a CSV file; a row's time is then the median over the JVMs of their medians.
+ * POV-Ray's renders are processes of their own, so no JVM's compiled code touches them; they are
+ * timed in every JVM's rounds all the same, so that both renderers are sampled over the whole run
+ * (on this machine a slow or fast spell lasts minutes, and POV-Ray's renders of 20-40 ms timed in
+ * the first JVM's rounds alone moved the chart's worst ratio to POV-Ray from 0.52 to 0.90 between
+ * two days).
  */
 final class Forks {
 
@@ -74,7 +79,8 @@ final class Forks {
 
     /**
      * The first JVM's rows with each time (wall and CPU) replaced by the median of that row's time over
-     * every JVM that measured it; the errors, samples and POV-Ray's rows (which no fork measures) stay.
+     * every JVM that measured it; the errors and samples stay, and so does a row no fork measured
+     * (POV-Ray's, when the forks ran without it).
      */
     static List<Measurement> merge(List<Measurement> first, List<List<Measurement>> forks) {
         Map<String, List<Measurement>> byKey = new HashMap<>();

@@ -19,8 +19,8 @@ import studio.bench.ResolvedScene;
  * the peer benchmark writes it) rendered by POV-Ray 3.7 with its fixed grid ({@code +AM1}, every
  * pixel supersampled with k x k rays) and its adaptive anti-aliasing ({@code +AM2}, recursive
  * subdivision where neighbouring samples differ by more than a threshold), each timed by POV-Ray's
- * own "Trace Time" (the render, without start-up and parsing, as ours is timed warm in one JVM)
- * and measured against POV-Ray's own reference: the scene at {@value #REFERENCE_SCALE} times the
+ * own "Trace Time" and the CPU seconds it reports beside it (the render, without start-up and
+ * parsing, as ours is timed warm in one JVM) and measured against POV-Ray's own reference: the scene at {@value #REFERENCE_SCALE} times the
  * size with an 8 x 8 grid a pixel, averaged back down, so 1,024 samples a pixel as ours has.
  * Each renderer's error is against its own converged image, so the curves compare how fast each
  * gets to its own answer, not whose answer is right. POV-Ray writes 16-bit sRGB PNGs, clamped to
@@ -39,6 +39,8 @@ final class PovrayAccuracy {
     static final String GRID_METHOD = "povray-grid", ADAPTIVE_METHOD = "povray-adaptive";
 
     private static final Pattern TRACE_TIME = Pattern.compile("Trace Time:.*\\(([0-9.]+) seconds\\)");
+    /** The line under the trace time: "using 2 thread(s) with 0.017 CPU-seconds total". */
+    private static final Pattern CPU_TIME = Pattern.compile("with ([0-9.]+) CPU-seconds total");
     /** POV-Ray's counts of pixel rays (an extra row and column under anti-aliasing) and anti-aliasing samples. */
     private static final Pattern PIXELS = Pattern.compile("Pixels:\\s*([0-9]+)"), SAMPLES = Pattern.compile("Samples:\\s*([0-9]+)");
 
@@ -85,14 +87,25 @@ final class PovrayAccuracy {
         return new Scene(name, dir, pov, scene.width(), scene.height(), PovrayImage.linear(out, REFERENCE_SCALE), settings());
     }
 
+    /**
+     * As {@link #prepare}, without the reference, for another JVM's share of the rounds
+     * ({@code --forks}): its rows have times and no error.
+     */
+    Scene prepareTimesOnly(String name, ResolvedScene scene) throws IOException {
+        Path dir = Files.createDirectories(work.resolve(name));
+        Path pov = Files.writeString(dir.resolve("scene.pov"), PovrayScene.of(scene, name));
+        return new Scene(name, dir, pov, scene.width(), scene.height(), null, settings());
+    }
+
     /** One scene's POV-Ray settings and what they measured so far. */
     final class Scene {
         private final String name;
         private final Path dir, pov;
         private final int width, height;
+        /** POV-Ray's converged image in linear light; null when only times are measured. */
         private final double[] reference;
         private final List<Setting> settings;
-        private final List<List<Double>> millis = new ArrayList<>();
+        private final List<List<Double>> millis = new ArrayList<>(), cpuMillis = new ArrayList<>();
         private final double[] rmse, samplesPerPixel;
 
         Scene(String name, Path dir, Path pov, int width, int height, double[] reference, List<Setting> settings) {
@@ -105,10 +118,13 @@ final class PovrayAccuracy {
             this.settings = settings;
             this.rmse = new double[settings.size()];
             this.samplesPerPixel = new double[settings.size()];
-            settings.forEach(s -> millis.add(new ArrayList<>()));
+            settings.forEach(s -> {
+                millis.add(new ArrayList<>());
+                cpuMillis.add(new ArrayList<>());
+            });
         }
 
-        /** Renders every setting once; the first round also measures the errors. */
+        /** Renders every setting once; the first round also measures the errors (NaN without a reference). */
         void round() throws IOException {
             for (int i = 0; i < settings.size(); i++) {
                 Setting s = settings.get(i);
@@ -116,8 +132,9 @@ final class PovrayAccuracy {
                 ProcessRun.time(command(pov, out, width, height, s.options()), out, logFile);
                 String stats = Files.readString(logFile);
                 millis.get(i).add(1000 * number(TRACE_TIME, stats, logFile));
+                cpuMillis.get(i).add(1000 * number(CPU_TIME, stats, logFile));
                 if (millis.get(i).size() == 1) {
-                    rmse[i] = ImageError.rmse(PovrayImage.linear(out, 1), reference);
+                    rmse[i] = reference == null ? Double.NaN : ImageError.rmse(PovrayImage.linear(out, 1), reference);
                     // every camera ray: the pixels' own and the anti-aliasing samples, per pixel of the image
                     samplesPerPixel[i] = (number(PIXELS, stats, logFile) + number(SAMPLES, stats, logFile))
                             / ((double) width * height);
@@ -125,14 +142,16 @@ final class PovrayAccuracy {
             }
         }
 
-        /** The rows, with the median of each setting's times. */
+        /** The rows, with the median of each setting's times (wall and CPU). */
         List<Measurement> rows() {
             List<Measurement> rows = new ArrayList<>();
             for (int i = 0; i < settings.size(); i++) {
                 Setting s = settings.get(i);
                 double[] times = millis.get(i).stream().mapToDouble(Double::doubleValue).toArray();
+                double[] cpu = cpuMillis.get(i).stream().mapToDouble(Double::doubleValue).toArray();
                 Measurement m = new Measurement(name, s.method(), s.samples(), samplesPerPixel[i],
-                        SpeedAccuracyBench.median(times), Double.NaN, rmse[i], ImageError.psnr(rmse[i]), s.threshold());
+                        SpeedAccuracyBench.median(times), SpeedAccuracyBench.median(cpu), rmse[i],
+                        Double.isNaN(rmse[i]) ? Double.NaN : ImageError.psnr(rmse[i]), s.threshold());
                 log.printf(Locale.ROOT, "%s: %-20s %4d spp (mean %6.1f) %9.1f ms  rmse %.5f  psnr %5.2f dB%n", name,
                         Double.isNaN(s.threshold()) ? s.method() : s.method() + " " + s.threshold(), s.samples(),
                         samplesPerPixel[i], m.medianMillis(), rmse[i], m.psnr());

@@ -132,13 +132,18 @@ final class SpeedAccuracyBench {
     /**
      * Only the times of one scene, for another JVM's share of the rounds ({@code --forks}): the same
      * warm-up and the same settings as {@link #run} (the fixed counts and adaptive sampling on sobol),
-     * timed in the same rounds, without a reference, so each row's error is NaN.
+     * timed in the same rounds, with POV-Ray's settings (or null) after ours in each round as there,
+     * without a reference, so each row's error is NaN.
      */
-    List<Measurement> timesOnly(String name, CompiledScene compiled) {
+    List<Measurement> timesOnly(String name, CompiledScene compiled, PovrayAccuracy.Scene povray) {
         Scene scene = compiled.scene();
         RenderSettings base = compiled.settings();
         warmUp(scene, base);
-        return measure(name, oneRoundPlans(base), scene, null, null);
+        List<Measurement> rows = new ArrayList<>(measure(name, oneRoundPlans(base), scene, null, povray));
+        if (povray != null) {
+            rows.addAll(povray.rows());
+        }
+        return rows;
     }
 
     /** Lets the JIT compile the hot loops (fixed and adaptive) before anything is timed. */

@@ -82,7 +82,7 @@ class BenchCommandTest {
         // POV-Ray renders at the scene file's own size, as ours does
         copyAtSize("edges.json", scenes, 16, 12);
         int code = run("--out", dir.resolve("out").toString(), "--runs", "1",
-                "--forks", "1", "--reference-samples", "16", "--scenes", scenes.toString(), "--povray", povray.toString());
+                "--forks", "2", "--reference-samples", "16", "--scenes", scenes.toString(), "--povray", povray.toString());
 
         assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
         List<String> csv = Files.readAllLines(dir.resolve("out/speed-accuracy.csv"));
@@ -93,8 +93,19 @@ class BenchCommandTest {
         String many = csv.stream().filter(l -> l.startsWith("edges,povray-grid,64,")).findFirst().orElseThrow();
         assertThat(Double.parseDouble(one.split(",")[3])).isEqualTo(1.0);
         assertThat(Double.parseDouble(one.split(",")[6])).isGreaterThan(Double.parseDouble(many.split(",")[6]));
-        assertThat(one.split(",")[5]).as("POV-Ray's CPU time is not measured").isEmpty();
-        assertThat(Files.readString(dir.resolve("out/summary.txt"))).contains("against POV-Ray", "worst ratio");
+        // POV-Ray's CPU seconds, as it reports them (0.000 for a render this small)
+        assertThat(Double.parseDouble(one.split(",")[5])).as("POV-Ray's CPU time").isNotNegative();
+        assertThat(Files.readString(dir.resolve("out/summary.txt"))).contains("against POV-Ray", "worst ratio",
+                "POV-Ray's too, started by each JVM");
+        // the second JVM times POV-Ray's settings too, each row with the first JVM's error
+        List<String> jvms = Files.readAllLines(dir.resolve("out/speed-accuracy-jvms.csv"));
+        assertThat(jvms.stream().filter(l -> l.startsWith("2,edges,povray-grid,"))).hasSize(PovrayAccuracy.GRID.length);
+        assertThat(jvms.stream().filter(l -> l.startsWith("2,edges,povray-adaptive,"))).hasSize(PovrayAccuracy.THRESHOLDS.length);
+        String secondOne = jvms.stream().filter(l -> l.startsWith("2,edges,povray-grid,1,")).findFirst().orElseThrow();
+        assertThat(secondOne.split(",", -1)[7]).isEqualTo(one.split(",", -1)[6]);
+        assertThat(Double.parseDouble(secondOne.split(",", -1)[5])).as("the second JVM's POV-Ray time").isNotNegative();
+        assertThat(BenchCommand.Options.parse(new String[] {"--scenes", "s", "--povray", "/opt/povray"}).forkArguments(true))
+                .containsExactly("--scenes", "s", "--runs", "2", "--povray", "/opt/povray");
     }
 
     @Test
@@ -113,7 +124,7 @@ class BenchCommandTest {
                 "stripes at 16x12: target RMSE");
         assertThat(err.toString(StandardCharsets.UTF_8)).contains("2 scenes (edges 24x18, stripes 16x12)");
         // the second JVM is not told a size, so it renders the files' own too
-        assertThat(BenchCommand.Options.parse(new String[] {"--scenes", "s", "--runs", "3"}).forkArguments())
+        assertThat(BenchCommand.Options.parse(new String[] {"--scenes", "s", "--runs", "3"}).forkArguments(false))
                 .containsExactly("--scenes", "s", "--runs", "3", "--no-povray");
 
         code = run("--out", dir.resolve("given").toString(), "--width", "8", "--height", "6", "--runs", "1", "--forks", "2",
@@ -123,7 +134,7 @@ class BenchCommandTest {
         assertThat(imageSize(dir.resolve("given/reference-edges.png"))).isEqualTo("8x6");
         assertThat(imageSize(dir.resolve("given/reference-stripes.png"))).isEqualTo("8x6");
         assertThat(Files.readString(dir.resolve("given/summary.txt"))).contains("edges at 8x6:", "stripes at 8x6:");
-        assertThat(BenchCommand.Options.parse(new String[] {"--scenes", "s", "--width", "8", "--height", "6"}).forkArguments())
+        assertThat(BenchCommand.Options.parse(new String[] {"--scenes", "s", "--width", "8", "--height", "6"}).forkArguments(false))
                 .containsExactly("--scenes", "s", "--width", "8", "--height", "6", "--runs", "2", "--no-povray");
     }
 

@@ -142,6 +142,21 @@ class BenchSummaryTest {
     }
 
     @Test
+    void comparesByCpuTimeWherePovRaysCpuTimeWasMeasured() {
+        // ours: 1 ms a sample by the wall, 2 of CPU; POV-Ray: 2 ms a sample by the wall, 8 of CPU
+        List<Measurement> rows = new ArrayList<>(method("adaptive-sobol", 1, 2, 0.1, -1.0));
+        rows.addAll(method("povray-grid", 2, 8, 0.1, -1.0).subList(1, 5));
+        String text = BenchSummary.againstPovray(rows);
+        assertThat(text).contains("(by CPU time)").contains("0.50 (0.25)").contains("worst ratio 0.50 (by CPU time 0.25)");
+        // without POV-Ray's CPU time (an older CSV): the wall's ratios alone
+        List<Measurement> wallOnly = new ArrayList<>(method("adaptive-sobol", 1, 2, 0.1, -1.0));
+        wallOnly.add(new Measurement("s", "povray-grid", 16, 16, 32, Double.NaN, 0.1 / 16, ImageError.psnr(0.1 / 16),
+                Double.NaN));
+        assertThat(BenchSummary.againstPovray(wallOnly)).contains("ms  0.50\n").contains("worst ratio 0.50\n")
+                .doesNotContain("(0.");
+    }
+
+    @Test
     void ourDefaultIsTheLowerOfItsCurveByThresholdAndItsCurveBySamples() {
         // by threshold: the cheapest setting takes 4 samples (errors 0.1/4 .. 0.1/256 at 1 ms a sample)
         List<Measurement> rows = new ArrayList<>(method("adaptive-sobol", 1, 0.1, -1.0).subList(1, 5));

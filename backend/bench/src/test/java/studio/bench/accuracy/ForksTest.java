@@ -33,8 +33,19 @@ class ForksTest {
         assertThat(merged.get(1).medianMillis()).isEqualTo(40);
         assertThat(merged.get(1).medianCpuMillis()).isEqualTo(65);
         assertThat(merged.get(1).rmse()).isEqualTo(0.0020);
-        // no fork times POV-Ray: its row is the first JVM's
+        // a row no fork measured (POV-Ray, when the forks ran without it) is the first JVM's
         assertThat(merged.get(2)).isEqualTo(first.get(2));
+    }
+
+    @Test
+    void povRaysRowsTimedInTheForksTakeTheMedianOverTheJvmsToo() {
+        List<Measurement> first = List.of(row("povray-grid", 1, Double.NaN, 43, 80, 0.03));
+        List<Measurement> second = List.of(row("povray-grid", 1, Double.NaN, 25, 48, Double.NaN));
+        List<Measurement> third = List.of(row("povray-grid", 1, Double.NaN, 30, 55, Double.NaN));
+
+        List<Measurement> merged = Forks.merge(first, List.of(second, third));
+
+        assertThat(merged).containsExactly(row("povray-grid", 1, Double.NaN, 30, 55, 0.03));
     }
 
     @Test
