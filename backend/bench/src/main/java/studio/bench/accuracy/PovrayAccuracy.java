@@ -38,9 +38,12 @@ final class PovrayAccuracy {
 
     static final String GRID_METHOD = "povray-grid", ADAPTIVE_METHOD = "povray-adaptive";
 
-    private static final Pattern TRACE_TIME = Pattern.compile("Trace Time:.*\\(([0-9.]+) seconds\\)");
-    /** The line under the trace time: "using 2 thread(s) with 0.017 CPU-seconds total". */
-    private static final Pattern CPU_TIME = Pattern.compile("with ([0-9.]+) CPU-seconds total");
+    static final Pattern TRACE_TIME = Pattern.compile("Trace Time:.*\\(([0-9.]+) seconds\\)");
+    /**
+     * The line under the trace time, "using 2 thread(s) with 0.017 CPU-seconds total" (the parse
+     * and bounding times above it have lines of their own of the same form).
+     */
+    static final Pattern CPU_TIME = Pattern.compile("Trace Time:[^\\n]*\\n\\s*using [0-9]+ thread\\(s\\) with ([0-9.]+) CPU-seconds total");
     /** POV-Ray's counts of pixel rays (an extra row and column under anti-aliasing) and anti-aliasing samples. */
     private static final Pattern PIXELS = Pattern.compile("Pixels:\\s*([0-9]+)"), SAMPLES = Pattern.compile("Samples:\\s*([0-9]+)");
 
@@ -168,7 +171,7 @@ final class PovrayAccuracy {
         return command;
     }
 
-    private static double number(Pattern pattern, String stats, Path file) throws IOException {
+    static double number(Pattern pattern, String stats, Path file) throws IOException {
         Matcher m = pattern.matcher(stats);
         if (!m.find()) {
             throw new IOException("no " + pattern.pattern() + " in POV-Ray's statistics, " + file);
