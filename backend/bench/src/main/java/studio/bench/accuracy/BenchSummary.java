@@ -202,10 +202,10 @@ final class BenchSummary {
                 curves.size() > 1 ? DEFAULT_METHOD + " (by threshold and by samples)" : DEFAULT_METHOD));
         double worst = 0, worstCpu = 0;
         for (Measurement p : povray) {
+            String setting = Double.isNaN(p.threshold()) ? p.samples() + " spp" : "threshold " + p.threshold();
             Reach wall = reach(curves, p.rmse(), Measurement::medianMillis);
             Reach cpu = reach(curves, p.rmse(), Measurement::medianCpuMillis);
             if (Double.isNaN(wall.millis())) {
-                String setting = Double.isNaN(p.threshold()) ? p.samples() + " spp" : "threshold " + p.threshold();
                 s.append(String.format(Locale.ROOT, "    %-16s %-15s rmse %.5f %9.1f ms  below our default's range%n",
                         p.method(), setting, p.rmse(), p.medianMillis()));
                 continue;
@@ -216,7 +216,6 @@ final class BenchSummary {
             if (Double.isFinite(cpuRatio)) {
                 worstCpu = Math.max(worstCpu, cpuRatio);
             }
-            String setting = Double.isNaN(p.threshold()) ? p.samples() + " spp" : "threshold " + p.threshold();
             s.append(String.format(Locale.ROOT, "    %-16s %-15s rmse %.5f %9.1f ms  %s%s%n", p.method(), setting, p.rmse(),
                     p.medianMillis(), (wall.bound() ? "<= " : "") + String.format(Locale.ROOT, "%.2f", ratio),
                     Double.isFinite(cpuRatio)

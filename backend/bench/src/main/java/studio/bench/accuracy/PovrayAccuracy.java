@@ -79,8 +79,7 @@ final class PovrayAccuracy {
 
     /** A scene written for POV-Ray, with its reference rendered; {@link #round} times its settings. */
     Scene prepare(String name, ResolvedScene scene) throws IOException {
-        Path dir = Files.createDirectories(work.resolve(name));
-        Path pov = Files.writeString(dir.resolve("scene.pov"), PovrayScene.of(scene, name));
+        Path pov = writeScene(name, scene), dir = pov.getParent();
         Path out = dir.resolve("reference.png");
         long start = System.nanoTime();
         ProcessRun.time(command(pov, out, scene.width() * REFERENCE_SCALE, scene.height() * REFERENCE_SCALE,
@@ -95,9 +94,14 @@ final class PovrayAccuracy {
      * ({@code --forks}): its rows have times and no error.
      */
     Scene prepareTimesOnly(String name, ResolvedScene scene) throws IOException {
+        Path pov = writeScene(name, scene);
+        return new Scene(name, pov.getParent(), pov, scene.width(), scene.height(), null, settings());
+    }
+
+    /** The scene in POV-Ray's language, written to {@code scene.pov} in a folder of its own. */
+    private Path writeScene(String name, ResolvedScene scene) throws IOException {
         Path dir = Files.createDirectories(work.resolve(name));
-        Path pov = Files.writeString(dir.resolve("scene.pov"), PovrayScene.of(scene, name));
-        return new Scene(name, dir, pov, scene.width(), scene.height(), null, settings());
+        return Files.writeString(dir.resolve("scene.pov"), PovrayScene.of(scene, name));
     }
 
     /** One scene's POV-Ray settings and what they measured so far. */
