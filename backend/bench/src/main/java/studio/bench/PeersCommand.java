@@ -25,7 +25,9 @@ import studio.server.scene.reading.SceneReader;
 /**
  * {@code studio-bench.jar peers [--runs 5] [--scenes still-life,spheres-10k,mesh-100k,glass] [--samples 1,16]
  * [--out docs/bench] [--work DIR] [--threads 2] [--studio-jar ...] [--povray ...] [--sunflow-jar ...]}:
- * ours, POV-Ray 3.7 and Sunflow on the same scenes, side by side. For each scene it first renders a
+ * ours, POV-Ray 3.7 and Sunflow on the same scenes, side by side. A scene is one of the benchmark's
+ * names or any scene file ({@code .json}, its meshes beside it), named by its file name: how a
+ * scene the benchmark was not tuned on is checked. For each scene it first renders a
  * silhouette mask with each (1 sample per pixel through the pixel centre) and compares ours with
  * each peer's; then, for each number of samples per pixel, it times whole processes, the three
  * renderers alternated in a rotating order, {@code --runs} rounds, and reports medians and the
@@ -40,7 +42,7 @@ public final class PeersCommand {
     static final Map<String, String> SCENE_FILES = scenes();
 
     static final String USAGE = "usage: java -jar studio-bench.jar peers [--runs 5] [--scenes "
-            + String.join(",", SCENE_FILES.keySet()) + "] [--samples 1,16] [--out docs/bench] [--work DIR] "
+            + String.join(",", SCENE_FILES.keySet()) + "|FILE.json,...] [--samples 1,16] [--out docs/bench] [--work DIR] "
             + "[--threads 2] [--scenes-dir scenes] [--studio-jar backend/server/target/studio.jar] [--launcher bin/studio|none] "
             + "[--povray /usr/bin/povray] [--sunflow-jar /usr/share/java/sunflow.jar] [--java PATH]";
 
@@ -105,33 +107,35 @@ public final class PeersCommand {
             SceneReader reader = new SceneReader(validation.getValidator());
             Files.createDirectories(o.work);
             int turn = 0;
-            for (String name : o.scenes) {
-                String file = SCENE_FILES.get(name);
+            for (String scene : o.scenes) {
+                String name = sceneName(scene);
+                Path file = isSceneFile(scene) ? Path.of(scene)
+                        : SCENE_FILES.get(scene) == null ? null : o.scenesDir.resolve(SCENE_FILES.get(scene));
                 Path dir = o.work.resolve(name);
-                byte[] json = file == null ? generated(name, dir) : Files.readAllBytes(o.scenesDir.resolve(file));
-                Path meshFolder = file == null ? dir : o.scenesDir.resolve(file).toAbsolutePath().getParent();
-                PeerScene scene;
+                byte[] json = file == null ? generated(name, dir) : Files.readAllBytes(file);
+                Path meshFolder = file == null ? dir : file.toAbsolutePath().getParent();
+                PeerScene peerScene;
                 try {
-                    scene = PeerScene.write(name, json, reader, dir, renderers, o.samples, meshFolder);
+                    peerScene = PeerScene.write(name, json, reader, dir, renderers, o.samples, meshFolder);
                 } catch (InvalidSceneException | IllegalArgumentException e) {
                     err.println("error: invalid scene " + name + ": " + e.getMessage());
                     return INVALID;
                 }
-                MaskCheck masks = maskCheck(scene, renderers, err);
+                MaskCheck masks = maskCheck(peerScene, renderers, err);
                 for (int samples : o.samples) {
                     PeerResult row = PeerResult.empty(name, samples, masks);
                     for (int round = 0; round < o.runs; round++, turn++) {
                         for (int k = 0; k < 3; k++) {
                             Renderers.Peer peer = Renderers.Peer.values()[(turn + k) % 3];
-                            long nanos = timed(scene, renderers, peer, samples);
+                            long nanos = timed(peerScene, renderers, peer, samples);
                             row.nanos().get(peer).add(nanos);
                             err.printf(Locale.ROOT, "  %s %d spp, run %d: %-8s %8.0f ms%n", name, samples, round + 1,
                                     peer.label, nanos / 1e6);
                         }
                     }
                     row = row.withDiff(Masks.meanAbsoluteDifference(
-                            ImageIO.read(output(scene, Renderers.Peer.OURS, samples).toFile()),
-                            ImageIO.read(output(scene, Renderers.Peer.POVRAY, samples).toFile())));
+                            ImageIO.read(output(peerScene, Renderers.Peer.OURS, samples).toFile()),
+                            ImageIO.read(output(peerScene, Renderers.Peer.POVRAY, samples).toFile())));
                     rows.add(row);
                     err.print(PeersReport.table(List.of(row)));
                 }
@@ -192,6 +196,20 @@ public final class PeersCommand {
         return s.dir().resolve(peer.label + "-" + samples + ".png");
     }
 
+    /** Whether a --scenes entry is a scene file rather than one of the benchmark's names. */
+    static boolean isSceneFile(String scene) {
+        return scene.endsWith(".json");
+    }
+
+    /** A --scenes entry's name in the report and the work folder: a file's name without ".json". */
+    static String sceneName(String scene) {
+        if (!isSceneFile(scene)) {
+            return scene;
+        }
+        String file = Path.of(scene).getFileName().toString();
+        return file.substring(0, file.length() - ".json".length());
+    }
+
     /** Where this module's classes are: its jar, or target/classes when run from the build. */
     static Path benchClasses() throws URISyntaxException {
         return Path.of(SunflowRender.class.getProtectionDomain().getCodeSource().getLocation().toURI());
@@ -240,11 +258,18 @@ public final class PeersCommand {
                 }
             }
             o.samples.forEach(Renderers::checkSamples);
+            List<String> names = new ArrayList<>();
             for (String scene : o.scenes) {
-                if (!SCENE_FILES.containsKey(scene)) {
+                if (isSceneFile(scene) ? !Files.isRegularFile(Path.of(scene)) || sceneName(scene).isEmpty()
+                        : !SCENE_FILES.containsKey(scene)) {
                     throw new IllegalArgumentException("unknown scene '" + scene + "'; the scenes are "
-                            + String.join(", ", SCENE_FILES.keySet()));
+                            + String.join(", ", SCENE_FILES.keySet()) + ", or a scene file (.json)");
                 }
+                if (names.contains(sceneName(scene))) {
+                    throw new IllegalArgumentException("two scenes named '" + sceneName(scene)
+                            + "' would share one folder and one row");
+                }
+                names.add(sceneName(scene));
             }
             return o;
         }
