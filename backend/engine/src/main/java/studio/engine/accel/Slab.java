@@ -19,6 +19,14 @@ import studio.engine.math.Fp;
  * alternated): 10,000 spheres 257 to 286 ms before, 220 to 225 after; a 50,000-triangle mesh 151
  * to 157 before, 126 to 138 after. In the editor's scenes of 6 to 16 objects, whose trees are a
  * few levels deep, runs disagreed (from 8 % faster to 15 % slower) on a busy machine.
+ *
+ * <p>Whether the ray meets the box is then not asked of those two distances, at the end of the
+ * chain of {@code Math.max} and {@code Math.min}, but by twelve independent comparisons of the
+ * slabs' bounds ({@link #overlap}): the same answer, ready sooner, and a traversal branches on it
+ * at every box. Whole {@code bin/studio} processes, 800x600, 16 samples, 2 threads, 6 alternated
+ * pairs: a 100,000-triangle mesh 0.91 of the time, 10,000 spheres 0.93, 8,000 spheres over a floor
+ * 0.93, glass-pattern 0.98; at one sample the mesh 0.93 and glass-pattern 0.98. The images are the
+ * same to the bit.
  */
 public final class Slab {
 
@@ -68,13 +76,40 @@ public final class Slab {
         double x0 = (bounds[o] - ox) * ix, x1 = (bounds[o + 3] - ox) * ix;
         double y0 = (bounds[o + 1] - oy) * iy, y1 = (bounds[o + 4] - oy) * iy;
         double z0 = (bounds[o + 2] - oz) * iz, z1 = (bounds[o + 5] - oz) * iz;
-        double nearX = ix >= 0 ? x0 : x1, farX = ix >= 0 ? x1 : x0;
-        double nearY = iy >= 0 ? y0 : y1, farY = iy >= 0 ? y1 : y0;
-        double nearZ = iz >= 0 ? z0 : z1, farZ = iz >= 0 ? z1 : z0;
+        double nearX = ix >= 0 ? x0 : x1, farX = (ix >= 0 ? x1 : x0) * FAR_WIDENING;
+        double nearY = iy >= 0 ? y0 : y1, farY = (iy >= 0 ? y1 : y0) * FAR_WIDENING;
+        double nearZ = iz >= 0 ? z0 : z1, farZ = (iz >= 0 ? z1 : z0) * FAR_WIDENING;
         double tNear = Math.max(Math.max(nearX, nearY), Math.max(nearZ, 0.0));
-        double tFar = Math.min(Math.min(farX * FAR_WIDENING, farY * FAR_WIDENING),
-                Math.min(farZ * FAR_WIDENING, tMax));
-        return tNear <= tFar ? tNear : Double.NaN;
+        return overlap(nearX, nearY, nearZ, farX, farY, farZ, tMax) ? tNear : Double.NaN;
+    }
+
+    /** {@link #hits} for a ray without NaN distances: {@link #overlap} of the box's slabs. */
+    private static boolean hitsWithoutNaN(double[] bounds, int o, double ox, double oy, double oz,
+                                          double ix, double iy, double iz, double tMax) {
+        double x0 = (bounds[o] - ox) * ix, x1 = (bounds[o + 3] - ox) * ix;
+        double y0 = (bounds[o + 1] - oy) * iy, y1 = (bounds[o + 4] - oy) * iy;
+        double z0 = (bounds[o + 2] - oz) * iz, z1 = (bounds[o + 5] - oz) * iz;
+        return overlap(ix >= 0 ? x0 : x1, iy >= 0 ? y0 : y1, iz >= 0 ? z0 : z1,
+                (ix >= 0 ? x1 : x0) * FAR_WIDENING, (iy >= 0 ? y1 : y0) * FAR_WIDENING,
+                (iz >= 0 ? z1 : z0) * FAR_WIDENING, tMax);
+    }
+
+    /**
+     * Whether max(nearX, nearY, nearZ, 0) &lt;= min(farX, farY, farZ, tMax), asked as every near
+     * bound against every far bound of another slab and against tMax, and 0 against every far
+     * bound and tMax (a slab's near bound is at most its own widened far bound whenever that is
+     * not negative, so those three pairs need no comparison).
+     * Without NaNs that is the same answer; the twelve comparisons are independent, and combined
+     * with {@code &} (not {@code &&}) they need no branch, so the answer is ready after one
+     * comparison's latency instead of after a chain of three {@code Math.max} and three
+     * {@code Math.min}, and a mispredicted branch on it wastes less.
+     */
+    private static boolean overlap(double nearX, double nearY, double nearZ, double farX, double farY, double farZ,
+                                   double tMax) {
+        return (nearX <= farY) & (nearX <= farZ) & (nearX <= tMax)
+                & (nearY <= farX) & (nearY <= farZ) & (nearY <= tMax)
+                & (nearZ <= farX) & (nearZ <= farY) & (nearZ <= tMax)
+                & (farX >= 0) & (farY >= 0) & (farZ >= 0) & (tMax >= 0);
     }
 
     /** The comparisons of the class comment: a NaN distance fails its comparison and so is ignored. */
@@ -139,6 +174,7 @@ public final class Slab {
     /** {@link #hits(double[], int, double, double, double, double, double, double, double)} with {@link #nanFree} given. */
     public static boolean hits(double[] bounds, int o, double ox, double oy, double oz,
                                double ix, double iy, double iz, boolean nanFree, double tMax) {
-        return !Double.isNaN(entry(bounds, o, ox, oy, oz, ix, iy, iz, nanFree, tMax));
+        return nanFree ? hitsWithoutNaN(bounds, o, ox, oy, oz, ix, iy, iz, tMax)
+                : !Double.isNaN(entryIgnoringNaN(bounds, o, ox, oy, oz, ix, iy, iz, tMax));
     }
 }

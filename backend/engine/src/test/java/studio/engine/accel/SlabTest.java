@@ -140,7 +140,7 @@ class SlabTest {
 
     @Test
     @DisplayName("for rays without NaN distances the min/max path gives the comparisons' entry to the bit, "
-            + "on 200,000 rays that start on box planes, graze an edge, or carry tiny and huge components")
+            + "and the any-hit test the same answer, on 200,000 rays that start on box planes, graze an edge, or carry tiny and huge components")
     void minMaxPathGivesTheComparisonsEntryBitForBit() {
         Random random = new Random(8);
         double[] box = new double[6];
@@ -176,6 +176,11 @@ class SlabTest {
             double branchy = Slab.entry(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], false, tMax);
             double minMax = Slab.entry(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], true, tMax);
             assertEquals(Double.doubleToRawLongBits(branchy), Double.doubleToRawLongBits(minMax), "ray " + i);
+            // the any-hit test's twelve comparisons answer as the comparisons' entry does
+            assertEquals(!Double.isNaN(branchy), Slab.hits(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], true, tMax),
+                    "ray " + i);
+            assertEquals(!Double.isNaN(branchy), Slab.hits(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], false, tMax),
+                    "ray " + i);
             hits += Double.isNaN(branchy) ? 0 : 1;
         }
         assertTrue(hits > 20_000 && hits < 180_000 && onPlane > 50_000 && grazing > 40_000,

@@ -157,7 +157,8 @@ class StudioLauncherTest {
         }
         assertThat(quick).contains("-XX:CompileCommand=quiet");
         assertThat(inlined).containsExactlyInAnyOrder("java/lang/Math.max", "java/lang/Math.min",
-                "studio/engine/accel/Slab.entryWithoutNaN");
+                "studio/engine/accel/Slab.entryWithoutNaN", "studio/engine/accel/Slab.hitsWithoutNaN",
+                "studio/engine/accel/Slab.overlap");
         // a command naming a method that is not there would be silently ignored
         for (String method : inlined) {
             Class<?> type = Class.forName(method.substring(0, method.lastIndexOf('.')).replace('/', '.'));
