@@ -21,7 +21,7 @@ import studio.engine.math.Fp;
  * few levels deep, runs disagreed (from 8 % faster to 15 % slower) on a busy machine.
  *
  * <p>Whether the ray meets the box is then not asked of those two distances, at the end of the
- * chain of {@code Math.max} and {@code Math.min}, but by twelve independent comparisons of the
+ * chain of {@code Math.max} and {@code Math.min}, but by thirteen independent comparisons of the
  * slabs' bounds ({@link #overlap}): the same answer, ready sooner, and a traversal branches on it
  * at every box. Whole {@code bin/studio} processes, 800x600, 16 samples, 2 threads, 6 alternated
  * pairs: a 100,000-triangle mesh 0.91 of the time, 10,000 spheres 0.93, 8,000 spheres over a floor
@@ -99,7 +99,7 @@ public final class Slab {
      * bound against every far bound of another slab and against tMax, and 0 against every far
      * bound and tMax (a slab's near bound is at most its own widened far bound whenever that is
      * not negative, so those three pairs need no comparison).
-     * Without NaNs that is the same answer; the twelve comparisons are independent, and combined
+     * Without NaNs that is the same answer; the thirteen comparisons are independent, and combined
      * with {@code &} (not {@code &&}) they need no branch, so the answer is ready after one
      * comparison's latency instead of after a chain of three {@code Math.max} and three
      * {@code Math.min}, and a mispredicted branch on it wastes less.

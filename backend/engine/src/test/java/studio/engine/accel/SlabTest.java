@@ -176,7 +176,7 @@ class SlabTest {
             double branchy = Slab.entry(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], false, tMax);
             double minMax = Slab.entry(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], true, tMax);
             assertEquals(Double.doubleToRawLongBits(branchy), Double.doubleToRawLongBits(minMax), "ray " + i);
-            // the any-hit test's twelve comparisons answer as the comparisons' entry does
+            // the any-hit test's thirteen comparisons answer as the comparisons' entry does
             assertEquals(!Double.isNaN(branchy), Slab.hits(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], true, tMax),
                     "ray " + i);
             assertEquals(!Double.isNaN(branchy), Slab.hits(box, 0, o[0], o[1], o[2], inv[0], inv[1], inv[2], false, tMax),
