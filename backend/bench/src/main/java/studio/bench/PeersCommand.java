@@ -109,8 +109,8 @@ public final class PeersCommand {
             int turn = 0;
             for (String scene : o.scenes) {
                 String name = sceneName(scene);
-                Path file = isSceneFile(scene) ? Path.of(scene)
-                        : SCENE_FILES.get(scene) == null ? null : o.scenesDir.resolve(SCENE_FILES.get(scene));
+                String named = SCENE_FILES.get(scene); // null for a scene file, or a generated scene
+                Path file = isSceneFile(scene) ? Path.of(scene) : named == null ? null : o.scenesDir.resolve(named);
                 Path dir = o.work.resolve(name);
                 byte[] json = file == null ? generated(name, dir) : Files.readAllBytes(file);
                 Path meshFolder = file == null ? dir : file.toAbsolutePath().getParent();
@@ -260,16 +260,16 @@ public final class PeersCommand {
             o.samples.forEach(Renderers::checkSamples);
             List<String> names = new ArrayList<>();
             for (String scene : o.scenes) {
-                if (isSceneFile(scene) ? !Files.isRegularFile(Path.of(scene)) || sceneName(scene).isEmpty()
+                String name = sceneName(scene);
+                if (isSceneFile(scene) ? !Files.isRegularFile(Path.of(scene)) || name.isEmpty()
                         : !SCENE_FILES.containsKey(scene)) {
                     throw new IllegalArgumentException("unknown scene '" + scene + "'; the scenes are "
                             + String.join(", ", SCENE_FILES.keySet()) + ", or a scene file (.json)");
                 }
-                if (names.contains(sceneName(scene))) {
-                    throw new IllegalArgumentException("two scenes named '" + sceneName(scene)
-                            + "' would share one folder and one row");
+                if (names.contains(name)) {
+                    throw new IllegalArgumentException("two scenes named '" + name + "' would share one folder and one row");
                 }
-                names.add(sceneName(scene));
+                names.add(name);
             }
             return o;
         }
