@@ -37,8 +37,9 @@ record Renderers(Path java, Path studioJar, Path povray, Path sunflowJar, Path b
      * on every pixel (POV-Ray's +AM1 at threshold 0 and Sunflow's fixed anti-aliasing take them all).
      */
     List<String> ours(Path sceneJson, Path out, int samples) {
-        // bin/studio runs the same jar with a class-data-sharing archive (made on its first run)
-        List<String> cmd = new ArrayList<>(launcher != null ? List.of(launcher.toString())
+        // bin/studio runs the same jar with a start-up cache (made on its first run); STUDIO_JAR names the jar
+        List<String> cmd = new ArrayList<>(launcher != null
+                ? List.of("env", "STUDIO_JAR=" + studioJar.toAbsolutePath(), launcher.toString())
                 : List.of(java.toString(), "-jar", studioJar.toString()));
         cmd.addAll(List.of("render", sceneJson.toString(), "-o", out.toString(), "--width", Integer.toString(width),
                 "--height", Integer.toString(height), "--samples", Integer.toString(samples)));
