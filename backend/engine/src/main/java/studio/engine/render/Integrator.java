@@ -123,7 +123,8 @@ final class Integrator {
         int out = 3 * depth;
         Hit hit = hits[depth];
         boolean found = depth == 0 && candidates.cameraCount >= 0
-                ? scene.intersectAmong(candidates.camera, candidates.cameraCount, ray, Double.POSITIVE_INFINITY, hit)
+                ? scene.intersectNearFirst(candidates.camera, candidates.cameraNear, candidates.cameraCount, ray,
+                        Double.POSITIVE_INFINITY, hit)
                 : scene.intersect(ray, Double.POSITIVE_INFINITY, hit, likely);
         if (!found) {
             if (paths != null) {

@@ -72,9 +72,14 @@ public final class Scene {
         return geometry.candidates(frustum, out, stack);
     }
 
-    /** {@link #intersect} for a ray that can hit only objects {@code ids[0 .. count-1]}, from {@link #candidates}. */
-    public boolean intersectAmong(int[] ids, int count, Ray ray, double tMax, Hit hit) {
-        return geometry.intersectAmong(ids, count, ray, tMax, hit);
+    /** Orders a list from {@link #candidates} by distance from a point (see {@link ShapeSet#orderByDistance}). */
+    public void orderByDistance(int[] ids, int count, double px, double py, double pz, double[] near) {
+        geometry.orderByDistance(ids, count, px, py, pz, near);
+    }
+
+    /** {@link #intersect} for a unit-length ray that can hit only objects {@code ids[0 .. count-1]}, ordered from its origin. */
+    public boolean intersectNearFirst(int[] ids, double[] near, int count, Ray ray, double tMax, Hit hit) {
+        return geometry.intersectNearFirst(ids, near, count, ray, tMax, hit);
     }
 
     /** A box of where rays in the pyramid can hit objects {@code ids[0 .. count-1]}, or false (see {@link ShapeSet#boundsOf}). */

@@ -51,9 +51,10 @@ import studio.engine.math.Vec3;
  * of the last 4 of 8 renders): 1,650-1,760 ms against 2,047-2,112 before.
  *
  * <p>A bundle of rays inside one pyramid (a pixel's camera rays, or their shadow rays to a light)
- * can instead list the few shapes in the pyramid once ({@link #candidates}) and test only those,
- * in declaration order as the linear loop does ({@link #intersectAmong}, {@link #occluderAmong});
- * see {@code PixelCandidates}.
+ * can instead list the few shapes in the pyramid once ({@link #candidates}) and test only those:
+ * a camera ray nearest first, stopping where the rest lie beyond its best hit
+ * ({@link #orderByDistance}, {@link #intersectNearFirst}), a shadow ray until one lies on its way
+ * ({@link #occluderAmong}); see {@code PixelCandidates}.
  */
 public final class ShapeSet {
 
@@ -61,6 +62,8 @@ public final class ShapeSet {
     public static final int LINEAR_MAX = 4;
     /** {@link #apartMargin} as a fraction of the scene's largest coordinate. */
     static final double APART_MARGIN = 1e-7;
+    /** {@link #orderByDistance}'s distances are shrunk by this factor: far more than their rounding (about 1e-15). */
+    private static final double NEAR_SHRINK = 1 - 1e-7;
 
     private final Shape[] shapes;
     /** How many of the shapes are unbounded (planes). */
@@ -276,22 +279,58 @@ public final class ShapeSet {
     }
 
     /**
-     * {@link #intersect} for a ray that can hit only the shapes {@code ids[0 .. count-1]}
-     * (ascending; from {@link #candidates}): they are tested one after the other, as the linear
-     * loop tests every shape.
+     * Orders shapes {@code ids[0 .. count-1]} by how near rays from (px, py, pz) could first hit
+     * them, nearest first, and puts into {@code near[k]} a bound below every unit-length ray's hit
+     * distance on shape {@code ids[k]}: its box's distance from the point (a hit lies in the box,
+     * which is padded for the shape's rounding), shrunk by {@link #NEAR_SHRINK} for the rounding
+     * of that distance and of the hit's t, and 0 for an unbounded shape.
      */
-    public boolean intersectAmong(int[] ids, int count, Ray ray, double tMax, Hit hit) {
-        boolean found = false;
-        double limit = tMax;
+    public void orderByDistance(int[] ids, int count, double px, double py, double pz, double[] near) {
         for (int k = 0; k < count; k++) {
+            int id = ids[k], slot = slotOfShape[id];
+            double d = 0;
+            if (slot >= 0) {
+                double[] b = slotBoxes;
+                int o = 6 * slot;
+                double dx = Math.max(0, Math.max(b[o] - px, px - b[o + 3]));
+                double dy = Math.max(0, Math.max(b[o + 1] - py, py - b[o + 4]));
+                double dz = Math.max(0, Math.max(b[o + 2] - pz, pz - b[o + 5]));
+                d = Math.sqrt(dx * dx + dy * dy + dz * dz) * NEAR_SHRINK;
+            }
+            int j = k - 1;
+            while (j >= 0 && near[j] > d) {
+                near[j + 1] = near[j];
+                ids[j + 1] = ids[j];
+                j--;
+            }
+            near[j + 1] = d;
+            ids[j + 1] = id;
+        }
+    }
+
+    /**
+     * {@link #intersect} for a unit-length ray that can hit only the shapes {@code ids[0 .. count-1]},
+     * ordered by {@link #orderByDistance} from its origin: tested nearest first, as the tree's
+     * search visits its nodes, and no further once the next one's bound lies beyond where a hit
+     * could still win. The tie rule is the tree's (see the class comment), so the hit is the one
+     * {@link #intersect} finds.
+     */
+    public boolean intersectNearFirst(int[] ids, double[] near, int count, Ray ray, double tMax, Hit hit) {
+        double best = tMax, cull = tMax;
+        int winner = Integer.MAX_VALUE;
+        for (int k = 0; k < count && near[k] <= cull; k++) {
             int i = ids[k];
-            if (intersect(i, slotOfShape[i], ray, limit, hit)) {
-                found = true;
-                hit.primitive = i;
-                limit = hit.t * (1 - Scene.TIE);
+            if (intersect(i, slotOfShape[i], ray, limit(i, winner, best, tMax), hit)) {
+                best = hit.t;
+                winner = i;
+                cull = Math.min(tMax, best * (1 + Scene.TIE));
             }
         }
-        return found;
+        if (winner == Integer.MAX_VALUE) {
+            return false;
+        }
+        hit.primitive = winner;
+        return true;
     }
 
     /**

@@ -1,5 +1,6 @@
 package studio.engine.render;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -12,6 +13,7 @@ import org.junit.jupiter.api.Test;
 
 import studio.engine.camera.Camera;
 import studio.engine.geometry.Box;
+import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Plane;
 import studio.engine.geometry.Sphere;
 import studio.engine.light.PointLight;
@@ -179,7 +181,7 @@ class PixelCandidatesTest {
     }
 
     @Test
-    void listsHoldAtMostLog2OfTheObjects() {
+    void lightsListsHoldAtMostLog2OfTheObjects() {
         assertEquals(0, PixelCandidates.longest(0));
         assertEquals(0, PixelCandidates.longest(1));
         assertEquals(2, PixelCandidates.longest(7));
@@ -204,11 +206,33 @@ class PixelCandidatesTest {
     }
 
     @Test
-    void aPixelWhosePyramidHoldsMoreThanTheLongestListSearchesTheTree() {
-        // 16 objects: lists of at most 4; the centre pixels' pyramid holds the spheres along the axis
-        assertTrue(centreListed(row(16, 0, 1)));
-        assertTrue(centreListed(row(16, 0, 4)));
-        assertFalse(centreListed(row(16, 0, 5)));
+    void aPixelWhosePyramidHoldsMoreThanACameraListSearchesTheTree() {
+        // 40 objects: camera lists of at most 32; the centre pixels' pyramid holds the spheres along the axis
+        assertTrue(centreListed(row(40, 0, 1)));
+        assertTrue(centreListed(row(40, 0, PixelCandidates.CAMERA_MAX)));
+        assertFalse(centreListed(row(40, 0, PixelCandidates.CAMERA_MAX + 1)));
+    }
+
+    /** The centre pixels' lists: the camera's length, and the light's (-1: none). */
+    private static int[] centreLists(Scene scene) {
+        PixelCandidates lists = new PixelCandidates(scene);
+        lists.forCameraRaysIn(scene.camera().frustum(-0.001, 0.001, -0.001, 0.001, 4.0 / 3, new Frustum()));
+        return new int[] {lists.cameraCount, lists.shadowCount(0)};
+    }
+
+    @Test
+    void aCameraListLongerThanALightsMayBeLeavesItsShadowRaysToTheTree() {
+        // 40 objects: a light's list holds at most 5; the camera list, nearest first, more
+        assertArrayEquals(new int[] {5, 5}, centreLists(row(40, 0, 5)));
+        assertArrayEquals(new int[] {6, -1}, centreLists(row(40, 0, 6)));
+        PixelCandidates lists = new PixelCandidates(row(40, 0, 6));
+        lists.forCameraRaysIn(row(40, 0, 6).camera().frustum(-0.001, 0.001, -0.001, 0.001, 4.0 / 3, new Frustum()));
+        for (int k = 0; k < 6; k++) {
+            assertEquals(k, lists.camera[k], "the spheres along the axis, nearest first");
+        }
+        for (int k = 1; k < 6; k++) {
+            assertTrue(lists.cameraNear[k] > lists.cameraNear[k - 1] + 1.5, "2 apart, less their radii");
+        }
     }
 
     @Test

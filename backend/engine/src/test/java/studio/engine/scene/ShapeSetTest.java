@@ -126,7 +126,7 @@ class ShapeSetTest {
     }
 
     @Test
-    @DisplayName("NUM-12 with a BVH: the first-declared of coincident surfaces wins, in either declaration order")
+    @DisplayName("NUM-12 with a BVH and with a pixel's nearest-first list: the first-declared of coincident surfaces wins, in either declaration order")
     void coincidentSurfacesNum12FirstDeclaredWinsThroughTheBvhInEitherOrder() {
         Plane plane = new Plane(Vec3.ZERO, new Vec3(0, 1, 0));
         Box box = new Box(new Vec3(0, -0.5, 0), new Vec3(2, 1, 2));
@@ -139,7 +139,11 @@ class ShapeSetTest {
             fillers.add(new Sphere(new Vec3(uniform(random, -8, 8), uniform(random, 4, 8), uniform(random, -8, -4)), 0.5));
         }
         Camera camera = new Camera(new Vec3(1.3, 1.7, 2.9), new Vec3(1, 0, 0), new Vec3(0, 1, 0), 60);
-        Hit hit = new Hit(), reference = new Hit();
+        Hit hit = new Hit(), reference = new Hit(), listed = new Hit();
+        int[] ids = new int[32], stack = new int[Bvh.STACK_SIZE];
+        double[] near = new double[32];
+        Frustum pixel = new Frustum();
+        Vec3 eye = camera.position();
         for (int order = 0; order < 8; order++) {
             // Coincident pairs (plane, box, sameBox) and (sphere, sameSphere) at shuffled positions among fillers.
             List<Shape> list = new ArrayList<>(fillers);
@@ -161,10 +165,17 @@ class ShapeSetTest {
                     boolean found = set.intersect(ray, Double.POSITIVE_INFINITY, hit,
                             (x + y) % 3 == 0 ? -1 : (x * 7 + y) % shapes.length);
                     assertEquals(linear.intersect(ray, Double.POSITIVE_INFINITY, reference), found);
+                    int n = set.candidates(camera.frustum(2.0 * x / 128 - 1, 2.0 * (x + 1) / 128 - 1,
+                            1 - 2.0 * (y + 1) / 128, 1 - 2.0 * y / 128, 1.0, pixel), ids, stack);
+                    assertTrue(n >= 0, "a pixel's list fits");
+                    set.orderByDistance(ids, n, eye.x(), eye.y(), eye.z(), near);
+                    assertEquals(found, set.intersectNearFirst(ids, near, n, ray, Double.POSITIVE_INFINITY, listed));
                     if (!found) {
                         continue;
                     }
                     assertEquals(reference.primitive, hit.primitive, "same winner as the linear loop");
+                    assertEquals(reference.primitive, listed.primitive, "the list's winner is the linear loop's");
+                    assertEquals(reference.t, listed.t, 0.0);
                     Shape winner = shapes[hit.primitive];
                     if (winner == plane || winner == box || winner == sameBox) {
                         if (Math.abs(hit.px) < 0.99 && Math.abs(hit.pz) < 0.99) {
@@ -308,8 +319,8 @@ class ShapeSetTest {
     void aPixelsRaysFindAmongItsCandidatesWhatTheWholeSceneGives() {
         Random random = new Random(21);
         Frustum cameraRays = new Frustum(), shadowRays = new Frustum();
-        int[] ids = new int[16], shadowIds = new int[16], stack = new int[Bvh.STACK_SIZE];
-        double[] hitBox = new double[6];
+        int[] ids = new int[16], nearFirst = new int[16], shadowIds = new int[16], stack = new int[Bvh.STACK_SIZE];
+        double[] hitBox = new double[6], near = new double[16];
         int listed = 0, hits = 0, shadowListed = 0, shadowed = 0, lit = 0;
         Hit a = new Hit(), b = new Hit();
         for (int scene = 0; scene < 8; scene++) {
@@ -332,6 +343,12 @@ class ShapeSetTest {
                 for (int k = 1; k < n; k++) {
                     assertTrue(ids[k - 1] < ids[k], "ascending, once each");
                 }
+                System.arraycopy(ids, 0, nearFirst, 0, n);
+                Vec3 eye = camera.position();
+                set.orderByDistance(nearFirst, n, eye.x(), eye.y(), eye.z(), near);
+                for (int k = 1; k < n; k++) {
+                    assertTrue(near[k - 1] <= near[k], "nearest first");
+                }
                 boolean bounded = set.boundsOf(ids, n, cameraRays, hitBox);
                 int m = bounded && shadowRays.overBox(light.x(), light.y(), light.z(), hitBox)
                         ? set.candidates(shadowRays, shadowIds, stack) : -1;
@@ -341,7 +358,7 @@ class ShapeSetTest {
                     double y = y0 + size * (s < 4 ? s >> 1 : random.nextDouble());
                     Ray ray = camera.ray(x, y, 1.5);
                     boolean expected = set.intersect(ray, Double.POSITIVE_INFINITY, a);
-                    assertEquals(expected, set.intersectAmong(ids, n, ray, Double.POSITIVE_INFINITY, b), ray.toString());
+                    assertEquals(expected, set.intersectNearFirst(nearFirst, near, n, ray, Double.POSITIVE_INFINITY, b), ray.toString());
                     double tMax = uniform(random, 0, 30);
                     assertEquals(set.occluded(ray, tMax), set.occluderAmong(ids, n, ray, tMax) >= 0, ray.toString());
                     if (!expected) {
