@@ -1,7 +1,5 @@
 package studio.engine.mesh;
 
-import java.math.BigInteger;
-
 /**
  * Exact decimal-to-double conversion of w * 10^q for significands of up to 19 digits, without
  * allocation: Clinger's fast path (w at most 2^53 and |q| at most 22: one correctly rounded
@@ -13,32 +11,12 @@ import java.math.BigInteger;
  */
 final class DecimalToDouble {
 
-    private static final int MIN_Q = -342, MAX_Q = 308;
+    private static final int MIN_Q = PowersOfFive.MIN_Q, MAX_Q = PowersOfFive.MAX_Q;
     /** Per exponent q: the high and low 64 bits of 5^q, normalised to 128 bits and truncated. */
-    private static final long[] POWERS_OF_FIVE = new long[2 * (MAX_Q - MIN_Q + 1)];
+    private static final long[] POWERS_OF_FIVE = PowersOfFive.TABLE;
     private static final double[] POWERS_OF_TEN = new double[23];
 
     static {
-        BigInteger mask64 = BigInteger.ONE.shiftLeft(64).subtract(BigInteger.ONE);
-        for (int q = MIN_Q; q <= MAX_Q; q++) {
-            BigInteger c;
-            if (q < 0) {
-                BigInteger power5 = BigInteger.valueOf(5).pow(-q);
-                int z = power5.subtract(BigInteger.ONE).bitLength(); // least z with 2^z >= 5^-q
-                int b = q >= -27 ? z + 127 : 2 * z + 128;
-                c = BigInteger.ONE.shiftLeft(b).divide(power5).add(BigInteger.ONE);
-                while (c.bitLength() > 128) {
-                    c = c.shiftRight(1);
-                }
-            } else {
-                c = BigInteger.valueOf(5).pow(q);
-                int bits = c.bitLength();
-                c = bits < 128 ? c.shiftLeft(128 - bits) : c.shiftRight(bits - 128);
-            }
-            int i = 2 * (q - MIN_Q);
-            POWERS_OF_FIVE[i] = c.shiftRight(64).longValue();
-            POWERS_OF_FIVE[i + 1] = c.and(mask64).longValue();
-        }
         double p = 1;
         for (int i = 0; i < POWERS_OF_TEN.length; i++) {
             POWERS_OF_TEN[i] = p;
