@@ -313,7 +313,8 @@ public final class ShapeSet {
      * ordered by {@link #orderByDistance} from its origin: tested nearest first, as the tree's
      * search visits its nodes, and no further once the next one's bound lies beyond where a hit
      * could still win. The tie rule is the tree's (see the class comment), so the hit is the one
-     * {@link #intersect} finds.
+     * {@link #intersect} finds, as any visiting order finds it, except in chains of near-ties
+     * spread over more than {@link Scene#TIE}.
      */
     public boolean intersectNearFirst(int[] ids, double[] near, int count, Ray ray, double tMax, Hit hit) {
         double best = tMax, cull = tMax;
