@@ -4,15 +4,14 @@ package studio.engine.mesh;
  * Exact decimal-to-double conversion of w * 10^q for significands of up to 19 digits, without
  * allocation: Clinger's fast path (w at most 2^53 and |q| at most 22: one correctly rounded
  * multiply or divide), else the Eisel-Lemire algorithm (Lemire, "Number parsing at a gigabyte per
- * second", 2021; as in fast_float): a 128-bit truncated power of five times the normalised
- * significand, which decides the correctly rounded result unless the product lies too close to a
- * rounding boundary. In those rare cases, and for subnormal or overflowing results, it returns NaN
- * and the caller falls back to {@link Double#parseDouble}.
+ * second", 2021; as in fast_float): a 128-bit truncated power of five ({@link PowersOfFive}) times
+ * the normalised significand, which decides the correctly rounded result unless the product lies
+ * too close to a rounding boundary. In those rare cases, and for subnormal or overflowing results,
+ * it returns NaN and the caller falls back to {@link Double#parseDouble}.
  */
 final class DecimalToDouble {
 
     private static final int MIN_Q = PowersOfFive.MIN_Q, MAX_Q = PowersOfFive.MAX_Q;
-    /** Per exponent q: the high and low 64 bits of 5^q, normalised to 128 bits and truncated. */
     private static final long[] POWERS_OF_FIVE = PowersOfFive.TABLE;
     private static final double[] POWERS_OF_TEN = new double[23];
 
