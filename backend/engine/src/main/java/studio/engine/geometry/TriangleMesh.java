@@ -1,6 +1,7 @@
 package studio.engine.geometry;
 
 import java.util.Arrays;
+import java.util.List;
 
 import studio.engine.accel.Aabb;
 import studio.engine.accel.Bvh;
@@ -60,6 +61,9 @@ public final class TriangleMesh implements Shape {
     private final int bvhDepth;
     /** Whether the tree was built on the unplaced positions, so that a copy moved elsewhere may share it. */
     private final boolean movable;
+    /** The lights this mesh has light buffers for, and the buffers (null where a light has none); see {@link #withLightBuffers}. */
+    private final List<Vec3> bufferedLights;
+    private final MeshLightBuffer[] lightBuffers;
 
     public TriangleMesh(MeshData mesh, Vec3 position, double scale, Vec3 rotationDegrees) {
         this(mesh, position, scale, rotationDegrees, MemoryGate.UNLIMITED);
@@ -134,7 +138,11 @@ public final class TriangleMesh implements Shape {
         this.bounds = rootBounds(nodeBounds);
         this.buildNanos = bvh.buildNanos();
         this.bvhDepth = bvh.depth();
+        this.bufferedLights = List.of();
+        this.lightBuffers = NO_BUFFERS;
     }
+
+    private static final MeshLightBuffer[] NO_BUFFERS = {};
 
     /** The mesh as it is, at the origin, unscaled and unrotated. */
     public TriangleMesh(MeshData mesh) {
@@ -158,6 +166,63 @@ public final class TriangleMesh implements Shape {
         this.buildNanos = 0;
         this.bvhDepth = from.bvhDepth;
         this.movable = true;
+        this.bufferedLights = List.of();
+        this.lightBuffers = NO_BUFFERS;
+    }
+
+    /** A copy of {@code from} with light buffers: the same triangles, tree and boxes. */
+    private TriangleMesh(TriangleMesh from, List<Vec3> lights, MemoryGate memory) {
+        this.source = from.source;
+        this.position = from.position;
+        this.scale = from.scale;
+        this.rotationDegrees = from.rotationDegrees;
+        this.unplaced = from.unplaced;
+        this.positions = from.positions;
+        this.normals = from.normals;
+        this.indices = from.indices;
+        this.nodeLinks = from.nodeLinks;
+        this.nodeCount = from.nodeCount;
+        this.nodeBounds = from.nodeBounds;
+        this.bounds = from.bounds;
+        this.buildNanos = from.buildNanos;
+        this.bvhDepth = from.bvhDepth;
+        this.movable = from.movable;
+        this.bufferedLights = List.copyOf(lights);
+        int n = Math.min(lights.size(), MAX_LIGHT_BUFFERS);
+        MeshLightBuffer[] buffers = new MeshLightBuffer[n];
+        int built = 0;
+        for (int i = 0; i < n; i++) {
+            MeshLightBuffer buffer = MeshLightBuffer.build(this, positions, indices, lights.get(i), memory);
+            if (buffer != null) {
+                buffers[built++] = buffer;
+            }
+        }
+        this.lightBuffers = Arrays.copyOf(buffers, built);
+    }
+
+    /**
+     * This mesh with a light buffer ({@link MeshLightBuffer}) for each of the first
+     * {@value #MAX_LIGHT_BUFFERS} of these point lights that can have one (its box clear of the
+     * light on one side): a shadow ray that ends at such a light tests the few triangles in its
+     * direction instead of searching the tree, with the same answer. The peer benchmark's mesh
+     * rendered in 0.67 of the time warm, and whole processes in 0.85 at 16 samples; which renders
+     * pay for the building is {@code LightBuffers}' rule. Itself if it already has buffers for
+     * exactly these lights; each buffer keeps some 35 bytes a triangle (and takes about 70 more
+     * while it is built), asked of {@code memory} first. A moved copy ({@link #movedTo}) has none.
+     */
+    public TriangleMesh withLightBuffers(List<Vec3> lights, MemoryGate memory) {
+        if (lights.equals(bufferedLights)) {
+            return this;
+        }
+        return new TriangleMesh(this, lights, memory);
+    }
+
+    /** Light buffers a mesh has at most: each costs memory and building time in proportion to the mesh. */
+    public static final int MAX_LIGHT_BUFFERS = 4;
+
+    /** How many light buffers this mesh has. */
+    public int lightBufferCount() {
+        return lightBuffers.length;
     }
 
     /**
@@ -371,6 +436,20 @@ public final class TriangleMesh implements Shape {
         double sx = f.sx, sy = f.sy, sz = f.sz, okx = f.okx, oky = f.oky, okz = f.okz;
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+        MeshLightBuffer[] buffers = lightBuffers;
+        if (buffers.length > 0) {
+            // a shadow ray ends within a millionth of its length of its light (Integrator: 1e-9 short)
+            double ex = ox + dx * tMax, ey = oy + dy * tMax, ez = oz + dz * tMax, tolerance = 1e-6 * tMax;
+            for (MeshLightBuffer buffer : buffers) {
+                if (buffer.isAt(ex, ey, ez, tolerance)) {
+                    int blocked = buffer.occluded(ray, tMax, okx, oky, okz, kx, ky, kz, sx, sy, sz);
+                    if (blocked >= 0) {
+                        return blocked == 1;
+                    }
+                    break;
+                }
+            }
+        }
         boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
 
         // Any hit will do, so no order and no stack: a missed node, or a finished leaf, escapes
@@ -426,7 +505,7 @@ public final class TriangleMesh implements Shape {
      * The watertight test of one triangle against the permuted and sheared ray: its distance if
      * 0 &lt; t &lt; tMax and t exceeds its rounding bound, else NaN.
      */
-    private double distance(int tri, double okx, double oky, double okz, int kx, int ky, int kz,
+    double distance(int tri, double okx, double oky, double okz, int kx, int ky, int kz,
                             double sx, double sy, double sz, double tMax) {
         double[] p = positions;
         int a = 3 * indices[3 * tri], b = 3 * indices[3 * tri + 1], c = 3 * indices[3 * tri + 2];

@@ -2,9 +2,9 @@ package studio.engine.memory;
 
 /**
  * Asked before the engine allocates memory that grows with its input: the arrays an OBJ text is
- * read into, a mesh's world-space copies and its BVH. Whoever runs the engine can so refuse work
- * its heap cannot hold before the heap runs out (the server draws on its memory budget; the command
- * line grants everything). A gate refuses by throwing an exception of its own, which the engine
+ * read into, a mesh's world-space copies, its BVH and its light buffers. Whoever runs the engine
+ * can so refuse work its heap cannot hold before the heap runs out (the server draws on its memory
+ * budget; the command line grants everything). A gate refuses by throwing an exception of its own, which the engine
  * passes on, allocating nothing more for that work.
  *
  * <p>What is granted stays counted until the work ends: an array that a growth or a copy replaces
@@ -27,6 +27,11 @@ public interface MemoryGate {
 
     /** The heap an array of {@code length} ints takes. */
     static long ints(long length) {
+        return 16 + 4 * length;
+    }
+
+    /** The heap an array of {@code length} floats takes. */
+    static long floats(long length) {
         return 16 + 4 * length;
     }
 

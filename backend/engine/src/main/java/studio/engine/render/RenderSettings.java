@@ -66,6 +66,11 @@ public record RenderSettings(int width, int height, Sampler sampler, int maxDept
         return adaptiveThreshold > 0 && sampler.samplesPerPixel() > 1;
     }
 
+    /** Camera samples the render takes at most: width x height x samples a pixel (fewer where adaptive sampling stops early). */
+    public long cameraSamples() {
+        return (long) width * height * sampler.samplesPerPixel();
+    }
+
     /** The number of worker threads this render will use. */
     public int effectiveThreads() {
         return threads > 0 ? threads : Runtime.getRuntime().availableProcessors();

@@ -7,6 +7,8 @@ import java.util.List;
 import studio.engine.camera.Camera;
 import studio.engine.light.PointLight;
 import studio.engine.memory.MemoryGate;
+import studio.engine.render.RenderSettings;
+import studio.engine.scene.LightBuffers;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 import studio.server.scene.format.InvalidSceneException;
@@ -52,7 +54,7 @@ public final class SceneMapper {
     /**
      * @param threads    worker threads for the render (0: all cores); not part of the scene format
      * @param meshFiles  where a mesh's {@code file} is read from
-     * @param memory     asked before the engine objects and the meshes' arrays are allocated
+     * @param memory     asked before the engine objects, the meshes' arrays and their light buffers are allocated
      * @throws InvalidSceneException listing every problem found, in the order of the parts below
      */
     public CompiledScene map(SceneDto dto, int threads, MeshFiles meshFiles, MemoryGate memory) {
@@ -63,9 +65,10 @@ public final class SceneMapper {
         Camera camera = CameraMapping.of(dto.camera(), problems);
         problems.throwIfAny();
 
-        Scene scene = new Scene(camera, objects, lights, Colors.linear(or(dto.background(), SceneDefaults.BACKGROUND)),
+        RenderSettings settings = render.settings(threads);
+        List<SceneObject> lit = LightBuffers.forRender(objects, lights, settings.cameraSamples(), memory);
+        Scene scene = new Scene(camera, lit, lights, Colors.linear(or(dto.background(), SceneDefaults.BACKGROUND)),
                 or(dto.ambient(), SceneDefaults.AMBIENT));
-        return new CompiledScene(scene, render.settings(threads), render.format(), render.quality(),
-                SceneNames.toFileStem(dto.name()));
+        return new CompiledScene(scene, settings, render.format(), render.quality(), SceneNames.toFileStem(dto.name()));
     }
 }

@@ -1,0 +1,47 @@
+package studio.engine.scene;
+
+import java.util.List;
+
+import studio.engine.geometry.TriangleMesh;
+import studio.engine.light.PointLight;
+import studio.engine.math.Vec3;
+import studio.engine.memory.MemoryGate;
+
+/**
+ * Which meshes of a scene get light buffers ({@link TriangleMesh#withLightBuffers}) for a render:
+ * those with at most one triangle for every {@value #SAMPLES_PER_TRIANGLE} camera samples. Building
+ * a mesh's buffers reads all its triangles a few times per light, which a short render does not win
+ * back: the peer benchmark's 104,000-triangle mesh, whole processes with and without them, took
+ * 0.84 of the time at 16 samples a pixel (800x600: 74 samples a triangle), but 0.98 and 1.04 in
+ * two runs at one (4.6 a triangle), so about as long; it needs about twice that to be sure to pay.
+ */
+public final class LightBuffers {
+
+    /** Camera samples a triangle needs for its mesh's buffers to pay. */
+    public static final int SAMPLES_PER_TRIANGLE = 8;
+
+    private LightBuffers() {
+    }
+
+    /**
+     * The objects, each mesh among them given light buffers for these lights if a render of
+     * {@code cameraSamples} camera samples (width x height x samples a pixel) pays for them; the
+     * same list if none is.
+     */
+    public static List<SceneObject> forRender(List<SceneObject> objects, List<PointLight> lights, long cameraSamples,
+                                              MemoryGate memory) {
+        if (lights.isEmpty() || objects.stream().noneMatch(o -> pays(o, cameraSamples))) {
+            return objects;
+        }
+        List<Vec3> positions = lights.stream().map(PointLight::position).toList();
+        return objects.stream()
+                .map(o -> pays(o, cameraSamples) ? new SceneObject(
+                        ((TriangleMesh) o.shape()).withLightBuffers(positions, memory), o.material()) : o)
+                .toList();
+    }
+
+    private static boolean pays(SceneObject object, long cameraSamples) {
+        return object.shape() instanceof TriangleMesh mesh
+                && cameraSamples / SAMPLES_PER_TRIANGLE >= mesh.triangleCount();
+    }
+}
