@@ -63,7 +63,7 @@ public final class TriangleMesh implements Shape {
     private final boolean movable;
     /** The lights this mesh has light buffers for, and the buffers (null where a light has none); see {@link #withLightBuffers}. */
     private final List<Vec3> bufferedLights;
-    private final MeshLightBuffer[] lightBuffers;
+    private final LightBuffer[] lightBuffers;
 
     public TriangleMesh(MeshData mesh, Vec3 position, double scale, Vec3 rotationDegrees) {
         this(mesh, position, scale, rotationDegrees, MemoryGate.UNLIMITED);
@@ -142,7 +142,7 @@ public final class TriangleMesh implements Shape {
         this.lightBuffers = NO_BUFFERS;
     }
 
-    private static final MeshLightBuffer[] NO_BUFFERS = {};
+    private static final LightBuffer[] NO_BUFFERS = {};
 
     /** The mesh as it is, at the origin, unscaled and unrotated. */
     public TriangleMesh(MeshData mesh) {
@@ -189,10 +189,11 @@ public final class TriangleMesh implements Shape {
         this.movable = from.movable;
         this.bufferedLights = List.copyOf(lights);
         int n = Math.min(lights.size(), MAX_LIGHT_BUFFERS);
-        MeshLightBuffer[] buffers = new MeshLightBuffer[n];
+        LightBuffer[] buffers = new LightBuffer[n];
+        LightBuffer.Primitives triangles = this::occludedBy;
         int built = 0;
         for (int i = 0; i < n; i++) {
-            MeshLightBuffer buffer = MeshLightBuffer.build(this, positions, indices, lights.get(i), memory);
+            LightBuffer buffer = LightBuffer.ofTriangles(positions, indices, bounds, lights.get(i), triangles, memory);
             if (buffer != null) {
                 buffers[built++] = buffer;
             }
@@ -201,12 +202,12 @@ public final class TriangleMesh implements Shape {
     }
 
     /**
-     * This mesh with a light buffer ({@link MeshLightBuffer}) for each of the first
+     * This mesh with a light buffer ({@link LightBuffer}) for each of the first
      * {@value #MAX_LIGHT_BUFFERS} of these point lights that can have one (its box clear of the
      * light on one side): a shadow ray that ends at such a light tests the few triangles in its
      * direction instead of searching the tree, with the same answer. The peer benchmark's mesh
      * rendered in 0.67 of the time warm, and whole processes in 0.85 at 16 samples; which renders
-     * pay for the building is {@code LightBuffers}' rule. Itself if it already has buffers for
+     * pay for the building is {@code MeshLightBuffers}' rule. Itself if it already has buffers for
      * exactly these lights; each buffer keeps some 35 bytes a triangle (and takes about 70 more
      * while it is built), asked of {@code memory} first. A moved copy ({@link #movedTo}) has none.
      */
@@ -436,15 +437,15 @@ public final class TriangleMesh implements Shape {
         double sx = f.sx, sy = f.sy, sz = f.sz, okx = f.okx, oky = f.oky, okz = f.okz;
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
-        MeshLightBuffer[] buffers = lightBuffers;
+        LightBuffer[] buffers = lightBuffers;
         if (buffers.length > 0) {
             // a shadow ray ends within a millionth of its length of its light (Integrator: 1e-9 short)
             double ex = ox + dx * tMax, ey = oy + dy * tMax, ez = oz + dz * tMax, tolerance = 1e-6 * tMax;
-            for (MeshLightBuffer buffer : buffers) {
+            for (LightBuffer buffer : buffers) {
                 if (buffer.isAt(ex, ey, ez, tolerance)) {
-                    int blocked = buffer.occluded(ray, tMax, okx, oky, okz, kx, ky, kz, sx, sy, sz);
-                    if (blocked >= 0) {
-                        return blocked == 1;
+                    int occluder = buffer.occluder(ray, tMax);
+                    if (occluder != LightBuffer.UNDECIDED) {
+                        return occluder >= 0;
                     }
                     break;
                 }
@@ -477,6 +478,13 @@ public final class TriangleMesh implements Shape {
         return false;
     }
 
+    /** Whether triangle {@code tri} lies on the ray with 0 &lt; t &lt; tMax (a light buffer's test). */
+    boolean occludedBy(int tri, Ray ray, double tMax) {
+        RayShear f = ray.shear();
+        double t = distance(tri, f.okx, f.oky, f.okz, f.kx, f.ky, f.kz, f.sx, f.sy, f.sz, tMax);
+        return t == t;
+    }
+
     /**
      * The nearest hit by testing every triangle, without the BVH: the reference the BVH is
      * checked against (tests, robustness case NUM-06, docs/robustness.md).
@@ -505,7 +513,7 @@ public final class TriangleMesh implements Shape {
      * The watertight test of one triangle against the permuted and sheared ray: its distance if
      * 0 &lt; t &lt; tMax and t exceeds its rounding bound, else NaN.
      */
-    double distance(int tri, double okx, double oky, double okz, int kx, int ky, int kz,
+    private double distance(int tri, double okx, double oky, double okz, int kx, int ky, int kz,
                             double sx, double sy, double sz, double tMax) {
         double[] p = positions;
         int a = 3 * indices[3 * tri], b = 3 * indices[3 * tri + 1], c = 3 * indices[3 * tri + 2];

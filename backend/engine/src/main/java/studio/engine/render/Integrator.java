@@ -268,7 +268,7 @@ final class Integrator {
         }
         int among = cameraHit ? candidates.shadowCount(lightIndex) : -1;
         int occluder = among >= 0 ? scene.occluderAmong(candidates.shadow(lightIndex), among, ray, dist * SHADOW_END)
-                : scene.occluder(ray, dist * SHADOW_END);
+                : scene.occluderTowards(lightIndex, ray, dist * SHADOW_END);
         if (occluder < 0 || scene.material(occluder).kind() != MaterialKind.GLASS) {
             // nothing on the way, or something opaque: no walk through glass needed
             lastOccluder[lightIndex] = occluder;

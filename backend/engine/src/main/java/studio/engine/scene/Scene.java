@@ -41,7 +41,7 @@ public final class Scene {
         }
         this.camera = camera;
         this.shapes = objects.stream().map(SceneObject::shape).toArray(Shape[]::new);
-        this.geometry = ShapeSet.of(shapes);
+        this.geometry = ShapeSet.of(lights.stream().map(PointLight::position).toList(), shapes);
         this.materials = objects.stream().map(SceneObject::material).toArray(Material[]::new);
         this.lights = List.copyOf(lights);
         this.background = background;
@@ -100,6 +100,11 @@ public final class Scene {
     /** The index of an object that lies on the ray with 0 &lt; t &lt; tMax, or -1 if none does. */
     public int occluder(Ray ray, double tMax) {
         return geometry.occluder(ray, tMax);
+    }
+
+    /** {@link #occluder} for a shadow ray towards light {@code light}: through its light buffer, if it has one. */
+    public int occluderTowards(int light, Ray ray, double tMax) {
+        return geometry.occluderTowards(light, ray, tMax);
     }
 
     /** Whether object i lies on the ray with 0 &lt; t &lt; tMax, tested as {@link #occluded} tests it. */

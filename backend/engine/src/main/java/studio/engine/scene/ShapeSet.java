@@ -1,17 +1,20 @@
 package studio.engine.scene;
 
 import java.util.Arrays;
+import java.util.List;
 
 import studio.engine.accel.Aabb;
 import studio.engine.accel.Bvh;
 import studio.engine.accel.Slab;
 import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
+import studio.engine.geometry.LightBuffer;
 import studio.engine.geometry.Plane;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Shape;
 import studio.engine.geometry.Sphere;
 import studio.engine.math.Vec3;
+import studio.engine.memory.MemoryGate;
 
 /**
  * A scene's shapes in declaration order, searched for the nearest hit under the tie rule: of hits
@@ -95,10 +98,12 @@ public final class ShapeSet {
     private final byte[] slotApart;
     /** How far beyond a shape's box a segment may reach and still count as inside it; twice this, no other box may come. */
     private final double apartMargin;
+    /** Per light, a light buffer over the tree's slots, or null (see {@link #occluderTowards}). */
+    private final LightBuffer[] lightBuffers;
 
     private static final byte UNKNOWN = 0, APART = 1, NEAR = 2;
 
-    private ShapeSet(Shape[] shapes, boolean useBvh) {
+    private ShapeSet(Shape[] shapes, boolean useBvh, List<Vec3> lights) {
         this.shapes = shapes.clone();
         int boundedCount = 0;
         for (Shape s : shapes) {
@@ -119,6 +124,7 @@ public final class ShapeSet {
             magnitude = 0;
             slotApart = null;
             apartMargin = 0;
+            lightBuffers = new LightBuffer[0];
             return;
         }
         int[] boundedIndex = new int[boundedCount];
@@ -163,21 +169,41 @@ public final class ShapeSet {
         magnitude = largest;
         slotApart = new byte[boundedCount];
         apartMargin = Math.max(APART_MARGIN * largest, Double.MIN_NORMAL);
+        lightBuffers = new LightBuffer[boundedCount >= LIGHT_BUFFER_MIN ? Math.min(lights.size(), MAX_LIGHT_BUFFERS) : 0];
+        Aabb root = new Aabb(nodeBounds[0], nodeBounds[1], nodeBounds[2], nodeBounds[3], nodeBounds[4], nodeBounds[5]);
+        for (int i = 0; i < lightBuffers.length; i++) {
+            lightBuffers[i] = LightBuffer.ofBoxes(slotBoxes, boundedCount, root, lights.get(i),
+                    (slot, ray, tMax) -> occluded(leafShapes[slot], slot, ray, tMax), MemoryGate.UNLIMITED);
+        }
     }
+
+    /** Scenes with fewer bounded shapes than this have no light buffers: their pixel lists and tree are cheap. */
+    public static final int LIGHT_BUFFER_MIN = 64;
+    /** Light buffers a scene has at most. */
+    public static final int MAX_LIGHT_BUFFERS = 4;
 
     /** The shapes, searched linearly or through a BVH depending on their number. */
     public static ShapeSet of(Shape... shapes) {
-        return new ShapeSet(shapes, shapes.length > LINEAR_MAX);
+        return of(List.of(), shapes);
+    }
+
+    /**
+     * The shapes, with a light buffer ({@link LightBuffer}) over the tree for each of the first
+     * {@value #MAX_LIGHT_BUFFERS} of these lights that can have one, in scenes of at least
+     * {@value #LIGHT_BUFFER_MIN} bounded shapes: {@link #occluderTowards} then asks it.
+     */
+    public static ShapeSet of(List<Vec3> lights, Shape... shapes) {
+        return new ShapeSet(shapes, shapes.length > LINEAR_MAX, lights);
     }
 
     /** Always the linear loop (the reference in tests and timings). */
     public static ShapeSet linear(Shape... shapes) {
-        return new ShapeSet(shapes, false);
+        return new ShapeSet(shapes, false, List.of());
     }
 
     /** Always a BVH over the bounded shapes, if there are any. */
     public static ShapeSet bvh(Shape... shapes) {
-        return new ShapeSet(shapes, true);
+        return new ShapeSet(shapes, true, List.of());
     }
 
     public boolean usesBvh() {
@@ -219,6 +245,34 @@ public final class ShapeSet {
     /** Shape i's leaf slot, or -1 for an unbounded shape or a set without a tree (for tests). */
     int slotOf(int i) {
         return slotOfShape == null ? -1 : slotOfShape[i];
+    }
+
+    /**
+     * {@link #occluder} for a shadow ray towards light {@code light} (its index among the lights
+     * this set was made with): through that light's buffer where there is one, the planes first.
+     * Whether some shape is found is the same answer; which one may differ.
+     */
+    public int occluderTowards(int light, Ray ray, double tMax) {
+        LightBuffer buffer = light < lightBuffers.length ? lightBuffers[light] : null;
+        if (buffer == null) {
+            return occluder(ray, tMax);
+        }
+        for (int i : unbounded) {
+            if (shapes[i].occluded(ray, tMax)) {
+                return i;
+            }
+        }
+        int slot = buffer.occluder(ray, tMax);
+        return slot >= 0 ? leafShapes[slot] : slot == LightBuffer.NONE ? -1 : occluderBvh(ray, tMax);
+    }
+
+    /** How many light buffers the set has (for tests). */
+    int lightBufferCount() {
+        int n = 0;
+        for (LightBuffer b : lightBuffers) {
+            n += b != null ? 1 : 0;
+        }
+        return n;
     }
 
     /** Whether shape i lies on the ray with 0 &lt; t &lt; tMax: the test {@link #occluded} makes of it. */

@@ -66,6 +66,55 @@ class ShapeSetTest {
     }
 
     @Test
+    @DisplayName("NUM-13: shadow rays through a scene's light buffers find an occluder exactly when the tree does, and it occludes")
+    void lightBuffersFindAnOccluderExactlyWhenTheTreeDoes() {
+        Random random = new Random(13);
+        // above, to the side, far below, and inside the scene's box (no buffer)
+        List<Vec3> lights = List.of(new Vec3(2, 40, -3), new Vec3(-30, 4, 2), new Vec3(1, -60, 5), new Vec3(0.5, 0.5, 0.5));
+        int rays = 0, blocked = 0;
+        for (int scene = 0; scene < 6; scene++) {
+            Shape[] shapes = randomScene(random, 70 + 60 * scene);
+            ShapeSet plain = ShapeSet.bvh(shapes), lit = ShapeSet.of(lights, shapes);
+            assertEquals(3, lit.lightBufferCount(), "the light inside the box has none");
+            Hit hit = new Hit();
+            for (int k = 0; k < 3000; k++) {
+                int light = k % lights.size();
+                Vec3 target = lights.get(light), from;
+                Ray ray;
+                double tMax;
+                if (k % 2 == 0) { // from a surface, as a shadow ray leaves one
+                    Vec3 o = randomPoint(random, 14), d = randomUnit(random);
+                    if (!plain.intersect(new Ray(o.x(), o.y(), o.z(), d.x(), d.y(), d.z()), Double.POSITIVE_INFINITY, hit)) {
+                        continue;
+                    }
+                    ray = Rays.spawnTowards(hit, target.x(), target.y(), target.z());
+                    from = new Vec3(ray.ox, ray.oy, ray.oz);
+                } else {
+                    from = randomPoint(random, 12);
+                    Vec3 d = target.minus(from).normalized();
+                    ray = new Ray(from.x(), from.y(), from.z(), d.x(), d.y(), d.z());
+                }
+                tMax = target.minus(from).length() * (1 - 1e-9);
+                if (k % 5 == 4) { // any other ray: the buffer leaves most to the tree
+                    Vec3 d = randomUnit(random);
+                    ray = new Ray(from.x(), from.y(), from.z(), d.x(), d.y(), d.z());
+                    tMax = uniform(random, 0, 30);
+                }
+                int expected = plain.occluder(ray, tMax), found = lit.occluderTowards(light, ray, tMax);
+                assertEquals(expected >= 0, found >= 0, ray::toString);
+                if (found >= 0) {
+                    assertTrue(shapes[found].occluded(ray, tMax), "the occluder it names lies on the ray");
+                    blocked++;
+                }
+                rays++;
+            }
+        }
+        assertTrue(blocked > rays / 10 && blocked < rays * 9 / 10, blocked + " of " + rays + " blocked");
+        assertEquals(0, ShapeSet.of(lights, randomScene(random, ShapeSet.LIGHT_BUFFER_MIN)).lightBufferCount(),
+                "fewer bounded shapes than the minimum (two of them are planes)");
+    }
+
+    @Test
     void bvhFindsTheSameHitAndObjectAsTheLinearLoopOnRandomScenes() {
         Random random = new Random(12);
         int hits = 0;

@@ -9,7 +9,7 @@ import java.util.function.Function;
 
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.memory.MemoryGate;
-import studio.engine.scene.LightBuffers;
+import studio.engine.scene.MeshLightBuffers;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 import studio.server.render.RenderMemory;
@@ -138,7 +138,7 @@ final class SceneReuse implements AutoCloseable {
             assembled.set(i, object);
         }
         CompiledScene before = last.compiled();
-        List<SceneObject> lit = LightBuffers.forRender(assembled, scene.lights(), before.settings().cameraSamples(), memory);
+        List<SceneObject> lit = MeshLightBuffers.forRender(assembled, scene.lights(), before.settings().cameraSamples(), memory);
         return new CompiledScene(new Scene(scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
                 before.settings(), before.format(), before.quality(), before.fileStem());
     }

@@ -8,7 +8,7 @@ import studio.engine.camera.Camera;
 import studio.engine.light.PointLight;
 import studio.engine.memory.MemoryGate;
 import studio.engine.render.RenderSettings;
-import studio.engine.scene.LightBuffers;
+import studio.engine.scene.MeshLightBuffers;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 import studio.server.scene.format.InvalidSceneException;
@@ -66,7 +66,7 @@ public final class SceneMapper {
         problems.throwIfAny();
 
         RenderSettings settings = render.settings(threads);
-        List<SceneObject> lit = LightBuffers.forRender(objects, lights, settings.cameraSamples(), memory);
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects, lights, settings.cameraSamples(), memory);
         Scene scene = new Scene(camera, lit, lights, Colors.linear(or(dto.background(), SceneDefaults.BACKGROUND)),
                 or(dto.ambient(), SceneDefaults.AMBIENT));
         return new CompiledScene(scene, settings, render.format(), render.quality(), SceneNames.toFileStem(dto.name()));

@@ -15,12 +15,12 @@ import studio.engine.memory.MemoryGate;
  * 0.84 of the time at 16 samples a pixel (800x600: 74 samples a triangle), but 0.98 and 1.04 in
  * two runs at one (4.6 a triangle), so about as long; it needs about twice that to be sure to pay.
  */
-public final class LightBuffers {
+public final class MeshLightBuffers {
 
     /** Camera samples a triangle needs for its mesh's buffers to pay. */
     public static final int SAMPLES_PER_TRIANGLE = 8;
 
-    private LightBuffers() {
+    private MeshLightBuffers() {
     }
 
     /**

@@ -25,7 +25,7 @@ import studio.engine.mesh.MeshShapes;
  * Light buffers answer every shadow ray exactly as the mesh's tree does (NUM-13), decide nearly all
  * rays aimed at their light themselves, and are made only where they can be.
  */
-class MeshLightBufferTest {
+class LightBufferTest {
 
     private static final double SHADOW_END = 1 - 1e-9; // as the integrator's shadow rays
 
@@ -49,7 +49,7 @@ class MeshLightBufferTest {
         int[] decided = new int[2];
         int rays = 0, blocked = 0;
         for (Vec3 light : LIGHTS) {
-            MeshLightBuffer buffer = buffer(lit, light);
+            LightBuffer buffer = buffer(lit, light);
             for (int i = 0; i < 20_000; i++) {
                 Vec3 from;
                 Hit surface = null;
@@ -91,7 +91,7 @@ class MeshLightBufferTest {
         TriangleMesh plain = knot();
         TriangleMesh lit = plain.withLightBuffers(LIGHTS, MemoryGate.UNLIMITED);
         Random random = new Random(14);
-        MeshLightBuffer[] buffers = LIGHTS.stream().map(light -> buffer(lit, light)).toArray(MeshLightBuffer[]::new);
+        LightBuffer[] buffers = LIGHTS.stream().map(light -> buffer(lit, light)).toArray(LightBuffer[]::new);
         int decided = 0;
         for (int i = 0; i < 40_000; i++) {
             Vec3 o = new Vec3(uniform(random, -3, 3.6), uniform(random, -1, 4.2), uniform(random, -3.2, 2.8));
@@ -137,7 +137,7 @@ class MeshLightBufferTest {
         Vec3 light = new Vec3(0.013, 4, -0.021);
         TriangleMesh lit = plain.withLightBuffers(List.of(light), MemoryGate.UNLIMITED);
         assertEquals(1, lit.lightBufferCount());
-        MeshLightBuffer buffer = buffer(lit, light);
+        LightBuffer buffer = buffer(lit, light);
         int rays = 0;
         for (int j = 0; j <= 4 * n; j++) {
             for (int i = 0; i <= 4 * n; i++) {
@@ -166,7 +166,7 @@ class MeshLightBufferTest {
         Vec3 light = new Vec3(0.1, 1, -0.2);
         TriangleMesh lit = plain.withLightBuffers(List.of(light), MemoryGate.UNLIMITED);
         assertEquals(1, lit.lightBufferCount());
-        MeshLightBuffer buffer = buffer(lit, light);
+        LightBuffer buffer = buffer(lit, light);
         int shadowed = 0, points = 0;
         for (int j = -20; j <= 20; j++) {
             for (int i = -20; i <= 20; i++) {
@@ -208,25 +208,25 @@ class MeshLightBufferTest {
     void theListsStayShortAndMakingThemAsksTheGateFirst() {
         TriangleMesh mesh = new TriangleMesh(MeshShapes.torusKnot(2, 3, 500, 100), Vec3.ZERO, 1, Vec3.ZERO);
         CountingGate gate = new CountingGate();
-        MeshLightBuffer[] made = new MeshLightBuffer[1];
+        LightBuffer[] made = new LightBuffer[1];
         double[] positions = mesh.positions();
         int[] indices = mesh.indices();
         Vec3 light = new Vec3(-3, 6, 4);
         long allocated = CountingGate.allocatedBy(
-                () -> made[0] = MeshLightBuffer.build(mesh, positions, indices, light, gate));
+                () -> made[0] = LightBuffer.ofTriangles(positions, indices, mesh.bounds(), light, mesh::occludedBy, gate));
         assertTrue(allocated <= gate.granted() + CountingGate.SLACK, allocated + " allocated, " + gate.granted() + " granted");
         assertTrue(made[0].entryCount() < 8 * mesh.triangleCount(), made[0].entryCount() + " entries");
         assertTrue(made[0].cellCount() > mesh.triangleCount() / 16, made[0].cellCount() + " cells");
         CountingGate stingy = new CountingGate(gate.granted() / 2);
-        assertThrows(CountingGate.Refused.class, () -> MeshLightBuffer.build(mesh, positions, indices, light, stingy));
+        assertThrows(CountingGate.Refused.class, () -> LightBuffer.ofTriangles(positions, indices, mesh.bounds(), light, mesh::occludedBy, stingy));
     }
 
-    private static MeshLightBuffer buffer(TriangleMesh mesh, Vec3 light) {
+    private static LightBuffer buffer(TriangleMesh mesh, Vec3 light) {
         return buffer(mesh, light, MemoryGate.UNLIMITED);
     }
 
-    private static MeshLightBuffer buffer(TriangleMesh mesh, Vec3 light, MemoryGate memory) {
-        return MeshLightBuffer.build(mesh, mesh.positions(), mesh.indices(), light, memory);
+    private static LightBuffer buffer(TriangleMesh mesh, Vec3 light, MemoryGate memory) {
+        return LightBuffer.ofTriangles(mesh.positions(), mesh.indices(), mesh.bounds(), light, mesh::occludedBy, memory);
     }
 
     /** A shadow ray as the integrator makes one: unit direction from {@code from} to the light. */
@@ -235,8 +235,9 @@ class MeshLightBufferTest {
         return new Ray(from.x(), from.y(), from.z(), d.x(), d.y(), d.z());
     }
 
-    private static int occludedByBuffer(MeshLightBuffer buffer, Ray ray, double tMax) {
-        RayShear f = ray.shear();
-        return buffer.occluded(ray, tMax, f.okx, f.oky, f.okz, f.kx, f.ky, f.kz, f.sx, f.sy, f.sz);
+    /** The buffer's answer: 1 blocked, 0 not, -1 left to the tree. */
+    private static int occludedByBuffer(LightBuffer buffer, Ray ray, double tMax) {
+        int occluder = buffer.occluder(ray, tMax);
+        return occluder == LightBuffer.UNDECIDED ? -1 : occluder >= 0 ? 1 : 0;
     }
 }

@@ -26,7 +26,7 @@ import studio.engine.render.Renderer;
 import studio.engine.sampler.JitteredSampler;
 
 /** Meshes get light buffers only where a render pays for them, and render the same pixels with them. */
-class LightBuffersTest {
+class MeshLightBuffersTest {
 
     private static final Material PLASTIC = MaterialDefaults.of(MaterialKind.PLASTIC, new Rgb(0.9, 0.6, 0.2));
     private static final Material GLASS = MaterialDefaults.of(MaterialKind.GLASS, null);
@@ -45,9 +45,9 @@ class LightBuffersTest {
     @Test
     void aMeshGetsBuffersOnlyWhenTheRenderHasEightCameraSamplesForEachOfItsTriangles() {
         List<SceneObject> objects = objects();
-        assertSame(objects, LightBuffers.forRender(objects, LIGHTS, 8 * 6_400 - 1, MemoryGate.UNLIMITED));
-        assertSame(objects, LightBuffers.forRender(objects, List.of(), 1 << 30, MemoryGate.UNLIMITED));
-        List<SceneObject> lit = LightBuffers.forRender(objects, LIGHTS, 8 * 6_400, MemoryGate.UNLIMITED);
+        assertSame(objects, MeshLightBuffers.forRender(objects, LIGHTS, 8 * 6_400 - 1, MemoryGate.UNLIMITED));
+        assertSame(objects, MeshLightBuffers.forRender(objects, List.of(), 1 << 30, MemoryGate.UNLIMITED));
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects, LIGHTS, 8 * 6_400, MemoryGate.UNLIMITED);
         assertEquals(2, ((TriangleMesh) lit.get(0).shape()).lightBufferCount(), "the third light is inside its box");
         assertSame(objects.get(0).material(), lit.get(0).material());
         assertSame(objects.get(1), lit.get(1));
@@ -59,7 +59,7 @@ class LightBuffersTest {
         Camera camera = new Camera(new Vec3(0, 3.2, 7.5), new Vec3(0, 1.4, 0), new Vec3(0, 1, 0), 40);
         RenderSettings settings = new RenderSettings(160, 120, new JitteredSampler(4), 6, 2);
         Film plain = Renderer.render(new Scene(camera, objects(), LIGHTS, new Rgb(0.1, 0.1, 0.12), 0.07), settings).film();
-        List<SceneObject> lit = LightBuffers.forRender(objects(), LIGHTS, settings.cameraSamples(), MemoryGate.UNLIMITED);
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects(), LIGHTS, settings.cameraSamples(), MemoryGate.UNLIMITED);
         assertTrue(((TriangleMesh) lit.get(0).shape()).lightBufferCount() > 0);
         Film buffered = Renderer.render(new Scene(camera, lit, LIGHTS, new Rgb(0.1, 0.1, 0.12), 0.07), settings).film();
         int differing = 0;
