@@ -31,14 +31,18 @@ import studio.engine.mesh.MeshData;
  * barycentric combination of the vertices, with pbrt's error bound gamma(7)*sum|b_i*p_i|, so
  * {@link Rays#spawn} offsets it like any other hit, along the triangle's own (geometric) normal,
  * which the hit carries beside the interpolated one. Zero-area triangles are dropped when the mesh
- * is made.
+ * is made. A shadow ray towards a light the mesh has a light buffer for ({@link #withLightBuffers})
+ * tests the few triangles in its direction instead of searching the tree.
  *
  * <p>Making a mesh takes memory in proportion to it (its world-space copies, the triangles' boxes
  * and the BVH build, about 280 bytes a triangle in all); it is asked of a {@link MemoryGate} first.
  */
 public final class TriangleMesh implements Shape {
 
+    /** Light buffers a mesh has at most: each costs memory and building time in proportion to the mesh. */
+    public static final int MAX_LIGHT_BUFFERS = 4;
     private static final double G2 = Fp.gamma(2), G3 = Fp.gamma(3), G5 = Fp.gamma(5), G7 = Fp.gamma(7);
+    private static final LightBuffer[] NO_BUFFERS = {};
 
     private final MeshData source;
     private final Vec3 position, rotationDegrees;
@@ -61,7 +65,7 @@ public final class TriangleMesh implements Shape {
     private final int bvhDepth;
     /** Whether the tree was built on the unplaced positions, so that a copy moved elsewhere may share it. */
     private final boolean movable;
-    /** The lights this mesh has light buffers for, and the buffers (null where a light has none); see {@link #withLightBuffers}. */
+    /** The lights this mesh was given light buffers for, and the buffers of those that can have one; see {@link #withLightBuffers}. */
     private final List<Vec3> bufferedLights;
     private final LightBuffer[] lightBuffers;
 
@@ -142,8 +146,6 @@ public final class TriangleMesh implements Shape {
         this.lightBuffers = NO_BUFFERS;
     }
 
-    private static final LightBuffer[] NO_BUFFERS = {};
-
     /** The mesh as it is, at the origin, unscaled and unrotated. */
     public TriangleMesh(MeshData mesh) {
         this(mesh, Vec3.ZERO, 1, Vec3.ZERO);
@@ -217,9 +219,6 @@ public final class TriangleMesh implements Shape {
         }
         return new TriangleMesh(this, lights, memory);
     }
-
-    /** Light buffers a mesh has at most: each costs memory and building time in proportion to the mesh. */
-    public static final int MAX_LIGHT_BUFFERS = 4;
 
     /** How many light buffers this mesh has. */
     public int lightBufferCount() {
