@@ -69,6 +69,13 @@ public final class ShapeSet {
 
     /** Scenes with at most this many shapes use the linear loop. */
     public static final int LINEAR_MAX = 4;
+    /**
+     * Scenes with fewer bounded shapes than this have no light buffers: their pixel lists and tree
+     * are cheap (the training scene's 76 get them; glass-pattern's 15 do not).
+     */
+    public static final int LIGHT_BUFFER_MIN = 64;
+    /** Light buffers a scene has at most: each costs building time and memory in proportion to it. */
+    public static final int MAX_LIGHT_BUFFERS = 4;
     /** {@link #apartMargin} as a fraction of the scene's largest coordinate. */
     static final double APART_MARGIN = 1e-7;
     /** {@link #orderByDistance}'s distances are shrunk by this factor: far more than their rounding (about 1e-15). */
@@ -182,11 +189,6 @@ public final class ShapeSet {
                     (slot, ray, tMax) -> occluded(leafShapes[slot], slot, ray, tMax), MemoryGate.UNLIMITED);
         }
     }
-
-    /** Scenes with fewer bounded shapes than this have no light buffers: their pixel lists and tree are cheap. */
-    public static final int LIGHT_BUFFER_MIN = 64;
-    /** Light buffers a scene has at most. */
-    public static final int MAX_LIGHT_BUFFERS = 4;
 
     /** The shapes, searched linearly or through a BVH depending on their number. */
     public static ShapeSet of(Shape... shapes) {
