@@ -30,8 +30,9 @@ import studio.engine.memory.MemoryGate;
  * ray aimed at the light projects to a point, so one cell (up to four at a corner); a ray whose
  * piece covers more than {@value #MAX_QUERY_CELLS} cells is left to the tree.
  *
- * <p>Building reads every primitive a few times; it asks a {@link MemoryGate} first and gives up
- * (no buffer) where the lists would hold more than {@value #MAX_ENTRIES_PER_PRIMITIVE} entries a
+ * <p>Building reads every primitive a few times; it asks a {@link MemoryGate} first for memory the
+ * render can do without ({@link MemoryGate#tryReserve}) and gives up (no buffer) where that is not
+ * free, or where the lists would hold more than {@value #MAX_ENTRIES_PER_PRIMITIVE} entries a
  * primitive. The peer benchmark's 104,000-triangle knot: about 25,000 cells and 4 entries a
  * triangle per light, built in 11-15 ms warm (25 ms on C1 alone).
  */
@@ -191,7 +192,10 @@ public final class LightBuffer {
             return null;
         }
         int count = indices.length / 3, vertices = p.length / 3, ua = f.uAxis(), va = f.vAxis();
-        memory.reserve(2 * MemoryGate.doubles(vertices) + MemoryGate.doubles(4L * count) + MemoryGate.floats(count));
+        if (!memory.tryReserve(2 * MemoryGate.doubles(vertices) + MemoryGate.doubles(4L * count)
+                + MemoryGate.floats(count))) {
+            return null;
+        }
         double[] pu = new double[vertices], pv = new double[vertices];
         for (int i = 0, o = 0; i < vertices; i++, o += 3) {
             double z = f.z(p, o);
@@ -227,7 +231,9 @@ public final class LightBuffer {
         if (f == null) {
             return null;
         }
-        memory.reserve(MemoryGate.doubles(4L * count) + MemoryGate.floats(count));
+        if (!memory.tryReserve(MemoryGate.doubles(4L * count) + MemoryGate.floats(count))) {
+            return null;
+        }
         int ua = f.uAxis(), va = f.vAxis(), depth = f.depth;
         double[] rects = new double[4 * count];
         float[] near = new float[count];
@@ -279,7 +285,9 @@ public final class LightBuffer {
         }
         int cells = nu * nv;
         double perU = nu / spanU, perV = nv / spanV;
-        memory.reserve(MemoryGate.ints(4L * count) + MemoryGate.ints(cells + 1L));
+        if (!memory.tryReserve(MemoryGate.ints(4L * count) + MemoryGate.ints(cells + 1L))) {
+            return null;
+        }
 
         // each primitive's cells (i0, i1, j0, j1) and the lists' lengths
         int[] range = new int[4 * count];
@@ -307,8 +315,10 @@ public final class LightBuffer {
         for (int cell = 0; cell < cells; cell++) {
             cellStart[cell + 1] += cellStart[cell];
         }
-        memory.reserve(MemoryGate.ints(entries) + MemoryGate.floats(entries) + MemoryGate.ints(cells)
-                + 2 * MemoryGate.ints(count + 1L));
+        if (!memory.tryReserve(MemoryGate.ints(entries) + MemoryGate.floats(entries) + MemoryGate.ints(cells)
+                + 2 * MemoryGate.ints(count + 1L))) {
+            return null;
+        }
         int[] listed = new int[(int) entries];
         float[] near = new float[(int) entries];
         // the primitives in about the order of their bounds (a counting sort on a grid of them), so

@@ -20,6 +20,17 @@ public interface MemoryGate {
     /** Asks for {@code bytes} more before they are allocated; throws to refuse. */
     void reserve(long bytes);
 
+    /**
+     * Asks for {@code bytes} more that the work can do without (a speed-up's arrays, such as a
+     * mesh's light buffers): true if granted; false, granting nothing, where {@link #reserve} would
+     * refuse or wait, so the work goes on without them. By default through {@link #reserve}, which
+     * suits a gate that grants everything.
+     */
+    default boolean tryReserve(long bytes) {
+        reserve(bytes);
+        return true;
+    }
+
     /** The heap an array of {@code length} doubles takes (a 16-byte header and the elements). */
     static long doubles(long length) {
         return 16 + 8 * length;

@@ -34,6 +34,18 @@ public final class CountingGate implements MemoryGate {
         granted += bytes;
     }
 
+    @Override
+    public boolean tryReserve(long bytes) {
+        if (bytes < 0) {
+            throw new IllegalArgumentException("asked for a negative amount: " + bytes);
+        }
+        if (bytes > limit - granted) {
+            return false;
+        }
+        granted += bytes;
+        return true;
+    }
+
     public long granted() {
         return granted;
     }

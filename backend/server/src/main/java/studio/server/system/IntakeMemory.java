@@ -55,6 +55,12 @@ public final class IntakeMemory implements MemoryGate, AutoCloseable {
         request.setAttribute(ATTRIBUTE, this);
     }
 
+    /** Grants {@code bytes} the work can do without only if they are free now: no waiting, no refusal. */
+    @Override
+    public boolean tryReserve(long bytes) {
+        return reservation == null || reservation.tryGrow(bytes);
+    }
+
     /** Reserves what {@code length} more bytes of the body will take once read and parsed. */
     public void bodyArrived(byte[] buffer, int offset, int length) {
         reserve(BodyMemory.of(buffer, offset, length));

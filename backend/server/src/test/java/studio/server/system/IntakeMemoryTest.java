@@ -76,6 +76,23 @@ class IntakeMemoryTest {
     }
 
     @Test
+    void memoryAWorkCanDoWithoutIsGrantedOnlyWhenFreeWithoutWaitingOrRefusing() {
+        MemoryBudget budget = new MemoryBudget(1000);
+        MemoryBudget.Reservation other = budget.tryReserve(900);
+        IntakeMemory intake = IntakeMemory.of(budget);
+        long started = System.nanoTime();
+
+        assertThat(intake.tryReserve(200)).isFalse();
+        assertThat((System.nanoTime() - started) / 1e9).as("seconds waited").isLessThan(IntakeMemory.WAIT.toSeconds() / 2.0);
+        assertThat(budget.reserved()).isEqualTo(900);
+        assertThat(intake.tryReserve(60)).isTrue();
+        assertThat(budget.reserved()).isEqualTo(960);
+        intake.close();
+        other.close();
+        assertThat(budget.reserved()).isZero();
+    }
+
+    @Test
     void theCompilesShareGoesToTheRenderInOneStepAndTheBodysStaysTillTheEnd() {
         MemoryBudget budget = new MemoryBudget(1000);
         IntakeMemory intake = IntakeMemory.of(budget);

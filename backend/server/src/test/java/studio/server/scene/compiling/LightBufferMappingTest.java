@@ -54,4 +54,20 @@ class LightBufferMappingTest {
                 .isZero();
         assertThat(lit[0]).as("with the buffers' memory").isGreaterThan(plain[0] + 2 * 3_840 * 8);
     }
+
+    @Test
+    void aMeshWhoseBuffersTheMemoryCannotSpareRendersWithout() throws Exception {
+        MemoryGate busy = new MemoryGate() {
+            @Override
+            public void reserve(long bytes) {
+                // the mesh itself is granted
+            }
+
+            @Override
+            public boolean tryReserve(long bytes) {
+                return false; // nothing to spare for a speed-up
+            }
+        };
+        assertThat(((TriangleMesh) map(160, 96, 2, busy).scene().shape(0)).lightBufferCount()).isZero();
+    }
 }
