@@ -36,6 +36,17 @@ public record Aabb(double minX, double minY, double minZ, double maxX, double ma
                 Math.nextUp(maxX + px), Math.nextUp(maxY + py), Math.nextUp(maxZ + pz));
     }
 
+    /**
+     * The distance from (x, y, z) to the box stored at {@code boxes[o .. o+5]} (min x, y, z, max
+     * x, y, z), 0 inside it: rounded, so callers that need a bound below it shrink it.
+     */
+    public static double distance(double[] boxes, int o, double x, double y, double z) {
+        double dx = Math.max(0, Math.max(boxes[o] - x, x - boxes[o + 3]));
+        double dy = Math.max(0, Math.max(boxes[o + 1] - y, y - boxes[o + 4]));
+        double dz = Math.max(0, Math.max(boxes[o + 2] - z, z - boxes[o + 5]));
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
     /** Writes minX, minY, minZ, maxX, maxY, maxZ into {@code out} at {@code offset}. */
     public void copyTo(double[] out, int offset) {
         out[offset] = minX;

@@ -38,7 +38,7 @@ import studio.engine.memory.MemoryGate;
  */
 public final class LightBuffer {
 
-    /** Whether primitive {@code item} lies on the ray with 0 &lt; t &lt; tMax: the test the buffer's owner makes of it. */
+    /** Whether primitive {@code item} lies on the ray with 0 &lt; t &lt; tMax: its owner's test of it. */
     @FunctionalInterface
     public interface Primitives {
         boolean occludes(int item, Ray ray, double tMax);
@@ -69,6 +69,8 @@ public final class LightBuffer {
     static final int MAX_QUERY_CELLS = 4;
     /** Beyond this many list entries a primitive (plus one a cell) the buffer is not built. */
     static final int MAX_ENTRIES_PER_PRIMITIVE = 16;
+    /** Lights a mesh or a scene keeps buffers for at most: each buffer costs building time and memory. */
+    public static final int MAX_LIGHTS = 4;
     private static final int MAX_CELLS = 1 << 22, MAX_SIDE = 4096;
 
     private final Primitives primitives;
@@ -153,7 +155,8 @@ public final class LightBuffer {
         }
     }
 
-    private LightBuffer(Frame f, Primitives primitives, int nu, int nv, int[] cellStart, int[] listed, float[] nearest) {
+    private LightBuffer(Frame f, Primitives primitives, int nu, int nv, int[] cellStart, int[] listed,
+                        float[] nearest) {
         this.primitives = primitives;
         this.lx = f.l[0];
         this.ly = f.l[1];
@@ -373,13 +376,7 @@ public final class LightBuffer {
      * shrunk by a millionth and rounded down to a float.
      */
     private static float nearestBound(double[] box, int o, double[] l) {
-        double sum = 0;
-        for (int k = 0; k < 3; k++) {
-            double min = box[o + k], max = box[o + k + 3];
-            double d = l[k] < min ? min - l[k] : l[k] > max ? l[k] - max : 0;
-            sum += d * d;
-        }
-        float bound = (float) (Math.sqrt(sum) * (1 - 1e-6));
+        float bound = (float) (Aabb.distance(box, o, l[0], l[1], l[2]) * (1 - 1e-6));
         return bound > 0 ? Math.nextDown(bound) : 0;
     }
 
@@ -456,8 +453,10 @@ public final class LightBuffer {
         }
         double ua = pick(uAxis, ax, ay, az) / za, va = pick(vAxis, ax, ay, az) / za;
         double ub = pick(uAxis, bx, by, bz) / zb, vb = pick(vAxis, bx, by, bz) / zb;
-        double iLow = (Math.min(ua, ub) - UV_MARGIN - u0) * cellsPerU, iHigh = (Math.max(ua, ub) + UV_MARGIN - u0) * cellsPerU;
-        double jLow = (Math.min(va, vb) - UV_MARGIN - v0) * cellsPerV, jHigh = (Math.max(va, vb) + UV_MARGIN - v0) * cellsPerV;
+        double iLow = (Math.min(ua, ub) - UV_MARGIN - u0) * cellsPerU;
+        double iHigh = (Math.max(ua, ub) + UV_MARGIN - u0) * cellsPerU;
+        double jLow = (Math.min(va, vb) - UV_MARGIN - v0) * cellsPerV;
+        double jHigh = (Math.max(va, vb) + UV_MARGIN - v0) * cellsPerV;
         if (iHigh < 0 || jHigh < 0 || iLow >= nu || jLow >= nv) {
             return NONE; // outside every primitive's rectangle
         }

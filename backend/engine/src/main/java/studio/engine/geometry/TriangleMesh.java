@@ -39,8 +39,6 @@ import studio.engine.mesh.MeshData;
  */
 public final class TriangleMesh implements Shape {
 
-    /** Light buffers a mesh has at most: each costs memory and building time in proportion to the mesh. */
-    public static final int MAX_LIGHT_BUFFERS = 4;
     private static final double G2 = Fp.gamma(2), G3 = Fp.gamma(3), G5 = Fp.gamma(5), G7 = Fp.gamma(7);
     private static final LightBuffer[] NO_BUFFERS = {};
 
@@ -65,7 +63,7 @@ public final class TriangleMesh implements Shape {
     private final int bvhDepth;
     /** Whether the tree was built on the unplaced positions, so that a copy moved elsewhere may share it. */
     private final boolean movable;
-    /** The lights this mesh was given light buffers for, and the buffers of those that can have one; see {@link #withLightBuffers}. */
+    /** The lights this mesh was given buffers for, and the buffers of those that can have one ({@link #withLightBuffers}). */
     private final List<Vec3> bufferedLights;
     private final LightBuffer[] lightBuffers;
 
@@ -151,8 +149,13 @@ public final class TriangleMesh implements Shape {
         this(mesh, Vec3.ZERO, 1, Vec3.ZERO);
     }
 
-    /** A copy of {@code from} moved to {@code position}, sharing its triangles and tree; its boxes fitted anew. */
-    private TriangleMesh(TriangleMesh from, Vec3 position, double[] positions) {
+    /**
+     * A copy of {@code from} sharing its triangles and tree, at {@code position} with these world
+     * positions and boxes, and these light buffers: a moved copy ({@link #movedTo}) or one with
+     * buffers ({@link #withLightBuffers}).
+     */
+    private TriangleMesh(TriangleMesh from, Vec3 position, double[] positions, double[] nodeBounds, long buildNanos,
+                         List<Vec3> bufferedLights, LightBuffer[] lightBuffers) {
         this.source = from.source;
         this.position = position;
         this.scale = from.scale;
@@ -163,52 +166,22 @@ public final class TriangleMesh implements Shape {
         this.indices = from.indices;
         this.nodeLinks = from.nodeLinks;
         this.nodeCount = from.nodeCount;
-        this.nodeBounds = fitted(positions, indices, nodeLinks, nodeCount);
+        this.nodeBounds = nodeBounds;
         this.bounds = rootBounds(nodeBounds);
-        this.buildNanos = 0;
-        this.bvhDepth = from.bvhDepth;
-        this.movable = true;
-        this.bufferedLights = List.of();
-        this.lightBuffers = NO_BUFFERS;
-    }
-
-    /** A copy of {@code from} with light buffers: the same triangles, tree and boxes. */
-    private TriangleMesh(TriangleMesh from, List<Vec3> lights, MemoryGate memory) {
-        this.source = from.source;
-        this.position = from.position;
-        this.scale = from.scale;
-        this.rotationDegrees = from.rotationDegrees;
-        this.unplaced = from.unplaced;
-        this.positions = from.positions;
-        this.normals = from.normals;
-        this.indices = from.indices;
-        this.nodeLinks = from.nodeLinks;
-        this.nodeCount = from.nodeCount;
-        this.nodeBounds = from.nodeBounds;
-        this.bounds = from.bounds;
-        this.buildNanos = from.buildNanos;
+        this.buildNanos = buildNanos;
         this.bvhDepth = from.bvhDepth;
         this.movable = from.movable;
-        this.bufferedLights = List.copyOf(lights);
-        int n = Math.min(lights.size(), MAX_LIGHT_BUFFERS);
-        LightBuffer[] buffers = new LightBuffer[n];
-        LightBuffer.Primitives triangles = this::occludedBy;
-        int built = 0;
-        for (int i = 0; i < n; i++) {
-            LightBuffer buffer = LightBuffer.ofTriangles(positions, indices, bounds, lights.get(i), triangles, memory);
-            if (buffer != null) {
-                buffers[built++] = buffer;
-            }
-        }
-        this.lightBuffers = Arrays.copyOf(buffers, built);
+        this.bufferedLights = bufferedLights;
+        this.lightBuffers = lightBuffers;
     }
 
     /**
      * This mesh with a light buffer ({@link LightBuffer}) for each of the first
-     * {@value #MAX_LIGHT_BUFFERS} of these point lights that can have one (its box clear of the
+     * {@value LightBuffer#MAX_LIGHTS} of these point lights that can have one (its box clear of the
      * light on one side): a shadow ray that ends at such a light tests the few triangles in its
      * direction instead of searching the tree, with the same answer. The peer benchmark's mesh
-     * rendered in 0.67 of the time warm, and whole processes in 0.85 at 16 samples; which renders
+     * rendered in about 0.7 of the time warm (1.26 s against 1.75-1.76), and whole processes in
+     * 0.84 at 16 samples; which renders
      * pay for the building is {@code MeshLightBuffers}' rule. Itself if it already has buffers for
      * exactly these lights; each buffer keeps some 35 bytes a triangle (and takes about 70 more
      * while it is built), asked of {@code memory} first. A moved copy ({@link #movedTo}) has none.
@@ -217,7 +190,18 @@ public final class TriangleMesh implements Shape {
         if (lights.equals(bufferedLights)) {
             return this;
         }
-        return new TriangleMesh(this, lights, memory);
+        int n = Math.min(lights.size(), LightBuffer.MAX_LIGHTS);
+        LightBuffer[] buffers = new LightBuffer[n];
+        int built = 0;
+        for (int i = 0; i < n; i++) {
+            LightBuffer buffer = LightBuffer.ofTriangles(positions, indices, bounds, lights.get(i), this::occludedBy,
+                    memory);
+            if (buffer != null) {
+                buffers[built++] = buffer;
+            }
+        }
+        return new TriangleMesh(this, position, positions, nodeBounds, buildNanos, List.copyOf(lights),
+                Arrays.copyOf(buffers, built));
     }
 
     /** How many light buffers this mesh has. */
@@ -243,7 +227,8 @@ public final class TriangleMesh implements Shape {
         if (!haveArea(indices, world)) {
             return new TriangleMesh(source, position, scale, rotationDegrees, memory);
         }
-        return new TriangleMesh(this, position, world);
+        return new TriangleMesh(this, position, world, fitted(world, indices, nodeLinks, nodeCount), 0, List.of(),
+                NO_BUFFERS);
     }
 
     /** The positions rotated and scaled, not yet moved. */

@@ -60,7 +60,7 @@ import studio.engine.memory.MemoryGate;
  * ({@link #occluderAmong}); see {@code PixelCandidates}.
  *
  * <p>Made with the scene's lights, a set of at least {@value #LIGHT_BUFFER_MIN} bounded shapes
- * keeps a {@link LightBuffer} over its tree's slots for each of up to {@value #MAX_LIGHT_BUFFERS}
+ * keeps a {@link LightBuffer} over its tree's slots for each of up to {@value LightBuffer#MAX_LIGHTS}
  * of them: a shadow ray towards such a light ({@link #occluderTowards}) tests the planes, then the
  * few shapes listed in its direction, nearest the light first, and searches the tree only when the
  * buffer leaves the ray to it (8,000 spheres over a floor: 0.68 of the time warm).
@@ -74,8 +74,6 @@ public final class ShapeSet {
      * are cheap (the training scene's 76 get them; glass-pattern's 15 do not).
      */
     public static final int LIGHT_BUFFER_MIN = 64;
-    /** Light buffers a scene has at most: each costs building time and memory in proportion to it. */
-    public static final int MAX_LIGHT_BUFFERS = 4;
     /** {@link #apartMargin} as a fraction of the scene's largest coordinate. */
     static final double APART_MARGIN = 1e-7;
     /** {@link #orderByDistance}'s distances are shrunk by this factor: far more than their rounding (about 1e-15). */
@@ -182,11 +180,13 @@ public final class ShapeSet {
         magnitude = largest;
         slotApart = new byte[boundedCount];
         apartMargin = Math.max(APART_MARGIN * largest, Double.MIN_NORMAL);
-        lightBuffers = new LightBuffer[boundedCount >= LIGHT_BUFFER_MIN ? Math.min(lights.size(), MAX_LIGHT_BUFFERS) : 0];
+        int buffered = boundedCount >= LIGHT_BUFFER_MIN ? Math.min(lights.size(), LightBuffer.MAX_LIGHTS) : 0;
+        lightBuffers = new LightBuffer[buffered];
         Aabb root = new Aabb(nodeBounds[0], nodeBounds[1], nodeBounds[2], nodeBounds[3], nodeBounds[4], nodeBounds[5]);
+        LightBuffer.Primitives slots = (slot, ray, tMax) -> occluded(leafShapes[slot], slot, ray, tMax);
         for (int i = 0; i < lightBuffers.length; i++) {
-            lightBuffers[i] = LightBuffer.ofBoxes(slotBoxes, boundedCount, root, lights.get(i),
-                    (slot, ray, tMax) -> occluded(leafShapes[slot], slot, ray, tMax), MemoryGate.UNLIMITED);
+            lightBuffers[i] = LightBuffer.ofBoxes(slotBoxes, boundedCount, root, lights.get(i), slots,
+                    MemoryGate.UNLIMITED);
         }
     }
 
@@ -197,7 +197,7 @@ public final class ShapeSet {
 
     /**
      * The shapes, with a light buffer ({@link LightBuffer}) over the tree for each of the first
-     * {@value #MAX_LIGHT_BUFFERS} of these lights that can have one, in scenes of at least
+     * {@value LightBuffer#MAX_LIGHTS} of these lights that can have one, in scenes of at least
      * {@value #LIGHT_BUFFER_MIN} bounded shapes: {@link #occluderTowards} then asks it.
      */
     public static ShapeSet of(List<Vec3> lights, Shape... shapes) {
@@ -350,15 +350,7 @@ public final class ShapeSet {
     public void orderByDistance(int[] ids, int count, double px, double py, double pz, double[] near) {
         for (int k = 0; k < count; k++) {
             int id = ids[k], slot = slotOfShape[id];
-            double d = 0;
-            if (slot >= 0) {
-                double[] b = slotBoxes;
-                int o = 6 * slot;
-                double dx = Math.max(0, Math.max(b[o] - px, px - b[o + 3]));
-                double dy = Math.max(0, Math.max(b[o + 1] - py, py - b[o + 4]));
-                double dz = Math.max(0, Math.max(b[o + 2] - pz, pz - b[o + 5]));
-                d = Math.sqrt(dx * dx + dy * dy + dz * dz) * NEAR_SHRINK;
-            }
+            double d = slot >= 0 ? Aabb.distance(slotBoxes, 6 * slot, px, py, pz) * NEAR_SHRINK : 0;
             int j = k - 1;
             while (j >= 0 && near[j] > d) {
                 near[j + 1] = near[j];

@@ -198,7 +198,7 @@ class LightBufferTest {
         TriangleMesh lit = knot().withLightBuffers(LIGHTS, MemoryGate.UNLIMITED);
         assertSame(lit, lit.withLightBuffers(List.copyOf(LIGHTS), MemoryGate.UNLIMITED));
         assertEquals(0, lit.movedTo(new Vec3(1, 2, 3), MemoryGate.UNLIMITED).lightBufferCount());
-        assertEquals(TriangleMesh.MAX_LIGHT_BUFFERS, knot().withLightBuffers(
+        assertEquals(LightBuffer.MAX_LIGHTS, knot().withLightBuffers(
                 List.of(new Vec3(-3, 6, 4), new Vec3(5, 4, -2), new Vec3(0, 9, 0), new Vec3(9, 0, 0), new Vec3(0, 0, 9)),
                 MemoryGate.UNLIMITED).lightBufferCount());
     }
