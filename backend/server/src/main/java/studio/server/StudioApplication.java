@@ -6,10 +6,13 @@ import org.springframework.boot.SpringApplication;
 import org.springframework.boot.autoconfigure.SpringBootApplication;
 
 import studio.server.cli.RenderCommand;
+import studio.server.cli.TrainCommand;
 
 /**
  * The studio: {@code java -jar studio.jar} starts the service and the editor on port 8080;
- * {@code java -jar studio.jar render SCENE.json -o OUT.png} renders a file without starting it.
+ * {@code java -jar studio.jar render SCENE.json -o OUT.png} renders a file without starting it;
+ * {@code java -jar studio.jar train SCENE.json...} renders files and keeps nothing (bin/studio's
+ * training run, see {@link TrainCommand}).
  * The benchmarks are not part of the service: they are in {@code backend/bench} ({@code studio-bench.jar}).
  */
 @SpringBootApplication
@@ -22,6 +25,10 @@ public class StudioApplication {
         if (args.length > 0 && args[0].equals("render")) {
             quietCommandLineLogging();
             System.exit(RenderCommand.run(Arrays.copyOfRange(args, 1, args.length), System.out, System.err));
+        }
+        if (args.length > 0 && args[0].equals("train")) {
+            quietCommandLineLogging();
+            System.exit(TrainCommand.run(Arrays.copyOfRange(args, 1, args.length), System.out, System.err));
         }
         SpringApplication.run(StudioApplication.class, args);
     }

@@ -18,6 +18,8 @@ import org.junit.jupiter.api.io.TempDir;
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.material.MaterialKind;
 import studio.engine.scene.Scene;
+import studio.engine.scene.ShapeSet;
+import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.MeshFiles;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.reading.LazyValidation;
@@ -30,6 +32,8 @@ class StudioLauncherTest {
 
     private static final Path LAUNCHER = Path.of("../../bin/studio").toAbsolutePath().normalize();
     private static final String QUICK_COMPILER = "-XX:TieredStopAtLevel=1";
+    /** The fewest objects for which the engine lists pixel candidates (its PixelCandidates.MIN_OBJECTS). */
+    private static final int PIXEL_LISTS_MIN = 8;
 
     @TempDir
     Path dir;
@@ -110,30 +114,69 @@ class StudioLauncherTest {
     }
 
     /**
-     * The training run renders bin/training-scene.json at 16 samples, a valid scene with 64 objects
-     * or more (pixel candidates, in lists of up to 6), glass and a mesh from its file among them, so
-     * the cache's profiles cover those paths.
+     * The training run renders bin/training/'s scenes in one JVM ({@code studio.jar train}), each a
+     * valid scene at 16 samples, one of each kind the engine treats apart, so the cache's profiles
+     * cover every kind's paths: a crowd of 64 objects or more (light buffers, pixel lists) with
+     * glass and a mesh among them, a still life that searches its tree without lists, glass among
+     * enough objects for lists, and a mesh searched one object after the other.
      */
     @Test
-    void theTrainingRunRendersAValidSceneWithGlassAMeshAndEnoughObjectsForPixelCandidates() throws Exception {
+    void theTrainingRunRendersOneSceneOfEachKind() throws Exception {
         List<String> calls = calls("render", "s.json");
         String training = calls.stream().filter(c -> c.contains("-XX:AOTCacheOutput=")).findFirst().orElseThrow();
-        Path scene = LAUNCHER.getParent().resolve("training-scene.json");
-        assertThat(training).contains(" render " + scene + " ", "--samples 16");
-
-        try (LazyValidation validation = new LazyValidation()) {
-            Scene compiled = SceneCompiler.standalone(validation, MeshFiles.in(scene.getParent()))
-                    .compile(Files.readAllBytes(scene)).scene();
-            assertThat(compiled.objectCount()).isGreaterThanOrEqualTo(64);
-            assertThat(compiled.searchesBvh()).isTrue();
-            boolean glass = false, mesh = false;
-            for (int i = 0; i < compiled.objectCount(); i++) {
-                glass |= compiled.material(i).kind() == MaterialKind.GLASS;
-                mesh |= compiled.shape(i) instanceof TriangleMesh;
-            }
-            assertThat(glass).as("glass among the objects").isTrue();
-            assertThat(mesh).as("a mesh among the objects").isTrue();
+        Path scenes = LAUNCHER.getParent().resolve("training");
+        List<String> names = List.of("crowd", "still-life", "glass", "knot");
+        StringBuilder files = new StringBuilder(" train");
+        for (String name : names) {
+            files.append(' ').append(scenes.resolve(name + ".json"));
         }
+        assertThat(training).endsWith(files.toString());
+
+        Scene crowd = compile(scenes.resolve("crowd.json"));
+        assertThat(crowd.objectCount()).isGreaterThanOrEqualTo(ShapeSet.LIGHT_BUFFER_MIN);
+        assertThat(has(crowd, MaterialKind.GLASS)).as("glass in the crowd").isTrue();
+        assertThat(hasMesh(crowd)).as("a mesh in the crowd").isTrue();
+
+        Scene stillLife = compile(scenes.resolve("still-life.json"));
+        assertThat(stillLife.searchesBvh()).isTrue();
+        assertThat(stillLife.objectCount()).isLessThan(PIXEL_LISTS_MIN);
+
+        Scene glass = compile(scenes.resolve("glass.json"));
+        assertThat(has(glass, MaterialKind.GLASS)).as("glass").isTrue();
+        assertThat(glass.objectCount()).isBetween(PIXEL_LISTS_MIN, ShapeSet.LIGHT_BUFFER_MIN - 1);
+
+        Scene knot = compile(scenes.resolve("knot.json"));
+        assertThat(knot.searchesBvh()).as("searched one object after the other").isFalse();
+        assertThat(hasMesh(knot)).isTrue();
+    }
+
+    private static Scene compile(Path scene) throws IOException {
+        try (LazyValidation validation = new LazyValidation()) {
+            CompiledScene compiled = SceneCompiler.standalone(validation, MeshFiles.in(scene.getParent()))
+                    .compile(Files.readAllBytes(scene));
+            assertThat(compiled.settings().sampler().samplesPerPixel()).as(scene + "'s samples").isEqualTo(16);
+            assertThat(compiled.settings().width() * compiled.settings().height()).as(scene + "'s size")
+                    .isEqualTo(160 * 120);
+            return compiled.scene();
+        }
+    }
+
+    private static boolean has(Scene scene, MaterialKind kind) {
+        for (int i = 0; i < scene.objectCount(); i++) {
+            if (scene.material(i).kind() == kind) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static boolean hasMesh(Scene scene) {
+        for (int i = 0; i < scene.objectCount(); i++) {
+            if (scene.shape(i) instanceof TriangleMesh) {
+                return true;
+            }
+        }
+        return false;
     }
 
     @Test
