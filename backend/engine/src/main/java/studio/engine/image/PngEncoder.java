@@ -103,7 +103,7 @@ final class PngEncoder {
         int at = y * (1 + n);
         filtered[at++] = (byte) filter;
         for (int from = 0; from < n; from += RUN_BYTES) {
-            filter(filter, row, above, from, Math.min(n, from + RUN_BYTES), filtered, at);
+            applyFilter(filter, row, above, from, Math.min(n, from + RUN_BYTES), filtered, at);
         }
     }
 
@@ -127,7 +127,7 @@ final class PngEncoder {
     }
 
     /** Bytes [from, to) of a row through the filter, into out from {@code at + from}. */
-    private static void filter(int filter, byte[] row, byte[] above, int from, int to, byte[] out, int at) {
+    private static void applyFilter(int filter, byte[] row, byte[] above, int from, int to, byte[] out, int at) {
         for (int i = from; i < to; i++) {
             int x = row[i] & 0xff, a = i >= 3 ? row[i - 3] & 0xff : 0, b = above[i] & 0xff;
             out[at + i] = (byte) switch (filter) {
