@@ -89,7 +89,7 @@ public final class LightBuffer {
     private final float[] nearest;
 
     /** How the box is seen from the light: null where it is not clear on one side of it. */
-    private record Frame(double[] l, double[] lo, double[] hi, int depth, double side, double uMin, double vMin,
+    private record Frame(double[] l, double[] box, int depth, double side, double uMin, double vMin,
                          double uMax, double vMax) {
 
         int uAxis() {
@@ -136,23 +136,39 @@ public final class LightBuffer {
             if (depth < 0) {
                 return null;
             }
-            int ua = (depth + 1) % 3, va = (depth + 2) % 3;
-            double uMin = Double.POSITIVE_INFINITY, uMax = Double.NEGATIVE_INFINITY, vMin = uMin, vMax = uMax;
-            for (int corner = 0; corner < 8; corner++) {
-                double z = side * (((corner & 4) == 0 ? lo[depth] : hi[depth]) - l[depth]);
-                double u = (((corner & 1) == 0 ? lo[ua] : hi[ua]) - l[ua]) / z;
-                double v = (((corner & 2) == 0 ? lo[va] : hi[va]) - l[va]) / z;
-                uMin = Math.min(uMin, u);
-                uMax = Math.max(uMax, u);
-                vMin = Math.min(vMin, v);
-                vMax = Math.max(vMax, v);
-            }
+            double[] box = {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
+            double[] rect = new double[4];
+            projectBox(box, 0, l, depth, side, rect, 0);
+            double uMin = rect[0], uMax = rect[1], vMin = rect[2], vMax = rect[3];
             if (!(Math.max(Math.max(-uMin, uMax), Math.max(-vMin, vMax)) <= MAX_SLOPE)) {
                 return null;
             }
-            return new Frame(l, lo, hi, depth, side, uMin - UV_MARGIN, vMin - UV_MARGIN, uMax + UV_MARGIN,
+            return new Frame(l, box, depth, side, uMin - UV_MARGIN, vMin - UV_MARGIN, uMax + UV_MARGIN,
                     vMax + UV_MARGIN);
         }
+    }
+
+    /**
+     * The rectangle (uMin, uMax, vMin, vMax) of the eight corners of the box at {@code box[o ..]}
+     * (min x, y, z, max x, y, z), projected from the light at l along axis {@code depth} on side
+     * {@code side}, into {@code rect[at ..]}.
+     */
+    private static void projectBox(double[] box, int o, double[] l, int depth, double side, double[] rect, int at) {
+        int ua = (depth + 1) % 3, va = (depth + 2) % 3;
+        double uMin = Double.POSITIVE_INFINITY, uMax = Double.NEGATIVE_INFINITY, vMin = uMin, vMax = uMax;
+        for (int c = 0; c < 8; c++) {
+            double z = side * (box[o + depth + ((c & 4) == 0 ? 0 : 3)] - l[depth]);
+            double u = (box[o + ua + ((c & 1) == 0 ? 0 : 3)] - l[ua]) / z;
+            double v = (box[o + va + ((c & 2) == 0 ? 0 : 3)] - l[va]) / z;
+            uMin = Math.min(uMin, u);
+            uMax = Math.max(uMax, u);
+            vMin = Math.min(vMin, v);
+            vMax = Math.max(vMax, v);
+        }
+        rect[at] = uMin;
+        rect[at + 1] = uMax;
+        rect[at + 2] = vMin;
+        rect[at + 3] = vMax;
     }
 
     private LightBuffer(Frame f, Primitives primitives, int nu, int nv, int[] cellStart, int[] listed,
@@ -165,12 +181,12 @@ public final class LightBuffer {
         this.uAxis = f.uAxis();
         this.vAxis = f.vAxis();
         this.side = f.side;
-        this.x0 = f.lo[0];
-        this.y0 = f.lo[1];
-        this.z0 = f.lo[2];
-        this.x1 = f.hi[0];
-        this.y1 = f.hi[1];
-        this.z1 = f.hi[2];
+        this.x0 = f.box[0];
+        this.y0 = f.box[1];
+        this.z0 = f.box[2];
+        this.x1 = f.box[3];
+        this.y1 = f.box[4];
+        this.z1 = f.box[5];
         this.u0 = f.uMin;
         this.v0 = f.vMin;
         this.cellsPerU = nu / (f.uMax - f.uMin);
@@ -237,29 +253,11 @@ public final class LightBuffer {
         if (!memory.tryReserve(MemoryGate.doubles(4L * count) + MemoryGate.floats(count))) {
             return null;
         }
-        int ua = f.uAxis(), va = f.vAxis(), depth = f.depth;
         double[] rects = new double[4 * count];
         float[] near = new float[count];
-        double[] corner = new double[3];
         for (int i = 0; i < count; i++) {
-            int o = 6 * i;
-            double uMin = Double.POSITIVE_INFINITY, uMax = Double.NEGATIVE_INFINITY, vMin = uMin, vMax = uMax;
-            for (int c = 0; c < 8; c++) {
-                corner[ua] = boxes[o + ua + ((c & 1) == 0 ? 0 : 3)];
-                corner[va] = boxes[o + va + ((c & 2) == 0 ? 0 : 3)];
-                corner[depth] = boxes[o + depth + ((c & 4) == 0 ? 0 : 3)];
-                double z = f.z(corner, 0);
-                double u = (corner[ua] - f.l[ua]) / z, v = (corner[va] - f.l[va]) / z;
-                uMin = Math.min(uMin, u);
-                uMax = Math.max(uMax, u);
-                vMin = Math.min(vMin, v);
-                vMax = Math.max(vMax, v);
-            }
-            rects[4 * i] = uMin;
-            rects[4 * i + 1] = uMax;
-            rects[4 * i + 2] = vMin;
-            rects[4 * i + 3] = vMax;
-            near[i] = nearestBound(boxes, o, f.l);
+            projectBox(boxes, 6 * i, f.l, f.depth, f.side, rects, 4 * i);
+            near[i] = nearestBound(boxes, 6 * i, f.l);
         }
         return assemble(f, rects, near, primitives, memory);
     }

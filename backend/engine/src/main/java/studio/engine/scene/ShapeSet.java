@@ -182,11 +182,14 @@ public final class ShapeSet {
         apartMargin = Math.max(APART_MARGIN * largest, Double.MIN_NORMAL);
         int buffered = boundedCount >= LIGHT_BUFFER_MIN ? Math.min(lights.size(), LightBuffer.MAX_LIGHTS) : 0;
         lightBuffers = new LightBuffer[buffered];
-        Aabb root = new Aabb(nodeBounds[0], nodeBounds[1], nodeBounds[2], nodeBounds[3], nodeBounds[4], nodeBounds[5]);
-        LightBuffer.Primitives slots = (slot, ray, tMax) -> occluded(leafShapes[slot], slot, ray, tMax);
-        for (int i = 0; i < lightBuffers.length; i++) {
-            lightBuffers[i] = LightBuffer.ofBoxes(slotBoxes, boundedCount, root, lights.get(i), slots,
-                    MemoryGate.UNLIMITED);
+        if (buffered > 0) {
+            Aabb root = new Aabb(nodeBounds[0], nodeBounds[1], nodeBounds[2], nodeBounds[3], nodeBounds[4],
+                    nodeBounds[5]);
+            LightBuffer.Primitives slots = (slot, ray, tMax) -> occluded(leafShapes[slot], slot, ray, tMax);
+            for (int i = 0; i < buffered; i++) {
+                lightBuffers[i] = LightBuffer.ofBoxes(slotBoxes, boundedCount, root, lights.get(i), slots,
+                        MemoryGate.UNLIMITED);
+            }
         }
     }
 

@@ -17,6 +17,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.material.MaterialKind;
+import studio.engine.render.Renderer;
 import studio.engine.scene.Scene;
 import studio.engine.scene.ShapeSet;
 import studio.server.scene.compiling.CompiledScene;
@@ -32,8 +33,6 @@ class StudioLauncherTest {
 
     private static final Path LAUNCHER = Path.of("../../bin/studio").toAbsolutePath().normalize();
     private static final String QUICK_COMPILER = "-XX:TieredStopAtLevel=1";
-    /** The fewest objects for which the engine lists pixel candidates (its PixelCandidates.MIN_OBJECTS). */
-    private static final int PIXEL_LISTS_MIN = 8;
 
     @TempDir
     Path dir;
@@ -133,17 +132,19 @@ class StudioLauncherTest {
         assertThat(training).endsWith(files.toString());
 
         Scene crowd = compile(scenes.resolve("crowd.json"));
-        assertThat(crowd.objectCount()).isGreaterThanOrEqualTo(ShapeSet.LIGHT_BUFFER_MIN);
+        assertThat(crowd.objectCount() - crowd.unboundedCount()).isGreaterThanOrEqualTo(ShapeSet.LIGHT_BUFFER_MIN);
+        assertThat(Renderer.listsPixelCandidates(crowd)).isTrue();
         assertThat(has(crowd, MaterialKind.GLASS)).as("glass in the crowd").isTrue();
         assertThat(hasMesh(crowd)).as("a mesh in the crowd").isTrue();
 
         Scene stillLife = compile(scenes.resolve("still-life.json"));
         assertThat(stillLife.searchesBvh()).isTrue();
-        assertThat(stillLife.objectCount()).isLessThan(PIXEL_LISTS_MIN);
+        assertThat(Renderer.listsPixelCandidates(stillLife)).isFalse();
 
         Scene glass = compile(scenes.resolve("glass.json"));
         assertThat(has(glass, MaterialKind.GLASS)).as("glass").isTrue();
-        assertThat(glass.objectCount()).isBetween(PIXEL_LISTS_MIN, ShapeSet.LIGHT_BUFFER_MIN - 1);
+        assertThat(Renderer.listsPixelCandidates(glass)).isTrue();
+        assertThat(glass.objectCount() - glass.unboundedCount()).isLessThan(ShapeSet.LIGHT_BUFFER_MIN);
 
         Scene knot = compile(scenes.resolve("knot.json"));
         assertThat(knot.searchesBvh()).as("searched one object after the other").isFalse();
