@@ -36,6 +36,17 @@ final class Integrator {
     /** A shadow ray is blocked only by hits closer than this fraction of the light's distance. */
     private static final double SHADOW_END = 1 - 1e-9;
 
+    static {
+        // The calls a render may first reach late, its first reflection and its first shadow ray
+        // through glass, are made once here so that they are resolved before the JIT compiles the
+        // methods that hold them (every site of one method shares the class's resolved entry). C2
+        // compiles a call it has not seen resolved as a trap: cold renders (with the start-up cache)
+        // deoptimized trace at a still life's first mirror and shadowTransmittance at glass's
+        // first crossing, every time, each then run in slower code and compiled again.
+        Rays.spawn(new Hit(), 0, 0, 1, new Ray());
+        Fresnel.reflectance(1, 1, 1.5);
+    }
+
     private final Scene scene;
     private final int maxDepth;
     private final double minPathWeight;
