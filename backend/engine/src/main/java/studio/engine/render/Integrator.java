@@ -35,6 +35,14 @@ final class Integrator {
     private static final int MAX_SHADOW_CROSSINGS = 32;
     /** A shadow ray is blocked only by hits closer than this fraction of the light's distance. */
     private static final double SHADOW_END = 1 - 1e-9;
+    /**
+     * A light whose unshadowed share of a sample (the path's weight times what the light would add,
+     * in units of white) is below this adds nothing an image can show, and its shadow ray is not
+     * traced: the smallest step of 8-bit sRGB is 3e-4. Glass's highlight (shininess 250) is below it
+     * at most points: in held-out glass, 1.23 million of the 1.32 million shadow rays from glass (of
+     * 9.9 million in all).
+     */
+    static final double NEGLIGIBLE_LIGHT = 1e-6;
 
     static {
         // The calls a render may first reach late, its first reflection and its first shadow ray
@@ -159,7 +167,7 @@ final class Integrator {
         boolean front = hit.gx * dx + hit.gy * dy + hit.gz * dz < 0;
         double sx = front ? hit.nx : -hit.nx, sy = front ? hit.ny : -hit.ny, sz = front ? hit.nz : -hit.nz;
 
-        direct(m, hit, sx, sy, sz, -dx, -dy, -dz, front, depth == 0);
+        direct(m, hit, sx, sy, sz, -dx, -dy, -dz, front, depth == 0, weight);
         double r = directR, g = directG, b = directB;
         if (depth < maxDepth) {
             double cosView = -(sx * dx + sy * dy + sz * dz);
@@ -194,9 +202,12 @@ final class Integrator {
         radiance[out + 2] = c.b();
     }
 
-    /** Ambient, diffuse and highlight from every light the point sees, into directR/G/B. */
+    /**
+     * Ambient, diffuse and highlight from every light the point sees, into directR/G/B; a light
+     * that could add only a {@link #NEGLIGIBLE_LIGHT} share to a path of this weight is not looked for.
+     */
     private void direct(Material m, Hit hit, double nx, double ny, double nz, double vx, double vy, double vz,
-                        boolean front, boolean cameraHit) {
+                        boolean front, boolean cameraHit, double weight) {
         double kd = m.diffuse(), ks = m.specular();
         if (m.kind() == MaterialKind.GLASS && !front) {
             ks = 0;
@@ -209,6 +220,7 @@ final class Integrator {
         double ar = color.r() * kd, ag = color.g() * kd, ab = color.b() * kd;
         double sr = specular.r() * ks, sg = specular.g() * ks, sb = specular.b() * ks;
         double r = ar * scene.ambient(), g = ag * scene.ambient(), b = ab * scene.ambient();
+        double aMax = Math.max(ar, Math.max(ag, ab)), sMax = Math.max(sr, Math.max(sg, sb));
         List<PointLight> lights = scene.lights();
         for (int i = 0; i < lights.size(); i++) {
             PointLight light = lights.get(i);
@@ -224,9 +236,6 @@ final class Integrator {
             if (cos <= 0) {
                 continue;
             }
-            if (!shadowTransmittance(hit, at, i, cameraHit)) {
-                continue;
-            }
             Rgb lc = light.color();
             double er = lc.r() * light.intensity(), eg = lc.g() * light.intensity(), eb = lc.b() * light.intensity();
             if (light.falloff()) {
@@ -234,6 +243,22 @@ final class Integrator {
                 er *= inverseSquare;
                 eg *= inverseSquare;
                 eb *= inverseSquare;
+            }
+            double highlight = 0;
+            if (ks > 0) {
+                double hx = lx + vx, hy = ly + vy, hz = lz + vz;
+                double hLen = Math.sqrt(hx * hx + hy * hy + hz * hz);
+                double cosH = hLen > 0 ? (nx * hx + ny * hy + nz * hz) / hLen : 0;
+                if (cosH > 0) {
+                    highlight = Math.pow(cosH, m.shininess());
+                }
+            }
+            double unshadowed = Math.max(er, Math.max(eg, eb)) * ((kd > 0 ? aMax * cos : 0) + sMax * highlight);
+            if (weight * unshadowed < NEGLIGIBLE_LIGHT) {
+                continue;
+            }
+            if (!shadowTransmittance(hit, at, i, cameraHit)) {
+                continue;
             }
             er *= throughR;
             eg *= throughG;
@@ -243,16 +268,10 @@ final class Integrator {
                 g += ag * eg * cos;
                 b += ab * eb * cos;
             }
-            if (ks > 0) {
-                double hx = lx + vx, hy = ly + vy, hz = lz + vz;
-                double hLen = Math.sqrt(hx * hx + hy * hy + hz * hz);
-                double cosH = hLen > 0 ? (nx * hx + ny * hy + nz * hz) / hLen : 0;
-                if (cosH > 0) {
-                    double s = Math.pow(cosH, m.shininess());
-                    r += sr * er * s;
-                    g += sg * eg * s;
-                    b += sb * eb * s;
-                }
+            if (highlight > 0) {
+                r += sr * er * highlight;
+                g += sg * eg * highlight;
+                b += sb * eb * highlight;
             }
         }
         directR = r;

@@ -26,9 +26,14 @@ public record JitteredSampler(int samplesPerPixel) implements Sampler {
     public void fill(PixelRandom random, int size, int first, int count, double[] xs, double[] ys) {
         int rows = Strata.rows(size), columns = size / rows;
         random.skip(2L * first);
+        int column = first % columns, row = first / columns;
         for (int i = first; i < first + count; i++) {
-            xs[i] = Strata.offset(i % columns, random.nextDouble(), columns);
-            ys[i] = Strata.offset(i / columns, random.nextDouble(), rows);
+            xs[i] = Strata.offset(column, random.nextDouble(), columns);
+            ys[i] = Strata.offset(row, random.nextDouble(), rows);
+            if (++column == columns) {
+                column = 0;
+                row++;
+            }
         }
     }
 }

@@ -117,6 +117,24 @@ class ShadingTest {
     }
 
     @Test
+    void aLightTooFaintToShowIsNotLookedForAndOneJustBrighterIs() {
+        // the light's unshadowed share: KD * 1 (the colour's largest channel) * intensity * 1 (the light colour's)
+        double faint = 1.5 * Integrator.NEGLIGIBLE_LIGHT, visible = 2.5 * Integrator.NEGLIGIBLE_LIGHT;
+        Camera camera = new Camera(new Vec3(0, 1, 5), Vec3.ZERO, UP, 45);
+        for (double intensity : new double[] {faint, visible}) {
+            Scene scene = new Scene(camera, List.of(object(FLOOR, CHALK)),
+                    List.of(new PointLight(new Vec3(0, 5, 0), LIGHT_COLOR, intensity, false)), BACKGROUND, AMBIENT);
+            Integrator integrator = new Integrator(scene, 1, 0);
+
+            Rgb c = integrator.radiance(DOWN);
+
+            boolean shows = intensity == visible;
+            assertEquals(shows ? 2 : 1, integrator.rays, "rays traced: the camera ray, and a shadow ray if the light shows");
+            assertRgb(shows ? add(ambientOnly(), COLOR.times(KD).times(LIGHT_COLOR.times(intensity))) : ambientOnly(), c, 0.0);
+        }
+    }
+
+    @Test
     void glassSphereCastsALighterShadowTintedByTheGlass() {
         // The shadow ray crosses the glass along its axis: each crossing at normal incidence keeps 1 - 0.04.
         Rgb tint = new Rgb(1, 0.5, 0.25);
