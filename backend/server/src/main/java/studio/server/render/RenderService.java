@@ -194,7 +194,14 @@ public final class RenderService implements Drainable, AutoCloseable {
             return cancelRequested.get();
         }
 
+        /**
+         * Renders and encodes, gives back the slot and the memory, then answers: a client that asks
+         * again as soon as it has its image finds them free (answered first, its next request, or a
+         * live view's next frame, could be refused for the memory of the render it already has).
+         */
         private void run() {
+            RenderedImage image = null;
+            Throwable failure = null;
             try {
                 if (cancelRequested.get()) {
                     throw new RenderCancelledException();
@@ -202,15 +209,20 @@ public final class RenderService implements Drainable, AutoCloseable {
                 RenderResult rendered = budget.render(scene, RenderListener.NONE, this::stopRequested);
                 budget.metrics().rendered(RenderMetrics.Kind.SYNC, rendered);
                 byte[] bytes = ImageFiles.encode(rendered.film(), scene.format(), scene.quality());
-                result.complete(new RenderedImage(bytes, scene.mediaType(), scene.fileName(), scene.settings().width(),
-                        scene.settings().height(), rendered.elapsedMillis(), rendered.raysPerSecond()));
+                image = new RenderedImage(bytes, scene.mediaType(), scene.fileName(), scene.settings().width(),
+                        scene.settings().height(), rendered.elapsedMillis(), rendered.raysPerSecond());
             } catch (RenderCancelledException e) {
                 cancelledCount.incrementAndGet();
-                result.completeExceptionally(e);
+                failure = e;
             } catch (RuntimeException | Error e) {
-                result.completeExceptionally(e);
+                failure = e;
             } finally {
                 finish();
+            }
+            if (failure == null) {
+                result.complete(image);
+            } else {
+                result.completeExceptionally(failure);
             }
         }
 

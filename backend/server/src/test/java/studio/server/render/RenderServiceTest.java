@@ -1,12 +1,14 @@
 package studio.server.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 
@@ -48,6 +50,18 @@ class RenderServiceTest {
         Await.until("the slot to be free", 10_000, () -> renders.active() == 0);
         assertThrows(InvalidSceneException.class, () -> renders.start(NOT_A_SCENE));
         assertEquals(0, renders.active(), "an invalid scene gives its slot back");
+    }
+
+    /** Else a client that asks again as soon as it has its image can be refused for the render it already has. */
+    @Test
+    void aRenderIsAnsweredOnlyOnceItsSlotAndMemoryAreFree() throws Exception {
+        renders = new RenderService(ExampleSceneFiles.compiler(), 1, 1, new RenderBudget(Duration.ofMinutes(5), memory));
+        RenderService.Ticket ticket = renders.start(HallOfGlass.scene(16, 16).getBytes(StandardCharsets.UTF_8));
+        CompletableFuture<String> seenOnAnswer = ticket.result()
+                .thenApply(image -> "slots in use " + renders.active() + ", memory held " + memory.reserved());
+        assertFalse(ticket.result().isDone(), "the render (about 0.4 s) ended before the test could look");
+
+        assertEquals("slots in use 0, memory held 0", seenOnAnswer.get(30, TimeUnit.SECONDS));
     }
 
     @Test
