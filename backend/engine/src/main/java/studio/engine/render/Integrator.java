@@ -244,21 +244,22 @@ final class Integrator {
                 eg *= inverseSquare;
                 eb *= inverseSquare;
             }
-            double highlight = 0;
-            if (ks > 0) {
-                double hx = lx + vx, hy = ly + vy, hz = lz + vz;
-                double hLen = Math.sqrt(hx * hx + hy * hy + hz * hz);
-                double cosH = hLen > 0 ? (nx * hx + ny * hy + nz * hz) / hLen : 0;
-                if (cosH > 0) {
-                    highlight = Math.pow(cosH, m.shininess());
+            // the light's unshadowed share: the diffuse part mostly settles it; the highlight (a pow)
+            // is worked out first only where it decides, else only for a point the light reaches
+            double share = weight * Math.max(er, Math.max(eg, eb));
+            double diffuseShare = kd > 0 ? share * aMax * cos : 0;
+            double highlight = -1; // not worked out yet
+            if (diffuseShare < NEGLIGIBLE_LIGHT) {
+                highlight = ks > 0 ? highlight(nx, ny, nz, lx, ly, lz, vx, vy, vz, m.shininess()) : 0;
+                if (diffuseShare + share * sMax * highlight < NEGLIGIBLE_LIGHT) {
+                    continue;
                 }
-            }
-            double unshadowed = Math.max(er, Math.max(eg, eb)) * ((kd > 0 ? aMax * cos : 0) + sMax * highlight);
-            if (weight * unshadowed < NEGLIGIBLE_LIGHT) {
-                continue;
             }
             if (!shadowTransmittance(hit, at, i, cameraHit)) {
                 continue;
+            }
+            if (highlight < 0) {
+                highlight = ks > 0 ? highlight(nx, ny, nz, lx, ly, lz, vx, vy, vz, m.shininess()) : 0;
             }
             er *= throughR;
             eg *= throughG;
@@ -277,6 +278,15 @@ final class Integrator {
         directR = r;
         directG = g;
         directB = b;
+    }
+
+    /** Blinn-Phong's highlight for the light's direction l and the view's v (both unit): 0 when it faces away. */
+    private static double highlight(double nx, double ny, double nz, double lx, double ly, double lz,
+                                    double vx, double vy, double vz, double shininess) {
+        double hx = lx + vx, hy = ly + vy, hz = lz + vz;
+        double hLen = Math.sqrt(hx * hx + hy * hy + hz * hz);
+        double cosH = hLen > 0 ? (nx * hx + ny * hy + nz * hz) / hLen : 0;
+        return cosH > 0 ? Math.pow(cosH, shininess) : 0;
     }
 
     /**
