@@ -250,6 +250,26 @@ class StudioLauncherTest {
         assertThat(launched()).doesNotContain(noOsr);
     }
 
+    /**
+     * A render both compilers run gives C2 two threads on a machine of two or three online cores
+     * (the JVM's own count there gives it one), and no other run changes the count.
+     */
+    @Test
+    void aLongerRenderOnTwoOrThreeCoresGivesC2TwoThreads() throws Exception {
+        String twoC2Threads = "-XX:CICompilerCount=3";
+        Path online = Path.of("/sys/devices/system/cpu/online");
+        boolean fewCores = Files.isReadable(online) && Files.readString(online).trim().matches("0-[12]");
+        String longer = launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "16");
+        if (fewCores) {
+            assertThat(longer).contains(twoC2Threads);
+        } else {
+            assertThat(longer).doesNotContain(twoC2Threads);
+        }
+        assertThat(launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "1"))
+                .doesNotContain(twoC2Threads);
+        assertThat(launched()).doesNotContain(twoC2Threads);
+    }
+
     @Test
     void theServiceKeepsTheJvmsDefaults() throws Exception {
         assertThat(launched()).doesNotContain("-XX:+UseParallelGC", QUICK_COMPILER).contains("-XX:AOTCache=");
