@@ -248,18 +248,17 @@ final class Integrator {
             // is worked out first only where it decides, else only for a point the light reaches
             double share = weight * Math.max(er, Math.max(eg, eb));
             double diffuseShare = kd > 0 ? share * aMax * cos : 0;
-            double highlight = -1; // not worked out yet
-            if (diffuseShare < NEGLIGIBLE_LIGHT) {
-                highlight = ks > 0 ? highlight(nx, ny, nz, lx, ly, lz, vx, vy, vz, m.shininess()) : 0;
-                if (diffuseShare + share * sMax * highlight < NEGLIGIBLE_LIGHT) {
-                    continue;
-                }
+            boolean highlightDecides = diffuseShare < NEGLIGIBLE_LIGHT;
+            double highlight = highlightDecides && ks > 0
+                    ? highlight(nx, ny, nz, lx, ly, lz, vx, vy, vz, m.shininess()) : 0;
+            if (highlightDecides && diffuseShare + share * sMax * highlight < NEGLIGIBLE_LIGHT) {
+                continue;
             }
             if (!shadowTransmittance(hit, at, i, cameraHit)) {
                 continue;
             }
-            if (highlight < 0) {
-                highlight = ks > 0 ? highlight(nx, ny, nz, lx, ly, lz, vx, vy, vz, m.shininess()) : 0;
+            if (!highlightDecides && ks > 0) {
+                highlight = highlight(nx, ny, nz, lx, ly, lz, vx, vy, vz, m.shininess());
             }
             er *= throughR;
             eg *= throughG;
