@@ -110,11 +110,16 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
 
     @Override
     protected void handleTextMessage(WebSocketSession session, TextMessage message) throws IOException {
+        PreviewSession view = view(session);
+        if (view == null) {
+            return; // a piece the container delivers after the view was closed (for a message too large, say)
+        }
         Parts parts = (Parts) session.getAttributes().computeIfAbsent(PARTS, k -> new Parts());
         String piece = parts.carried(message.getPayload(), message.isLast());
         parts.length += piece.length();
         if (parts.length > maxMessageBytes) {
             parts.clear();
+            close(session);
             session.close(CloseStatus.TOO_BIG_TO_PROCESS.withReason("a message may be at most " + maxMessageBytes
                     + " bytes (studio.limits.max-body-bytes)"));
             return;
@@ -122,7 +127,7 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
         if (parts.refusal == null) {
             if (parts.memory == null) {
                 parts.memory = IntakeMemory.of(renderer.memory());
-                view(session).arriving();
+                view.arriving();
             }
             byte[] bytes = piece.getBytes(StandardCharsets.UTF_8);
             try {
@@ -134,10 +139,10 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
         }
         if (message.isLast()) {
             if (parts.refusal != null) {
-                view(session).notArriving();
+                view.notArriving();
                 socket(session).sendMessage(new TextMessage(renderer.problem(null, parts.refusal)));
             } else {
-                view(session).receive(parts.bytes.toByteArray(), parts.memory); // the view owns the memory now
+                view.receive(parts.bytes.toByteArray(), parts.memory); // the view owns the memory now
                 parts.memory = null;
             }
             parts.clear();
@@ -156,6 +161,11 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
 
     @Override
     public void afterConnectionClosed(WebSocketSession session, CloseStatus status) {
+        close(session);
+    }
+
+    /** Ends the view's work and gives its place back, once, whoever closes it first. */
+    private void close(WebSocketSession session) {
         PreviewSession view = (PreviewSession) session.getAttributes().remove(VIEW);
         if (view != null) {
             view.close();
