@@ -6,7 +6,6 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 import java.util.UUID;
-import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -37,7 +36,7 @@ public final class JobService implements Drainable, AutoCloseable {
     private final JobSettings settings;
     private final RenderBudget budget;
     private final Duration shutdownGrace;
-    private final ThreadPoolExecutor executor;
+    private final JobExecutor executor;
     private final ScheduledExecutorService janitor;
     /** Delivers events to listeners (see {@link JobSubscription}): a thread per subscription while it has news. */
     private final ExecutorService senders;
@@ -76,8 +75,7 @@ public final class JobService implements Drainable, AutoCloseable {
         this.budget = budget;
         this.shutdownGrace = shutdownGrace;
         AtomicInteger threads = new AtomicInteger();
-        this.executor = new ThreadPoolExecutor(settings.concurrent(), settings.concurrent(), 0, TimeUnit.SECONDS,
-                new ArrayBlockingQueue<>(settings.queue()),
+        this.executor = new JobExecutor(settings.concurrent(), settings.queue(),
                 r -> {
                     Thread t = new Thread(r, "render-job-" + threads.incrementAndGet());
                     t.setDaemon(true);
@@ -109,7 +107,7 @@ public final class JobService implements Drainable, AutoCloseable {
         if (executor.isShutdown()) {
             throw new JobQueueFullException(retryAfterSeconds(), "the server is shutting down");
         }
-        if (executor.getQueue().remainingCapacity() == 0) {
+        if (executor.full()) {
             throw new JobQueueFullException(retryAfterSeconds());
         }
     }
@@ -164,6 +162,11 @@ public final class JobService implements Drainable, AutoCloseable {
 
     private JobStatus start(String id, CompiledScene scene, byte[] sceneJson, MemoryBudget.Reservation memory,
                             boolean resumed) {
+        // a new job takes its place before anyone hears of it; one taken over needs none
+        if (!resumed && !executor.takePlace()) {
+            memory.close();
+            throw new JobQueueFullException(retryAfterSeconds());
+        }
         RenderJob job = new RenderJob(id, scene, budget, memory,
                 (compiled, listener, cancelled) -> cluster.render(id, compiled, budget, listener, cancelled),
                 () -> cluster.workers(id), (end, image) -> cluster.ending(id, end, image));
@@ -174,7 +177,7 @@ public final class JobService implements Drainable, AutoCloseable {
         }
         JobLog.accepted(id, scene, resumed, executor.getQueue().size());
         try {
-            executor.execute(job);
+            executor.execute(job, !resumed);
         } catch (RejectedExecutionException e) {
             job.fail("the server is shutting down");
             jobs.remove(job.id());
