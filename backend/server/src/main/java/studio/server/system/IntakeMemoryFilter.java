@@ -4,6 +4,8 @@ import java.io.IOException;
 
 import org.springframework.web.filter.OncePerRequestFilter;
 
+import jakarta.servlet.AsyncEvent;
+import jakarta.servlet.AsyncListener;
 import jakarta.servlet.FilterChain;
 import jakarta.servlet.ServletException;
 import jakarta.servlet.http.HttpServletRequest;
@@ -34,9 +36,44 @@ final class IntakeMemoryFilter extends OncePerRequestFilter {
     @Override
     protected void doFilterInternal(HttpServletRequest request, HttpServletResponse response, FilterChain chain)
             throws ServletException, IOException {
-        try (IntakeMemory intake = IntakeMemory.of(budget)) {
+        IntakeMemory intake = IntakeMemory.of(budget);
+        boolean arriving = false;
+        try {
             intake.attachTo(request);
             chain.doFilter(new WatchedBody(request, intake::bodyArrived), response);
+            arriving = request.isAsyncStarted() && request.getAttribute(BodyArrivalFilter.ARRIVING) != null;
+        } finally {
+            if (arriving) {
+                request.getAsyncContext().addListener(new CloseWhenHandled(intake));
+            } else {
+                intake.close();
+            }
+        }
+    }
+
+    /**
+     * Closes a request's memory once the body that arrived in the background has been handled: when
+     * the request completes, or when its controller starts work of its own (a render's answer, which
+     * takes the memory over before).
+     */
+    private record CloseWhenHandled(IntakeMemory intake) implements AsyncListener {
+
+        @Override
+        public void onStartAsync(AsyncEvent event) {
+            intake.close();
+        }
+
+        @Override
+        public void onComplete(AsyncEvent event) {
+            intake.close();
+        }
+
+        @Override
+        public void onTimeout(AsyncEvent event) {
+        }
+
+        @Override
+        public void onError(AsyncEvent event) {
         }
     }
 }

@@ -75,10 +75,14 @@ class SystemConfiguration {
         return registration;
     }
 
+    /**
+     * Bodies read before their controller runs, without a thread while they are on their way: the
+     * last of the filters, so that the others have seen the request (and watch its body's bytes) first.
+     */
     @Bean
-    FilterRegistrationBean<BodyDeadlineFilter> bodyDeadlineFilter(StudioProperties properties) {
-        FilterRegistrationBean<BodyDeadlineFilter> registration = new FilterRegistrationBean<>(
-                new BodyDeadlineFilter(properties.limits().bodyGrace(), properties.limits().minBodyRate()));
+    FilterRegistrationBean<BodyArrivalFilter> bodyArrivalFilter(StudioProperties properties) {
+        FilterRegistrationBean<BodyArrivalFilter> registration = new FilterRegistrationBean<>(new BodyArrivalFilter(
+                properties.limits().bodyGrace(), properties.limits().minBodyRate(), properties.limits().maxBodyBytes()));
         registration.addUrlPatterns("/api/*");
         registration.setOrder(3);
         return registration;

@@ -65,6 +65,11 @@ final class WatchedBody extends HttpServletRequestWrapper {
         }
 
         @Override
+        public int available() throws IOException {
+            return in.available();
+        }
+
+        @Override
         public boolean isFinished() {
             return in.isFinished();
         }
