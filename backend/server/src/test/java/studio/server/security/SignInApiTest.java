@@ -261,6 +261,12 @@ class SignInApiTest {
     }
 
     @Test
+    void refusedSignInsAreCountedWithTheOtherRefusals() throws Exception {
+        get("/api/scenes", null);
+        assertThat(get("/actuator/prometheus", ALICE).body()).containsPattern("studio_refusals_total\\{[^}]*status=\"401\"");
+    }
+
+    @Test
     void editorsOpenApiDocumentNeedsNoKey() throws Exception {
         assertThat(get("/v3/api-docs", null).statusCode()).isEqualTo(200);
     }
