@@ -79,11 +79,13 @@ describe('authorizedFetch', () => {
     expect(apiKey()).toBeNull();
   });
 
-  it('tells subscribers when the key changes', () => {
+  it('tells subscribers when the key changes, and only then', () => {
     const listener = vi.fn();
     const unsubscribe = subscribeApiKey(listener);
     setApiKey('k-5');
+    setApiKey('k-5');
     setApiKey(null);
+    setApiKey('');
     unsubscribe();
     setApiKey('k-6');
     expect(listener).toHaveBeenCalledTimes(2);

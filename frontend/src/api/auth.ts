@@ -30,6 +30,7 @@ export function apiKey(): string | null {
 
 /** Keeps (or, with null, forgets) the key for this tab, and tells the subscribers. */
 export function setApiKey(key: string | null): void {
+  if ((key || null) === apiKey()) return;
   try {
     if (key) sessionStorage.setItem(STORAGE_KEY, key);
     else sessionStorage.removeItem(STORAGE_KEY);
