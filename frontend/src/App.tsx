@@ -6,6 +6,7 @@ import { JsonTab } from './components/JsonTab';
 import { ProblemList } from './components/ProblemList';
 import { RenderPanel } from './render/RenderPanel';
 import { ShortcutsHelp } from './components/ShortcutsHelp';
+import { SignInDialog } from './components/SignInDialog';
 import { Toolbar } from './components/Toolbar';
 import { useEditorShortcuts } from './hooks/useEditorShortcuts';
 import { useMeshFiles } from './hooks/useMeshes';
@@ -70,6 +71,7 @@ export function App({ fetchFn }: AppProps) {
       <div className="studio">
         <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} />
         {help && <ShortcutsHelp onClose={closeHelp} />}
+        <SignInDialog />
         {message && (
           <div className="studio-message" role="alert">
             <pre>{message}</pre>

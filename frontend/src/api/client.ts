@@ -5,6 +5,7 @@
  * error or a network failure, comes out as one typed {@link ApiError}.
  */
 
+import { authorizedFetch } from './auth';
 import { isRecord } from '../util/json';
 
 /** One entry of `GET /api/scenes`: an example file in `scenes/`, by its file stem. */
@@ -56,7 +57,8 @@ export class ApiError extends Error {
 /** The `fetch` signature the client needs; tests pass their own. */
 export type FetchFn = (input: string, init?: RequestInit) => Promise<Response>;
 
-const defaultFetch: FetchFn = (input, init) => fetch(input, init);
+/** The browser's fetch, sending the tab's API key (none with sign-in off): see `auth.ts`. */
+const defaultFetch: FetchFn = authorizedFetch();
 
 /** Lists the example scenes. */
 export async function fetchSceneList(fetchFn: FetchFn = defaultFetch): Promise<SceneSummary[]> {

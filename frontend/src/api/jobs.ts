@@ -14,6 +14,8 @@ import {
   type FetchFn,
   type RenderOutput,
 } from './client';
+import { apiKey, authorizedFetch } from './auth';
+import { fetchEventSource } from './fetchEventSource';
 import { finite, isRecord } from '../util/json';
 
 /** Where a job is in its life; the last three are final. */
@@ -85,8 +87,10 @@ export interface JobHandlers {
   onError?: (error: ApiError) => void;
 }
 
-const defaultFetch: FetchFn = (input, init) => fetch(input, init);
-const defaultEventSource: EventSourceFactory = (url) => new EventSource(url);
+/** The browser's fetch, sending the tab's API key (none with sign-in off): see `auth.ts`. */
+const defaultFetch: FetchFn = authorizedFetch();
+/** EventSource cannot send a key: with one set, the stream is read through fetch. */
+const defaultEventSource: EventSourceFactory = (url) => (apiKey() ? fetchEventSource(url) : new EventSource(url));
 /** `EventSource.CLOSED`, which a fake need not define. */
 const CLOSED = 2;
 

@@ -9,6 +9,7 @@ import { useSceneStore } from '../store/sceneStore';
 import { AddMeshButton } from './AddMeshButton';
 import { ExamplesMenu } from './ExamplesMenu';
 import { OpenSceneButton } from './OpenSceneButton';
+import { SignInStatus } from './SignInStatus';
 import { OBJECT_HINTS, OBJECT_LABELS } from './labels';
 
 /** Props of {@link Toolbar}. */
@@ -113,6 +114,7 @@ export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: Toolba
           </button>
         </div>
       )}
+      <SignInStatus fetchFn={fetchFn} />
       <div className="toolbar__group" aria-label="Grid">
         <label className="toolbar__check" title="Dragged things land on grid points">
           <input type="checkbox" checked={snap} onChange={(e) => s.setSnap(e.target.checked)} /> Snap to grid

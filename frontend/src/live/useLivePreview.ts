@@ -4,6 +4,7 @@ import { toFieldErrorMap } from '../render/ErrorSummary';
 import { decodeImage as browserDecodeImage, type ImageDecoder } from './framePainter';
 import { LiveSession, type LiveConnection, type SocketFactory } from './liveSession';
 import { previewUrl, type FrameHeader } from './protocol';
+import { signedSocketFactory } from './ticketedSocket';
 
 /** What the live view shows, and the injection points for tests (each defaults to the browser's own). */
 export interface LivePreviewOptions {
@@ -38,7 +39,8 @@ export interface LivePreview {
   reconnect: () => void;
 }
 
-const browserSocket: SocketFactory = (url) => new WebSocket(url);
+/** The browser's WebSocket; with an API key set, opened with a ticket (a browser cannot send the key). */
+const browserSocket: SocketFactory = signedSocketFactory();
 
 /**
  * Keeps a WebSocket to the server's live renderer open while mounted: every change of scene or

@@ -147,7 +147,7 @@ final class ApiSchemas {
                 "status": { "type": "string", "enum": ["UP", "DOWN", "OUT_OF_SERVICE", "UNKNOWN"] },
                 "components": {
                   "type": "object",
-                  "description": "Each check's status and details; renderMemory: the memory budget's capacityBytes, reservedBytes and freeBytes",
+                  "description": "Each check's status, and its details for a signed-in caller only (none with sign-in off); renderMemory: the memory budget's capacityBytes, reservedBytes and freeBytes",
                   "additionalProperties": {
                     "type": "object",
                     "properties": { "status": { "type": "string" }, "details": { "type": "object" } }
@@ -155,6 +155,30 @@ final class ApiSchemas {
                 }
               },
               "required": ["status"]
+            }""";
+
+    static final String ME = """
+            {
+              "type": "object",
+              "description": "The caller, as the server knows them.",
+              "properties": {
+                "principal": { "type": "string", "description": "The API key's name or the token's sub; empty with sign-in off" },
+                "signInRequired": { "type": "boolean", "description": "Whether this server asks every caller to sign in" }
+              },
+              "required": ["principal", "signInRequired"],
+              "additionalProperties": false
+            }""";
+
+    static final String PREVIEW_TICKET = """
+            {
+              "type": "object",
+              "description": "A single-use ticket for the live view: open /api/preview?ticket=TICKET within expiresInSeconds.",
+              "properties": {
+                "ticket": { "type": "string", "pattern": "^[A-Za-z0-9_-]{43}$" },
+                "expiresInSeconds": { "type": "integer", "minimum": 1 }
+              },
+              "required": ["ticket", "expiresInSeconds"],
+              "additionalProperties": false
             }""";
 
     private ApiSchemas() {

@@ -25,6 +25,8 @@ import io.swagger.v3.oas.models.parameters.Parameter;
 import io.swagger.v3.oas.models.parameters.RequestBody;
 import io.swagger.v3.oas.models.responses.ApiResponse;
 import io.swagger.v3.oas.models.responses.ApiResponses;
+import io.swagger.v3.oas.models.security.SecurityRequirement;
+import io.swagger.v3.oas.models.security.SecurityScheme;
 
 import studio.server.scene.format.SceneLimits;
 import studio.server.scene.format.SceneMediaTypes;
@@ -34,7 +36,8 @@ import studio.server.scene.format.SceneMediaTypes;
  * the operations and their parameters in the controllers; this adds what it cannot know: the scene
  * format as the request body (the schema the server validates with, with its limits), and every
  * response with its status, media type and headers. An operation named here that the controllers
- * no longer have fails the document, so the contract cannot silently drift.
+ * no longer have fails the document, so the contract cannot silently drift. Every /api operation may
+ * answer 401 when sign-in is on (docs/security.md): the bearer scheme is optional, as sign-in is.
  */
 @Configuration(proxyBeanMethods = false)
 class OpenApiContract {
@@ -49,8 +52,12 @@ class OpenApiContract {
     static void describe(OpenAPI api, SceneLimits limits) {
         api.info(new Info().title("Ray Studio").version("1").description(
                 "Scenes in, ray-traced images out. Every error is an RFC 9457 problem (application/problem+json); "
-                        + "an invalid scene is a 400 whose `errors` name each bad field by its JSON path."));
+                        + "an invalid scene is a 400 whose `errors` name each bad field by its JSON path. "
+                        + "With sign-in on, every /api request sends `Authorization: Bearer` with an API key or a JWT; "
+                        + "a job is seen only by the principal that started it."));
         components(api, limits);
+        // sign-in is off by default (no requirement), on with one property (the bearer scheme)
+        api.addSecurityItem(new SecurityRequirement()).addSecurityItem(new SecurityRequirement().addList(BEARER));
 
         operation(api, "/api/render", PathItem.HttpMethod.POST, "render", "renderScene",
                 "Render a scene and return the image")
@@ -128,6 +135,21 @@ class OpenApiContract {
                         .addApiResponse("400", ref("BadRequest"))
                         .addApiResponse("404", ref("NotFound")));
 
+        operation(api, "/api/me", PathItem.HttpMethod.GET, "sign-in", "me",
+                "Who is signed in, and whether this server asks callers to sign in")
+                .responses(new ApiResponses().addApiResponse("200", json("The caller", schemaRef("Me"))));
+        operation(api, "/api/preview/tickets", PathItem.HttpMethod.POST, "sign-in", "issuePreviewTicket",
+                "A short-lived, single-use ticket that signs in the live view's WebSocket (/api/preview?ticket=), "
+                        + "for a browser, which cannot send headers with it")
+                .responses(new ApiResponses()
+                        .addApiResponse("200", json("The ticket", schemaRef("PreviewTicket")))
+                        .addApiResponse("429", ref("TooManyTickets")));
+        for (Map.Entry<String, PathItem> path : api.getPaths().entrySet()) {
+            if (path.getKey().startsWith("/api/")) {
+                path.getValue().readOperations().forEach(op -> op.getResponses().addApiResponse("401", ref("Unauthorized")));
+            }
+        }
+
         api.path("/actuator/health", new PathItem().get(new Operation().tags(List.of("system"))
                 .operationId("health").summary("Whether the service is up")
                 .responses(new ApiResponses()
@@ -136,6 +158,7 @@ class OpenApiContract {
     }
 
     private static final String OBJECT = "{\"type\": \"object\"}";
+    private static final String BEARER = "bearer";
 
     private static void components(OpenAPI api, SceneLimits limits) {
         if (api.getComponents() == null) {
@@ -154,6 +177,11 @@ class OpenApiContract {
         c.addSchemas("JobEvent", schema(ApiSchemas.JOB_EVENT));
         c.addSchemas("SceneSummary", schema(ApiSchemas.SCENE_SUMMARY));
         c.addSchemas("Health", schema(ApiSchemas.HEALTH));
+        c.addSchemas("Me", schema(ApiSchemas.ME));
+        c.addSchemas("PreviewTicket", schema(ApiSchemas.PREVIEW_TICKET));
+        c.addSecuritySchemes(BEARER, new SecurityScheme().type(SecurityScheme.Type.HTTP).scheme("bearer")
+                .description("With sign-in on: an API key (studio.security.api-keys) or a JWT the server trusts "
+                        + "(spring.security.oauth2.resourceserver.jwt.*); its name or sub is the principal"));
 
         c.addHeaders("RetryAfter", new Header().required(true).description("Seconds to wait before trying again")
                 .schema(schema("{\"type\": \"integer\", \"minimum\": 1}")));
@@ -180,10 +208,20 @@ class OpenApiContract {
         c.addResponses("MemoryBusy", problem("The memory for reading the body and building its meshes is taken by "
                 + "other requests (studio.render-memory)", "Problem")
                 .addHeaderObject("Retry-After", headerRef("RetryAfter")));
-        c.addResponses("QueueFull", problem("The job queue is full (studio.jobs.queue), the render memory is "
-                + "taken by other jobs, or the server is shutting down", "Problem")
+        c.addResponses("QueueFull", problem("The job queue is full (studio.jobs.queue), the principal has as many "
+                + "jobs queued or running as one may (studio.security.max-jobs-per-principal, with sign-in on), the "
+                + "render memory is taken by other jobs, or the server is shutting down", "Problem")
                 .addHeaderObject("Retry-After", headerRef("RetryAfter")));
-        c.addResponses("JobNotFound", problem("No job has that id (it never existed, or it expired)", "Problem"));
+        c.addResponses("JobNotFound", problem("No job has that id (it never existed, it expired, or it is another "
+                + "principal's)", "Problem"));
+        c.addResponses("Unauthorized", problem("Sign-in is on and the request sent no API key or token, or one "
+                + "that is unknown, expired or forged", "Problem")
+                .addHeaderObject("WWW-Authenticate", new Header().required(true)
+                        .description("Bearer; with error=\"invalid_token\" when a token was sent and refused")
+                        .schema(schema("{\"type\": \"string\", \"pattern\": \"^Bearer\"}"))));
+        c.addResponses("TooManyTickets", problem("The principal holds as many unused tickets as it may "
+                + "(studio.security.max-tickets-per-principal), or the server does", "Problem")
+                .addHeaderObject("Retry-After", headerRef("RetryAfter")));
         c.addResponses("JobNotDone", problem("The job is not done (queued, running, failed or cancelled)", "Problem"));
         c.addResponses("NotFound", problem("No such resource", "Problem"));
         c.addResponses("BadRequest", problem("A parameter is missing or malformed", "Problem"));

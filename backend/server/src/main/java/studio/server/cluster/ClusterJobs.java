@@ -164,7 +164,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     }
 
     @Override
-    public JobListener accepted(String id, byte[] sceneJson, Supplier<JobStatus> status, Supplier<byte[]> image,
+    public JobListener accepted(String id, String principal, byte[] sceneJson, Supplier<JobStatus> status, Supplier<byte[]> image,
                                 boolean resumed) {
         Ringbuffer<JobEvent> events = member.getRingbuffer(ClusterMaps.events(id));
         JobStatus now = status.get();
@@ -177,7 +177,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         } else {
             tileSize = tileSize(now.width(), now.height());
             scenes.set(id, sceneJson);
-            jobs.set(id, new JobRecord(now, memberId, tileSize));
+            jobs.set(id, new JobRecord(now, memberId, tileSize, principal));
         }
         return new JobPublisher(id, memberId, jobs, images, events, status, image, published);
     }
@@ -225,9 +225,9 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     }
 
     @Override
-    public JobStatus status(String id) {
+    public JobStatus status(String id, String principal) {
         JobRecord job = jobs.get(id);
-        if (job == null) {
+        if (job == null || !job.belongsTo(principal)) {
             return null;
         }
         seen.setAsync(id, System.currentTimeMillis());
@@ -235,15 +235,19 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     }
 
     @Override
-    public byte[] image(String id) {
+    public byte[] image(String id, String principal) {
+        JobRecord job = jobs.get(id);
+        if (job == null || !job.belongsTo(principal)) {
+            return null;
+        }
         seen.setAsync(id, System.currentTimeMillis());
         return images.get(id);
     }
 
     @Override
-    public JobStatus cancel(String id) {
+    public JobStatus cancel(String id, String principal) {
         JobRecord job = jobs.get(id);
-        if (job == null) {
+        if (job == null || !job.belongsTo(principal)) {
             return null;
         }
         if (!job.status().state().isFinal()) {
@@ -253,9 +257,9 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     }
 
     @Override
-    public boolean subscribe(String id, JobListener listener, Executor sender) {
+    public boolean subscribe(String id, String principal, JobListener listener, Executor sender) {
         JobRecord job = jobs.get(id);
-        if (job == null) {
+        if (job == null || !job.belongsTo(principal)) {
             return false;
         }
         seen.setAsync(id, System.currentTimeMillis());
@@ -343,7 +347,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             }
             CompiledScene scene = compiler.compile(json);
             adopted.add(id);
-            resume.resume(id, scene, json);
+            resume.resume(id, job.principal(), scene, json);
             log.info("took over job {} from a member that left", id);
         } catch (RuntimeException e) {
             adopted.remove(id);
@@ -352,7 +356,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             JobStatus failed = new JobStatus(id, JobState.FAILED, was.progress(), was.elapsedMillis(), null, was.width(),
                     was.height(), was.fileName(), was.mediaType(), "the member running the job left the cluster, and "
                     + "no other could take it over", was.workers());
-            jobs.set(id, new JobRecord(failed, memberId, job.tileSize()));
+            jobs.set(id, new JobRecord(failed, memberId, job.tileSize(), job.principal()));
             member.<JobEvent>getRingbuffer(ClusterMaps.events(id)).add(failed);
         }
     }

@@ -16,7 +16,7 @@ record TakeOver(String from, String to) implements EntryProcessor<String, JobRec
         if (job == null || !job.owner().equals(from) || job.status().state().isFinal()) {
             return false;
         }
-        entry.setValue(new JobRecord(job.status(), to, job.tileSize()));
+        entry.setValue(new JobRecord(job.status(), to, job.tileSize(), job.principal()));
         return true;
     }
 }

@@ -15,7 +15,8 @@ import studio.server.scene.compiling.CompiledScene;
  * every default here) the member that accepted a job renders it on its own pool and is the only one
  * that knows it. In a cluster (studio.server.cluster) the job's tiles are tasks every member pulls,
  * and its status, event log and image are in the cluster's maps, so that any member serves it and
- * another member takes it over ({@link Takeover}) when the one that accepted it dies.
+ * another member takes it over ({@link Takeover}) when the one that accepted it dies. A job belongs to
+ * the principal that submitted it ("" with sign-in off): to anyone else, the cluster knows no such job.
  */
 public interface JobCluster {
 
@@ -29,9 +30,10 @@ public interface JobCluster {
         /**
          * Runs the job here from now on.
          *
-         * @param scene compiled from {@code sceneJson}, the JSON the job was accepted with
+         * @param principal who submitted the job ("" with sign-in off)
+         * @param scene     compiled from {@code sceneJson}, the JSON the job was accepted with
          */
-        void resume(String id, CompiledScene scene, byte[] sceneJson);
+        void resume(String id, String principal, CompiledScene scene, byte[] sceneJson);
     }
 
     /** Called once by the job service, which takes over jobs through {@code takeover}. */
@@ -66,37 +68,41 @@ public interface JobCluster {
     /**
      * A job was accepted (or taken over) here: the cluster learns of it before its id is answered.
      *
+     * @param principal who submitted the job ("" with sign-in off): only they are served it
      * @param status  the job's status now
      * @param image   the job's image once it is done
      * @param resumed true for a job taken over from a member that died: its events so far were published
      * @return a listener that keeps the cluster told of the job's events, or null
      */
-    default JobListener accepted(String id, byte[] sceneJson, Supplier<JobStatus> status, Supplier<byte[]> image,
+    default JobListener accepted(String id, String principal, byte[] sceneJson, Supplier<JobStatus> status, Supplier<byte[]> image,
                                  boolean resumed) {
         return null;
     }
 
-    /** The status of a job another member runs, or null if the cluster knows no such job. */
-    default JobStatus status(String id) {
+    /** The status of a job another member runs, or null if the cluster knows no such job of {@code principal}'s. */
+    default JobStatus status(String id, String principal) {
         return null;
     }
 
-    /** The image of another member's job, or null if it has none (yet). */
-    default byte[] image(String id) {
+    /** The image of another member's job, or null if it has none (yet) or it is not {@code principal}'s. */
+    default byte[] image(String id, String principal) {
         return null;
     }
 
-    /** Asks the member that runs the job to cancel it; its status, or null if the cluster knows no such job. */
-    default JobStatus cancel(String id) {
+    /**
+     * Asks the member that runs the job to cancel it; its status, or null if the cluster knows no such job
+     * of {@code principal}'s.
+     */
+    default JobStatus cancel(String id, String principal) {
         return null;
     }
 
     /**
      * Subscribes a listener to another member's job; its events are delivered through {@code sender}.
      *
-     * @return false if the cluster knows no such job
+     * @return false if the cluster knows no such job of {@code principal}'s
      */
-    default boolean subscribe(String id, JobListener listener, Executor sender) {
+    default boolean subscribe(String id, String principal, JobListener listener, Executor sender) {
         return false;
     }
 

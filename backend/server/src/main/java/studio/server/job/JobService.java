@@ -42,6 +42,8 @@ public final class JobService implements Drainable, AutoCloseable {
     private final ExecutorService senders;
     private final Map<String, RenderJob> jobs = new ConcurrentHashMap<>();
     private final JobCluster cluster;
+    /** Held while a limited owner's jobs are counted and their new one admitted. */
+    private final Object admission = new Object();
 
     /** Listeners (event streams) at once, over all jobs; each holds a sender thread while it has news. */
     static final int MAX_LISTENERS = 256;
@@ -122,11 +124,39 @@ public final class JobService implements Drainable, AutoCloseable {
      * @throws InvalidSceneException when the scene is invalid or its render could never fit the memory budget
      */
     public JobStatus start(byte[] sceneJson, IntakeMemory intake) {
+        return start(sceneJson, intake, JobOwner.ANYONE);
+    }
+
+    /** As {@link #start(byte[], IntakeMemory)}, for {@code owner}: only they see the job, within their limit. */
+    public JobStatus start(byte[] sceneJson, IntakeMemory intake, JobOwner owner) {
         if (compiler == null) {
             throw new IllegalStateException("this job service is handed compiled scenes only; submit them");
         }
         checkRoom();
-        return submit(compiler.compile(sceneJson, Map.of(), settings.renderThreads(), intake), sceneJson, intake);
+        checkRoom(owner);
+        return submit(compiler.compile(sceneJson, Map.of(), settings.renderThreads(), intake), sceneJson, intake,
+                owner);
+    }
+
+    /**
+     * Refuses ({@link JobQueueFullException}, a 429) while {@code owner} has as many jobs queued or running
+     * here as they may, so that one principal cannot fill the queue for everyone.
+     */
+    private void checkRoom(JobOwner owner) {
+        if (owner.maxJobs() == Integer.MAX_VALUE) {
+            return;
+        }
+        int active = 0;
+        for (RenderJob job : jobs.values()) {
+            if (job.principal().equals(owner.principal()) && !job.state().isFinal()) {
+                active++;
+            }
+        }
+        if (active >= owner.maxJobs()) {
+            throw new JobQueueFullException(retryAfterSeconds(), "you have " + active + " render jobs queued or "
+                    + "running, as many as one principal may (studio.security.max-jobs-per-principal="
+                    + owner.maxJobs() + ")");
+        }
     }
 
     /**
@@ -149,6 +179,24 @@ public final class JobService implements Drainable, AutoCloseable {
      * cluster it travels to the members that render the job's tiles.
      */
     public JobStatus submit(CompiledScene scene, byte[] sceneJson, IntakeMemory intake) {
+        return submit(scene, sceneJson, intake, JobOwner.ANYONE);
+    }
+
+    /**
+     * As {@link #submit(CompiledScene, byte[], IntakeMemory)}, for {@code owner}. A limited owner's count
+     * and new job are taken together, so that simultaneous requests cannot pass the limit.
+     */
+    public JobStatus submit(CompiledScene scene, byte[] sceneJson, IntakeMemory intake, JobOwner owner) {
+        if (owner.maxJobs() == Integer.MAX_VALUE) {
+            return admit(scene, sceneJson, intake, owner);
+        }
+        synchronized (admission) {
+            checkRoom(owner);
+            return admit(scene, sceneJson, intake, owner);
+        }
+    }
+
+    private JobStatus admit(CompiledScene scene, byte[] sceneJson, IntakeMemory intake, JobOwner owner) {
         checkRoom();
         CompiledScene withThreads = new CompiledScene(scene.scene(),
                 scene.settings().withThreads(settings.renderThreads()), scene.format(), scene.quality(),
@@ -157,21 +205,22 @@ public final class JobService implements Drainable, AutoCloseable {
         if (memory == null) {
             throw new JobQueueFullException(retryAfterSeconds(), "the server's render memory is taken by other jobs");
         }
-        return start(UUID.randomUUID().toString().replace("-", ""), withThreads, sceneJson, memory, false);
+        return start(UUID.randomUUID().toString().replace("-", ""), owner.principal(), withThreads, sceneJson, memory,
+                false);
     }
 
-    private JobStatus start(String id, CompiledScene scene, byte[] sceneJson, MemoryBudget.Reservation memory,
-                            boolean resumed) {
+    private JobStatus start(String id, String principal, CompiledScene scene, byte[] sceneJson,
+                            MemoryBudget.Reservation memory, boolean resumed) {
         // a new job takes its place before anyone hears of it; one taken over needs none
         if (!resumed && !executor.takePlace()) {
             memory.close();
             throw new JobQueueFullException(retryAfterSeconds());
         }
-        RenderJob job = new RenderJob(id, scene, budget, memory,
+        RenderJob job = new RenderJob(id, principal, scene, budget, memory,
                 (compiled, listener, cancelled) -> cluster.render(id, compiled, budget, listener, cancelled),
                 () -> cluster.workers(id), (end, image) -> cluster.ending(id, end, image));
         jobs.put(job.id(), job);
-        JobListener publisher = cluster.accepted(id, sceneJson, job::status, job::image, resumed);
+        JobListener publisher = cluster.accepted(id, principal, sceneJson, job::status, job::image, resumed);
         if (publisher != null) {
             job.subscribe(publisher, senders, true);
         }
@@ -192,7 +241,7 @@ public final class JobService implements Drainable, AutoCloseable {
      * now on, even beyond the queue's length (it was accepted already), its memory taken even if the
      * budget is full (refusing it would lose the job).
      */
-    void resume(String id, CompiledScene compiled, byte[] sceneJson) {
+    void resume(String id, String principal, CompiledScene compiled, byte[] sceneJson) {
         if (jobs.containsKey(id)) {
             return;
         }
@@ -201,23 +250,42 @@ public final class JobService implements Drainable, AutoCloseable {
                 compiled.fileStem());
         MemoryBudget.Reservation memory = budget.memory().forceReserve(
                 studio.server.render.RenderMemory.estimate(withThreads));
-        start(id, withThreads, sceneJson, memory, true);
+        start(id, principal, withThreads, sceneJson, memory, true);
     }
 
+    /** A job's status, with sign-in off. */
     public JobStatus status(String id) {
-        RenderJob job = jobs.get(id);
+        return status(id, "");
+    }
+
+    /**
+     * A job's status, if it is {@code principal}'s: anyone else's job answers as if it did not exist
+     * ({@link JobNotFoundException}), so that a job's id tells nobody else anything.
+     */
+    public JobStatus status(String id, String principal) {
+        RenderJob job = local(id, principal);
         if (job == null) {
-            return known(cluster.status(id), id);
+            return known(cluster.status(id, principal), id);
         }
         job.touch();
         return job.status();
     }
 
+    /** Cancels a job, with sign-in off. */
     public JobStatus cancel(String id) {
-        RenderJob job = jobs.get(id);
+        return cancel(id, "");
+    }
+
+    /** Cancels a job if it is {@code principal}'s (see {@link #status(String, String)}). */
+    public JobStatus cancel(String id, String principal) {
+        RenderJob job = local(id, principal);
         if (job == null) {
-            return known(cluster.cancel(id), id);
+            return known(cluster.cancel(id, principal), id);
         }
+        return cancel(job);
+    }
+
+    private JobStatus cancel(RenderJob job) {
         JobStatus status = job.cancel();
         if (status.state() == JobState.CANCELLED) {
             executor.remove(job);
@@ -225,9 +293,27 @@ public final class JobService implements Drainable, AutoCloseable {
         return status;
     }
 
-    /** The finished image with its job's status. */
-    public JobImage image(String id) {
+    /**
+     * This member's job of that id, if {@code principal}'s; null if this member has none.
+     *
+     * @throws JobNotFoundException if it is someone else's
+     */
+    private RenderJob local(String id, String principal) {
         RenderJob job = jobs.get(id);
+        if (job != null && !job.principal().equals(principal)) {
+            throw new JobNotFoundException(id);
+        }
+        return job;
+    }
+
+    /** The finished image with its job's status, with sign-in off. */
+    public JobImage image(String id) {
+        return image(id, "");
+    }
+
+    /** The finished image with its job's status, if {@code principal}'s (see {@link #status(String, String)}). */
+    public JobImage image(String id, String principal) {
+        RenderJob job = local(id, principal);
         byte[] image;
         JobStatus status;
         if (job != null) {
@@ -235,8 +321,8 @@ public final class JobService implements Drainable, AutoCloseable {
             image = job.image();
             status = job.status();
         } else {
-            status = known(cluster.status(id), id);
-            image = status.state() == JobState.DONE ? cluster.image(id) : null;
+            status = known(cluster.status(id, principal), id);
+            image = status.state() == JobState.DONE ? cluster.image(id, principal) : null;
         }
         if (image == null) {
             throw new JobNotDoneException(id, status.state());
@@ -254,9 +340,14 @@ public final class JobService implements Drainable, AutoCloseable {
      * @throws JobQueueFullException when {@value #MAX_LISTENERS} listeners are subscribed already
      */
     void subscribe(String id, JobListener listener) {
-        RenderJob job = jobs.get(id);
+        subscribe(id, "", listener);
+    }
+
+    /** As {@link #subscribe(String, JobListener)}, to a job of {@code principal}'s (see {@link #status(String, String)}). */
+    void subscribe(String id, String principal, JobListener listener) {
+        RenderJob job = local(id, principal);
         if (job == null) {
-            if (!cluster.subscribe(id, listener, senders)) {
+            if (!cluster.subscribe(id, principal, listener, senders)) {
                 throw new JobNotFoundException(id);
             }
             return;
@@ -304,7 +395,7 @@ public final class JobService implements Drainable, AutoCloseable {
         if (job == null) {
             cluster.unsubscribe(id, listener); // another member's job: its stream stops
         } else if (job.unsubscribeLast(listener)) {
-            cancel(id);
+            cancel(job);
         }
     }
 

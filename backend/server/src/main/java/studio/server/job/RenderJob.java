@@ -59,6 +59,8 @@ final class RenderJob implements Runnable {
     }
 
     private final String id;
+    /** Who submitted the job ("" with sign-in off): only they see it. */
+    private final String principal;
     /** Null once the job is final. */
     private CompiledScene scene;
     private final int width, height;
@@ -89,12 +91,13 @@ final class RenderJob implements Runnable {
     private volatile long lastSeenNanos = System.nanoTime();
 
     RenderJob(String id, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory) {
-        this(id, scene, budget, memory, budget::render, () -> null, Ending.NONE);
+        this(id, "", scene, budget, memory, budget::render, () -> null, Ending.NONE);
     }
 
-    RenderJob(String id, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory, Render render,
-              Supplier<Map<String, Integer>> workers, Ending ending) {
+    RenderJob(String id, String principal, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory,
+              Render render, Supplier<Map<String, Integer>> workers, Ending ending) {
         this.id = id;
+        this.principal = principal;
         this.render = render;
         this.ending = ending;
         this.workers = workers;
@@ -109,6 +112,10 @@ final class RenderJob implements Runnable {
 
     String id() {
         return id;
+    }
+
+    String principal() {
+        return principal;
     }
 
     @Override

@@ -11,6 +11,7 @@ import org.springframework.web.socket.config.annotation.WebSocketHandlerRegistry
 
 import studio.server.render.RenderBudget;
 import studio.server.scene.compiling.SceneCompiler;
+import studio.server.security.SignIn;
 import studio.server.system.StudioProperties;
 import tools.jackson.databind.json.JsonMapper;
 
@@ -22,12 +23,14 @@ class PreviewConfiguration implements WebSocketConfigurer {
 
     private final PreviewHandler handler;
     private final SessionLimit sessionLimit;
+    private final PrincipalViews principalViews;
 
     PreviewConfiguration(SceneCompiler compiler, RenderBudget budget, StudioProperties studio, PreviewProperties limits,
-                         JsonMapper json) {
+                         JsonMapper json, SignIn signIn) {
         this.handler = new PreviewHandler(new PreviewRenderer(compiler, budget, studio.renderThreads(), limits, json),
                 studio.limits().maxBodyBytes(), limits.maxSessions(), limits.idleTimeout());
-        this.sessionLimit = new SessionLimit(handler, limits.maxSessions(), json);
+        this.principalViews = new PrincipalViews(signIn.maxLiveViewsPerPrincipal(limits.maxSessions()));
+        this.sessionLimit = new SessionLimit(handler, limits.maxSessions(), json, principalViews);
     }
 
     @Bean(destroyMethod = "close")
@@ -44,6 +47,6 @@ class PreviewConfiguration implements WebSocketConfigurer {
 
     @Override
     public void registerWebSocketHandlers(WebSocketHandlerRegistry registry) {
-        registry.addHandler(handler, "/api/preview").addInterceptors(sessionLimit);
+        registry.addHandler(principalViews.releasingOnClose(handler), "/api/preview").addInterceptors(sessionLimit);
     }
 }

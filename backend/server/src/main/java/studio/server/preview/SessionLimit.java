@@ -16,12 +16,14 @@ import org.springframework.web.socket.WebSocketHandler;
 import org.springframework.web.socket.server.HandshakeInterceptor;
 import org.springframework.web.util.WebUtils;
 
+import studio.server.security.SignIn;
 import tools.jackson.databind.json.JsonMapper;
 
 /**
  * The first step of every live view's handshake: refuses what Spring's own handshake would refuse (not
  * a WebSocket upgrade, a foreign {@code Origin}) with a problem instead of a bare status, then takes
- * one of {@code studio.preview.max-sessions} places (503 with Retry-After when all are taken). A
+ * one of {@code studio.preview.max-sessions} places (503 with Retry-After when all are taken), and one of
+ * its principal's ({@link PrincipalViews}: 429 with Retry-After when they have all theirs open). A
  * place taken here is given back unless the connection was upgraded, whatever later refused it: a
  * refused handshake never keeps a place.
  */
@@ -34,11 +36,13 @@ final class SessionLimit implements HandshakeInterceptor {
     private final PreviewHandler handler;
     private final int maxSessions;
     private final JsonMapper json;
+    private final PrincipalViews principalViews;
 
-    SessionLimit(PreviewHandler handler, int maxSessions, JsonMapper json) {
+    SessionLimit(PreviewHandler handler, int maxSessions, JsonMapper json, PrincipalViews principalViews) {
         this.handler = handler;
         this.maxSessions = maxSessions;
         this.json = json;
+        this.principalViews = principalViews;
     }
 
     @Override
@@ -52,9 +56,19 @@ final class SessionLimit implements HandshakeInterceptor {
             problem(response, refusal.status(), refusal.detail());
             return false;
         }
+        String principal = SignIn.principal(request.getPrincipal());
+        if (!principalViews.tryOpen(principal)) {
+            response.getHeaders().set(HttpHeaders.RETRY_AFTER, Integer.toString(RETRY_AFTER_SECONDS));
+            problem(response, HttpStatus.TOO_MANY_REQUESTS, "you have " + principalViews.maxPerPrincipal() + " live "
+                    + "views open, as many as one principal may (studio.security.max-live-views-per-principal); close "
+                    + "one, or try again in " + RETRY_AFTER_SECONDS + " s");
+            return false;
+        }
         if (handler.tryOpen()) {
+            attributes.put(PrincipalViews.PRINCIPAL, principal);
             return true;
         }
+        principalViews.release(principal);
         response.getHeaders().set(HttpHeaders.RETRY_AFTER, Integer.toString(RETRY_AFTER_SECONDS));
         problem(response, HttpStatus.SERVICE_UNAVAILABLE, "this server has " + maxSessions + " live views open, as "
                 + "many as it serves (studio.preview.max-sessions); try again in " + RETRY_AFTER_SECONDS + " s");
@@ -67,6 +81,7 @@ final class SessionLimit implements HandshakeInterceptor {
         // called for every handshake this interceptor let through, refused later or not
         if (failure != null || !upgraded(response)) {
             handler.release();
+            principalViews.release(SignIn.principal(request.getPrincipal()));
         }
     }
 

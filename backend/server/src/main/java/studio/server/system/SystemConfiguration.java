@@ -31,13 +31,16 @@ class SystemConfiguration {
         return new GracefulShutdown(work, properties.jobs().shutdownGrace());
     }
 
-    /** The API's refusals counted by status, first of the filters so that it sees theirs. */
+    /**
+     * The API's refusals counted by status, first of the filters so that it sees theirs: before Spring
+     * Security's too (spring.security.filter.order, -100), so that sign-in's 401s count.
+     */
     @Bean
     FilterRegistrationBean<RefusalMetricsFilter> refusalMetricsFilter(MeterRegistry registry) {
         FilterRegistrationBean<RefusalMetricsFilter> registration =
                 new FilterRegistrationBean<>(new RefusalMetricsFilter(registry));
         registration.addUrlPatterns("/api/*");
-        registration.setOrder(0);
+        registration.setOrder(-101);
         return registration;
     }
 

@@ -60,7 +60,40 @@ class OpenApiDocumentTest {
         assertThat(operations).containsExactlyInAnyOrder(
                 "POST /api/render", "POST /api/jobs", "GET /api/jobs/{id}", "DELETE /api/jobs/{id}",
                 "GET /api/jobs/{id}/events", "GET /api/jobs/{id}/image", "GET /api/scenes", "GET /api/scenes/{name}",
-                "GET /api/scene-schema", "GET /api/meshes", "GET /actuator/health");
+                "GET /api/scene-schema", "GET /api/meshes", "GET /api/me", "POST /api/preview/tickets",
+                "GET /actuator/health");
+    }
+
+    @Test
+    void everyApiOperationMayAnswer401AsAProblemAskingForABearerToken() {
+        doc.get("paths").properties().forEach(path -> path.getValue().properties().forEach(op -> {
+            JsonNode unauthorized = op.getValue().get("responses").get("401");
+            if (path.getKey().startsWith("/api/")) {
+                assertThat(unauthorized.get("$ref").asString()).as(path.getKey())
+                        .isEqualTo("#/components/responses/Unauthorized");
+            } else {
+                assertThat(unauthorized).as(path.getKey()).isNull();
+            }
+        }));
+        JsonNode response = doc.get("components").get("responses").get("Unauthorized");
+        assertThat(response.get("content").get("application/problem+json").get("schema").get("$ref").asString())
+                .isEqualTo("#/components/schemas/Problem");
+        assertThat(response.get("headers").get("WWW-Authenticate").get("required").asBoolean()).isTrue();
+        JsonNode bearer = doc.get("components").get("securitySchemes").get("bearer");
+        assertThat(bearer.get("type").asString()).isEqualTo("http");
+        assertThat(bearer.get("scheme").asString()).isEqualTo("bearer");
+        assertThat(doc.get("security").toString()).isEqualTo("[{},{\"bearer\":[]}]");
+    }
+
+    @Test
+    void signInOperationsAnswerTheirSchemas() {
+        JsonNode paths = doc.get("paths");
+        assertThat(paths.get("/api/me").get("get").get("responses").get("200").get("content").get("application/json")
+                .get("schema").get("$ref").asString()).isEqualTo("#/components/schemas/Me");
+        JsonNode tickets = paths.get("/api/preview/tickets").get("post").get("responses");
+        assertThat(tickets.get("200").get("content").get("application/json").get("schema").get("$ref").asString())
+                .isEqualTo("#/components/schemas/PreviewTicket");
+        assertThat(tickets.get("429").get("$ref").asString()).isEqualTo("#/components/responses/TooManyTickets");
     }
 
     @Test
@@ -96,9 +129,9 @@ class OpenApiDocumentTest {
         }
         JsonNode paths = doc.get("paths");
         assertThat(paths.get("/api/render").get("post").get("responses").propertyNames())
-                .containsExactlyInAnyOrder("200", "400", "408", "413", "415", "422", "503");
+                .containsExactlyInAnyOrder("200", "400", "401", "408", "413", "415", "422", "503");
         assertThat(paths.get("/api/jobs").get("post").get("responses").propertyNames())
-                .containsExactlyInAnyOrder("202", "400", "408", "413", "415", "429", "503");
+                .containsExactlyInAnyOrder("202", "400", "401", "408", "413", "415", "429", "503");
         assertThat(paths.get("/api/jobs/{id}").get("get").get("responses").get("404").get("$ref").asString())
                 .isEqualTo("#/components/responses/JobNotFound");
         assertThat(paths.get("/api/jobs/{id}/image").get("get").get("responses").get("409").get("$ref").asString())

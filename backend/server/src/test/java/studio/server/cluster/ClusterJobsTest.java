@@ -111,7 +111,7 @@ class ClusterJobsTest {
         String id = submit(accepting);
 
         List<Object> events = new CopyOnWriteArrayList<>();
-        assertThat(other.cluster.subscribe(id, recorder(events), Executors.newSingleThreadExecutor())).isTrue();
+        assertThat(other.cluster.subscribe(id, "", recorder(events), Executors.newSingleThreadExecutor())).isTrue();
         JobStatus done = awaitFinal(members.get(2), id);
 
         assertThat(done.state()).isEqualTo(JobState.DONE);
@@ -234,7 +234,7 @@ class ClusterJobsTest {
         List<Object> events = new CopyOnWriteArrayList<>();
         AtomicInteger heartbeats = new AtomicInteger();
         JobListener listener = recorder(events, heartbeats);
-        assertThat(other.cluster.subscribe(id, listener, Executors.newCachedThreadPool())).isTrue();
+        assertThat(other.cluster.subscribe(id, "", listener, Executors.newCachedThreadPool())).isTrue();
         long seenAtSubscribe = other.cluster.lastSeenMillis(id);
         Await.until("heartbeats of a quiet job through another member", WAIT_MILLIS, () -> heartbeats.get() >= 3);
         Await.until("the job marked seen by the heartbeats", WAIT_MILLIS,

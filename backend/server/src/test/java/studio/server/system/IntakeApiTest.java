@@ -35,7 +35,9 @@ import tools.jackson.databind.json.JsonMapper;
  */
 @SpringBootTest(webEnvironment = SpringBootTest.WebEnvironment.RANDOM_PORT, properties = {
         "studio.render-memory=64MB", "studio.render-threads=2", "studio.limits.body-grace=1s",
-        "studio.limits.min-body-rate=64KB"})
+        "studio.limits.min-body-rate=64KB",
+        // the health's details, which sign-in shows only to a signed-in caller (docs/security.md)
+        "management.endpoint.health.show-details=always"})
 class IntakeApiTest {
 
     private static final JsonMapper JSON = JsonMapper.builder().build();
