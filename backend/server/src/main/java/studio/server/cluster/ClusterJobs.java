@@ -21,10 +21,7 @@ import com.hazelcast.cluster.Member;
 import com.hazelcast.cluster.MembershipEvent;
 import com.hazelcast.cluster.MembershipListener;
 import com.hazelcast.core.HazelcastInstance;
-import com.hazelcast.map.IMap;
-import com.hazelcast.map.listener.EntryAddedListener;
 import com.hazelcast.ringbuffer.ReadResultSet;
-import com.hazelcast.ringbuffer.Ringbuffer;
 
 import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
@@ -66,16 +63,17 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     static final int MIN_LARGE_TILES = 64;
 
     private final HazelcastInstance member;
+    private final ClusterData data;
     private final String memberId;
     private final SceneCompiler compiler;
     private final TileWorkers workers;
     private final TileFarm farm;
     private final int renderThreads;
-    private final IMap<String, JobRecord> jobs;
-    private final IMap<String, byte[]> scenes;
-    private final IMap<String, byte[]> images;
-    private final IMap<String, String> cancels;
-    private final IMap<String, Long> seen;
+    private final SealedMap<String, JobRecord> jobs;
+    private final SealedMap<String, byte[]> scenes;
+    private final SealedMap<String, byte[]> images;
+    private final SealedMap<String, String> cancels;
+    private final SealedMap<String, Long> seen;
     /** Jobs whose cancel was asked for through another member. */
     private final Set<String> cancelRequested = ConcurrentHashMap.newKeySet();
     /** Jobs this member took over and has not rendered yet: their tiles may be queued already. */
@@ -88,25 +86,25 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     private UUID membershipRegistration, cancelRegistration;
 
     /** @param renderThreads threads per render, 0 for all cores: fixes a job's tiling, as on one member */
-    ClusterJobs(HazelcastInstance member, SceneCompiler compiler, TileWorkers workers, int renderThreads) {
-        this(member, compiler, workers, renderThreads, TimeUnit.SECONDS.toMillis(REMOTE_HEARTBEAT_SECONDS));
+    ClusterJobs(SceneCompiler compiler, TileWorkers workers, int renderThreads) {
+        this(compiler, workers, renderThreads, TimeUnit.SECONDS.toMillis(REMOTE_HEARTBEAT_SECONDS));
     }
 
     /** As above, with the streams of other members' jobs hearing a heartbeat every {@code remoteHeartbeatMillis} (tests). */
-    ClusterJobs(HazelcastInstance member, SceneCompiler compiler, TileWorkers workers, int renderThreads,
-                long remoteHeartbeatMillis) {
+    ClusterJobs(SceneCompiler compiler, TileWorkers workers, int renderThreads, long remoteHeartbeatMillis) {
         this.remoteHeartbeatMillis = remoteHeartbeatMillis;
-        this.member = member;
+        this.data = workers.data();
+        this.member = data.member();
         this.memberId = member.getCluster().getLocalMember().getUuid().toString();
         this.compiler = compiler;
         this.workers = workers;
-        this.farm = new TileFarm(member, workers);
+        this.farm = new TileFarm(data, workers);
         this.renderThreads = renderThreads;
-        this.jobs = member.getMap(ClusterMaps.JOBS);
-        this.scenes = member.getMap(ClusterMaps.SCENES);
-        this.images = member.getMap(ClusterMaps.IMAGES);
-        this.cancels = member.getMap(ClusterMaps.CANCELS);
-        this.seen = member.getMap(ClusterMaps.SEEN);
+        this.jobs = data.jobs();
+        this.scenes = data.scenes();
+        this.images = data.images();
+        this.cancels = data.cancels();
+        this.seen = data.seen();
         this.background = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "cluster-jobs");
             t.setDaemon(true);
@@ -117,8 +115,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     @Override
     public void start(Takeover takeover) {
         this.takeover = takeover;
-        cancelRegistration = cancels.addEntryListener(
-                (EntryAddedListener<String, String>) event -> cancelRequested.add(event.getKey()), false);
+        // only a cancel sealed by a member counts: one that does not open is dropped (and counted)
+        cancelRegistration = cancels.listen((id, reason) -> cancelRequested.add(id));
         membershipRegistration = member.getCluster().addMembershipListener(new MembershipListener() {
             @Override
             public void memberAdded(MembershipEvent event) {
@@ -166,7 +164,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     @Override
     public JobListener accepted(String id, byte[] sceneJson, Supplier<JobStatus> status, Supplier<byte[]> image,
                                 boolean resumed) {
-        Ringbuffer<JobEvent> events = member.getRingbuffer(ClusterMaps.events(id));
+        EventLog events = data.events(id);
         JobStatus now = status.get();
         int tileSize;
         Set<String> published = ConcurrentHashMap.newKeySet();
@@ -177,7 +175,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         } else {
             tileSize = tileSize(now.width(), now.height());
             scenes.set(id, sceneJson);
-            jobs.set(id, new JobRecord(now, memberId, tileSize));
+            jobs.set(id, new JobRecord(now, memberId, tileSize, ""));
         }
         return new JobPublisher(id, memberId, jobs, images, events, status, image, published);
     }
@@ -194,8 +192,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             if (end.state() == JobState.DONE) {
                 images.setAsync(id, image).toCompletableFuture().get(END_WRITE_SECONDS, TimeUnit.SECONDS);
             }
-            jobs.submitToKey(id, new StatusUpdate(memberId, end)).toCompletableFuture()
-                    .get(END_WRITE_SECONDS, TimeUnit.SECONDS);
+            jobs.update(id, new StatusUpdate(memberId, end));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (ExecutionException | TimeoutException | RuntimeException e) {
@@ -206,16 +203,17 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     }
 
     /** The tiles whose events a job's ring buffer holds. */
-    private static Set<String> publishedTiles(Ringbuffer<JobEvent> events) {
+    private static Set<String> publishedTiles(EventLog events) {
         Set<String> tiles = new HashSet<>();
         long next = events.headSequence(), tail = events.tailSequence();
         while (next <= tail) {
-            ReadResultSet<JobEvent> batch = events.readManyAsync(next, 0, 1000, null).toCompletableFuture().join();
+            ReadResultSet<byte[]> batch = events.readMany(next, 0, 1000).toCompletableFuture()
+                    .orTimeout(END_WRITE_SECONDS, TimeUnit.SECONDS).join();
             if (batch.size() == 0) {
                 break;
             }
-            for (JobEvent event : batch) {
-                if (event instanceof TileEvent tile) {
+            for (int i = 0; i < batch.size(); i++) {
+                if (events.open(batch, i) instanceof TileEvent tile) {
                     tiles.add(JobPublisher.key(tile));
                 }
             }
@@ -259,7 +257,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             return false;
         }
         seen.setAsync(id, System.currentTimeMillis());
-        RemoteJobStream stream = new RemoteJobStream(id, jobs, member.getRingbuffer(ClusterMaps.events(id)), listener,
+        RemoteJobStream stream = new RemoteJobStream(id, jobs, data.events(id), listener,
                 sender, () -> remoteStreams.remove(listener));
         remoteStreams.put(listener, stream);
         stream.start(job);
@@ -304,7 +302,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         images.delete(id);
         cancels.delete(id);
         seen.delete(id);
-        member.getRingbuffer(ClusterMaps.events(id)).destroy();
+        data.events(id).destroy();
         cancelRequested.remove(id);
         farm.forget(id);
     }
@@ -320,13 +318,13 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             for (Member each : member.getCluster().getMembers()) {
                 alive.add(each.getUuid().toString());
             }
-            for (Map.Entry<String, JobRecord> entry : jobs.entrySet()) {
+            for (Map.Entry<String, JobRecord> entry : jobs.entries().entrySet()) {
                 JobRecord job = entry.getValue();
                 if (job.status().state().isFinal() || alive.contains(job.owner())) {
                     continue;
                 }
                 String id = entry.getKey();
-                if (Boolean.TRUE.equals(jobs.executeOnKey(id, new TakeOver(job.owner(), memberId)))) {
+                if (jobs.update(id, new TakeOver(job.owner(), memberId))) {
                     adopt(id, job, resume);
                 }
             }
@@ -352,8 +350,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             JobStatus failed = new JobStatus(id, JobState.FAILED, was.progress(), was.elapsedMillis(), null, was.width(),
                     was.height(), was.fileName(), was.mediaType(), "the member running the job left the cluster, and "
                     + "no other could take it over", was.workers());
-            jobs.set(id, new JobRecord(failed, memberId, job.tileSize()));
-            member.<JobEvent>getRingbuffer(ClusterMaps.events(id)).add(failed);
+            jobs.set(id, job.withOwner(memberId).withStatus(failed));
+            data.events(id).add(failed);
         }
     }
 
@@ -364,7 +362,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         if (member.getLifecycleService().isRunning()) {
             try {
                 member.getCluster().removeMembershipListener(membershipRegistration);
-                cancels.removeEntryListener(cancelRegistration);
+                cancels.removeListener(cancelRegistration);
             } catch (RuntimeException e) {
                 // the member is going anyway
             }

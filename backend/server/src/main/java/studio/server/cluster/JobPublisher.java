@@ -3,10 +3,6 @@ package studio.server.cluster;
 import java.util.Set;
 import java.util.function.Supplier;
 
-import com.hazelcast.map.IMap;
-import com.hazelcast.ringbuffer.Ringbuffer;
-
-import studio.server.job.JobEvent;
 import studio.server.job.JobListener;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
@@ -25,9 +21,9 @@ final class JobPublisher implements JobListener {
 
     private final String id;
     private final String owner;
-    private final IMap<String, JobRecord> jobs;
-    private final IMap<String, byte[]> images;
-    private final Ringbuffer<JobEvent> events;
+    private final SealedMap<String, JobRecord> jobs;
+    private final SealedMap<String, byte[]> images;
+    private final EventLog events;
     private final Supplier<JobStatus> current;
     private final Supplier<byte[]> image;
     /** {@code x,y} of tiles whose events are in the ring buffer already (a job taken over). */
@@ -37,8 +33,8 @@ final class JobPublisher implements JobListener {
     /** Progress is written to the job table at most this often: a status read through another member lags by as much. */
     static final long PROGRESS_MILLIS = 250;
 
-    JobPublisher(String id, String owner, IMap<String, JobRecord> jobs, IMap<String, byte[]> images,
-                 Ringbuffer<JobEvent> events, Supplier<JobStatus> current, Supplier<byte[]> image, Set<String> published) {
+    JobPublisher(String id, String owner, SealedMap<String, JobRecord> jobs, SealedMap<String, byte[]> images,
+                 EventLog events, Supplier<JobStatus> current, Supplier<byte[]> image, Set<String> published) {
         this.id = id;
         this.owner = owner;
         this.jobs = jobs;
@@ -55,7 +51,7 @@ final class JobPublisher implements JobListener {
 
     @Override
     public void status(JobStatus status) {
-        jobs.executeOnKey(id, new StatusUpdate(owner, status));
+        jobs.update(id, new StatusUpdate(owner, status));
         events.add(status);
     }
 
@@ -69,7 +65,7 @@ final class JobPublisher implements JobListener {
         if (now - progressWritten > PROGRESS_MILLIS * 1_000_000) {
             progressWritten = now;
             // the progress, for status through any member
-            jobs.executeOnKey(id, new StatusUpdate(owner, current.get()));
+            jobs.update(id, new StatusUpdate(owner, current.get()));
         }
     }
 
@@ -78,7 +74,7 @@ final class JobPublisher implements JobListener {
         if (status.state() == JobState.DONE && !images.containsKey(id)) {
             images.set(id, image.get());
         }
-        jobs.executeOnKey(id, new StatusUpdate(owner, status));
+        jobs.update(id, new StatusUpdate(owner, status));
         events.add(status);
     }
 }
