@@ -21,17 +21,14 @@ import com.hazelcast.cluster.Member;
 import com.hazelcast.cluster.MembershipEvent;
 import com.hazelcast.cluster.MembershipListener;
 import com.hazelcast.core.HazelcastInstance;
-import com.hazelcast.ringbuffer.ReadResultSet;
 
 import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
 import studio.engine.render.Renderer;
 import studio.server.job.JobCluster;
-import studio.server.job.JobEvent;
 import studio.server.job.JobListener;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
-import studio.server.job.TileEvent;
 import studio.server.render.RenderBudget;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.SceneCompiler;
@@ -82,8 +79,9 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     /** The event streams this member serves of other members' jobs, by listener. */
     private final Map<JobListener, RemoteJobStream> remoteStreams = new ConcurrentHashMap<>();
     private final long remoteHeartbeatMillis;
+    private final HandOver handOver;
     private volatile Takeover takeover;
-    private UUID membershipRegistration, cancelRegistration;
+    private UUID membershipRegistration, cancelRegistration, releaseRegistration;
 
     /** @param renderThreads threads per render, 0 for all cores: fixes a job's tiling, as on one member */
     ClusterJobs(SceneCompiler compiler, TileWorkers workers, int renderThreads) {
@@ -98,7 +96,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         this.memberId = member.getCluster().getLocalMember().getUuid().toString();
         this.compiler = compiler;
         this.workers = workers;
-        this.farm = new TileFarm(data, workers);
+        this.handOver = new HandOver(data.jobs(), memberId);
+        this.farm = new TileFarm(data, workers, handOver::handedOver);
         this.renderThreads = renderThreads;
         this.jobs = data.jobs();
         this.scenes = data.scenes();
@@ -128,6 +127,12 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
                 background.execute(ClusterJobs.this::adoptOrphans);
             }
         });
+        // a job released by a stopping member is taken over at once
+        releaseRegistration = jobs.listen((id, job) -> {
+            if (HandOver.RELEASED.equals(job.owner()) && !job.status().state().isFinal() && !handOver.leaving()) {
+                background.execute(this::adoptOrphans);
+            }
+        });
         background.scheduleWithFixedDelay(this::adoptOrphans, ORPHAN_CHECK_SECONDS, ORPHAN_CHECK_SECONDS,
                 TimeUnit.SECONDS);
         background.scheduleWithFixedDelay(this::heartbeatRemoteStreams, remoteHeartbeatMillis, remoteHeartbeatMillis,
@@ -141,7 +146,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         JobRecord job = jobs.get(id);
         int tileSize = job != null ? job.tileSize() : tileSize(scene.settings().width(), scene.settings().height());
         boolean resumed = adopted.remove(id);
-        return budget.withinTime(() -> cancelled.getAsBoolean() || cancelRequested.contains(id),
+        return budget.withinTime(() -> cancelled.getAsBoolean() || cancelRequested.contains(id)
+                        || handOver.handedOver(id),
                 stop -> farm.render(id, scene, tileSize, resumed, listener, stop));
     }
 
@@ -171,13 +177,14 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         if (resumed) {
             JobRecord job = jobs.get(id);
             tileSize = job != null ? job.tileSize() : tileSize(now.width(), now.height());
-            published.addAll(publishedTiles(events));
+            published.addAll(events.publishedTiles(END_WRITE_SECONDS));
         } else {
             tileSize = tileSize(now.width(), now.height());
             scenes.set(id, sceneJson);
             jobs.set(id, new JobRecord(now, memberId, tileSize, ""));
         }
-        return new JobPublisher(id, memberId, jobs, images, events, status, image, published);
+        return new JobPublisher(id, memberId, jobs, images, events, status, image, published,
+                () -> handOver.handedOver(id));
     }
 
     /**
@@ -188,6 +195,9 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
      */
     @Override
     public void ending(String id, JobStatus end, byte[] image) {
+        if (handOver.handedOver(id)) {
+            return; // it ends on another member
+        }
         try {
             if (end.state() == JobState.DONE) {
                 images.setAsync(id, image).toCompletableFuture().get(END_WRITE_SECONDS, TimeUnit.SECONDS);
@@ -200,26 +210,6 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
                 log.warn("could not write the end of job {} to the cluster's maps: {}", id, e.toString());
             }
         }
-    }
-
-    /** The tiles whose events a job's ring buffer holds. */
-    private static Set<String> publishedTiles(EventLog events) {
-        Set<String> tiles = new HashSet<>();
-        long next = events.headSequence(), tail = events.tailSequence();
-        while (next <= tail) {
-            ReadResultSet<byte[]> batch = events.readMany(next, 0, 1000).toCompletableFuture()
-                    .orTimeout(END_WRITE_SECONDS, TimeUnit.SECONDS).join();
-            if (batch.size() == 0) {
-                break;
-            }
-            for (int i = 0; i < batch.size(); i++) {
-                if (events.open(batch, i) instanceof TileEvent tile) {
-                    tiles.add(JobPublisher.key(tile));
-                }
-            }
-            next = batch.getNextSequenceToReadFrom();
-        }
-        return tiles;
     }
 
     @Override
@@ -310,7 +300,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     /** Takes over the unfinished jobs whose member has left, those this member wins. */
     void adoptOrphans() {
         Takeover resume = takeover;
-        if (resume == null || !member.getLifecycleService().isRunning()) {
+        if (resume == null || handOver.leaving() || !member.getLifecycleService().isRunning()) {
             return;
         }
         try {
@@ -355,6 +345,26 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         }
     }
 
+    /**
+     * Hands this member's unfinished jobs to the others (see {@link HandOver}), unless it is alone:
+     * its workers stop and hand back their tiles first.
+     */
+    @Override
+    public boolean handOver(Set<String> ids) {
+        if (!member.getLifecycleService().isRunning() || member.getCluster().getMembers().size() < 2) {
+            return false;
+        }
+        workers.close();
+        handOver.release(ids);
+        log.info("handing {} jobs to the other members", ids.size());
+        return true;
+    }
+
+    @Override
+    public boolean awaitHandedOver(long deadlineNanos) throws InterruptedException {
+        return handOver.await(deadlineNanos);
+    }
+
     @Override
     public void close() {
         background.shutdownNow();
@@ -363,6 +373,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             try {
                 member.getCluster().removeMembershipListener(membershipRegistration);
                 cancels.removeListener(cancelRegistration);
+                jobs.removeListener(releaseRegistration);
             } catch (RuntimeException e) {
                 // the member is going anyway
             }

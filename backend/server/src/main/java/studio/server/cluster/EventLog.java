@@ -1,13 +1,17 @@
 package studio.server.cluster;
 
 import java.io.IOException;
+import java.util.HashSet;
+import java.util.Set;
 import java.util.concurrent.CompletionStage;
+import java.util.concurrent.TimeUnit;
 
 import com.hazelcast.nio.serialization.HazelcastSerializationException;
 import com.hazelcast.ringbuffer.ReadResultSet;
 import com.hazelcast.ringbuffer.Ringbuffer;
 
 import studio.server.job.JobEvent;
+import studio.server.job.TileEvent;
 
 /**
  * A job's event log in the cluster: a ring buffer of sealed {@link JobEvent}s (see {@link SealedMap};
@@ -78,5 +82,25 @@ final class EventLog {
 
     void destroy() {
         events.destroy();
+    }
+
+    /** The tiles whose events a job's ring buffer holds. */
+    Set<String> publishedTiles(long timeoutSeconds) {
+        Set<String> tiles = new HashSet<>();
+        long next = headSequence(), tail = tailSequence();
+        while (next <= tail) {
+            ReadResultSet<byte[]> batch = readMany(next, 0, 1000).toCompletableFuture()
+                    .orTimeout(timeoutSeconds, TimeUnit.SECONDS).join();
+            if (batch.size() == 0) {
+                break;
+            }
+            for (int i = 0; i < batch.size(); i++) {
+                if (open(batch, i) instanceof TileEvent tile) {
+                    tiles.add(JobPublisher.key(tile));
+                }
+            }
+            next = batch.getNextSequenceToReadFrom();
+        }
+        return tiles;
     }
 }

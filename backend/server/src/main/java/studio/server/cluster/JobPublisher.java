@@ -1,6 +1,7 @@
 package studio.server.cluster;
 
 import java.util.Set;
+import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 
 import studio.server.job.JobListener;
@@ -28,13 +29,17 @@ final class JobPublisher implements JobListener {
     private final Supplier<byte[]> image;
     /** {@code x,y} of tiles whose events are in the ring buffer already (a job taken over). */
     private final Set<String> published;
+    /** True once the job is handed over to another member: nothing more is written of it from here. */
+    private final BooleanSupplier stopped;
     /** When the job table last had this job's progress (System.nanoTime). */
     private long progressWritten;
     /** Progress is written to the job table at most this often: a status read through another member lags by as much. */
     static final long PROGRESS_MILLIS = 250;
 
     JobPublisher(String id, String owner, SealedMap<String, JobRecord> jobs, SealedMap<String, byte[]> images,
-                 EventLog events, Supplier<JobStatus> current, Supplier<byte[]> image, Set<String> published) {
+                 EventLog events, Supplier<JobStatus> current, Supplier<byte[]> image, Set<String> published,
+                 BooleanSupplier stopped) {
+        this.stopped = stopped;
         this.id = id;
         this.owner = owner;
         this.jobs = jobs;
@@ -51,13 +56,16 @@ final class JobPublisher implements JobListener {
 
     @Override
     public void status(JobStatus status) {
+        if (stopped.getAsBoolean()) {
+            return;
+        }
         jobs.update(id, new StatusUpdate(owner, status));
         events.add(status);
     }
 
     @Override
     public void tile(TileEvent tile) {
-        if (published.remove(key(tile))) {
+        if (stopped.getAsBoolean() || published.remove(key(tile))) {
             return;
         }
         events.add(tile);
@@ -71,6 +79,9 @@ final class JobPublisher implements JobListener {
 
     @Override
     public void end(JobStatus status) {
+        if (stopped.getAsBoolean()) {
+            return;
+        }
         if (status.state() == JobState.DONE && !images.containsKey(id)) {
             images.set(id, image.get());
         }

@@ -13,6 +13,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
+import java.util.function.Predicate;
 
 import com.hazelcast.cluster.Member;
 
@@ -63,12 +64,15 @@ final class TileFarm {
     private final ClusterData data;
     private final TileWorkers workers;
     private final SealedQueue<TileTask> queue;
+    private final Predicate<String> kept;
     /** The tiles each member rendered, per job of this member. */
     private final Map<String, Map<String, Integer>> counts = new ConcurrentHashMap<>();
     private volatile long membersLeft;
 
-    TileFarm(ClusterData data, TileWorkers workers) {
+    /** @param kept true for a job whose tiles stay in the cluster when its render here stops (handed over) */
+    TileFarm(ClusterData data, TileWorkers workers, Predicate<String> kept) {
         this.data = data;
+        this.kept = kept;
         this.workers = workers;
         this.queue = data.queue();
     }
@@ -154,9 +158,12 @@ final class TileFarm {
         } finally {
             results.removeListener(registration);
             workers.scenes().forget(jobId);
-            // the tiles live on in the film, then in the image; cancelled or failed, they are of no use either
-            results.destroy();
-            claims.destroy();
+            // the tiles live on in the film, then in the image; cancelled or failed, they are of no use either;
+            // handed over, they are the new owner's
+            if (!kept.test(jobId)) {
+                results.destroy();
+                claims.destroy();
+            }
         }
     }
 

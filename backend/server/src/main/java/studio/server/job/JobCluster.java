@@ -1,6 +1,7 @@
 package studio.server.job;
 
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.Executor;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
@@ -111,6 +112,26 @@ public interface JobCluster {
     /** When anyone in the cluster last asked about the job (epoch millis), or 0 if not known. */
     default long lastSeenMillis(String id) {
         return 0;
+    }
+
+    /**
+     * The service is stopping: hands this member's unfinished jobs (running and queued) to the other
+     * members, which go on with them from the tiles done, instead of letting them finish or cancelling
+     * them here. Called once; this member takes no tiles from now on.
+     *
+     * @return false if there is nobody to hand them to (a cluster of one): they drain here
+     */
+    default boolean handOver(Set<String> ids) {
+        return false;
+    }
+
+    /**
+     * Waits until the jobs handed over have a new owner, at most until the deadline ({@link System#nanoTime()}).
+     *
+     * @return true if all have
+     */
+    default boolean awaitHandedOver(long deadlineNanos) throws InterruptedException {
+        return true;
     }
 
     /** This member dropped a finished job: the cluster forgets it too. */

@@ -42,6 +42,8 @@ public final class JobService implements Drainable, AutoCloseable {
     /** Delivers events to listeners (see {@link JobSubscription}): a thread per subscription while it has news. */
     private final ExecutorService senders;
     private final Map<String, RenderJob> jobs = new ConcurrentHashMap<>();
+    /** The jobs handed to other members on shutdown (see {@link JobCluster#handOver}). */
+    private final List<RenderJob> handedOver = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final JobCluster cluster;
 
     /** Listeners (event streams) at once, over all jobs; each holds a sender thread while it has news. */
@@ -391,11 +393,21 @@ public final class JobService implements Drainable, AutoCloseable {
         return executor.getActiveCount();
     }
 
-    /** Stops taking jobs (new ones get 429) and cancels the queued ones at once; their listeners hear the end. */
+    /**
+     * Stops taking jobs (new ones get 429) and cancels the queued ones at once; their listeners hear the end.
+     * In a cluster, the unfinished jobs, queued and running, are handed to the other members instead.
+     */
     @Override
     public void stopAccepting() {
         executor.shutdown();
         executor.getQueue().clear();
+        List<RenderJob> unfinished = jobs.values().stream().filter(job -> !job.state().isFinal()).toList();
+        if (!unfinished.isEmpty() && cluster.handOver(unfinished.stream().map(RenderJob::id)
+                .collect(java.util.stream.Collectors.toSet()))) {
+            unfinished.forEach(RenderJob::handOver);
+            handedOver.addAll(unfinished);
+            return;
+        }
         for (RenderJob job : jobs.values()) {
             if (job.state() == JobState.QUEUED) {
                 job.cancel("cancelled: the server is shutting down");
@@ -413,6 +425,15 @@ public final class JobService implements Drainable, AutoCloseable {
     public boolean awaitEnd(long deadlineNanos) throws InterruptedException {
         boolean ended = executor.awaitTermination(Math.max(0, deadlineNanos - System.nanoTime()), TimeUnit.NANOSECONDS);
         awaitListeners(deadlineNanos);
+        if (!handedOver.isEmpty()) {
+            // served by their new owners from now on; forgotten here, not in the cluster
+            ended &= cluster.awaitHandedOver(deadlineNanos);
+            for (RenderJob job : handedOver) {
+                jobs.remove(job.id());
+                job.release();
+            }
+            handedOver.clear();
+        }
         return ended;
     }
 

@@ -216,6 +216,20 @@ final class RenderJob implements Runnable {
         return status;
     }
 
+    /**
+     * The job goes on on another member (this one is stopping): its clients are dropped, so that
+     * they reconnect through another member, and it stops here as if cancelled (what it tells the
+     * cluster is up to the cluster: nothing, for a job handed over).
+     */
+    void handOver() {
+        synchronized (this) {
+            for (JobSubscription subscription : new ArrayList<>(subscriptions)) {
+                drop(subscription);
+            }
+        }
+        cancel("handed over to another member");
+    }
+
     /** Marks a job the executor refused or dropped. */
     void fail(String message) {
         JobStatus status = null;

@@ -115,6 +115,16 @@ final class TestMember implements AutoCloseable {
         jobs.shutdown(0);
     }
 
+    /**
+     * Stops as the application does on SIGTERM: the job service drains (in a cluster: hands its jobs to
+     * the others, waiting at most {@code graceMillis} for them to take them), then the member leaves.
+     */
+    void stop(long graceMillis) {
+        jobs.shutdown(graceMillis);
+        cluster.close();
+        hazelcast.shutdown();
+    }
+
     /** Leaves as on SIGTERM: its jobs drain, its workers hand their tiles back, then the member leaves. */
     @Override
     public void close() {
