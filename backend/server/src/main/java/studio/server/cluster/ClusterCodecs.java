@@ -3,6 +3,7 @@ package studio.server.cluster;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
+import java.nio.ByteBuffer;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
@@ -167,10 +168,10 @@ final class ClusterCodecs {
             Codec.writeNullable(out, result.error());
             double[] rgb = result.rgb();
             out.writeInt(rgb == null ? -1 : rgb.length);
-            if (rgb != null) {
-                for (double value : rgb) {
-                    out.writeDouble(value);
-                }
+            if (rgb != null) { // in one piece: a tile is some 100 KB of doubles
+                ByteBuffer bytes = ByteBuffer.allocate(rgb.length * Double.BYTES);
+                bytes.asDoubleBuffer().put(rgb);
+                out.write(bytes.array());
             }
         }
 
@@ -183,9 +184,10 @@ final class ClusterCodecs {
             if (length > in.available() / Double.BYTES) {
                 throw new IOException("bad pixel count: " + length);
             }
-            double[] rgb = length < 0 ? null : new double[length];
-            for (int i = 0; i < length; i++) {
-                rgb[i] = in.readDouble();
+            double[] rgb = null;
+            if (length >= 0) {
+                rgb = new double[length];
+                ByteBuffer.wrap(in.readNBytes(length * Double.BYTES)).asDoubleBuffer().get(rgb);
             }
             return new TileResult(index, attempt, rgb, rays, samples, nonFinite, worker, error);
         }

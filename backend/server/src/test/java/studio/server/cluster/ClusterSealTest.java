@@ -98,7 +98,8 @@ class ClusterSealTest {
 
         assertThat(member.cluster.status("forged")).isNull();
         assertThat(member.cluster.image("forged")).isNull();
-        assertThat(member.rejected(ClusterMaps.JOBS)).isEqualTo(1);
+        // (the job table is read in the background too, looking for jobs to take over)
+        assertThat(member.rejected(ClusterMaps.JOBS)).isGreaterThanOrEqualTo(1);
         assertThat(member.rejected(ClusterMaps.IMAGES)).isEqualTo(1);
     }
 }
