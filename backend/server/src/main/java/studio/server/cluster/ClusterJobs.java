@@ -346,18 +346,19 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     }
 
     /**
-     * Hands this member's unfinished jobs to the others (see {@link HandOver}), unless it is alone:
-     * its workers stop and hand back their tiles first.
+     * Hands this member's unfinished jobs to the others (see {@link HandOver}): its workers stop and
+     * hand back their tiles first.
      */
     @Override
-    public boolean handOver(Set<String> ids) {
-        if (!member.getLifecycleService().isRunning() || member.getCluster().getMembers().size() < 2) {
-            return false;
-        }
+    public boolean canHandOver() {
+        return member.getLifecycleService().isRunning() && member.getCluster().getMembers().size() > 1;
+    }
+
+    @Override
+    public void handOver(Set<String> ids) {
+        log.info("handing {} jobs to the other members", ids.size());
         workers.close();
         handOver.release(ids);
-        log.info("handing {} jobs to the other members", ids.size());
-        return true;
     }
 
     @Override

@@ -43,15 +43,18 @@ final class HandOver {
     }
 
     /**
-     * Marks the jobs handed over, then releases each in the job table. Called once the member's
-     * workers have stopped.
+     * Releases each job in the job table, and marks those released as handed over. Called once the
+     * member's workers have stopped. A job that ends meanwhile is not released: it ends here as usual
+     * (its end is written by whoever wins the job's entry; once released, a late end of this member's
+     * is refused there, and the job's new owner ends it).
      */
     void release(Set<String> ids) {
         leaving = true;
-        handedOver.addAll(ids);
         for (String id : ids) {
             try {
-                if (!jobs.update(id, new TakeOver(memberId, RELEASED))) {
+                if (jobs.update(id, new TakeOver(memberId, RELEASED))) {
+                    handedOver.add(id);
+                } else {
                     log.info("job {} was not released: it ended, or another member owns it", id);
                 }
             } catch (RuntimeException e) {

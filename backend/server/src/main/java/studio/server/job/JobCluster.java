@@ -114,15 +114,18 @@ public interface JobCluster {
         return 0;
     }
 
+    /** True if the service, stopping, may hand its jobs to other members ({@link #handOver}): there are some. */
+    default boolean canHandOver() {
+        return false;
+    }
+
     /**
      * The service is stopping: hands this member's unfinished jobs (running and queued) to the other
      * members, which go on with them from the tiles done, instead of letting them finish or cancelling
-     * them here. Called once; this member takes no tiles from now on.
-     *
-     * @return false if there is nobody to hand them to (a cluster of one): they drain here
+     * them here. From now on this member takes no tiles, and writes nothing more of these jobs to
+     * the cluster (their renders here stop). Called once, when {@link #canHandOver} said yes.
      */
-    default boolean handOver(Set<String> ids) {
-        return false;
+    default void handOver(Set<String> ids) {
     }
 
     /**

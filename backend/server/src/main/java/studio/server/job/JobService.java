@@ -402,9 +402,12 @@ public final class JobService implements Drainable, AutoCloseable {
         executor.shutdown();
         executor.getQueue().clear();
         List<RenderJob> unfinished = jobs.values().stream().filter(job -> !job.state().isFinal()).toList();
-        if (!unfinished.isEmpty() && cluster.handOver(unfinished.stream().map(RenderJob::id)
-                .collect(java.util.stream.Collectors.toSet()))) {
-            unfinished.forEach(RenderJob::handOver);
+        if (!unfinished.isEmpty() && cluster.canHandOver()) {
+            String reason = "handed over to another member";
+            // clients first (they hear no end from here), then the cluster stops the renders, then they end here
+            unfinished.forEach(job -> job.handingOver(reason));
+            cluster.handOver(unfinished.stream().map(RenderJob::id).collect(java.util.stream.Collectors.toSet()));
+            unfinished.forEach(job -> job.cancel(reason));
             handedOver.addAll(unfinished);
             return;
         }

@@ -217,17 +217,21 @@ final class RenderJob implements Runnable {
     }
 
     /**
-     * The job goes on on another member (this one is stopping): its clients are dropped, so that
-     * they reconnect through another member, and it stops here as if cancelled (what it tells the
-     * cluster is up to the cluster: nothing, for a job handed over).
+     * The job is about to go on on another member (this one is stopping): its clients (not the
+     * cluster's listener) are dropped, so that they reconnect through another member, and when it stops here ({@link #cancel(String)}
+     * follows) it says why. What it tells the cluster is up to the cluster: nothing, for a job handed over.
      */
-    void handOver() {
+    void handingOver(String reason) {
         synchronized (this) {
+            if (!cancelRequested.get()) {
+                cancelReason = reason;
+            }
             for (JobSubscription subscription : new ArrayList<>(subscriptions)) {
-                drop(subscription);
+                if (!subscription.internal) { // the cluster's own listener stops when the cluster says so
+                    drop(subscription);
+                }
             }
         }
-        cancel("handed over to another member");
     }
 
     /** Marks a job the executor refused or dropped. */

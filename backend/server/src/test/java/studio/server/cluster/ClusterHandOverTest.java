@@ -33,6 +33,8 @@ class ClusterHandOverTest {
 
     private static final int P = TestMember.BASE_PORT;
     private static final long GRACE_MILLIS = 20_000;
+    /** The glass scene of ClusterJobsTest at four times the samples: still running when its owner stops. */
+    private static final String SCENE = ClusterJobsTest.SCENE.replace("\"samples\": 24", "\"samples\": 96");
     private static byte[] oneMachine;
     private final List<TestMember> members = new ArrayList<>();
     private final String name = "handover-" + UUID.randomUUID();
@@ -40,7 +42,7 @@ class ClusterHandOverTest {
     @BeforeAll
     static void renderOnOneMachine() {
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator)
-                .compile(ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8));
+                .compile(SCENE.getBytes(StandardCharsets.UTF_8));
         oneMachine = ImageFiles.encode(Renderer.render(scene.scene(), scene.settings()).film(), scene.format(),
                 scene.quality());
     }
@@ -51,7 +53,7 @@ class ClusterHandOverTest {
     }
 
     private String submit(TestMember member) {
-        byte[] json = ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8);
+        byte[] json = SCENE.getBytes(StandardCharsets.UTF_8);
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(json);
         return member.jobs.submit(scene, json, IntakeMemory.NONE).id();
     }
@@ -75,6 +77,7 @@ class ClusterHandOverTest {
         long stoppedMillis = (System.nanoTime() - start) / 1_000_000;
 
         assertThat(stoppedMillis).as("handed over, not drained").isLessThan(GRACE_MILLIS / 2);
+        assertThat(reader.data.jobs().get(running).owner()).isNotEqualTo(stopping.uuid);
         for (String id : List.of(running, queued)) {
             Await.until("job " + id + " to end", ClusterJobsTest.WAIT_MILLIS,
                     () -> reader.jobs.status(id).state().isFinal());
