@@ -151,7 +151,7 @@ at "jobs ended: $(states 0)"
 # one member's renders of the same scenes, on a service that is not clustered
 "$java" -Xmx1g -jar "$jar" --server.port=$((http + 3)) >"$logs/rolling-restart-single.log" 2>&1 &
 single=$!
-until_true 120 curl -fsS -o /dev/null "$(url 3)/actuator/health" || fail "the single member did not start"
+until_true 120 curl -fsS -o /dev/null "$(url 3)/actuator/health" 2>/dev/null || fail "the single member did not start"
 status=0
 for n in $(seq 1 $jobs_count); do
   id="${ids[$((n - 1))]}"
