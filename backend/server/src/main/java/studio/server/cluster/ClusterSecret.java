@@ -28,21 +28,20 @@ final class ClusterSecret {
     /**
      * The secret of a clustered member's configuration.
      *
-     * @throws IllegalStateException with a one-line reason if there is none (and insecure is not set),
-     *                               or it is too short
+     * @throws Refused with a one-line reason if there is none (and insecure is not set), or it is too short
      */
     static ClusterSecret of(ClusterProperties cluster) {
         byte[] secret = cluster.secret().getBytes(StandardCharsets.UTF_8);
         if (secret.length == 0) {
             if (!cluster.insecure()) {
-                throw new IllegalStateException("a clustered member needs studio.cluster.secret (STUDIO_CLUSTER_SECRET, "
+                throw new Refused("a clustered member needs studio.cluster.secret (STUDIO_CLUSTER_SECRET, "
                         + "at least " + MIN_BYTES + " bytes, e.g. openssl rand -base64 48), or studio.cluster.insecure=true "
                         + "for a demo");
             }
             return new ClusterSecret(DEMO.getBytes(StandardCharsets.UTF_8), true);
         }
         if (secret.length < MIN_BYTES) {
-            throw new IllegalStateException("studio.cluster.secret is " + secret.length + " bytes; it must be at least "
+            throw new Refused("studio.cluster.secret is " + secret.length + " bytes; it must be at least "
                     + MIN_BYTES + " (e.g. openssl rand -base64 48)");
         }
         return new ClusterSecret(secret, false);
@@ -65,5 +64,13 @@ final class ClusterSecret {
     String clusterName(String name) {
         byte[] tag = Hkdf.expand(prk, "cluster name".getBytes(StandardCharsets.UTF_8), 12);
         return name + "-" + HexFormat.of().formatHex(tag);
+    }
+
+    /** A clustered member's configuration without a usable secret: the member does not start. */
+    static final class Refused extends IllegalStateException {
+
+        Refused(String reason) {
+            super(reason);
+        }
     }
 }

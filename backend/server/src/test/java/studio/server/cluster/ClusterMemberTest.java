@@ -77,6 +77,14 @@ class ClusterMemberTest {
     }
 
     @Test
+    void aMissingSecretIsReportedInOneLineNotAStackTrace() {
+        var analysis = new ClusterSecretFailureAnalyzer().analyze(new IllegalStateException("the bean failed",
+                new ClusterSecret.Refused("a clustered member needs studio.cluster.secret")));
+        assertThat(analysis.getDescription()).isEqualTo("a clustered member needs studio.cluster.secret");
+        assertThat(analysis.getAction()).contains("STUDIO_CLUSTER_SECRET");
+    }
+
+    @Test
     void aSecretShorterThan32BytesIsRefused() {
         context.withPropertyValues("studio.cluster.members=127.0.0.1:5790", "studio.cluster.port=5790",
                 "studio.cluster.bind-address=127.0.0.1", "studio.cluster.secret=short").run(started -> {
