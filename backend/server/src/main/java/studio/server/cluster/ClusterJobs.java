@@ -347,7 +347,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
 
     /**
      * Hands this member's unfinished jobs to the others (see {@link HandOver}): its workers stop and
-     * hand back their tiles first.
+     * hand back their tiles first; its event streams of other members' jobs are dropped.
      */
     @Override
     public boolean canHandOver() {
@@ -359,6 +359,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         log.info("handing {} jobs to the other members", ids.size());
         workers.close();
         handOver.release(ids);
+        // this member's streams of other members' jobs end too: their clients reconnect through another member
+        remoteStreams.values().forEach(RemoteJobStream::drop);
     }
 
     @Override

@@ -76,6 +76,19 @@ final class RemoteJobStream {
         });
     }
 
+    /**
+     * This member is leaving: the listener is dropped (its client reconnects through another member),
+     * after whatever it is being told now.
+     */
+    void drop() {
+        post(() -> {
+            if (!closed) {
+                close();
+                listener.dropped();
+            }
+        });
+    }
+
     /** The listener went away: nothing more is read or delivered (a read already waiting is ignored when it returns). */
     void close() {
         if (!closed) {

@@ -402,7 +402,7 @@ public final class JobService implements Drainable, AutoCloseable {
         executor.shutdown();
         executor.getQueue().clear();
         List<RenderJob> unfinished = jobs.values().stream().filter(job -> !job.state().isFinal()).toList();
-        if (!unfinished.isEmpty() && cluster.canHandOver()) {
+        if (cluster.canHandOver()) {
             String reason = "handed over to another member";
             // clients first (they hear no end from here), then the cluster stops the renders, then they end here
             unfinished.forEach(job -> job.handingOver(reason));
