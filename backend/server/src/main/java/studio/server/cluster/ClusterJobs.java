@@ -351,7 +351,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
      */
     @Override
     public boolean canHandOver() {
-        return member.getLifecycleService().isRunning() && member.getCluster().getMembers().size() > 1;
+        return !handOver.leaving() && member.getLifecycleService().isRunning()
+                && member.getCluster().getMembers().size() > 1;
     }
 
     @Override
