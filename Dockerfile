@@ -17,10 +17,11 @@ RUN mvn -B -q -f backend/pom.xml package -DskipTests -DskipFrontend
 
 FROM eclipse-temurin:17-jre
 RUN apt-get update && apt-get install -y --no-install-recommends curl && rm -rf /var/lib/apt/lists/* \
-    && useradd --system --uid 10001 --home-dir /app studio
+    && groupadd --system --gid 10001 studio \
+    && useradd --system --uid 10001 --gid 10001 --home-dir /app studio
 WORKDIR /app
 COPY --from=jar /src/backend/server/target/studio.jar studio.jar
-USER studio
+USER 10001:10001
 EXPOSE 8080
 ENV JAVA_TOOL_OPTIONS="-XX:MaxRAMPercentage=75 -XX:+ExitOnOutOfMemoryError"
 HEALTHCHECK --interval=15s --timeout=3s --start-period=30s --retries=3 \

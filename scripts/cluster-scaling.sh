@@ -24,6 +24,8 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 work="$(mktemp -d)"
+# the members' shared secret (a clustered member refuses to start without one)
+export STUDIO_CLUSTER_SECRET="${STUDIO_CLUSTER_SECRET:-$(openssl rand -base64 48)}"
 python3 - "$root/scenes/glass-pattern.json" "$work/scene.json" <<'PY'
 import json, sys
 scene = json.load(open(sys.argv[1]))

@@ -23,6 +23,8 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 work="$(mktemp -d)"
+# the members' shared secret (a clustered member refuses to start without one)
+export STUDIO_CLUSTER_SECRET="${STUDIO_CLUSTER_SECRET:-$(openssl rand -base64 48)}"
 if [[ -z "$scene" ]]; then
   scene="$work/scene.json"
   cat >"$scene" <<'JSON'

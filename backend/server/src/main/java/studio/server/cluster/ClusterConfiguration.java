@@ -1,7 +1,12 @@
 package studio.server.cluster;
 
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
 import io.micrometer.core.instrument.Gauge;
+import io.micrometer.core.instrument.MeterRegistry;
 import io.micrometer.core.instrument.binder.MeterBinder;
+import io.micrometer.core.instrument.simple.SimpleMeterRegistry;
 import org.springframework.beans.factory.ObjectProvider;
 import org.springframework.boot.context.properties.EnableConfigurationProperties;
 import org.springframework.boot.context.properties.bind.Bindable;
@@ -24,28 +29,42 @@ import studio.server.system.StudioProperties;
 /**
  * The cluster: with {@code studio.cluster.members} (or {@code studio.cluster.kubernetes-service-dns})
  * set, a Hazelcast {@link Config} from which Spring Boot's Hazelcast support starts the embedded
- * member; without, nothing (a cluster of one).
+ * member, which admits only members holding the cluster's secret and seals all it shares with it
+ * ({@link ClusterSecret}, {@link Seal}); without, nothing (a cluster of one).
  */
 @Configuration(proxyBeanMethods = false)
 @EnableConfigurationProperties(ClusterProperties.class)
 class ClusterConfiguration {
 
+    private static final Logger log = LoggerFactory.getLogger(ClusterConfiguration.class);
+
     @Bean
     @Conditional(MembersConfigured.class)
-    Config hazelcastConfig(ClusterProperties cluster) {
-        return MemberConfig.of(cluster);
+    ClusterSecret clusterSecret(ClusterProperties cluster) {
+        ClusterSecret secret = ClusterSecret.of(cluster);
+        if (secret.insecure()) {
+            log.warn("studio.cluster.insecure=true: the cluster runs without a secret; anyone who reaches a member's "
+                    + "port can join it and read, forge or delete its jobs. Set STUDIO_CLUSTER_SECRET outside a demo.");
+        }
+        return secret;
+    }
+
+    @Bean
+    @Conditional(MembersConfigured.class)
+    Config hazelcastConfig(ClusterProperties cluster, ClusterSecret secret) {
+        return MemberConfig.of(cluster, secret);
     }
 
     /** Jobs in the cluster's maps, rendered by every member's tile workers (as many as a render's threads). */
     @Bean(destroyMethod = "close")
     @Conditional(MembersConfigured.class)
-    JobCluster clusterJobs(HazelcastInstance member, SceneCompiler compiler, MemoryBudget memory,
-                           StudioProperties properties) {
+    JobCluster clusterJobs(HazelcastInstance member, ClusterSecret secret, ObjectProvider<MeterRegistry> registry,
+                           SceneCompiler compiler, MemoryBudget memory, StudioProperties properties) {
         int threads = properties.renderThreads() > 0 ? properties.renderThreads()
                 : Runtime.getRuntime().availableProcessors();
-        TileWorkers workers = new TileWorkers(member, new JobScenes(member.getMap(ClusterMaps.SCENES), compiler, memory),
-                threads);
-        return new ClusterJobs(member, compiler, workers, properties.renderThreads());
+        ClusterData data = new ClusterData(member, new Seal(secret, registry.getIfAvailable(SimpleMeterRegistry::new)));
+        TileWorkers workers = new TileWorkers(data, new JobScenes(data.scenes(), compiler, memory), threads);
+        return new ClusterJobs(compiler, workers, properties.renderThreads());
     }
 
     @Bean

@@ -6,8 +6,8 @@ import org.springframework.boot.health.contributor.HealthIndicator;
 import com.hazelcast.core.HazelcastInstance;
 
 /**
- * The cluster in GET /actuator/health/cluster: how many members it has, this member's address and
- * the cluster's name. Without configured members the service is a cluster of one that started no
+ * The cluster in GET /actuator/health/cluster: how many members it has and this member's address
+ * (never the cluster's name, which carries a tag of its secret). Without configured members the service is a cluster of one that started no
  * Hazelcast member ({@code "member": "none"}).
  */
 final class ClusterHealth implements HealthIndicator {
@@ -38,7 +38,6 @@ final class ClusterHealth implements HealthIndicator {
         return Health.up()
                 .withDetail("members", member.getCluster().getMembers().size())
                 .withDetail("member", ClusterNames.address(member.getCluster().getLocalMember()))
-                .withDetail("name", member.getConfig().getClusterName())
                 .build();
     }
 }

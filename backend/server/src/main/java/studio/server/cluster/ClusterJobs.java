@@ -21,20 +21,14 @@ import com.hazelcast.cluster.Member;
 import com.hazelcast.cluster.MembershipEvent;
 import com.hazelcast.cluster.MembershipListener;
 import com.hazelcast.core.HazelcastInstance;
-import com.hazelcast.map.IMap;
-import com.hazelcast.map.listener.EntryAddedListener;
-import com.hazelcast.ringbuffer.ReadResultSet;
-import com.hazelcast.ringbuffer.Ringbuffer;
 
 import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
 import studio.engine.render.Renderer;
 import studio.server.job.JobCluster;
-import studio.server.job.JobEvent;
 import studio.server.job.JobListener;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
-import studio.server.job.TileEvent;
 import studio.server.render.RenderBudget;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.SceneCompiler;
@@ -66,16 +60,17 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     static final int MIN_LARGE_TILES = 64;
 
     private final HazelcastInstance member;
+    private final ClusterData data;
     private final String memberId;
     private final SceneCompiler compiler;
     private final TileWorkers workers;
     private final TileFarm farm;
     private final int renderThreads;
-    private final IMap<String, JobRecord> jobs;
-    private final IMap<String, byte[]> scenes;
-    private final IMap<String, byte[]> images;
-    private final IMap<String, String> cancels;
-    private final IMap<String, Long> seen;
+    private final SealedMap<String, JobRecord> jobs;
+    private final SealedMap<String, byte[]> scenes;
+    private final SealedMap<String, byte[]> images;
+    private final SealedMap<String, String> cancels;
+    private final SealedMap<String, Long> seen;
     /** Jobs whose cancel was asked for through another member. */
     private final Set<String> cancelRequested = ConcurrentHashMap.newKeySet();
     /** Jobs this member took over and has not rendered yet: their tiles may be queued already. */
@@ -84,29 +79,31 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     /** The event streams this member serves of other members' jobs, by listener. */
     private final Map<JobListener, RemoteJobStream> remoteStreams = new ConcurrentHashMap<>();
     private final long remoteHeartbeatMillis;
+    private final HandOver handOver;
     private volatile Takeover takeover;
-    private UUID membershipRegistration, cancelRegistration;
+    private UUID membershipRegistration, cancelRegistration, releaseRegistration;
 
     /** @param renderThreads threads per render, 0 for all cores: fixes a job's tiling, as on one member */
-    ClusterJobs(HazelcastInstance member, SceneCompiler compiler, TileWorkers workers, int renderThreads) {
-        this(member, compiler, workers, renderThreads, TimeUnit.SECONDS.toMillis(REMOTE_HEARTBEAT_SECONDS));
+    ClusterJobs(SceneCompiler compiler, TileWorkers workers, int renderThreads) {
+        this(compiler, workers, renderThreads, TimeUnit.SECONDS.toMillis(REMOTE_HEARTBEAT_SECONDS));
     }
 
     /** As above, with the streams of other members' jobs hearing a heartbeat every {@code remoteHeartbeatMillis} (tests). */
-    ClusterJobs(HazelcastInstance member, SceneCompiler compiler, TileWorkers workers, int renderThreads,
-                long remoteHeartbeatMillis) {
+    ClusterJobs(SceneCompiler compiler, TileWorkers workers, int renderThreads, long remoteHeartbeatMillis) {
         this.remoteHeartbeatMillis = remoteHeartbeatMillis;
-        this.member = member;
+        this.data = workers.data();
+        this.member = data.member();
         this.memberId = member.getCluster().getLocalMember().getUuid().toString();
         this.compiler = compiler;
         this.workers = workers;
-        this.farm = new TileFarm(member, workers);
+        this.handOver = new HandOver(data.jobs(), memberId);
+        this.farm = new TileFarm(data, workers, handOver::handedOver);
         this.renderThreads = renderThreads;
-        this.jobs = member.getMap(ClusterMaps.JOBS);
-        this.scenes = member.getMap(ClusterMaps.SCENES);
-        this.images = member.getMap(ClusterMaps.IMAGES);
-        this.cancels = member.getMap(ClusterMaps.CANCELS);
-        this.seen = member.getMap(ClusterMaps.SEEN);
+        this.jobs = data.jobs();
+        this.scenes = data.scenes();
+        this.images = data.images();
+        this.cancels = data.cancels();
+        this.seen = data.seen();
         this.background = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "cluster-jobs");
             t.setDaemon(true);
@@ -117,8 +114,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     @Override
     public void start(Takeover takeover) {
         this.takeover = takeover;
-        cancelRegistration = cancels.addEntryListener(
-                (EntryAddedListener<String, String>) event -> cancelRequested.add(event.getKey()), false);
+        // only a cancel sealed by a member counts: one that does not open is dropped (and counted)
+        cancelRegistration = cancels.listen((id, reason) -> cancelRequested.add(id));
         membershipRegistration = member.getCluster().addMembershipListener(new MembershipListener() {
             @Override
             public void memberAdded(MembershipEvent event) {
@@ -128,6 +125,12 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             public void memberRemoved(MembershipEvent event) {
                 farm.memberLeft();
                 background.execute(ClusterJobs.this::adoptOrphans);
+            }
+        });
+        // a job released by a stopping member is taken over at once
+        releaseRegistration = jobs.listen((id, job) -> {
+            if (HandOver.RELEASED.equals(job.owner()) && !job.status().state().isFinal() && !handOver.leaving()) {
+                background.execute(this::adoptOrphans);
             }
         });
         background.scheduleWithFixedDelay(this::adoptOrphans, ORPHAN_CHECK_SECONDS, ORPHAN_CHECK_SECONDS,
@@ -143,7 +146,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         JobRecord job = jobs.get(id);
         int tileSize = job != null ? job.tileSize() : tileSize(scene.settings().width(), scene.settings().height());
         boolean resumed = adopted.remove(id);
-        return budget.withinTime(() -> cancelled.getAsBoolean() || cancelRequested.contains(id),
+        return budget.withinTime(() -> cancelled.getAsBoolean() || cancelRequested.contains(id)
+                        || handOver.handedOver(id),
                 stop -> farm.render(id, scene, tileSize, resumed, listener, stop));
     }
 
@@ -166,20 +170,21 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     @Override
     public JobListener accepted(String id, String principal, byte[] sceneJson, Supplier<JobStatus> status, Supplier<byte[]> image,
                                 boolean resumed) {
-        Ringbuffer<JobEvent> events = member.getRingbuffer(ClusterMaps.events(id));
+        EventLog events = data.events(id);
         JobStatus now = status.get();
         int tileSize;
         Set<String> published = ConcurrentHashMap.newKeySet();
         if (resumed) {
             JobRecord job = jobs.get(id);
             tileSize = job != null ? job.tileSize() : tileSize(now.width(), now.height());
-            published.addAll(publishedTiles(events));
+            published.addAll(events.publishedTiles(END_WRITE_SECONDS));
         } else {
             tileSize = tileSize(now.width(), now.height());
             scenes.set(id, sceneJson);
             jobs.set(id, new JobRecord(now, memberId, tileSize, principal));
         }
-        return new JobPublisher(id, memberId, jobs, images, events, status, image, published);
+        return new JobPublisher(id, memberId, jobs, images, events, status, image, published,
+                () -> handOver.handedOver(id));
     }
 
     /**
@@ -190,12 +195,14 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
      */
     @Override
     public void ending(String id, JobStatus end, byte[] image) {
+        if (handOver.handedOver(id)) {
+            return; // it ends on another member
+        }
         try {
             if (end.state() == JobState.DONE) {
                 images.setAsync(id, image).toCompletableFuture().get(END_WRITE_SECONDS, TimeUnit.SECONDS);
             }
-            jobs.submitToKey(id, new StatusUpdate(memberId, end)).toCompletableFuture()
-                    .get(END_WRITE_SECONDS, TimeUnit.SECONDS);
+            jobs.update(id, new StatusUpdate(memberId, end));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (ExecutionException | TimeoutException | RuntimeException e) {
@@ -203,25 +210,6 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
                 log.warn("could not write the end of job {} to the cluster's maps: {}", id, e.toString());
             }
         }
-    }
-
-    /** The tiles whose events a job's ring buffer holds. */
-    private static Set<String> publishedTiles(Ringbuffer<JobEvent> events) {
-        Set<String> tiles = new HashSet<>();
-        long next = events.headSequence(), tail = events.tailSequence();
-        while (next <= tail) {
-            ReadResultSet<JobEvent> batch = events.readManyAsync(next, 0, 1000, null).toCompletableFuture().join();
-            if (batch.size() == 0) {
-                break;
-            }
-            for (JobEvent event : batch) {
-                if (event instanceof TileEvent tile) {
-                    tiles.add(JobPublisher.key(tile));
-                }
-            }
-            next = batch.getNextSequenceToReadFrom();
-        }
-        return tiles;
     }
 
     @Override
@@ -263,7 +251,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             return false;
         }
         seen.setAsync(id, System.currentTimeMillis());
-        RemoteJobStream stream = new RemoteJobStream(id, jobs, member.getRingbuffer(ClusterMaps.events(id)), listener,
+        RemoteJobStream stream = new RemoteJobStream(id, jobs, data.events(id), listener,
                 sender, () -> remoteStreams.remove(listener));
         remoteStreams.put(listener, stream);
         stream.start(job);
@@ -308,7 +296,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         images.delete(id);
         cancels.delete(id);
         seen.delete(id);
-        member.getRingbuffer(ClusterMaps.events(id)).destroy();
+        data.events(id).destroy();
         cancelRequested.remove(id);
         farm.forget(id);
     }
@@ -316,7 +304,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     /** Takes over the unfinished jobs whose member has left, those this member wins. */
     void adoptOrphans() {
         Takeover resume = takeover;
-        if (resume == null || !member.getLifecycleService().isRunning()) {
+        if (resume == null || handOver.leaving() || !member.getLifecycleService().isRunning()) {
             return;
         }
         try {
@@ -324,13 +312,13 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             for (Member each : member.getCluster().getMembers()) {
                 alive.add(each.getUuid().toString());
             }
-            for (Map.Entry<String, JobRecord> entry : jobs.entrySet()) {
+            for (Map.Entry<String, JobRecord> entry : jobs.entries().entrySet()) {
                 JobRecord job = entry.getValue();
                 if (job.status().state().isFinal() || alive.contains(job.owner())) {
                     continue;
                 }
                 String id = entry.getKey();
-                if (Boolean.TRUE.equals(jobs.executeOnKey(id, new TakeOver(job.owner(), memberId)))) {
+                if (jobs.update(id, new TakeOver(job.owner(), memberId))) {
                     adopt(id, job, resume);
                 }
             }
@@ -356,9 +344,33 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             JobStatus failed = new JobStatus(id, JobState.FAILED, was.progress(), was.elapsedMillis(), null, was.width(),
                     was.height(), was.fileName(), was.mediaType(), "the member running the job left the cluster, and "
                     + "no other could take it over", was.workers());
-            jobs.set(id, new JobRecord(failed, memberId, job.tileSize(), job.principal()));
-            member.<JobEvent>getRingbuffer(ClusterMaps.events(id)).add(failed);
+            jobs.set(id, job.withOwner(memberId).withStatus(failed));
+            data.events(id).add(failed);
         }
+    }
+
+    /**
+     * Hands this member's unfinished jobs to the others (see {@link HandOver}): its workers stop and
+     * hand back their tiles first; its event streams of other members' jobs are dropped.
+     */
+    @Override
+    public boolean canHandOver() {
+        return !handOver.leaving() && member.getLifecycleService().isRunning()
+                && member.getCluster().getMembers().size() > 1;
+    }
+
+    @Override
+    public void handOver(Set<String> ids) {
+        log.info("handing {} jobs to the other members", ids.size());
+        workers.close();
+        handOver.release(ids);
+        // this member's streams of other members' jobs end too: their clients reconnect through another member
+        remoteStreams.values().forEach(RemoteJobStream::drop);
+    }
+
+    @Override
+    public boolean awaitHandedOver(long deadlineNanos) throws InterruptedException {
+        return handOver.await(deadlineNanos);
     }
 
     @Override
@@ -368,7 +380,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
         if (member.getLifecycleService().isRunning()) {
             try {
                 member.getCluster().removeMembershipListener(membershipRegistration);
-                cancels.removeEntryListener(cancelRegistration);
+                cancels.removeListener(cancelRegistration);
+                jobs.removeListener(releaseRegistration);
             } catch (RuntimeException e) {
                 // the member is going anyway
             }

@@ -1,7 +1,7 @@
 package studio.server.cluster;
 
 /**
- * The names of the cluster's data structures. Each is kept with one backup on another member
+ * The names of the cluster's data structures. Every value in them is sealed bytes ({@link ClusterData}). Each is kept with one backup on another member
  * (Hazelcast's default, set explicitly in {@link MemberConfig}), so the loss of any one member
  * loses none of it.
  */
@@ -20,8 +20,11 @@ final class ClusterMaps {
     /** The {@link TileTask}s every member's workers take from, all jobs' in the order queued. */
     static final String TILE_QUEUE = "studio-tile-queue";
 
-    private static final String TILES = "studio-tiles-";
-    private static final String CLAIMS = "studio-claims-";
+    /** The families of the per-job structures: their sealing keys and rejection counters. */
+    static final String TILES_FAMILY = "studio-tiles", CLAIMS_FAMILY = "studio-claims";
+
+    private static final String TILES = TILES_FAMILY + "-";
+    private static final String CLAIMS = CLAIMS_FAMILY + "-";
     private static final String EVENTS = "studio-events-";
 
     private ClusterMaps() {

@@ -19,17 +19,24 @@ import org.springframework.boot.context.properties.bind.DefaultValue;
  *                    pods (e.g. ray-studio-cluster.default.svc.cluster.local): the members find
  *                    each other through it (Hazelcast's Kubernetes discovery, DNS lookup mode, which needs
  *                    no access to the Kubernetes API) instead of a member list; empty: not on Kubernetes
+ * @param secret      the secret every member holds (STUDIO_CLUSTER_SECRET, at least 32 bytes): only
+ *                    members with it join, and everything in the cluster is sealed with it; a
+ *                    clustered member without one refuses to start
+ * @param insecure    true: a clustered member without a secret starts anyway, with a public demo
+ *                    secret that protects nothing (a demo on one machine)
  */
 @ConfigurationProperties("studio.cluster")
 public record ClusterProperties(@DefaultValue("5701") int port, @DefaultValue List<String> members,
                                 @DefaultValue("ray-studio") String name, @DefaultValue("") String bindAddress,
-                                @DefaultValue("") String kubernetesServiceDns) {
+                                @DefaultValue("") String kubernetesServiceDns, @DefaultValue("") String secret,
+                                @DefaultValue("false") boolean insecure) {
 
     @ConstructorBinding
     public ClusterProperties {
         members = members == null ? List.of()
                 : members.stream().map(String::trim).filter(member -> !member.isEmpty()).toList();
         kubernetesServiceDns = kubernetesServiceDns == null ? "" : kubernetesServiceDns.trim();
+        secret = secret == null ? "" : secret.trim();
         if (port < 1 || port > 65535) {
             throw new IllegalArgumentException("studio.cluster.port must be a port number (1-65535): " + port);
         }
@@ -39,9 +46,9 @@ public record ClusterProperties(@DefaultValue("5701") int port, @DefaultValue Li
         }
     }
 
-    /** Members found by a list, not on Kubernetes. */
-    public ClusterProperties(int port, List<String> members, String name, String bindAddress) {
-        this(port, members, name, bindAddress, "");
+    /** Members found by a list, not on Kubernetes, holding {@code secret}. */
+    public ClusterProperties(int port, List<String> members, String name, String bindAddress, String secret) {
+        this(port, members, name, bindAddress, "", secret, false);
     }
 
     /**
@@ -55,5 +62,13 @@ public record ClusterProperties(@DefaultValue("5701") int port, @DefaultValue Li
     /** True when the members find each other through a Kubernetes headless service. */
     public boolean onKubernetes() {
         return !kubernetesServiceDns.isEmpty();
+    }
+
+    /** Never the secret. */
+    @Override
+    public String toString() {
+        return "ClusterProperties[port=" + port + ", members=" + members + ", name=" + name + ", bindAddress="
+                + bindAddress + ", kubernetesServiceDns=" + kubernetesServiceDns + ", secret=" + (secret.isEmpty() ? "none"
+                : "(set)") + ", insecure=" + insecure + "]";
     }
 }

@@ -1,12 +1,9 @@
 package studio.server.cluster;
 
 import java.util.Set;
+import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 
-import com.hazelcast.map.IMap;
-import com.hazelcast.ringbuffer.Ringbuffer;
-
-import studio.server.job.JobEvent;
 import studio.server.job.JobListener;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
@@ -25,20 +22,24 @@ final class JobPublisher implements JobListener {
 
     private final String id;
     private final String owner;
-    private final IMap<String, JobRecord> jobs;
-    private final IMap<String, byte[]> images;
-    private final Ringbuffer<JobEvent> events;
+    private final SealedMap<String, JobRecord> jobs;
+    private final SealedMap<String, byte[]> images;
+    private final EventLog events;
     private final Supplier<JobStatus> current;
     private final Supplier<byte[]> image;
     /** {@code x,y} of tiles whose events are in the ring buffer already (a job taken over). */
     private final Set<String> published;
+    /** True once the job is handed over to another member: nothing more is written of it from here. */
+    private final BooleanSupplier stopped;
     /** When the job table last had this job's progress (System.nanoTime). */
     private long progressWritten;
     /** Progress is written to the job table at most this often: a status read through another member lags by as much. */
     static final long PROGRESS_MILLIS = 250;
 
-    JobPublisher(String id, String owner, IMap<String, JobRecord> jobs, IMap<String, byte[]> images,
-                 Ringbuffer<JobEvent> events, Supplier<JobStatus> current, Supplier<byte[]> image, Set<String> published) {
+    JobPublisher(String id, String owner, SealedMap<String, JobRecord> jobs, SealedMap<String, byte[]> images,
+                 EventLog events, Supplier<JobStatus> current, Supplier<byte[]> image, Set<String> published,
+                 BooleanSupplier stopped) {
+        this.stopped = stopped;
         this.id = id;
         this.owner = owner;
         this.jobs = jobs;
@@ -55,13 +56,16 @@ final class JobPublisher implements JobListener {
 
     @Override
     public void status(JobStatus status) {
-        jobs.executeOnKey(id, new StatusUpdate(owner, status));
+        if (stopped.getAsBoolean()) {
+            return;
+        }
+        jobs.update(id, new StatusUpdate(owner, status));
         events.add(status);
     }
 
     @Override
     public void tile(TileEvent tile) {
-        if (published.remove(key(tile))) {
+        if (stopped.getAsBoolean() || published.remove(key(tile))) {
             return;
         }
         events.add(tile);
@@ -69,16 +73,19 @@ final class JobPublisher implements JobListener {
         if (now - progressWritten > PROGRESS_MILLIS * 1_000_000) {
             progressWritten = now;
             // the progress, for status through any member
-            jobs.executeOnKey(id, new StatusUpdate(owner, current.get()));
+            jobs.update(id, new StatusUpdate(owner, current.get()));
         }
     }
 
     @Override
     public void end(JobStatus status) {
+        if (stopped.getAsBoolean()) {
+            return;
+        }
         if (status.state() == JobState.DONE && !images.containsKey(id)) {
             images.set(id, image.get());
         }
-        jobs.executeOnKey(id, new StatusUpdate(owner, status));
+        jobs.update(id, new StatusUpdate(owner, status));
         events.add(status);
     }
 }

@@ -1,18 +1,17 @@
 package studio.server.cluster;
 
-import java.io.Serializable;
-
 import studio.server.job.JobStatus;
 
 /**
- * A job in the cluster's job table.
+ * A job in the cluster's job table (written as {@link ClusterCodecs#JOB_RECORD}).
  *
- * @param owner    the id of the member that runs the job (accepted it, or took it over)
- * @param tileSize the job's tiling, fixed when it was accepted, so that a member that takes it over
- *                 cuts the same tiles
- * @param principal who submitted the job ("" with sign-in off): every member serves the job to them only
+ * @param owner     the id of the member that runs the job (accepted it, or took it over); empty
+ *                  while a stopping member hands it to the others
+ * @param tileSize  the job's tiling, fixed when it was accepted, so that a member that takes it over
+ *                  cuts the same tiles
+ * @param principal who submitted the job; empty when sign-in is off
  */
-record JobRecord(JobStatus status, String owner, int tileSize, String principal) implements Serializable {
+record JobRecord(JobStatus status, String owner, int tileSize, String principal) {
 
     JobRecord withStatus(JobStatus next) {
         return new JobRecord(next, owner, tileSize, principal);
@@ -21,5 +20,9 @@ record JobRecord(JobStatus status, String owner, int tileSize, String principal)
     /** Whether {@code caller} may see the job: to anyone else the cluster knows no such job. */
     boolean belongsTo(String caller) {
         return principal.equals(caller);
+    }
+
+    JobRecord withOwner(String next) {
+        return new JobRecord(status, next, tileSize, principal);
     }
 }

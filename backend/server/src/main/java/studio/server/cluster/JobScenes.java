@@ -3,8 +3,6 @@ package studio.server.cluster;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
-import com.hazelcast.map.IMap;
-
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.IntakeMemory;
@@ -24,12 +22,12 @@ final class JobScenes {
     private record Entry(CompiledScene scene, IntakeMemory memory) {
     }
 
-    private final IMap<String, byte[]> json;
+    private final SealedMap<String, byte[]> json;
     private final SceneCompiler compiler;
     private final MemoryBudget memory;
     private final Map<String, Entry> scenes = new LinkedHashMap<>(8, 0.75f, true);
 
-    JobScenes(IMap<String, byte[]> json, SceneCompiler compiler, MemoryBudget memory) {
+    JobScenes(SealedMap<String, byte[]> json, SceneCompiler compiler, MemoryBudget memory) {
         this.json = json;
         this.compiler = compiler;
         this.memory = memory;

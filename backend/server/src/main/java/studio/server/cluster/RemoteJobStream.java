@@ -5,9 +5,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicBoolean;
 
-import com.hazelcast.map.IMap;
 import com.hazelcast.ringbuffer.ReadResultSet;
-import com.hazelcast.ringbuffer.Ringbuffer;
 
 import studio.server.job.JobEvent;
 import studio.server.job.JobListener;
@@ -30,8 +28,8 @@ final class RemoteJobStream {
     static final int BATCH = 64;
 
     private final String id;
-    private final IMap<String, JobRecord> jobs;
-    private final Ringbuffer<JobEvent> events;
+    private final SealedMap<String, JobRecord> jobs;
+    private final EventLog events;
     private final JobListener listener;
     private final Executor sender;
     /** Status events up to this sequence were past when the listener subscribed: it hears the status now instead. */
@@ -42,7 +40,7 @@ final class RemoteJobStream {
     private volatile boolean closed;
 
     /** @param onClosed run once when the stream ends, is dropped or is closed */
-    RemoteJobStream(String id, IMap<String, JobRecord> jobs, Ringbuffer<JobEvent> events, JobListener listener,
+    RemoteJobStream(String id, SealedMap<String, JobRecord> jobs, EventLog events, JobListener listener,
                     Executor sender, Runnable onClosed) {
         this.id = id;
         this.jobs = jobs;
@@ -78,6 +76,19 @@ final class RemoteJobStream {
         });
     }
 
+    /**
+     * This member is leaving: the listener is dropped (its client reconnects through another member),
+     * after whatever it is being told now.
+     */
+    void drop() {
+        post(() -> {
+            if (!closed) {
+                close();
+                listener.dropped();
+            }
+        });
+    }
+
     /** The listener went away: nothing more is read or delivered (a read already waiting is ignored when it returns). */
     void close() {
         if (!closed) {
@@ -108,7 +119,7 @@ final class RemoteJobStream {
         if (closed) {
             return;
         }
-        events.readManyAsync(from, 1, BATCH, null).whenComplete((batch, failure) -> post(() -> deliver(batch, failure)));
+        events.readMany(from, 1, BATCH).whenComplete((batch, failure) -> post(() -> deliver(batch, failure)));
     }
 
     private void end(JobStatus status) {
@@ -116,7 +127,7 @@ final class RemoteJobStream {
         listener.end(status);
     }
 
-    private void deliver(ReadResultSet<JobEvent> batch, Throwable failure) {
+    private void deliver(ReadResultSet<byte[]> batch, Throwable failure) {
         if (closed) {
             return;
         }
@@ -137,7 +148,7 @@ final class RemoteJobStream {
             return;
         }
         for (int i = 0; i < batch.size(); i++) {
-            JobEvent event = batch.get(i);
+            JobEvent event = events.open(batch, i); // null: not sealed by a member, skipped
             if (event instanceof TileEvent tile) {
                 listener.tile(tile);
             } else if (event instanceof JobStatus status) {

@@ -1,22 +1,20 @@
 package studio.server.cluster;
 
-import java.util.Map;
-
-import com.hazelcast.map.EntryProcessor;
+import java.util.function.UnaryOperator;
 
 /**
- * Moves an unfinished job from a member that left to the member that asks, on the member that holds
- * the job's entry: of all the members that try at once, exactly one gets true.
+ * Moves an unfinished job from a member that left (or handed it over) to the member that asks, by
+ * compare-and-set on the job's entry ({@link SealedMap#update}): of all the members that try at once,
+ * exactly one succeeds.
  */
-record TakeOver(String from, String to) implements EntryProcessor<String, JobRecord, Boolean> {
+record TakeOver(String from, String to) implements UnaryOperator<JobRecord> {
 
+    /** The job owned by {@code to}, or null to leave it. */
     @Override
-    public Boolean process(Map.Entry<String, JobRecord> entry) {
-        JobRecord job = entry.getValue();
-        if (job == null || !job.owner().equals(from) || job.status().state().isFinal()) {
-            return false;
+    public JobRecord apply(JobRecord job) {
+        if (!job.owner().equals(from) || job.status().state().isFinal()) {
+            return null;
         }
-        entry.setValue(new JobRecord(job.status(), to, job.tileSize(), job.principal()));
-        return true;
+        return job.withOwner(to);
     }
 }

@@ -32,7 +32,32 @@ final class TileAssembly {
         this.count = count;
     }
 
-    /** Puts a tile's result into the film, unless it failed or the tile is done already. */
+    /**
+     * Why a result read from the cluster cannot be used, or null if it can: its index must be one of
+     * the job's tiles, and a rendered tile must have three finite values for each of the tile's pixels.
+     */
+    String problem(TileResult result) {
+        if (result.index() < 0 || result.index() >= tiles.size()) {
+            return "no such tile: " + result.index();
+        }
+        if (result.failed()) {
+            return null;
+        }
+        TileRect tile = tiles.get(result.index());
+        double[] rgb = result.rgb();
+        if (rgb == null || rgb.length != 3 * tile.width() * tile.height()) {
+            return "tile " + result.index() + " has " + (rgb == null ? 0 : rgb.length) + " values, not "
+                    + 3 * tile.width() * tile.height();
+        }
+        for (double value : rgb) {
+            if (!Double.isFinite(value)) {
+                return "tile " + result.index() + " has a value that is not finite";
+            }
+        }
+        return null;
+    }
+
+    /** Puts a tile's result into the film, unless it failed or the tile is done already ({@link #problem} first). */
     void accept(TileResult result) {
         if (result.failed() || done.get(result.index())) {
             return;

@@ -13,14 +13,9 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
+import java.util.function.Predicate;
 
 import com.hazelcast.cluster.Member;
-import com.hazelcast.collection.IQueue;
-import com.hazelcast.core.EntryEvent;
-import com.hazelcast.core.HazelcastInstance;
-import com.hazelcast.map.IMap;
-import com.hazelcast.map.listener.EntryAddedListener;
-import com.hazelcast.map.listener.EntryUpdatedListener;
 
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
@@ -66,17 +61,20 @@ final class TileFarm {
      */
     static final long MISSING_CHECK_MILLIS = 5_000;
 
-    private final HazelcastInstance member;
+    private final ClusterData data;
     private final TileWorkers workers;
-    private final IQueue<TileTask> queue;
+    private final SealedQueue<TileTask> queue;
+    private final Predicate<String> kept;
     /** The tiles each member rendered, per job of this member. */
     private final Map<String, Map<String, Integer>> counts = new ConcurrentHashMap<>();
     private volatile long membersLeft;
 
-    TileFarm(HazelcastInstance member, TileWorkers workers) {
-        this.member = member;
+    /** @param kept true for a job whose tiles stay in the cluster when its render here stops (handed over) */
+    TileFarm(ClusterData data, TileWorkers workers, Predicate<String> kept) {
+        this.data = data;
+        this.kept = kept;
         this.workers = workers;
-        this.queue = member.getQueue(ClusterMaps.TILE_QUEUE);
+        this.queue = data.queue();
     }
 
     /** A member left: every coordinator looks for its lost tiles now. */
@@ -102,10 +100,10 @@ final class TileFarm {
         long start = System.nanoTime();
         int width = scene.settings().width(), height = scene.settings().height();
         List<TileRect> tiles = Renderer.tiles(width, height, tileSize);
-        IMap<Integer, TileResult> results = member.getMap(ClusterMaps.tiles(jobId));
-        IMap<Integer, TileClaim> claims = member.getMap(ClusterMaps.claims(jobId));
+        SealedMap<Integer, TileResult> results = data.tiles(jobId);
+        SealedMap<Integer, TileClaim> claims = data.claims(jobId);
         BlockingQueue<TileResult> arrived = new LinkedBlockingQueue<>();
-        UUID registration = results.addEntryListener(new Arrivals(arrived), true);
+        UUID registration = results.listen((index, result) -> arrived.add(result));
         workers.scenes().offer(jobId, scene);
         Map<String, Integer> count = counts.computeIfAbsent(jobId, id -> new ConcurrentHashMap<>());
         Job job = new Job(jobId, tiles, results, claims, new TileAssembly(tiles, new Film(width, height), listener, count));
@@ -114,7 +112,7 @@ final class TileFarm {
                 job.arrived(result); // a failed one: its coordinator died before it could retry it
             }
             Set<String> alive = alive();
-            Map<Integer, TileClaim> claimed = resumed ? Map.copyOf(claims) : Map.of();
+            Map<Integer, TileClaim> claimed = resumed ? claims.entries() : Map.of();
             BitSet queued = resumed ? queued(jobId) : new BitSet();
             List<TileTask> todo = new ArrayList<>();
             for (int i = 0; i < tiles.size(); i++) {
@@ -158,11 +156,14 @@ final class TileFarm {
             Thread.currentThread().interrupt();
             throw new RenderCancelledException();
         } finally {
-            results.removeEntryListener(registration);
+            results.removeListener(registration);
             workers.scenes().forget(jobId);
-            // the tiles live on in the film, then in the image; cancelled or failed, they are of no use either
-            results.destroy();
-            claims.destroy();
+            // the tiles live on in the film, then in the image; cancelled or failed, they are of no use either;
+            // handed over, they are the new owner's
+            if (!kept.test(jobId)) {
+                results.destroy();
+                claims.destroy();
+            }
         }
     }
 
@@ -174,7 +175,7 @@ final class TileFarm {
     /** The job's tiles in the queue now. */
     private BitSet queued(String jobId) {
         BitSet queued = new BitSet();
-        for (TileTask task : queue) {
+        for (TileTask task : queue.snapshot()) {
             if (task.jobId().equals(jobId)) {
                 queued.set(task.index());
             }
@@ -184,7 +185,7 @@ final class TileFarm {
 
     private Set<String> alive() {
         Set<String> alive = new HashSet<>();
-        for (Member each : member.getCluster().getMembers()) {
+        for (Member each : data.member().getCluster().getMembers()) {
             alive.add(each.getUuid().toString());
         }
         return alive;
@@ -193,7 +194,7 @@ final class TileFarm {
     /** Queues again the tiles claimed by members that have left. */
     private void requeueLost(Job job) {
         Set<String> alive = alive();
-        for (Map.Entry<Integer, TileClaim> entry : job.claims.entrySet()) {
+        for (Map.Entry<Integer, TileClaim> entry : job.claims.entries().entrySet()) {
             int index = entry.getKey();
             TileClaim claim = entry.getValue();
             if (!job.assembly.done.get(index) && !alive.contains(claim.member()) && job.claims.remove(index, claim)) {
@@ -250,15 +251,15 @@ final class TileFarm {
     private final class Job {
         final String id;
         final List<TileRect> tiles;
-        final IMap<Integer, TileResult> results;
-        final IMap<Integer, TileClaim> claims;
+        final SealedMap<Integer, TileResult> results;
+        final SealedMap<Integer, TileClaim> claims;
         final TileAssembly assembly;
         /** The attempt each tile was last queued with by this coordinator. */
         final int[] attempts;
         /** The tiles in no state at the last look. */
         BitSet suspects = new BitSet();
 
-        Job(String id, List<TileRect> tiles, IMap<Integer, TileResult> results, IMap<Integer, TileClaim> claims,
+        Job(String id, List<TileRect> tiles, SealedMap<Integer, TileResult> results, SealedMap<Integer, TileClaim> claims,
             TileAssembly assembly) {
             this.id = id;
             this.tiles = tiles;
@@ -273,8 +274,13 @@ final class TileFarm {
             return new TileTask(id, index, attempt);
         }
 
-        /** A tile's result: assembled, or if it failed, the tile is tried again. */
+        /** A tile's result: assembled, or if it failed, the tile is tried again; one that makes no sense is dropped. */
         void arrived(TileResult result) {
+            String problem = assembly.problem(result);
+            if (problem != null) {
+                data.seal().reject(ClusterMaps.TILES_FAMILY, results.name(), problem);
+                return;
+            }
             assembly.accept(result);
             if (result.failed() && !assembly.done.get(result.index())) {
                 retry(result.index(), result.attempt(), result.error());
@@ -290,21 +296,6 @@ final class TileFarm {
             }
             results.delete(index);
             queue.add(task(index, attempt + 1));
-        }
-    }
-
-    /** Hands the job's tile map's new and replaced entries to the coordinator's thread. */
-    private record Arrivals(BlockingQueue<TileResult> arrived)
-            implements EntryAddedListener<Integer, TileResult>, EntryUpdatedListener<Integer, TileResult> {
-
-        @Override
-        public void entryAdded(EntryEvent<Integer, TileResult> event) {
-            arrived.add(event.getValue());
-        }
-
-        @Override
-        public void entryUpdated(EntryEvent<Integer, TileResult> event) {
-            arrived.add(event.getValue());
         }
     }
 }

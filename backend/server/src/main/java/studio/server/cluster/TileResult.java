@@ -1,7 +1,5 @@
 package studio.server.cluster;
 
-import java.io.Serializable;
-
 /**
  * A tile a worker rendered (its linear RGB, row by row, as the film holds it: the image is made
  * from these exact doubles, so it is the same bytes whichever member rendered the tile), or why it
@@ -11,7 +9,7 @@ import java.io.Serializable;
  * @param error  why the render failed, else null
  */
 record TileResult(int index, int attempt, double[] rgb, long rays, long samples, long nonFinite, String worker,
-                  String error) implements Serializable {
+                  String error) {
 
     static TileResult failed(TileTask task, String worker, String error) {
         return new TileResult(task.index(), task.attempt(), null, 0, 0, 0, worker, error);

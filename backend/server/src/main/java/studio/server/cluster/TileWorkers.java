@@ -12,9 +12,7 @@ import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
-import com.hazelcast.collection.IQueue;
 import com.hazelcast.core.HazelcastInstance;
-import com.hazelcast.map.IMap;
 
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
@@ -59,12 +57,13 @@ final class TileWorkers implements AutoCloseable {
     private record JobCheck(JobRecord job, long atNanos) {
     }
 
+    private final ClusterData data;
     private final HazelcastInstance member;
     private final String memberId;
     private final String address;
     private final JobScenes scenes;
-    private final IQueue<TileTask> queue;
-    private final IMap<String, JobRecord> jobs;
+    private final SealedQueue<TileTask> queue;
+    private final SealedMap<String, JobRecord> jobs;
     private final List<Worker> workers = new ArrayList<>();
     private final Thread fetcher;
     /** Claimed tasks taken ahead, at most one a worker ({@link #room} counts the places left). */
@@ -88,17 +87,18 @@ final class TileWorkers implements AutoCloseable {
         }
     }
 
-    TileWorkers(HazelcastInstance member, JobScenes scenes, int threads) {
-        this(member, scenes, threads, Steps.NONE);
+    TileWorkers(ClusterData data, JobScenes scenes, int threads) {
+        this(data, scenes, threads, Steps.NONE);
     }
 
-    TileWorkers(HazelcastInstance member, JobScenes scenes, int threads, Steps steps) {
-        this.member = member;
+    TileWorkers(ClusterData data, JobScenes scenes, int threads, Steps steps) {
+        this.data = data;
+        this.member = data.member();
         this.memberId = member.getCluster().getLocalMember().getUuid().toString();
         this.address = ClusterNames.address(member.getCluster().getLocalMember());
         this.scenes = scenes;
-        this.queue = member.getQueue(ClusterMaps.TILE_QUEUE);
-        this.jobs = member.getMap(ClusterMaps.JOBS);
+        this.queue = data.queue();
+        this.jobs = data.jobs();
         this.steps = steps;
         for (int i = 0; i < threads; i++) {
             Worker worker = new Worker();
@@ -119,6 +119,10 @@ final class TileWorkers implements AutoCloseable {
 
     JobScenes scenes() {
         return scenes;
+    }
+
+    ClusterData data() {
+        return data;
     }
 
     String address() {
@@ -194,8 +198,7 @@ final class TileWorkers implements AutoCloseable {
         }
         if (task != null) {
             steps.taken(task);
-            member.<Integer, TileClaim>getMap(ClusterMaps.claims(task.jobId())).set(task.index(),
-                    new TileClaim(memberId, task.attempt()));
+            data.claims(task.jobId()).set(task.index(), new TileClaim(memberId, task.attempt()));
             steps.claimed(task);
         }
         return task;
@@ -204,7 +207,7 @@ final class TileWorkers implements AutoCloseable {
     /** Gives a task back to the queue for another member (or this one, later) and drops this member's claim. */
     private void handBack(TileTask task) {
         queue.offer(task);
-        member.<Integer, TileClaim>getMap(ClusterMaps.claims(task.jobId())).delete(task.index());
+        data.claims(task.jobId()).delete(task.index());
     }
 
     private final class Worker implements Runnable {
@@ -242,8 +245,8 @@ final class TileWorkers implements AutoCloseable {
         }
 
         private void render(TileTask task) {
-            IMap<Integer, TileResult> results = member.getMap(ClusterMaps.tiles(task.jobId()));
-            IMap<Integer, TileClaim> claims = member.getMap(ClusterMaps.claims(task.jobId()));
+            SealedMap<Integer, TileResult> results = data.tiles(task.jobId());
+            SealedMap<Integer, TileClaim> claims = data.claims(task.jobId());
             JobRecord job = job(task.jobId());
             if (job == null || job.status().state().isFinal()) {
                 // the job ended: its other tasks are dropped as they come

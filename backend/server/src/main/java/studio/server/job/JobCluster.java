@@ -1,6 +1,7 @@
 package studio.server.job;
 
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.Executor;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
@@ -117,6 +118,29 @@ public interface JobCluster {
     /** When anyone in the cluster last asked about the job (epoch millis), or 0 if not known. */
     default long lastSeenMillis(String id) {
         return 0;
+    }
+
+    /** True if the service, stopping, may hand its jobs to other members ({@link #handOver}): there are some. */
+    default boolean canHandOver() {
+        return false;
+    }
+
+    /**
+     * The service is stopping: hands this member's unfinished jobs (running and queued) to the other
+     * members, which go on with them from the tiles done, instead of letting them finish or cancelling
+     * them here. From now on this member takes no tiles, and writes nothing more of these jobs to
+     * the cluster (their renders here stop). Called once, when {@link #canHandOver} said yes.
+     */
+    default void handOver(Set<String> ids) {
+    }
+
+    /**
+     * Waits until the jobs handed over have a new owner, at most until the deadline ({@link System#nanoTime()}).
+     *
+     * @return true if all have
+     */
+    default boolean awaitHandedOver(long deadlineNanos) throws InterruptedException {
+        return true;
     }
 
     /** This member dropped a finished job: the cluster forgets it too. */

@@ -1,10 +1,8 @@
 package studio.server.job;
 
-import java.io.Serializable;
-
 /**
- * An entry of a job's event log: a change of its state, or a finished tile. Serializable: in a
- * cluster the log is the cluster's too (see {@link JobCluster}).
+ * An entry of a job's event log: a change of its state, or a finished tile. In a cluster the log
+ * is the cluster's too (see {@link JobCluster}), written by an explicit codec.
  */
-public sealed interface JobEvent extends Serializable permits JobStatus, TileEvent {
+public sealed interface JobEvent permits JobStatus, TileEvent {
 }

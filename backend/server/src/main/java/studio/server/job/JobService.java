@@ -41,6 +41,8 @@ public final class JobService implements Drainable, AutoCloseable {
     /** Delivers events to listeners (see {@link JobSubscription}): a thread per subscription while it has news. */
     private final ExecutorService senders;
     private final Map<String, RenderJob> jobs = new ConcurrentHashMap<>();
+    /** The jobs handed to other members on shutdown (see {@link JobCluster#handOver}). */
+    private final List<RenderJob> handedOver = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final JobCluster cluster;
     /** Held while a limited owner's jobs are counted and their new one admitted. */
     private final Object admission = new Object();
@@ -485,11 +487,24 @@ public final class JobService implements Drainable, AutoCloseable {
         return executor.getActiveCount();
     }
 
-    /** Stops taking jobs (new ones get 429) and cancels the queued ones at once; their listeners hear the end. */
+    /**
+     * Stops taking jobs (new ones get 429) and cancels the queued ones at once; their listeners hear the end.
+     * In a cluster, the unfinished jobs, queued and running, are handed to the other members instead.
+     */
     @Override
     public void stopAccepting() {
         executor.shutdown();
         executor.getQueue().clear();
+        List<RenderJob> unfinished = jobs.values().stream().filter(job -> !job.state().isFinal()).toList();
+        if (cluster.canHandOver()) {
+            String reason = "handed over to another member";
+            // clients first (they hear no end from here), then the cluster stops the renders, then they end here
+            unfinished.forEach(job -> job.handingOver(reason));
+            cluster.handOver(unfinished.stream().map(RenderJob::id).collect(java.util.stream.Collectors.toSet()));
+            unfinished.forEach(job -> job.cancel(reason));
+            handedOver.addAll(unfinished);
+            return;
+        }
         for (RenderJob job : jobs.values()) {
             if (job.state() == JobState.QUEUED) {
                 job.cancel("cancelled: the server is shutting down");
@@ -507,6 +522,15 @@ public final class JobService implements Drainable, AutoCloseable {
     public boolean awaitEnd(long deadlineNanos) throws InterruptedException {
         boolean ended = executor.awaitTermination(Math.max(0, deadlineNanos - System.nanoTime()), TimeUnit.NANOSECONDS);
         awaitListeners(deadlineNanos);
+        if (!handedOver.isEmpty()) {
+            // served by their new owners from now on; forgotten here, not in the cluster
+            ended &= cluster.awaitHandedOver(deadlineNanos);
+            for (RenderJob job : handedOver) {
+                jobs.remove(job.id());
+                job.release();
+            }
+            handedOver.clear();
+        }
         return ended;
     }
 

@@ -223,6 +223,24 @@ final class RenderJob implements Runnable {
         return status;
     }
 
+    /**
+     * The job is about to go on on another member (this one is stopping): its clients (not the
+     * cluster's listener) are dropped, so that they reconnect through another member, and when it stops here ({@link #cancel(String)}
+     * follows) it says why. What it tells the cluster is up to the cluster: nothing, for a job handed over.
+     */
+    void handingOver(String reason) {
+        synchronized (this) {
+            if (!cancelRequested.get()) {
+                cancelReason = reason;
+            }
+            for (JobSubscription subscription : new ArrayList<>(subscriptions)) {
+                if (!subscription.internal) { // the cluster's own listener stops when the cluster says so
+                    drop(subscription);
+                }
+            }
+        }
+    }
+
     /** Marks a job the executor refused or dropped. */
     void fail(String message) {
         JobStatus status = null;

@@ -40,7 +40,7 @@ class ClusterJobOwnershipTest {
     private void start(int count) throws Exception {
         int[] ports = new int[count];
         for (int i = 0; i < count; i++) {
-            ports[i] = 5810 + i;
+            ports[i] = TestMember.BASE_PORT + i;
         }
         for (int port : ports) {
             members.add(new TestMember(name, port, ports));

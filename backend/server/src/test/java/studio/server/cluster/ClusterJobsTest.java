@@ -18,7 +18,6 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
-import com.hazelcast.map.IMap;
 import com.hazelcast.map.MapInterceptor;
 
 import studio.engine.render.Renderer;
@@ -75,7 +74,7 @@ class ClusterJobsTest {
     private void start(int count) throws Exception {
         int[] ports = new int[count];
         for (int i = 0; i < count; i++) {
-            ports[i] = 5790 + i;
+            ports[i] = TestMember.BASE_PORT + i;
         }
         for (int port : ports) {
             members.add(new TestMember(name, port, ports));
@@ -271,7 +270,7 @@ class ClusterJobsTest {
         TestMember accepting = members.get(0);
         String id = submit(accepting);
         Await.until("a few tiles", WAIT_MILLIS, () -> accepting.jobs.status(id).progress() > 0.05);
-        IMap<String, JobRecord> table = members.get(1).hazelcast.getMap(ClusterMaps.JOBS);
+        SealedMap<String, JobRecord> table = members.get(1).data.jobs();
         members.get(1).hazelcast.getMap(ClusterMaps.IMAGES).addInterceptor(new SlowPut(1_000));
 
         accepting.kill();
@@ -315,7 +314,7 @@ class ClusterJobsTest {
 
         // the last tile, rendered last, fails at its last attempt as a worker reports it
         int last = TILES - 1;
-        members.get(1).hazelcast.getMap(ClusterMaps.tiles(id)).set(last,
+        members.get(1).data.tiles(id).set(last,
                 TileResult.failed(new TileTask(id, last, TileFarm.MAX_ATTEMPTS - 1), "test", "a worker failed"));
 
         JobStatus end = awaitFinal(members.get(1), id);
@@ -328,7 +327,7 @@ class ClusterJobsTest {
         start(2);
         String id = submit(members.get(0));
         // the last tile, rendered last: its first result put fails, as one may while partitions move
-        members.get(1).hazelcast.<Integer, TileResult>getMap(ClusterMaps.tiles(id))
+        members.get(1).hazelcast.<Integer, byte[]>getMap(ClusterMaps.tiles(id))
                 .addInterceptor(new FirstPutFails(id, TILES - 1));
 
         JobStatus end = awaitFinal(members.get(1), id);
@@ -376,13 +375,24 @@ class ClusterJobsTest {
 
         @Override
         public Object interceptPut(Object oldValue, Object newValue) {
-            if (newValue instanceof TileResult result && result.index() == index && !result.failed()
-                    && failed.add(jobId)) {
+            if (newValue instanceof byte[] sealed && isResultOfTheTile(sealed) && failed.add(jobId)) {
                 throw new IllegalStateException("the put was lost");
             }
             return newValue;
         }
+
+        /** A rendered result of the tile: it opens as the entry of that tile's index. */
+        private boolean isResultOfTheTile(byte[] sealed) {
+            byte[] plain = SEAL.open(ClusterMaps.TILES_FAMILY, ClusterMaps.tiles(jobId), index, sealed);
+            try {
+                return plain != null && ClusterCodecs.TILE_RESULT.decode(plain).rgb() != null;
+            } catch (java.io.IOException e) {
+                return false;
+            }
+        }
     }
+
+    private static final Seal SEAL = TestMember.seal();
 
     /** Holds up every put before it is made (on the member that holds the entry). */
     record SlowPut(long millis) implements PassThrough {

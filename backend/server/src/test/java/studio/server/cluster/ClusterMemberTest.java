@@ -2,8 +2,6 @@ package studio.server.cluster;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.util.List;
-
 import org.junit.jupiter.api.Test;
 import org.springframework.boot.autoconfigure.AutoConfigurations;
 import org.springframework.boot.hazelcast.autoconfigure.HazelcastAutoConfiguration;
@@ -48,19 +46,59 @@ class ClusterMemberTest {
     @Test
     void startsAMemberOnTheConfiguredPortThatOthersJoin() {
         context.withPropertyValues("studio.cluster.members=127.0.0.1:5790,127.0.0.1:5791", "studio.cluster.port=5790",
-                "studio.cluster.bind-address=127.0.0.1", "studio.cluster.name=member-test").run(started -> {
+                "studio.cluster.bind-address=127.0.0.1", "studio.cluster.name=member-test",
+                "studio.cluster.secret=" + TestMember.SECRET).run(started -> {
             HazelcastInstance member = started.getBean(HazelcastInstance.class);
             ClusterHealth health = started.getBean(ClusterHealth.class);
             assertThat(health.health().getDetails()).containsEntry("members", 1)
-                    .containsEntry("member", "127.0.0.1:5790").containsEntry("name", "member-test");
-            HazelcastInstance other = Hazelcast.newHazelcastInstance(MemberConfig.of(new ClusterProperties(5791,
-                    List.of("127.0.0.1:5790"), "member-test", "127.0.0.1")));
+                    .containsEntry("member", "127.0.0.1:5790").doesNotContainKey("name");
+            assertThat(health.health().getDetails().values().toString()).doesNotContain("member-test");
+            HazelcastInstance other = Hazelcast.newHazelcastInstance(MemberConfig.of(
+                    TestMember.properties("member-test", 5791, 5790)));
             try {
                 Await.until("two members", 30_000, () -> member.getCluster().getMembers().size() == 2);
                 assertThat(health.health().getDetails()).containsEntry("members", 2);
             } finally {
                 other.getLifecycleService().terminate();
             }
+        });
+    }
+
+    @Test
+    void aClusteredMemberWithoutASecretRefusesToStartSayingWhy() {
+        context.withPropertyValues("studio.cluster.members=127.0.0.1:5790", "studio.cluster.port=5790",
+                "studio.cluster.bind-address=127.0.0.1").run(started -> {
+            assertThat(started).hasFailed();
+            assertThat(started.getStartupFailure()).rootCause().isInstanceOf(IllegalStateException.class)
+                    .hasMessageStartingWith("a clustered member needs studio.cluster.secret");
+        });
+        context.withPropertyValues("studio.cluster.kubernetes-service-dns=studio-cluster.ns.svc.cluster.local")
+                .run(started -> assertThat(started).hasFailed());
+    }
+
+    @Test
+    void aMissingSecretIsReportedInOneLineNotAStackTrace() {
+        var analysis = new ClusterSecretFailureAnalyzer().analyze(new IllegalStateException("the bean failed",
+                new ClusterSecret.Refused("a clustered member needs studio.cluster.secret")));
+        assertThat(analysis.getDescription()).isEqualTo("a clustered member needs studio.cluster.secret");
+        assertThat(analysis.getAction()).contains("STUDIO_CLUSTER_SECRET");
+    }
+
+    @Test
+    void aSecretShorterThan32BytesIsRefused() {
+        context.withPropertyValues("studio.cluster.members=127.0.0.1:5790", "studio.cluster.port=5790",
+                "studio.cluster.bind-address=127.0.0.1", "studio.cluster.secret=short").run(started -> {
+            assertThat(started).hasFailed();
+            assertThat(started.getStartupFailure()).rootCause().hasMessageContaining("at least 32");
+        });
+    }
+
+    @Test
+    void anInsecureDemoStartsWithoutASecret() {
+        context.withPropertyValues("studio.cluster.members=127.0.0.1:5790", "studio.cluster.port=5790",
+                "studio.cluster.bind-address=127.0.0.1", "studio.cluster.insecure=true").run(started -> {
+            assertThat(started).hasNotFailed();
+            assertThat(started.getBean(ClusterSecret.class).insecure()).isTrue();
         });
     }
 }

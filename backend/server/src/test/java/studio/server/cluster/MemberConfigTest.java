@@ -19,8 +19,8 @@ class MemberConfigTest {
 
     @Test
     void aMemberListJoinsOverTcpOnly() {
-        JoinConfig join = MemberConfig.of(new ClusterProperties(5701, List.of("a:5701", "b:5701"), "n", ""))
-                .getNetworkConfig().getJoin();
+        JoinConfig join = MemberConfig.of(new ClusterProperties(5701, List.of("a:5701", "b:5701"), "n", "", TestMember.SECRET))
+                .getAdvancedNetworkConfig().getJoin();
         assertThat(join.getTcpIpConfig().isEnabled()).isTrue();
         assertThat(join.getTcpIpConfig().getMembers()).containsExactly("a:5701", "b:5701");
         assertThat(join.getKubernetesConfig().isEnabled()).isFalse();
@@ -30,10 +30,11 @@ class MemberConfigTest {
 
     @Test
     void onKubernetesTheMembersAreTheHeadlessServicesRecords() {
-        ClusterProperties cluster = new ClusterProperties(5701, List.of(), "n", "", " studio-cluster.ns.svc.cluster.local ");
+        ClusterProperties cluster = new ClusterProperties(5701, List.of(), "n", "", " studio-cluster.ns.svc.cluster.local ",
+                TestMember.SECRET, false);
         assertThat(cluster.clustered()).isTrue();
         Config config = MemberConfig.of(cluster);
-        JoinConfig join = config.getNetworkConfig().getJoin();
+        JoinConfig join = config.getAdvancedNetworkConfig().getJoin();
         assertThat(join.getKubernetesConfig().isEnabled()).isTrue();
         assertThat(join.getKubernetesConfig().getProperty("service-dns")).isEqualTo("studio-cluster.ns.svc.cluster.local");
         assertThat(join.getKubernetesConfig().getProperty("service-port")).isEqualTo("5701");
@@ -44,7 +45,7 @@ class MemberConfigTest {
 
     @Test
     void aListAndKubernetesTogetherAreRefused() {
-        assertThatThrownBy(() -> new ClusterProperties(5701, List.of("a:5701"), "n", "", "studio-cluster"))
+        assertThatThrownBy(() -> new ClusterProperties(5701, List.of("a:5701"), "n", "", "studio-cluster", TestMember.SECRET, false))
                 .isInstanceOf(IllegalArgumentException.class)
                 .hasMessageContaining("studio.cluster.members or studio.cluster.kubernetes-service-dns");
     }
