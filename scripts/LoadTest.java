@@ -37,7 +37,17 @@ import java.util.concurrent.atomic.AtomicLong;
  * java scripts/LoadTest.java --url http://127.0.0.1:8080 [--clients 50] [--seconds 60]
  *      [--pid PID] [--scenes scenes] [--drain-seconds 60] [--idle-seconds 10]
  *      [--heap-margin-mib 64] [--retry-cap-ms 2000] [--warmup-seconds 5] [--mesh-jobs 20] [--seed 1]
+ *      [--keys KEY1,KEY2,...] [--greedy 0] [--principal-limit-check true]
  * </pre>
+ *
+ * With sign-in on, --keys: client i sends {@code Authorization: Bearer} with key i mod n on every
+ * request; the health, metrics, final-state and mesh-job reads use the first key. --greedy N adds N
+ * clients with the first key that only submit jobs, as fast as Retry-After lets them, and never
+ * cancel; the report then shows, per principal, the jobs accepted, the 429s and what they named (the
+ * per-principal limit, the server's queue, ...), and the polite clients' latencies and answer rates.
+ * With both, two more checks: the greedy principal's 429s name the per-principal limit (skipped with
+ * --principal-limit-check false, for a run with the limit raised out of reach) and every other
+ * principal had jobs accepted.
  *
  * The server must expose the metrics endpoint (MANAGEMENT_ENDPOINTS_WEB_EXPOSURE_INCLUDE=health,info,metrics).
  * With --pid, heap is read after {@code jcmd PID GC.run}; without, as the least of a few reads.
@@ -70,9 +80,13 @@ public final class LoadTest {
     /**
      * @param warmupSeconds requests started in the first seconds are counted and checked but not timed
      * @param meshJobs      mesh jobs after the load, one at a time
+     * @param keys          API keys (empty with sign-in off); client i uses key i mod n
+     * @param greedy        extra clients with the first key that only submit jobs
+     * @param principalLimitCheck with keys and greedy clients, check that the greedy principal's 429s name its limit
      */
     record Options(URI url, int clients, int seconds, long pid, Path scenes, int drainSeconds, int idleSeconds,
-                   long heapMarginMiB, long retryCapMillis, int warmupSeconds, int meshJobs, long seed) {
+                   long heapMarginMiB, long retryCapMillis, int warmupSeconds, int meshJobs, long seed,
+                   List<String> keys, int greedy, boolean principalLimitCheck) {
 
         static Options parse(String[] args) {
             Map<String, String> given = new LinkedHashMap<>();
@@ -90,7 +104,11 @@ public final class LoadTest {
                     Long.parseLong(take(given, "heap-margin-mib", "64")),
                     Long.parseLong(take(given, "retry-cap-ms", "2000")),
                     Integer.parseInt(take(given, "warmup-seconds", "5")),
-                    Integer.parseInt(take(given, "mesh-jobs", "20")), Long.parseLong(take(given, "seed", "1")));
+                    Integer.parseInt(take(given, "mesh-jobs", "20")), Long.parseLong(take(given, "seed", "1")),
+                    Arrays.stream(take(given, "keys", "").split(",")).map(String::trim).filter(k -> !k.isEmpty())
+                            .toList(),
+                    Integer.parseInt(take(given, "greedy", "0")),
+                    Boolean.parseBoolean(take(given, "principal-limit-check", "true")));
             if (!given.isEmpty()) {
                 throw new IllegalArgumentException("unknown options: " + given.keySet());
             }
@@ -130,6 +148,18 @@ public final class LoadTest {
     private final Problems problems = new Problems();
     private final AtomicLong retryWaits = new AtomicLong();
     private final AtomicLong gaveUp = new AtomicLong();
+    /** The key index of each accepted job's client: only its principal may read it. */
+    private final Map<String, Integer> jobKeys = new ConcurrentHashMap<>();
+    /**
+     * The greedy clients' jobs not yet seen final: they never poll them, so the monitor does, every
+     * second, before the server drops them (it keeps only the last 50 finished jobs).
+     */
+    private final java.util.Set<String> greedyJobs = ConcurrentHashMap.newKeySet();
+    /** The report's rows per principal: the polite clients of each key, then the greedy clients. */
+    private final List<Group> groups = new ArrayList<>();
+    private Group greedyGroup;
+    /** Who the current thread sends as; the main and monitor threads send as the first key, in no group. */
+    private final ThreadLocal<Caller> caller = ThreadLocal.withInitial(() -> new Caller(0, null));
     private volatile long timedFrom = Long.MAX_VALUE, stopAt, drainUntil;
 
     LoadTest(Options options, List<Map<String, Object>> scenes) {
@@ -140,20 +170,52 @@ public final class LoadTest {
     /** Runs the whole test; true when every check passed. */
     boolean run() throws Exception {
         awaitHealthy(Duration.ofSeconds(60));
+        int keys = Math.max(1, options.keys().size());
+        for (int k = 0; k < keys; k++) {
+            groups.add(new Group(principal(k), k, false));
+        }
+        for (int i = 0; i < options.clients(); i++) {
+            groups.get(i % keys).clients++;
+        }
+        if (options.greedy() > 0) {
+            greedyGroup = new Group(groups.get(0).name + " (greedy)", 0, true);
+            greedyGroup.clients = options.greedy();
+            groups.add(greedyGroup);
+        }
         Memory before = memory();
-        System.out.printf(Locale.ROOT, "before: heap %.1f MiB, %d threads; %d clients for %d s%n",
-                mib(before.heap), before.threads, options.clients(), options.seconds());
+        System.out.printf(Locale.ROOT, "before: heap %.1f MiB, %d threads; %d clients%s for %d s%s%n",
+                mib(before.heap), before.threads, options.clients(),
+                options.greedy() > 0 ? " + " + options.greedy() + " greedy" : "", options.seconds(),
+                options.keys().isEmpty() ? "" : "; principals " + groups.stream().filter(g -> !g.greedy)
+                        .map(g -> g.name).toList());
 
         long start = System.nanoTime();
         timedFrom = start + TimeUnit.SECONDS.toNanos(options.warmupSeconds());
         stopAt = start + TimeUnit.SECONDS.toNanos(options.seconds());
         drainUntil = stopAt + TimeUnit.SECONDS.toNanos(options.drainSeconds());
         ScheduledExecutorService monitor = Executors.newSingleThreadScheduledExecutor();
-        monitor.scheduleWithFixedDelay(this::checkHealth, 0, 1, TimeUnit.SECONDS);
+        monitor.scheduleWithFixedDelay(() -> {
+            checkHealth();
+            sweepGreedyJobs();
+        }, 0, 1, TimeUnit.SECONDS);
         List<Thread> clients = new ArrayList<>();
         for (int i = 0; i < options.clients(); i++) {
             Random random = new Random(options.seed() * 1_000_003 + i);
-            Thread client = new Thread(() -> client(random), "client-" + i);
+            Caller as = new Caller(i % keys, groups.get(i % keys));
+            Thread client = new Thread(() -> {
+                caller.set(as);
+                client(random);
+            }, "client-" + i);
+            client.start();
+            clients.add(client);
+        }
+        for (int i = 0; i < options.greedy(); i++) {
+            Random random = new Random(options.seed() * 2_000_003 + i);
+            Caller as = new Caller(0, greedyGroup);
+            Thread client = new Thread(() -> {
+                caller.set(as);
+                greedyClient(random);
+            }, "greedy-" + i);
             client.start();
             clients.add(client);
         }
@@ -167,6 +229,7 @@ public final class LoadTest {
         monitor.shutdown();
         monitor.awaitTermination(15, TimeUnit.SECONDS);
         checkJobsFinal();
+        checkPrincipals();
         checkHealth();
         meshJobs();
 
@@ -179,10 +242,10 @@ public final class LoadTest {
                     mib(after.heap), mib(before.heap), options.heapMarginMiB()));
         }
         // the server needs at most one request thread per connection; per-render pools that leak add many more
-        int threadCeiling = before.threads + options.clients() + 16;
+        int threadCeiling = before.threads + options.clients() + options.greedy() + 16;
         if (after.threads > threadCeiling) {
             problems.add("threads after " + after.threads + " > start " + before.threads + " + clients "
-                    + options.clients() + " + 16");
+                    + (options.clients() + options.greedy()) + " + 16");
         }
         report(loadNanos, before, after, margin, threadCeiling);
         return problems.isEmpty();
@@ -205,6 +268,20 @@ public final class LoadTest {
                     case CANCEL -> cancel(random);
                     case INVALID -> invalid(random);
                 }
+            } catch (IOException | RuntimeException e) {
+                problems.add(Thread.currentThread().getName() + ": " + e);
+            } catch (InterruptedException e) {
+                return;
+            }
+        }
+    }
+
+    /** Only submits jobs, one after another, waiting only as a 429's or 503's Retry-After says; never cancels. */
+    private void greedyClient(Random random) {
+        while (System.nanoTime() < stopAt) {
+            try {
+                submit(variant(pick(random), random, random.nextInt(SIZES.length),
+                        SAMPLES[random.nextInt(SAMPLES.length)]));
             } catch (IOException | RuntimeException e) {
                 problems.add(Thread.currentThread().getName() + ": " + e);
             } catch (InterruptedException e) {
@@ -250,7 +327,7 @@ public final class LoadTest {
             return;
         }
         Thread.sleep(random.nextInt(150));
-        HttpResponse<byte[]> response = send("job-cancel", HttpRequest.newBuilder(uri("/api/jobs/" + id)).DELETE());
+        HttpResponse<byte[]> response = send("job-cancel", request("/api/jobs/" + id).DELETE());
         if (expect("job-cancel", response, 202)) {
             String state = Json.string(Json.object(Json.parse(body(response))), "state");
             if (!List.of("queued", "running", "done", "cancelled").contains(state)) {
@@ -278,12 +355,22 @@ public final class LoadTest {
 
     /** The job's id once accepted, or null when the load ended before the queue took it. */
     private String submit(Variant variant) throws IOException, InterruptedException {
+        long begin = System.nanoTime();
         HttpResponse<byte[]> response = sendRetrying("job-submit", post("/api/jobs", variant.json));
         if (response == null || !expect("job-submit", response, 202)) {
             return null;
         }
         String id = Json.string(Json.object(Json.parse(body(response))), "id");
+        jobKeys.put(id, caller.get().keyIndex());
         jobs.put(id, "");
+        Group group = caller.get().group();
+        if (group != null) {
+            group.accepted.incrementAndGet();
+            group.acceptWait.add(System.nanoTime() - begin, begin >= timedFrom);
+            if (group.greedy) {
+                greedyJobs.add(id);
+            }
+        }
         String location = response.headers().firstValue("Location").orElse("");
         if (!location.endsWith("/api/jobs/" + id)) {
             problems.add("job-submit: Location '" + location + "' for job " + id);
@@ -298,7 +385,7 @@ public final class LoadTest {
 
     private String pollToEnd(String id, String kind) throws IOException, InterruptedException {
         while (System.nanoTime() < drainUntil) {
-            HttpResponse<byte[]> response = send(kind, HttpRequest.newBuilder(uri("/api/jobs/" + id)).GET());
+            HttpResponse<byte[]> response = send(kind, request("/api/jobs/" + id).GET());
             if (!expect(kind, response, 200)) {
                 return null;
             }
@@ -317,7 +404,7 @@ public final class LoadTest {
      */
     private String watchEvents(String id) throws IOException, InterruptedException {
         long begin = System.nanoTime();
-        HttpResponse<InputStream> response = http.send(HttpRequest.newBuilder(uri("/api/jobs/" + id + "/events"))
+        HttpResponse<InputStream> response = http.send(request("/api/jobs/" + id + "/events")
                 .header("Accept", "text/event-stream").timeout(Duration.ofSeconds(30)).GET().build(),
                 HttpResponse.BodyHandlers.ofInputStream());
         if (response.statusCode() != 200) {
@@ -369,7 +456,7 @@ public final class LoadTest {
         }
         jobs.put(id, state);
         if (state.equals("done")) {
-            HttpResponse<byte[]> image = send("job-image", HttpRequest.newBuilder(uri("/api/jobs/" + id + "/image")).GET());
+            HttpResponse<byte[]> image = send("job-image", request("/api/jobs/" + id + "/image").GET());
             if (expect("job-image", image, 200)) {
                 checkImage("job-image", image, variant);
             }
@@ -381,12 +468,42 @@ public final class LoadTest {
     // ---- HTTP
 
     private HttpRequest.Builder post(String path, String json) {
-        return HttpRequest.newBuilder(uri(path)).header("Content-Type", "application/json")
+        return request(path).header("Content-Type", "application/json")
                 .POST(HttpRequest.BodyPublishers.ofString(json));
     }
 
     private URI uri(String path) {
         return options.url().resolve(path);
+    }
+
+    /** A request to path, signed with the current thread's key (none without --keys). */
+    private HttpRequest.Builder request(String path) {
+        return request(path, caller.get().keyIndex());
+    }
+
+    private HttpRequest.Builder request(String path, int keyIndex) {
+        HttpRequest.Builder builder = HttpRequest.newBuilder(uri(path));
+        if (!options.keys().isEmpty()) {
+            builder.header("Authorization", "Bearer " + options.keys().get(keyIndex % options.keys().size()));
+        }
+        return builder;
+    }
+
+    /** The principal a key signs in as (GET /api/me), or "key N" if it does not answer; "(no key)" without keys. */
+    private String principal(int keyIndex) throws IOException, InterruptedException {
+        if (options.keys().isEmpty()) {
+            return "(no key)";
+        }
+        HttpResponse<String> response = http.send(request("/api/me", keyIndex).GET().build(),
+                HttpResponse.BodyHandlers.ofString());
+        String name = response.statusCode() == 200 ? Json.string(Json.object(Json.parse(response.body())), "principal")
+                : null;
+        if (name == null || name.isEmpty()) {
+            problems.add("/api/me: " + response.statusCode() + " for key " + (keyIndex + 1) + ": "
+                    + abbreviate(response.body()));
+            return "key " + (keyIndex + 1);
+        }
+        return name;
     }
 
     private HttpResponse<byte[]> send(String kind, HttpRequest.Builder request) throws IOException, InterruptedException {
@@ -409,16 +526,42 @@ public final class LoadTest {
             if (status != 429 && status != 503) {
                 return response;
             }
+            Group group = caller.get().group();
+            if (group != null) {
+                group.refusals.computeIfAbsent(kind + " " + status + " " + named(response), k -> new AtomicLong())
+                        .incrementAndGet();
+            }
             long wait = retryAfterMillis(kind, response);
             long left = TimeUnit.NANOSECONDS.toMillis(stopAt - System.nanoTime());
             if (wait >= left) {
                 gaveUp.incrementAndGet(); // waits out the load rather than starting something new
+                if (group != null) {
+                    group.gaveUp.incrementAndGet();
+                }
                 Thread.sleep(Math.max(0, left));
                 return null;
             }
             retryWaits.incrementAndGet();
             Thread.sleep(wait);
         }
+    }
+
+    /** What a 429 or 503 names as full: the principal's own jobs, the server's queue, its render memory, ... */
+    static String named(HttpResponse<byte[]> response) {
+        String text = body(response);
+        if (text.contains("max-jobs-per-principal")) {
+            return "principal-limit";
+        }
+        if (text.contains("render queue is full")) {
+            return "queue";
+        }
+        if (text.contains("render memory")) {
+            return "memory";
+        }
+        if (text.contains("shutting down")) {
+            return "shutdown";
+        }
+        return "other";
     }
 
     /** The wait a 429 or 503 asks for, capped, with a little jitter; a missing header is a problem. */
@@ -460,14 +603,18 @@ public final class LoadTest {
     }
 
     private void record(String kind, int status, long beginNanos) {
-        latencies.computeIfAbsent(kind + " " + status, k -> new Latencies())
-                .add(System.nanoTime() - beginNanos, beginNanos >= timedFrom);
+        long nanos = System.nanoTime() - beginNanos;
+        latencies.computeIfAbsent(kind + " " + status, k -> new Latencies()).add(nanos, beginNanos >= timedFrom);
+        Group group = caller.get().group();
+        if (group != null) {
+            group.latencies.computeIfAbsent(kind + " " + status, k -> new Latencies()).add(nanos, beginNanos >= timedFrom);
+        }
     }
 
     private void checkHealth() {
         try {
             long begin = System.nanoTime();
-            HttpResponse<String> response = http.send(HttpRequest.newBuilder(uri("/actuator/health"))
+            HttpResponse<String> response = http.send(request("/actuator/health")
                     .timeout(Duration.ofSeconds(10)).GET().build(), HttpResponse.BodyHandlers.ofString());
             record("health", response.statusCode(), begin);
             if (response.statusCode() != 200 || !response.body().contains("\"status\":\"UP\"")) {
@@ -480,11 +627,38 @@ public final class LoadTest {
         }
     }
 
+    /** Reads each greedy job not yet seen final (with the first key, the greedy principal's) and records the final ones. */
+    private void sweepGreedyJobs() {
+        for (String id : greedyJobs) {
+            try {
+                long begin = System.nanoTime();
+                HttpResponse<byte[]> response = http.send(request("/api/jobs/" + id).timeout(Duration.ofSeconds(10))
+                        .GET().build(), HttpResponse.BodyHandlers.ofByteArray());
+                record("greedy-status", response.statusCode(), begin);
+                if (expect("greedy-status", response, 200)) {
+                    String state = Json.string(Json.object(Json.parse(body(response))), "state");
+                    if (isFinal(state)) {
+                        jobs.put(id, state);
+                        greedyJobs.remove(id);
+                        if (state.equals("failed")) {
+                            problems.add("job " + id + " failed");
+                        }
+                    }
+                }
+            } catch (IOException | RuntimeException e) {
+                problems.add("greedy-status: " + e);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+        }
+    }
+
     private void awaitHealthy(Duration timeout) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
         while (true) {
             try {
-                HttpResponse<String> response = http.send(HttpRequest.newBuilder(uri("/actuator/health")).GET().build(),
+                HttpResponse<String> response = http.send(request("/actuator/health").GET().build(),
                         HttpResponse.BodyHandlers.ofString());
                 if (response.body().contains("\"status\":\"UP\"")) {
                     return;
@@ -522,7 +696,7 @@ public final class LoadTest {
                 problems.add("mesh job " + id + " ended " + state);
                 continue;
             }
-            HttpResponse<byte[]> image = send("mesh-image", HttpRequest.newBuilder(uri("/api/jobs/" + id + "/image")).GET());
+            HttpResponse<byte[]> image = send("mesh-image", request("/api/jobs/" + id + "/image").GET());
             if (expect("mesh-image", image, 200)) {
                 checkImage("mesh-image", image, variant);
             }
@@ -533,26 +707,61 @@ public final class LoadTest {
         return "done".equals(state) || "failed".equals(state) || "cancelled".equals(state);
     }
 
-    /** Every accepted job must have been seen final by its client, or be final now. */
+    /**
+     * Every accepted job must have been seen final by its client, or be final by the drain timeout (a
+     * greedy client's jobs are never polled by it), read with its principal's key.
+     */
     private void checkJobsFinal() throws InterruptedException {
         for (Map.Entry<String, String> job : jobs.entrySet()) {
             if (isFinal(job.getValue())) {
                 continue;
             }
             String state = "unreadable";
-            try {
-                HttpResponse<String> response = http.send(HttpRequest.newBuilder(uri("/api/jobs/" + job.getKey()))
-                        .GET().build(), HttpResponse.BodyHandlers.ofString());
-                state = response.statusCode() == 200
-                        ? Json.string(Json.object(Json.parse(response.body())), "state") : "HTTP " + response.statusCode();
-            } catch (IOException e) {
-                state = e.toString();
+            while (true) {
+                try {
+                    HttpResponse<String> response = http.send(request("/api/jobs/" + job.getKey(),
+                            jobKeys.getOrDefault(job.getKey(), 0)).GET().build(), HttpResponse.BodyHandlers.ofString());
+                    state = response.statusCode() == 200
+                            ? Json.string(Json.object(Json.parse(response.body())), "state")
+                            : "HTTP " + response.statusCode();
+                } catch (IOException e) {
+                    state = e.toString();
+                }
+                if (isFinal(state) || System.nanoTime() >= drainUntil) {
+                    break;
+                }
+                Thread.sleep(POLL_MILLIS);
             }
             if (isFinal(state)) {
                 job.setValue(state);
             } else {
                 problems.add("lost job " + job.getKey() + ": " + state + " " + options.drainSeconds()
                         + " s after the load stopped");
+            }
+        }
+    }
+
+    /**
+     * With keys and greedy clients: the greedy principal was held to its own limit (its 429s name it),
+     * and every other principal still had jobs accepted.
+     */
+    private void checkPrincipals() {
+        if (options.keys().isEmpty() || greedyGroup == null) {
+            return;
+        }
+        if (options.principalLimitCheck()) {
+            long limit = 0;
+            for (Map.Entry<String, AtomicLong> refusal : greedyGroup.refusals.entrySet()) {
+                limit += refusal.getKey().endsWith(" principal-limit") ? refusal.getValue().get() : 0;
+            }
+            if (limit == 0) {
+                problems.add("the greedy principal " + groups.get(0).name + " got no 429 naming the per-principal limit: "
+                        + new TreeMap<>(greedyGroup.refusals));
+            }
+        }
+        for (Group group : groups) {
+            if (group.keyIndex > 0 && group.clients > 0 && group.accepted.get() == 0) {
+                problems.add("principal " + group.name + " had no job accepted beside the greedy principal");
             }
         }
     }
@@ -579,7 +788,7 @@ public final class LoadTest {
     }
 
     private double metric(String query) throws IOException, InterruptedException {
-        HttpResponse<String> response = http.send(HttpRequest.newBuilder(uri("/actuator/metrics/" + query)).GET().build(),
+        HttpResponse<String> response = http.send(request("/actuator/metrics/" + query).GET().build(),
                 HttpResponse.BodyHandlers.ofString());
         if (response.statusCode() != 200) {
             throw new IllegalStateException("metrics: " + response.statusCode() + " for " + query
@@ -682,6 +891,9 @@ public final class LoadTest {
         System.out.printf("jobs accepted: %d %s%n", jobs.size(), states);
         System.out.printf("429: %d, 503: %d; retries after Retry-After: %d; given up at the end: %d%n", full, busy,
                 retryWaits.get(), gaveUp.get());
+        if (!options.keys().isEmpty() || greedyGroup != null) {
+            reportPrincipals(seconds);
+        }
         System.out.printf("then %d mesh jobs (%,d triangles each), one at a time, and %d s idle%n", options.meshJobs(),
                 2 * MESH_GRID * MESH_GRID, options.idleSeconds());
         System.out.printf(Locale.ROOT, "heap: %.1f MiB before, %.1f MiB after (limit %.1f)%n", mib(before.heap),
@@ -695,6 +907,59 @@ public final class LoadTest {
             System.out.println("FAIL: " + problems.count() + " problems; the first ones:");
             problems.first(30).forEach(p -> System.out.println("  " + p));
         }
+    }
+
+    /**
+     * Per principal (the greedy clients a row of their own): job submissions and their answers, what
+     * the 429s named, the wait from a job's first submission to its 202 (retries included), and the
+     * synchronous renders answered 200 out of all answered.
+     */
+    private void reportPrincipals(double seconds) {
+        System.out.println();
+        System.out.println("per principal: job submissions (every answer; 429s by what they named: the principal's own limit,");
+        System.out.println("the server's queue, anything else), the wait from a job's first submission to its 202 (retries");
+        System.out.println("included, after the warm-up), synchronous renders answered 200 of all answered and their latency");
+        System.out.println("principal          clients submits accepted  acc/s  202%  429-limit 429-queue 429-other  503 gave-up"
+                + "  wait-p50 wait-p99  renders 200%  r-p50  r-p99");
+        Map<String, Long> named = new TreeMap<>();
+        for (Group g : groups) {
+            int submits = 0;
+            for (String kindStatus : g.latencies.keySet()) {
+                submits += kindStatus.startsWith("job-submit ") ? g.count(kindStatus) : 0;
+            }
+            long limit = g.refused("job-submit", "429", "principal-limit");
+            long queue = g.refused("job-submit", "429", "queue");
+            long all429 = g.refused("job-submit", "429", null);
+            long busy = g.refused("job-submit", "503", null);
+            long[] wait = g.acceptWait.sorted();
+            int rendered = g.count("render 200");
+            int renderAnswers = 0;
+            for (String kindStatus : g.latencies.keySet()) {
+                renderAnswers += kindStatus.startsWith("render ") ? g.count(kindStatus) : 0;
+            }
+            long[] render = g.sorted("render 200");
+            System.out.printf(Locale.ROOT, "%-18s %7d %8d %8d %6.1f %4s %10d %9d %9d %4d %7d %9s %8s %8d %4s %6s %6s%n",
+                    abbreviateName(g.name), g.clients, submits, g.accepted.get(), g.accepted.get() / seconds,
+                    share(g.accepted.get(), submits), limit, queue, all429 - limit - queue, busy, g.gaveUp.get(),
+                    ms(wait, 50), ms(wait, 99), rendered, share(rendered, renderAnswers), ms(render, 50),
+                    ms(render, 99));
+            for (Map.Entry<String, AtomicLong> refusal : g.refusals.entrySet()) {
+                named.merge(refusal.getKey(), refusal.getValue().get(), Long::sum);
+            }
+        }
+        System.out.println("429s and 503s by what they named (all principals): " + (named.isEmpty() ? "none" : named));
+    }
+
+    private static String abbreviateName(String name) {
+        return name.length() <= 18 ? name : name.substring(0, 17) + "~";
+    }
+
+    private static String share(long part, long whole) {
+        return whole == 0 ? "-" : Math.round(100.0 * part / whole) + "%";
+    }
+
+    private static String ms(long[] sorted, int percent) {
+        return sorted.length == 0 ? "-" : String.format(Locale.ROOT, "%.0f", pct(sorted, percent));
     }
 
     private static double pct(long[] sorted, int percent) {
@@ -745,6 +1010,52 @@ public final class LoadTest {
             watchdog.setDaemon(true);
             watchdog.start();
             return watchdog;
+        }
+    }
+
+    /** Who a client thread sends as: the index of its key, and its row in the report (null: none). */
+    record Caller(int keyIndex, Group group) {
+    }
+
+    /** One principal's polite clients, or the greedy ones: their answers, job submissions and refusals. */
+    static final class Group {
+        final String name;
+        final int keyIndex;
+        final boolean greedy;
+        int clients;
+        final Map<String, Latencies> latencies = new ConcurrentHashMap<>();
+        /** "kind status named", e.g. "job-submit 429 principal-limit" */
+        final Map<String, AtomicLong> refusals = new ConcurrentHashMap<>();
+        final AtomicLong accepted = new AtomicLong(), gaveUp = new AtomicLong();
+        /** From a job's first submission to its 202, retries included. */
+        final Latencies acceptWait = new Latencies();
+
+        Group(String name, int keyIndex, boolean greedy) {
+            this.name = name;
+            this.keyIndex = keyIndex;
+            this.greedy = greedy;
+        }
+
+        int count(String kindStatus) {
+            Latencies l = latencies.get(kindStatus);
+            return l == null ? 0 : l.count();
+        }
+
+        long refused(String kind, String status, String named) {
+            long sum = 0;
+            for (Map.Entry<String, AtomicLong> refusal : refusals.entrySet()) {
+                String[] parts = refusal.getKey().split(" ");
+                if (parts[0].equals(kind) && (status == null || parts[1].equals(status))
+                        && (named == null || parts[2].equals(named))) {
+                    sum += refusal.getValue().get();
+                }
+            }
+            return sum;
+        }
+
+        long[] sorted(String kindStatus) {
+            Latencies l = latencies.get(kindStatus);
+            return l == null ? new long[0] : l.sorted();
         }
     }
 
