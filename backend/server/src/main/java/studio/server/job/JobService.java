@@ -44,8 +44,7 @@ public final class JobService implements Drainable, AutoCloseable {
     /** The jobs handed to other members on shutdown (see {@link JobCluster#handOver}). */
     private final List<RenderJob> handedOver = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final JobCluster cluster;
-    /** Held while a limited owner's jobs are counted and their new one admitted. */
-    private final Object admission = new Object();
+    private final OwnerLimits ownerLimits = new OwnerLimits(jobs::values, this::retryAfterSeconds);
 
     /** Listeners (event streams) at once, over all jobs; each holds a sender thread while it has news. */
     static final int MAX_LISTENERS = 256;
@@ -135,30 +134,9 @@ public final class JobService implements Drainable, AutoCloseable {
             throw new IllegalStateException("this job service is handed compiled scenes only; submit them");
         }
         checkRoom();
-        checkRoom(owner);
+        ownerLimits.check(owner);
         return submit(compiler.compile(sceneJson, Map.of(), settings.renderThreads(), intake), sceneJson, intake,
                 owner);
-    }
-
-    /**
-     * Refuses ({@link JobQueueFullException}, a 429) while {@code owner} has as many jobs queued or running
-     * here as they may, so that one principal cannot fill the queue for everyone.
-     */
-    private void checkRoom(JobOwner owner) {
-        if (owner.maxJobs() == Integer.MAX_VALUE) {
-            return;
-        }
-        int active = 0;
-        for (RenderJob job : jobs.values()) {
-            if (job.principal().equals(owner.principal()) && !job.state().isFinal()) {
-                active++;
-            }
-        }
-        if (active >= owner.maxJobs()) {
-            throw new JobQueueFullException(retryAfterSeconds(), "you have " + active + " render jobs queued or "
-                    + "running, as many as one principal may (studio.security.max-jobs-per-principal="
-                    + owner.maxJobs() + ")");
-        }
     }
 
     /**
@@ -189,12 +167,11 @@ public final class JobService implements Drainable, AutoCloseable {
      * and new job are taken together, so that simultaneous requests cannot pass the limit.
      */
     public JobStatus submit(CompiledScene scene, byte[] sceneJson, IntakeMemory intake, JobOwner owner) {
-        if (owner.maxJobs() == Integer.MAX_VALUE) {
+        Runnable admitted = ownerLimits.take(owner);
+        try {
             return admit(scene, sceneJson, intake, owner);
-        }
-        synchronized (admission) {
-            checkRoom(owner);
-            return admit(scene, sceneJson, intake, owner);
+        } finally {
+            admitted.run();
         }
     }
 

@@ -65,4 +65,40 @@ class JobAdmissionRaceTest {
         assertThat(unexpected).isEmpty();
         assertThat(output.getAll()).doesNotContain("shutting down");
     }
+
+    @Test
+    void racingSubmitsOfOnePrincipalNeverPassTheirLimit() throws Exception {
+        JobService jobs = new JobService(ExampleSceneFiles.compiler(),
+                new JobSettings(1, 8, Duration.ofMinutes(10), 500, Duration.ofMinutes(10), 1));
+        CompiledScene large = JobServiceTest.compile(JobServiceTest.LARGE);
+        JobOwner alice = new JobOwner("alice", 2);
+        List<String> accepted = new CopyOnWriteArrayList<>();
+        try {
+            for (int round = 0; round < ROUNDS; round++) {
+                CyclicBarrier start = new CyclicBarrier(THREADS);
+                Thread[] threads = new Thread[THREADS];
+                for (int t = 0; t < THREADS; t++) {
+                    threads[t] = new Thread(() -> {
+                        try {
+                            start.await(10, TimeUnit.SECONDS);
+                            accepted.add(jobs.submit(large, null, studio.server.system.IntakeMemory.NONE, alice).id());
+                        } catch (Exception refused) {
+                            // 429: the principal's limit
+                        }
+                    });
+                    threads[t].start();
+                }
+                for (Thread thread : threads) {
+                    thread.join(30_000);
+                }
+                assertThat(accepted).hasSizeLessThanOrEqualTo(2);
+                for (String id : accepted) {
+                    jobs.cancel(id, "alice");
+                }
+                accepted.clear();
+            }
+        } finally {
+            jobs.shutdown(10_000);
+        }
+    }
 }
