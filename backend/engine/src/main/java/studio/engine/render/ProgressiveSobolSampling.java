@@ -38,7 +38,7 @@ final class ProgressiveSobolSampling implements TileSampling {
     public static final int BASE = 1;
     /** The samples a pixel its neighbourhood did not settle takes before its halves are compared. */
     public static final int FIRST_JUDGED = 4;
-    /** The largest tile with its one-pixel ring. */
+    /** A tile of the usual size with its one-pixel ring: the buffers' first size. */
     private static final int RING_TILE = RenderSettings.TILE_SIZE + 2;
 
     private final SampleTracer tracer;
@@ -47,11 +47,14 @@ final class ProgressiveSobolSampling implements TileSampling {
     private final StopSignal stop;
     /** The pixel's samples: one pattern, the sequence's first N points. */
     private final PixelSamples pixelSamples;
-    /** Each base pixel's sum and per-channel range, over a tile and its ring. */
-    private final double[] baseSum = new double[3 * RING_TILE * RING_TILE];
-    private final double[] baseMin = new double[3 * RING_TILE * RING_TILE], baseMax = new double[3 * RING_TILE * RING_TILE];
+    /**
+     * Each base pixel's sum and per-channel range, over a tile and its ring. Sized for a tile of the
+     * usual size, and grown once for a larger one (a cluster's tiles are 64 pixels a side).
+     */
+    private double[] baseSum = new double[3 * RING_TILE * RING_TILE];
+    private double[] baseMin = new double[3 * RING_TILE * RING_TILE], baseMax = new double[3 * RING_TILE * RING_TILE];
     /** Per channel, the smallest and largest base sample of each pixel and its left and right neighbours. */
-    private final double[] rowMin = new double[3 * RING_TILE * RING_TILE], rowMax = new double[3 * RING_TILE * RING_TILE];
+    private double[] rowMin = new double[3 * RING_TILE * RING_TILE], rowMax = new double[3 * RING_TILE * RING_TILE];
     private final double[] xs, ys;
     private final int max, width, height;
     private final double threshold;
@@ -73,6 +76,17 @@ final class ProgressiveSobolSampling implements TileSampling {
         threshold = settings.adaptiveThreshold();
     }
 
+    /** Grows the tile buffers to hold {@code length} values (once per tile size larger than any before). */
+    private void fit(int length) {
+        if (baseSum.length < length) {
+            baseSum = new double[length];
+            baseMin = new double[length];
+            baseMax = new double[length];
+            rowMin = new double[length];
+            rowMax = new double[length];
+        }
+    }
+
     @Override
     public long samples() {
         return samples;
@@ -88,6 +102,7 @@ final class ProgressiveSobolSampling implements TileSampling {
         int x0 = Math.max(0, tile.x() - 1), y0 = Math.max(0, tile.y() - 1);
         int x1 = Math.min(width, tile.x() + tile.width() + 1), y1 = Math.min(height, tile.y() + tile.height() + 1);
         int stride = x1 - x0;
+        fit(3 * stride * (y1 - y0));
         int base = BASE; // below max: a pixel may take more than one sample (see the constructor)
         SampleTracer t = tracer;
         long bad = 0;

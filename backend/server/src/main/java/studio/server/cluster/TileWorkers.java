@@ -295,6 +295,7 @@ final class TileWorkers implements AutoCloseable {
                 pause();
             } catch (RuntimeException | OutOfMemoryError e) {
                 renderer = null;
+                log.warn("tile {} of job {} failed here", task.index(), task.jobId(), e);
                 results.set(task.index(), TileResult.failed(task, address, e.getClass().getSimpleName()
                         + (e.getMessage() != null ? ": " + e.getMessage() : "")));
                 claims.delete(task.index());
