@@ -1,0 +1,42 @@
+package studio.server.asset;
+
+import org.springframework.context.annotation.Bean;
+import org.springframework.context.annotation.Configuration;
+
+import studio.server.scene.compiling.MeshAssets;
+import studio.server.system.MemoryBudget;
+import studio.server.system.StudioProperties;
+
+/** The asset store (studio.assets.*) and how the scene compiler reads meshes' assets from it. */
+@Configuration(proxyBeanMethods = false)
+class AssetConfiguration {
+
+    @Bean
+    AssetLimits assetLimits(StudioProperties properties, MemoryBudget memory) {
+        StudioProperties.Assets assets = properties.assets();
+        return AssetLimits.of(assets.maxBytes().toBytes(), assets.maxStoreBytes().toBytes(), memory.capacity());
+    }
+
+    @Bean
+    AssetChecks assetChecks(StudioProperties properties) {
+        return new AssetChecks(properties.limits().maxTriangles(), properties.assets().maxPixels());
+    }
+
+    @Bean
+    AssetStore assetStore(AssetLimits limits, MemoryBudget memory) {
+        return new LocalAssets(limits.storeBytes(), memory);
+    }
+
+    /** A mesh's asset: its bytes if it is kept and is OBJ. */
+    @Bean
+    MeshAssets meshAssets(AssetStore store) {
+        return id -> {
+            Asset asset = store.get(id);
+            if (asset != null && asset.type() != AssetType.OBJ) {
+                throw new IllegalArgumentException("the asset " + id + " is " + asset.type().mediaType()
+                        + ", not a model/obj mesh");
+            }
+            return asset != null ? asset.bytes() : null;
+        };
+    }
+}
