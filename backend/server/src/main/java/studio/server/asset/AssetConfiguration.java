@@ -1,5 +1,6 @@
 package studio.server.asset;
 
+import org.springframework.beans.factory.ObjectProvider;
 import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
 
@@ -22,21 +23,15 @@ class AssetConfiguration {
         return new AssetChecks(properties.limits().maxTriangles(), properties.assets().maxPixels());
     }
 
+    /** This member's assets, backed by the cluster's copy when the cluster feature offers one. */
     @Bean
-    AssetStore assetStore(AssetLimits limits, MemoryBudget memory) {
-        return new LocalAssets(limits.storeBytes(), memory);
+    AssetStore assetStore(AssetLimits limits, MemoryBudget memory, ObjectProvider<SharedAssets> shared) {
+        return new LocalAssets(limits.storeBytes(), memory, shared.getIfAvailable(() -> SharedAssets.NONE));
     }
 
     /** A mesh's asset: its bytes if it is kept and is OBJ. */
     @Bean
     MeshAssets meshAssets(AssetStore store) {
-        return id -> {
-            Asset asset = store.get(id);
-            if (asset != null && asset.type() != AssetType.OBJ) {
-                throw new IllegalArgumentException("the asset " + id + " is " + asset.type().mediaType()
-                        + ", not a model/obj mesh");
-            }
-            return asset != null ? asset.bytes() : null;
-        };
+        return store.meshes();
     }
 }

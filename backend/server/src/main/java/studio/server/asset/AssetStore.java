@@ -1,6 +1,8 @@
 package studio.server.asset;
 
-/** Where assets are kept, by id: this member's memory ({@link LocalAssets}). */
+import studio.server.scene.compiling.MeshAssets;
+
+/** Where assets are kept, by id: this member's memory, backed by the cluster's copy in a cluster ({@link LocalAssets}). */
 public interface AssetStore {
 
     /**
@@ -14,6 +16,18 @@ public interface AssetStore {
     /** The asset, counted as used; null if none is kept by that id. */
     Asset get(String id);
 
-    /** Whether an asset is kept by that id (without counting it as used). */
+    /** Whether an asset is kept by that id on this member (without counting it as used). */
     boolean contains(String id);
+
+    /** The store as the scene compiler reads meshes' assets: OBJ bytes, or null if none is kept by that id. */
+    default MeshAssets meshes() {
+        return id -> {
+            Asset asset = get(id);
+            if (asset != null && asset.type() != AssetType.OBJ) {
+                throw new IllegalArgumentException("the asset " + id + " is " + asset.type().mediaType()
+                        + ", not a model/obj mesh");
+            }
+            return asset != null ? asset.bytes() : null;
+        };
+    }
 }

@@ -37,7 +37,7 @@ public enum AssetType {
     }
 
     /** The kind a Content-Type names (its parameters, such as a charset, aside), or null if none. */
-    static AssetType ofMediaType(String contentType) {
+    public static AssetType ofMediaType(String contentType) {
         if (contentType == null) {
             return null;
         }

@@ -14,8 +14,12 @@ import studio.server.system.MemoryBudget;
  * the bytes; a scene sent after the drop is refused with the asset's id, for the client to upload
  * it again. When even an empty store cannot reserve the memory (renders hold it), the upload is
  * refused with 503 and Retry-After.
+ *
+ * <p>In a cluster, an asset uploaded here is also put into the cluster's copy ({@link SharedAssets}),
+ * and one this member lacks is read from there, kept only if its bytes hash to its id, and then
+ * kept here too.
  */
-final class LocalAssets implements AssetStore {
+public final class LocalAssets implements AssetStore {
 
     private record Entry(Asset asset, MemoryBudget.Reservation memory) {
     }
@@ -23,15 +27,29 @@ final class LocalAssets implements AssetStore {
     private final long capacity;
     private final MemoryBudget budget;
     private final Map<String, Entry> kept = new LinkedHashMap<>(16, 0.75f, true);
+    private final SharedAssets shared;
     private long bytes;
 
     LocalAssets(long capacity, MemoryBudget budget) {
-        this.capacity = capacity;
-        this.budget = budget;
+        this(capacity, budget, SharedAssets.NONE);
     }
 
+    public LocalAssets(long capacity, MemoryBudget budget, SharedAssets shared) {
+        this.capacity = capacity;
+        this.budget = budget;
+        this.shared = shared;
+    }
+
+    /** Keeps the asset here, then (outside this store's lock) puts it into the cluster's copy. */
     @Override
-    public synchronized boolean put(Asset asset) {
+    public boolean put(Asset asset) {
+        boolean added = keep(asset);
+        shared.share(asset);
+        return added;
+    }
+
+    /** Keeps the asset here only. */
+    private synchronized boolean keep(Asset asset) {
         if (kept.get(asset.id()) != null) {
             return false;
         }
@@ -53,10 +71,25 @@ final class LocalAssets implements AssetStore {
         return true;
     }
 
+    /** The asset kept here, else the cluster's copy's if its bytes hash to {@code id} (then kept here, if room). */
     @Override
-    public synchronized Asset get(String id) {
-        Entry entry = kept.get(id);
-        return entry != null ? entry.asset() : null;
+    public Asset get(String id) {
+        synchronized (this) {
+            Entry entry = kept.get(id);
+            if (entry != null) {
+                return entry.asset();
+            }
+        }
+        Asset found = shared.find(id);
+        if (found == null || !AssetIds.of(found.bytes()).equals(id)) {
+            return null;
+        }
+        try {
+            keep(found);
+        } catch (AssetRefusedException e) {
+            // no room here now: used as it is, read from the cluster again next time
+        }
+        return found;
     }
 
     @Override
