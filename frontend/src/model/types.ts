@@ -101,9 +101,9 @@ export interface Plane {
 }
 
 /**
- * A triangle mesh from Wavefront OBJ: exactly one of `obj` (the OBJ text itself) and `file` (a
+ * A triangle mesh from Wavefront OBJ: exactly one of `obj` (the OBJ text itself), `file` (a
  * name the CLI reads beside the scene file; the server knows only the meshes shipped with its
- * examples). Each OBJ vertex v is placed at `position + R(rotation) · (scale · v)`: a uniform
+ * examples) and `asset` (the id, sha256-<hex>, of OBJ bytes uploaded with POST /api/assets). Each OBJ vertex v is placed at `position + R(rotation) · (scale · v)`: a uniform
  * scale, then the rotation in degrees (three.js order XYZ), then the move, as a three.js Object3D.
  */
 export interface MeshObject {
@@ -112,6 +112,7 @@ export interface MeshObject {
   name?: string;
   obj?: string;
   file?: string;
+  asset?: string;
   position?: Vec3;
   /** Uniform scale, greater than 0. */
   scale?: number;
@@ -120,7 +121,7 @@ export interface MeshObject {
 }
 
 /** The fields naming where a mesh's triangles come from (no defaults: exactly one is given). */
-export type MeshSourceField = 'obj' | 'file';
+export type MeshSourceField = 'obj' | 'file' | 'asset';
 
 export type SceneObject = Sphere | Box | Plane | MeshObject;
 export type ObjectType = SceneObject['type'];
@@ -228,7 +229,7 @@ export const OBJECT_FIELDS = {
   sphere: fieldsOf<Sphere>()(['type', 'name', 'center', 'radius', 'material']),
   box: fieldsOf<Box>()(['type', 'name', 'center', 'size', 'rotation', 'material']),
   plane: fieldsOf<Plane>()(['type', 'name', 'point', 'normal', 'material']),
-  mesh: fieldsOf<MeshObject>()(['type', 'name', 'obj', 'file', 'position', 'scale', 'rotation', 'material']),
+  mesh: fieldsOf<MeshObject>()(['type', 'name', 'obj', 'file', 'asset', 'position', 'scale', 'rotation', 'material']),
 } as const;
 
 export const MATERIAL_FIELDS = {

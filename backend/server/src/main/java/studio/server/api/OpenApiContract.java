@@ -144,6 +144,7 @@ class OpenApiContract {
                 .responses(new ApiResponses()
                         .addApiResponse("200", json("The ticket", schemaRef("PreviewTicket")))
                         .addApiResponse("429", ref("TooManyTickets")));
+        AssetContract.describe(api);
         for (Map.Entry<String, PathItem> path : api.getPaths().entrySet()) {
             if (path.getKey().startsWith("/api/")) {
                 path.getValue().readOperations().forEach(op -> op.getResponses().addApiResponse("401", ref("Unauthorized")));
@@ -228,7 +229,7 @@ class OpenApiContract {
     }
 
     /** The operation springdoc found in the controllers, with its tag, id and summary set. */
-    private static Operation operation(OpenAPI api, String path, PathItem.HttpMethod method, String tag, String id,
+    static Operation operation(OpenAPI api, String path, PathItem.HttpMethod method, String tag, String id,
                                        String summary) {
         PathItem item = api.getPaths() != null ? api.getPaths().get(path) : null;
         Operation operation = item != null ? item.readOperationsMap().get(method) : null;
@@ -282,21 +283,21 @@ class OpenApiContract {
                 .addMediaType("application/json", new MediaType().schema(health)));
     }
 
-    private static ApiResponse json(String description, Schema<?> schema) {
+    static ApiResponse json(String description, Schema<?> schema) {
         return new ApiResponse().description(description)
                 .content(new Content().addMediaType("application/json", new MediaType().schema(schema)));
     }
 
-    private static ApiResponse problem(String description, String schemaName) {
+    static ApiResponse problem(String description, String schemaName) {
         return new ApiResponse().description(description)
                 .content(new Content().addMediaType(PROBLEM_JSON, new MediaType().schema(schemaRef(schemaName))));
     }
 
-    private static ApiResponse ref(String response) {
+    static ApiResponse ref(String response) {
         return new ApiResponse().$ref("#/components/responses/" + response);
     }
 
-    private static Header headerRef(String header) {
+    static Header headerRef(String header) {
         return new Header().$ref("#/components/headers/" + header);
     }
 
@@ -312,11 +313,11 @@ class OpenApiContract {
         }
     }
 
-    private static Schema<?> schemaRef(String name) {
+    static Schema<?> schemaRef(String name) {
         return schema("{\"$ref\": \"" + ApiSchemas.REF + name + "\"}");
     }
 
-    private static Schema<?> schema(String json) {
+    static Schema<?> schema(String json) {
         return convert(json(json));
     }
 

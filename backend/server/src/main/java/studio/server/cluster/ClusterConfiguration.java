@@ -21,6 +21,7 @@ import org.springframework.core.type.AnnotatedTypeMetadata;
 import com.hazelcast.config.Config;
 import com.hazelcast.core.HazelcastInstance;
 
+import studio.server.asset.SharedAssets;
 import studio.server.job.JobCluster;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.MemoryBudget;
@@ -51,8 +52,16 @@ class ClusterConfiguration {
 
     @Bean
     @Conditional(MembersConfigured.class)
-    Config hazelcastConfig(ClusterProperties cluster, ClusterSecret secret) {
-        return MemberConfig.of(cluster, secret);
+    Config hazelcastConfig(ClusterProperties cluster, ClusterSecret secret, StudioProperties properties) {
+        return MemberConfig.withAssets(MemberConfig.of(cluster, secret), properties.assets().maxStoreBytes().toBytes());
+    }
+
+    /** The assets uploaded to any member, for every member's asset store to read (docs/cluster.md). */
+    @Bean
+    @Conditional(MembersConfigured.class)
+    SharedAssets sharedAssets(HazelcastInstance member, ClusterSecret secret, ObjectProvider<MeterRegistry> registry) {
+        Seal seal = new Seal(secret, registry.getIfAvailable(SimpleMeterRegistry::new));
+        return new ClusterAssets(new ClusterData(member, seal).assets());
     }
 
     /** Jobs in the cluster's maps, rendered by every member's tile workers (as many as a render's threads). */

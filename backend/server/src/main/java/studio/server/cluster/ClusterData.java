@@ -2,6 +2,8 @@ package studio.server.cluster;
 
 import com.hazelcast.core.HazelcastInstance;
 
+import studio.server.asset.Asset;
+
 /**
  * This member's view of the cluster's data: every map, the tile queue and the event logs, sealed
  * with the cluster's secret ({@link Seal}); the one place that names each structure's codec and key
@@ -31,6 +33,10 @@ final class ClusterData {
 
     SealedMap<String, byte[]> scenes() {
         return new SealedMap<>(member.getMap(ClusterMaps.SCENES), ClusterMaps.SCENES, Codec.BYTES, seal);
+    }
+
+    SealedMap<String, Asset> assets() {
+        return new SealedMap<>(member.getMap(ClusterMaps.ASSETS), ClusterMaps.ASSETS, ClusterAssets.CODEC, seal);
     }
 
     SealedMap<String, byte[]> images() {

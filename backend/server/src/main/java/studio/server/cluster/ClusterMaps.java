@@ -11,6 +11,8 @@ final class ClusterMaps {
     static final String JOBS = "studio-jobs";
     /** Job id to the scene's JSON, meshes inline: what a member compiles once per job. */
     static final String SCENES = "studio-scenes";
+    /** Asset id to the asset (its media type and bytes): the assets uploaded to any member. */
+    static final String ASSETS = "studio-assets";
     /** Job id to the finished image's bytes. */
     static final String IMAGES = "studio-images";
     /** Job id to the reason of a cancel asked for through a member that does not run the job. */

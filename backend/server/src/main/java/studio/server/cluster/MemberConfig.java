@@ -6,7 +6,10 @@ import com.hazelcast.config.Config;
 import com.hazelcast.config.InterfacesConfig;
 import com.hazelcast.config.JavaSerializationFilterConfig;
 import com.hazelcast.config.JoinConfig;
+import com.hazelcast.config.EvictionConfig;
+import com.hazelcast.config.EvictionPolicy;
 import com.hazelcast.config.MapConfig;
+import com.hazelcast.config.MaxSizePolicy;
 import com.hazelcast.config.QueueConfig;
 import com.hazelcast.config.RingbufferConfig;
 import com.hazelcast.config.ServerSocketEndpointConfig;
@@ -105,5 +108,18 @@ public final class MemberConfig {
     /** The configuration of a member of {@code cluster}, with its secret. */
     public static Config of(ClusterProperties cluster) {
         return of(cluster, ClusterSecret.of(cluster));
+    }
+
+    /**
+     * The assets' map ({@link ClusterAssets}): one backup, and on each member at most
+     * {@code maxBytesPerMember} of heap (Hazelcast's own measure of its entries, primaries and
+     * backups), the least recently used entries evicted first.
+     */
+    static Config withAssets(Config config, long maxBytesPerMember) {
+        int megabytes = (int) Math.max(1, Math.min(Integer.MAX_VALUE, maxBytesPerMember >> 20));
+        config.addMapConfig(new MapConfig(ClusterMaps.ASSETS).setBackupCount(BACKUPS)
+                .setEvictionConfig(new EvictionConfig().setEvictionPolicy(EvictionPolicy.LRU)
+                        .setMaxSizePolicy(MaxSizePolicy.USED_HEAP_SIZE).setSize(megabytes)));
+        return config;
     }
 }

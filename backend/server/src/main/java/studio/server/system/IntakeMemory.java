@@ -30,6 +30,8 @@ public final class IntakeMemory implements MemoryGate, AutoCloseable {
     /** How long a request refused memory may wait for it: as long as a client is told to wait before retrying. */
     static final Duration WAIT = Duration.ofSeconds(MemoryBusyException.RETRY_AFTER_SECONDS);
 
+    static final int RAW_BYTES_PER_BYTE = 3;
+
     private static final String ATTRIBUTE = IntakeMemory.class.getName();
 
     private final MemoryBudget budget;
@@ -64,6 +66,16 @@ public final class IntakeMemory implements MemoryGate, AutoCloseable {
     /** Reserves what {@code length} more bytes of the body will take once read and parsed. */
     public void bodyArrived(byte[] buffer, int offset, int length) {
         reserve(BodyMemory.of(buffer, offset, length));
+        bodyBytes += length;
+    }
+
+    /**
+     * Reserves what {@code length} more bytes of a body that is not parsed (an asset's bytes) take:
+     * {@value #RAW_BYTES_PER_BYTE} a byte, for the buffer they arrive in (which grows by doubling) and
+     * the array they are handed over as.
+     */
+    public void rawBodyArrived(byte[] buffer, int offset, int length) {
+        reserve((long) RAW_BYTES_PER_BYTE * length);
         bodyBytes += length;
     }
 

@@ -1,6 +1,7 @@
 package studio.server.system;
 
 import java.io.IOException;
+import java.util.Locale;
 
 import org.springframework.web.filter.OncePerRequestFilter;
 
@@ -18,7 +19,7 @@ import jakarta.servlet.http.HttpServletResponse;
  * for a declared Content-Length before the bytes come: a client that declares 32 MiB and sends one
  * byte holds what that byte will take (8 bytes, 168 for a <code>{</code>), so idle clients cannot
  * lock others out (61 that declared 32 MiB each held 12 KiB in all, where they had held the whole
- * budget).
+ * budget). A body that is not JSON (an asset's bytes) is reckoned as raw bytes, not as a parse.
  */
 final class IntakeMemoryFilter extends OncePerRequestFilter {
 
@@ -40,7 +41,9 @@ final class IntakeMemoryFilter extends OncePerRequestFilter {
         boolean arriving = false;
         try {
             intake.attachTo(request);
-            chain.doFilter(new WatchedBody(request, intake::bodyArrived), response);
+            String type = request.getContentType();
+            boolean json = type == null || type.toLowerCase(Locale.ROOT).contains("json");
+            chain.doFilter(new WatchedBody(request, json ? intake::bodyArrived : intake::rawBodyArrived), response);
             arriving = request.isAsyncStarted() && request.getAttribute(BodyArrivalFilter.ARRIVING) != null;
         } finally {
             if (arriving) {

@@ -18,7 +18,7 @@ import org.springframework.util.unit.DataSize;
  *                          heap; beyond it 503 (a render) or 429 (a body)
  */
 @ConfigurationProperties("studio")
-public record StudioProperties(@DefaultValue Limits limits, @DefaultValue Jobs jobs,
+public record StudioProperties(@DefaultValue Limits limits, @DefaultValue Jobs jobs, @DefaultValue Assets assets,
                                @DefaultValue("2") int concurrentRenders, @DefaultValue("0") int renderThreads,
                                @DefaultValue("0B") DataSize renderMemory) {
 
@@ -63,6 +63,18 @@ public record StudioProperties(@DefaultValue Limits limits, @DefaultValue Jobs j
                          @DefaultValue("2000000") int maxTriangles, @DefaultValue("33554432") long maxBodyBytes,
                          @DefaultValue("268435456") long maxPixelSamples, @DefaultValue("5m") Duration maxRenderTime,
                          @DefaultValue("10s") Duration bodyGrace, @DefaultValue("256KB") DataSize minBodyRate) {
+    }
+
+    /**
+     * Assets (POST /api/assets): bytes kept by their content's hash, in the service's memory.
+     *
+     * @param maxBytes      the largest asset; larger ones get 413 (a body is also held to limits.max-body-bytes)
+     * @param maxStoreBytes all assets kept at once, at most a quarter of the memory budget (render-memory); when
+     *                      full, the least recently used are dropped
+     * @param maxPixels     the most pixels (width times height) an image asset may declare in its header
+     */
+    public record Assets(@DefaultValue("16MB") DataSize maxBytes, @DefaultValue("256MB") DataSize maxStoreBytes,
+                         @DefaultValue("67108864") long maxPixels) {
     }
 
     /** The memory budget: {@link #renderMemory}, or half of the maximum heap when that is 0. */

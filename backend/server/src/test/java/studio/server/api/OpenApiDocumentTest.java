@@ -61,7 +61,7 @@ class OpenApiDocumentTest {
                 "POST /api/render", "POST /api/jobs", "GET /api/jobs/{id}", "DELETE /api/jobs/{id}",
                 "GET /api/jobs/{id}/events", "GET /api/jobs/{id}/image", "GET /api/scenes", "GET /api/scenes/{name}",
                 "GET /api/scene-schema", "GET /api/meshes", "GET /api/me", "POST /api/preview/tickets",
-                "GET /actuator/health");
+                "POST /api/assets", "HEAD /api/assets/{id}", "GET /api/assets/{id}", "GET /actuator/health");
     }
 
     @Test

@@ -220,6 +220,10 @@ class SceneContractAgreementTest {
                 invalid("mesh with neither obj nor file", object("{'type':'mesh'}"), "objects[0]"),
                 invalid("mesh with both obj and file",
                         object("{'type':'mesh','obj':'" + TRIANGLE + "','file':'meshes/torus-knot.obj'}"), "objects[0]"),
+                invalid("mesh with an asset id in capitals",
+                        object("{'type':'mesh','asset':'sha256-" + "AB".repeat(32) + "'}"), "objects[0].asset"),
+                invalid("mesh with both file and asset", object("{'type':'mesh','file':'meshes/torus-knot.obj',"
+                        + "'asset':'sha256-" + "ab".repeat(32) + "'}"), "objects[0]"),
                 invalid("mesh file outside the folder", object("{'type':'mesh','file':'../secret.obj'}"),
                         "objects[0].file"),
                 invalid("regular sampler with a non-square number of samples",
@@ -249,6 +253,8 @@ class SceneContractAgreementTest {
                         "objects[0]"),
                 invalid("mesh file this server does not ship", object("{'type':'mesh','file':'meshes/nope.obj'}"),
                         "objects[0].file"),
+                invalid("mesh asset this server does not keep", object("{'type':'mesh','asset':'sha256-"
+                        + "ab".repeat(32) + "'}"), "objects[0].asset"),
                 invalid("more triangles than the limit, all meshes together", "{'objects':["
                         + "{'type':'mesh','obj':'" + fan(2600) + "'},{'type':'mesh','obj':'" + fan(2600) + "'}]}",
                         "objects[1].obj"),

@@ -16,7 +16,13 @@ import jakarta.validation.ValidatorFactory;
 import studio.server.job.JobService;
 import studio.server.job.JobSettings;
 import studio.server.render.RenderBudget;
+import studio.server.scene.compiling.MeshAssets;
+import studio.server.scene.compiling.MeshCache;
+import studio.server.scene.compiling.MeshFiles;
 import studio.server.scene.compiling.SceneCompiler;
+import studio.server.scene.compiling.SceneMapper;
+import studio.server.scene.format.SceneLimits;
+import studio.server.scene.reading.SceneReader;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -45,6 +51,10 @@ final class TestMember implements AutoCloseable {
     final ClusterJobs cluster;
     final JobService jobs;
     final String address;
+    /** The member's scene compiler, which reads meshes' assets from {@link #assets}. */
+    final SceneCompiler compiler;
+    /** Where the member's compiler reads meshes' assets (none unless a test gives it a store). */
+    volatile MeshAssets assets = MeshAssets.none();
     /** The member's id, as the job table names a job's owner. */
     final String uuid;
     /** What the member's workers do once they took a tile from the queue, before they claim it. */
@@ -64,7 +74,8 @@ final class TestMember implements AutoCloseable {
                 .addClasses(ClusterJobsTest.FirstPutFails.class.getName(), ClusterJobsTest.SlowPut.class.getName());
         hazelcast = Hazelcast.newHazelcastInstance(config);
         data = new ClusterData(hazelcast, new Seal(ClusterSecret.of(properties), registry));
-        SceneCompiler compiler = SceneCompiler.standalone(VALIDATION::getValidator);
+        compiler = new SceneCompiler(SceneReader.forOneScene(VALIDATION::getValidator),
+                new SceneMapper(SceneLimits.DEFAULTS, MeshCache.none(), id -> assets.obj(id)), MeshFiles.none());
         TileWorkers workers = new TileWorkers(data, new JobScenes(data.scenes(), compiler, MemoryBudget.unlimited()), 1,
                 new TileWorkers.Steps() {
                     @Override

@@ -46,6 +46,11 @@ final class MappingProblems {
         return null;
     }
 
+    /** Whether a problem names {@code field}. */
+    boolean has(String field) {
+        return list.stream().anyMatch(p -> p.field().equals(field));
+    }
+
     /** @throws InvalidSceneException listing every problem, if there is one */
     void throwIfAny() {
         if (!list.isEmpty()) {

@@ -70,6 +70,14 @@ public final class MeshCache {
         return maxTriangles > 0 ? digest(objText) : null;
     }
 
+    /**
+     * The key of an asset's entries: the hex SHA-256 its id carries (as {@link #keyOf} for the same OBJ
+     * text, so an asset and its text inline share entries); null in a cache that keeps nothing.
+     */
+    String keyOfAsset(String assetId) {
+        return maxTriangles > 0 ? assetId.substring(assetId.indexOf('-') + 1) : null;
+    }
+
     /** The SHA-256 of an OBJ text. */
     private static String digest(String objText) {
         try {

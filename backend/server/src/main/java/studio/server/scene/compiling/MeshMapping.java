@@ -3,6 +3,9 @@ package studio.server.scene.compiling;
 import static studio.server.scene.compiling.FormatValues.or;
 import static studio.server.scene.compiling.FormatValues.vec;
 
+import java.nio.charset.StandardCharsets;
+import java.util.function.Supplier;
+
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.MeshData;
@@ -12,7 +15,7 @@ import studio.server.scene.format.ObjectDto;
 import studio.server.scene.format.SceneDefaults;
 
 /**
- * The meshes of one scene: each one's OBJ text (inline or from its file), parsed and built or
+ * The meshes of one scene: each one's OBJ text (inline, from its file or its asset), parsed and built or
  * taken from the {@link MeshCache}, within the server's triangle limit for all of the scene's
  * meshes together.
  */
@@ -20,27 +23,30 @@ final class MeshMapping {
 
     private final MeshCache cache;
     private final MeshFiles files;
+    private final MeshAssets assets;
     private final MemoryGate memory;
     private final MappingProblems problems;
     /** Triangles the scene may still have. */
     private int triangleBudget;
 
-    MeshMapping(int maxTriangles, MeshCache cache, MeshFiles files, MemoryGate memory, MappingProblems problems) {
+    MeshMapping(int maxTriangles, MeshCache cache, MeshFiles files, MeshAssets assets, MemoryGate memory,
+                MappingProblems problems) {
         this.triangleBudget = maxTriangles;
         this.cache = cache;
         this.files = files;
+        this.assets = assets;
         this.memory = memory;
         this.problems = problems;
     }
 
     /** The mesh placed in the scene, or null (and a problem) if it cannot be. */
     TriangleMesh of(ObjectDto.Mesh mesh, String path) {
-        String text = meshText(mesh, path);
-        String digest = text != null ? cache.keyOf(text) : null;
-        MeshData data = text != null ? meshData(text, digest, meshField(mesh, path)) : null;
+        Source source = source(mesh, path);
+        MeshData data = source != null ? meshData(source) : null;
         if (data == null) {
             return null;
         }
+        String digest = source.digest();
         triangleBudget -= data.triangleCount();
         MeshCache.Placement placement = new MeshCache.Placement(digest,
                 vec(or(mesh.position(), SceneDefaults.ORIGIN)), or(mesh.scale(), SceneDefaults.MESH_SCALE),
@@ -57,19 +63,38 @@ final class MeshMapping {
         return shape;
     }
 
-    /** The mesh's OBJ text, inline or from its file; null (and a problem) if there is none. */
-    private String meshText(ObjectDto.Mesh mesh, String path) {
-        if ((mesh.obj() == null) == (mesh.file() == null)) {
-            problems.add(path, mesh.obj() == null ? "a mesh needs its OBJ text in \"obj\" or a \"file\" name"
-                    : "give the mesh either \"obj\" or \"file\", not both");
-            return null;
-        }
-        return mesh.obj() != null ? mesh.obj() : problems.attempt(path + ".file", () -> files.read(mesh.file()));
+    /**
+     * A mesh's OBJ text, its cache key, and the field it came from.
+     *
+     * @param text   the OBJ text, decoded when first asked for (an asset's bytes need not be, if its mesh is cached)
+     * @param digest the key of its {@link MeshCache} entries (null in a cache that keeps nothing)
+     */
+    private record Source(Supplier<String> text, String digest, String field) {
     }
 
-    /** The field that holds the mesh's OBJ: its {@code obj} or its {@code file}. */
-    private static String meshField(ObjectDto.Mesh mesh, String path) {
-        return path + (mesh.obj() != null ? ".obj" : ".file");
+    /** Where the mesh's OBJ comes from: inline, its file or its asset; null (and a problem) if none. */
+    private Source source(ObjectDto.Mesh mesh, String path) {
+        int given = (mesh.obj() != null ? 1 : 0) + (mesh.file() != null ? 1 : 0) + (mesh.asset() != null ? 1 : 0);
+        if (given != 1) {
+            problems.add(path, given == 0 ? "a mesh needs its OBJ text in \"obj\", a \"file\" name or an \"asset\" id"
+                    : "give the mesh one of \"obj\", \"file\" and \"asset\", not more");
+            return null;
+        }
+        if (mesh.asset() != null) {
+            String field = path + ".asset";
+            byte[] bytes = problems.attempt(field, () -> assets.obj(mesh.asset()));
+            if (bytes == null) {
+                if (!problems.has(field)) {
+                    problems.add(field, "this server has no asset " + mesh.asset() + "; upload it (POST /api/assets) "
+                            + "and send the scene again");
+                }
+                return null;
+            }
+            return new Source(() -> new String(bytes, StandardCharsets.UTF_8), cache.keyOfAsset(mesh.asset()), field);
+        }
+        String text = mesh.obj() != null ? mesh.obj() : problems.attempt(path + ".file", () -> files.read(mesh.file()));
+        return text == null ? null
+                : new Source(() -> text, cache.keyOf(text), path + (mesh.obj() != null ? ".obj" : ".file"));
     }
 
     /**
@@ -77,11 +102,13 @@ final class MeshMapping {
      * does not parse, or it has more triangles than the scene may still have (the reader stops there,
      * so a text of millions of triangles costs no more than the budget's worth).
      */
-    private MeshData meshData(String text, String digest, String field) {
+    private MeshData meshData(Source source) {
+        String digest = source.digest();
+        String field = source.field();
         MeshData data = cache.parsed(digest);
         if (data == null) {
             try {
-                data = ObjReader.parse(text, Math.max(0, triangleBudget), memory);
+                data = ObjReader.parse(source.text().get(), Math.max(0, triangleBudget), memory);
             } catch (TooManyTrianglesException e) {
                 problems.add(field, "has more than " + triangleBudget + " triangles (passed at OBJ line " + e.line()
                         + "); this server's limit is " + triangleBudget + " more (all meshes together, "

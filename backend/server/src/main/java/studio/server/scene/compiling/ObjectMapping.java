@@ -36,9 +36,10 @@ final class ObjectMapping {
     private final MemoryGate memory;
     private final MappingProblems problems;
 
-    ObjectMapping(SceneLimits limits, MeshCache cache, MeshFiles files, MemoryGate memory, MappingProblems problems) {
+    ObjectMapping(SceneLimits limits, MeshCache cache, MeshFiles files, MeshAssets assets, MemoryGate memory,
+                  MappingProblems problems) {
         this.limits = limits;
-        this.meshes = new MeshMapping(limits.maxTriangles(), cache, files, memory, problems);
+        this.meshes = new MeshMapping(limits.maxTriangles(), cache, files, assets, memory, problems);
         this.memory = memory;
         this.problems = problems;
     }

@@ -1,5 +1,6 @@
 package studio.server.scene.compiling;
 
+import org.springframework.beans.factory.ObjectProvider;
 import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
 
@@ -23,11 +24,15 @@ class SceneConfiguration {
                 l.maxLights(), l.maxTriangles(), l.maxBodyBytes(), l.maxPixelSamples());
     }
 
-    /** Reads the meshes shipped with the example scenes; keeps meshes for scenes that send them again. */
+    /**
+     * Reads the meshes shipped with the example scenes, and meshes' assets from the asset feature
+     * (none without it); keeps meshes for scenes that send them again.
+     */
     @Bean
-    SceneCompiler sceneCompiler(Validator validator, SceneLimits limits, MemoryBudget memory) {
-        return new SceneCompiler(new SceneReader(validator), new SceneMapper(limits, meshCache(limits, memory)),
-                MeshFiles.bundled());
+    SceneCompiler sceneCompiler(Validator validator, SceneLimits limits, MemoryBudget memory,
+                                ObjectProvider<MeshAssets> assets) {
+        return new SceneCompiler(new SceneReader(validator), new SceneMapper(limits, meshCache(limits, memory),
+                assets.getIfAvailable(MeshAssets::none)), MeshFiles.bundled());
     }
 
     /** Meshes kept for scenes that send them again (the live view does on every edit): an eighth of the render memory. */

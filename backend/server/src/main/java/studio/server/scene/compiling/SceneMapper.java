@@ -30,6 +30,7 @@ public final class SceneMapper {
 
     private final SceneLimits limits;
     private final MeshCache meshes;
+    private final MeshAssets assets;
 
     public SceneMapper(SceneLimits limits) {
         this(limits, MeshCache.none());
@@ -37,8 +38,14 @@ public final class SceneMapper {
 
     /** @param meshes meshes already read and built, reused when a scene has them unchanged */
     public SceneMapper(SceneLimits limits, MeshCache meshes) {
+        this(limits, meshes, MeshAssets.none());
+    }
+
+    /** @param assets where meshes' {@code asset} ids are read from */
+    public SceneMapper(SceneLimits limits, MeshCache meshes, MeshAssets assets) {
         this.limits = limits;
         this.meshes = meshes;
+        this.assets = assets;
     }
 
     /** As {@link #map(SceneDto, int, MeshFiles)}, with no mesh files (inline meshes only). */
@@ -60,7 +67,7 @@ public final class SceneMapper {
     public CompiledScene map(SceneDto dto, int threads, MeshFiles meshFiles, MemoryGate memory) {
         MappingProblems problems = new MappingProblems();
         RenderMapping render = RenderMapping.of(dto.image(), dto.render(), limits, problems);
-        List<SceneObject> objects = new ObjectMapping(limits, meshes, meshFiles, memory, problems).of(dto.objects());
+        List<SceneObject> objects = new ObjectMapping(limits, meshes, meshFiles, assets, memory, problems).of(dto.objects());
         List<PointLight> lights = LightMapping.of(dto.lights(), limits, problems);
         Camera camera = CameraMapping.of(dto.camera(), problems);
         problems.throwIfAny();

@@ -52,13 +52,15 @@ public sealed interface ObjectDto {
 
     /**
      * A triangle mesh from Wavefront OBJ (positions, triangles or polygons, optional vertex normals
-     * for smooth shading): either the OBJ text itself in {@code obj}, or a {@code file} name (see
-     * {@link MeshFileNames}; the compiler's MeshFiles say where it is read from). Placed by a uniform
+     * for smooth shading): exactly one of the OBJ text itself in {@code obj}, a {@code file} name (see
+     * {@link MeshFileNames}; the compiler's MeshFiles say where it is read from), or the id of an
+     * {@code asset} uploaded before (see {@link AssetIds}). Placed by a uniform
      * scale, then the rotation (degrees, order XYZ as three.js), then moved to {@code position}.
      */
     record Mesh(
             String obj,
             @Pattern(regexp = MeshFileNames.RULE, message = MeshFileNames.MESSAGE) String file,
+            @Pattern(regexp = AssetIds.RULE, message = AssetIds.MESSAGE) String asset,
             @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
             @Positive @Finite Double scale,
             @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,

@@ -91,8 +91,9 @@ public final class SceneSchema {
      */
     private void crossFieldRules(Class<?> type, Map<String, Object> schema) {
         if (type == ObjectDto.Mesh.class) {
-            // the OBJ text inline, or a file name: one of them
-            schema.put("oneOf", List.of(Map.of("required", List.of("obj")), Map.of("required", List.of("file"))));
+            // the OBJ text inline, a file name or an asset id: one of them
+            schema.put("oneOf", List.of(Map.of("required", List.of("obj")), Map.of("required", List.of("file")),
+                    Map.of("required", List.of("asset"))));
         }
         if (type == RenderDto.class) {
             // the regular sampler needs a square number of samples, and cannot sample adaptively

@@ -160,6 +160,7 @@ final class SceneConstraints {
             entry("ObjectDto.Mesh.obj", List.of()),
             entry("ObjectDto.Mesh.file", List.of(
                     new FieldRule.Pattern("(?!.*\\.\\.)(?!.*/\\.)(?!.*//)[A-Za-z0-9_-][A-Za-z0-9._/-]*\\.obj"))),
+            entry("ObjectDto.Mesh.asset", List.of(new FieldRule.Pattern("sha256-[0-9a-f]{64}"))),
             entry("ObjectDto.Mesh.position", List.of(new FieldRule.Vector())),
             entry("ObjectDto.Mesh.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
             entry("ObjectDto.Mesh.scale", List.of(new FieldRule.Positive(), new FieldRule.Finite())),
@@ -235,11 +236,12 @@ final class SceneConstraints {
             return new ObjectDto.Mesh(
                     (String) v[0],
                     (String) v[1],
-                    (List<Double>) v[2],
-                    (Double) v[3],
-                    (List<Double>) v[4],
-                    (MaterialDto) v[5],
-                    (String) v[6]);
+                    (String) v[2],
+                    (List<Double>) v[3],
+                    (Double) v[4],
+                    (List<Double>) v[5],
+                    (MaterialDto) v[6],
+                    (String) v[7]);
         }
         if (type == SceneDto.class) {
             return new SceneDto(

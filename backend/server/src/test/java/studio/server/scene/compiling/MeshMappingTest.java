@@ -93,11 +93,11 @@ class MeshMappingTest {
     }
 
     @Test
-    void needsExactlyOneOfObjAndFile() {
+    void needsExactlyOneOfObjFileAndAsset() {
         assertThat(onlyProblem("{'type':'mesh'}", MeshFiles.none()).field()).isEqualTo("objects[0]");
         FieldProblem both = onlyProblem("{'type':'mesh','obj':'" + TETRAHEDRON + "','file':'a.obj'}", MeshFiles.none());
         assertThat(both.field()).isEqualTo("objects[0]");
-        assertThat(both.message()).contains("not both");
+        assertThat(both.message()).contains("not more");
     }
 
     @Test
