@@ -208,7 +208,7 @@ try {
     for (const [width, height] of [[1024, 768], [1440, 900]]) {
       await page.setViewportSize({ width, height });
       await page.getByRole('tab', { name: 'Image' }).click();
-      const image = page.getByRole('img', { name: 'Rendered image', exact: true });
+      const image = page.getByRole('img', { name: 'The render', exact: true });
       await image.waitFor();
       await until(async () => {
         const box = await image.boundingBox();
@@ -220,7 +220,7 @@ try {
     }
     // at 1920x1080 the image fills the stage: drawn larger than its own 800x600
     await page.setViewportSize({ width: 1920, height: 1080 });
-    const image = page.getByRole('img', { name: 'Rendered image', exact: true });
+    const image = page.getByRole('img', { name: 'The render', exact: true });
     await until(async () => (await image.evaluate((img) => Math.min(img.clientWidth / img.naturalWidth, img.clientHeight / img.naturalHeight))) > 1.2,
       async () => `at 1920x1080 the image is drawn at ${await image.evaluate((img) => Math.min(img.clientWidth / img.naturalWidth, img.clientHeight / img.naturalHeight))} of its size`);
     await page.screenshot({ path: `${out}stage-1920x1080.png` });

@@ -36,6 +36,7 @@ export function SceneOutline() {
             aria-label={`New name for ${label}`}
             defaultValue={name ?? ''}
             maxLength={200}
+            // eslint-disable-next-line jsx-a11y/no-autofocus -- the field appears because the user asked to rename
             autoFocus
             onBlur={(e) => rename(target, e.currentTarget.value)}
             onKeyDown={(e) => {

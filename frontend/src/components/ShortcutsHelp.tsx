@@ -39,8 +39,10 @@ export function ShortcutsHelp({ onClose }: ShortcutsHelpProps) {
     return () => document.removeEventListener('keydown', onKey, true);
   }, [onClose]);
   return (
-    <div className="shortcuts-help" role="dialog" aria-modal="true" aria-labelledby="shortcuts-title" onClick={onClose}>
-      <div className="shortcuts-help__panel" onClick={(event) => event.stopPropagation()}>
+    // Escape (above) is the keyboard's way out; a click on the backdrop is the mouse's
+    // eslint-disable-next-line jsx-a11y/click-events-have-key-events, jsx-a11y/no-noninteractive-element-interactions
+    <div className="shortcuts-help" role="dialog" aria-modal="true" aria-labelledby="shortcuts-title" onClick={(event) => event.target === event.currentTarget && onClose()}>
+      <div className="shortcuts-help__panel">
         <header>
           <h2 id="shortcuts-title">Keyboard shortcuts</h2>
           <button ref={close} type="button" className="small" onClick={onClose}>

@@ -1,4 +1,4 @@
-import { useEffect, useRef } from 'react';
+import { useEffect, useLayoutEffect, useRef } from 'react';
 import { copyText } from '../model/clipboard';
 import type { GizmoMode } from '../model/gizmo';
 import { useSceneStore } from '../store/sceneStore';
@@ -29,7 +29,9 @@ const GIZMO_KEYS: Record<string, GizmoMode> = { w: 'translate', e: 'rotate', r: 
  */
 export function useEditorShortcuts(onHelp?: () => void): void {
   const help = useRef(onHelp);
-  help.current = onHelp;
+  useLayoutEffect(() => {
+    help.current = onHelp;
+  });
   useEffect(() => {
     const onKeyDown = (event: KeyboardEvent) => {
       if (inField(event.target) || event.altKey) return;

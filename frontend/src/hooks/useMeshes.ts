@@ -16,6 +16,7 @@ export function useMeshVersion(): number {
 export function useMeshLookup(): (mesh: MeshObject) => MeshState {
   const version = useMeshVersion();
   // `version` is not read inside, but it is what changes the answers.
+  // eslint-disable-next-line react-hooks/exhaustive-deps -- see above
   return useCallback((mesh: MeshObject) => meshCache.get(mesh), [version]);
 }
 

@@ -1,4 +1,4 @@
-import { useCallback, useEffect, useRef, useState } from 'react';
+import { useCallback, useEffect, useLayoutEffect, useRef, useState } from 'react';
 import { ApiError, fetchScene, fetchSceneList, type FetchFn, type SceneSummary } from '../api/client';
 
 /** The example gallery: its list, whether it is loading, and a loader for one example. */
@@ -18,7 +18,9 @@ export function useSceneExamples(fetchFn: FetchFn | undefined, onError: (error: 
   const [loading, setLoading] = useState(true);
   const latest = useRef(0);
   const reportError = useRef(onError);
-  reportError.current = onError;
+  useLayoutEffect(() => {
+    reportError.current = onError;
+  });
 
   useEffect(() => {
     let live = true;

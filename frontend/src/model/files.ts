@@ -5,6 +5,7 @@ import type { Scene } from './types';
 /** `${name}.json`, with path separators, quotes and control characters taken out. */
 export function sceneFileName(scene: Scene): string {
   const base = (scene.name ?? 'render')
+    // eslint-disable-next-line no-control-regex -- control characters are what this takes out
     .replace(/[\u0000-\u001f\u007f"'`<>:|?*]/g, '')
     .split(/[\\/]/)
     .filter((part) => part !== '' && part !== '.' && part !== '..')

@@ -9,7 +9,7 @@ describe('ImageViewer', () => {
     const onClose = vi.fn();
     render(<ImageViewer url="blob:x" width={1600} height={1200} name="still-life.png" onClose={onClose} />);
     expect(screen.getByRole('dialog', { name: 'Full-size image still-life.png' })).toBeInTheDocument();
-    const image = screen.getByRole('img', { name: 'Rendered image at full size' });
+    const image = screen.getByRole('img', { name: 'The render at full size' });
     const scale = () => Number(image.getAttribute('data-scale'));
     expect(scale()).toBe(0.5); // happy-dom lays out nothing: the fallback area of 800 x 600
     fireEvent.wheel(screen.getByTestId('image-viewer-area'), { deltaY: -500, clientX: 100, clientY: 100 });

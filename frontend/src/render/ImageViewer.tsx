@@ -28,7 +28,7 @@ export function ImageViewer({ url, width, height, name, onClose }: ImageViewerPr
     setView(fitImage(w, h, width, height, dpr));
   };
   // Fit once the area is laid out, and again for another image.
-  useEffect(fit, [width, height]);
+  useEffect(fit, [width, height, dpr]);
   useEffect(() => {
     // Escape is the viewer's alone while it is open (the editor's own Escape clears the selection).
     const onKey = (e: KeyboardEvent) => {
@@ -77,7 +77,7 @@ export function ImageViewer({ url, width, height, name, onClose }: ImageViewerPr
       >
         <img
           src={url}
-          alt="Rendered image at full size"
+          alt="The render at full size"
           draggable={false}
           data-scale={view.scale * dpr}
           style={{ width: width * view.scale, height: height * view.scale, transform: `translate(${view.x}px, ${view.y}px)`, imageRendering: view.scale * dpr >= 2 ? 'pixelated' : 'auto' }}

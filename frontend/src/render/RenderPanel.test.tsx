@@ -140,7 +140,7 @@ describe('RenderPanel', () => {
     const changed = { ...SCENE, objects: [{ type: 'sphere', radius: 2 }] };
     view.rerender(<RenderPanel scene={changed} onFieldErrors={onFieldErrors} fetchFn={fetchFn} eventSourceFactory={streams.factory} history={history} />);
     expect(screen.getByText('Out of date')).toBeVisible();
-    expect(screen.getByRole('img', { name: 'Rendered image' })).toBeInTheDocument();
+    expect(screen.getByRole('img', { name: 'The render' })).toBeInTheDocument();
     await userEvent.setup().click(screen.getByRole('button', { name: 'Render again' }));
     await waitFor(() => expect(calls(fetchFn, 'POST', '/api/jobs')).toHaveLength(2));
     expect(JSON.parse(String(calls(fetchFn, 'POST', '/api/jobs')[1][1]?.body))).toEqual(changed);
@@ -150,11 +150,11 @@ describe('RenderPanel', () => {
     expect(screen.queryByText('Out of date')).toBeNull();
   });
 
-  it('opens the finished image in the full-size viewer; the image is named "Rendered image"', async () => {
+  it('opens the finished image in the full-size viewer; the image is named "The render"', async () => {
     const { startRender, user } = setup();
     const source = await startRender();
     act(() => source.emit('end', statusJson({ state: 'done', progress: 1 })));
-    expect(await screen.findByRole('img', { name: 'Rendered image' })).toBeInTheDocument();
+    expect(await screen.findByRole('img', { name: 'The render' })).toBeInTheDocument();
     await user.click(screen.getByRole('button', { name: 'Full size' }));
     expect(screen.getByRole('dialog', { name: 'Full-size image still-life.png' })).toBeInTheDocument();
     await user.click(screen.getByRole('button', { name: 'Close' }));

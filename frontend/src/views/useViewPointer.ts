@@ -1,4 +1,4 @@
-import { useEffect, useRef, useState, type KeyboardEvent as ReactKeyboardEvent, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
+import { useCallback, useEffect, useLayoutEffect, useRef, useState, type KeyboardEvent as ReactKeyboardEvent, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
 import { nudgeTarget, positionOf } from '../model/edits';
 import { panBy, pixelStep, snapToGrid, svgToWorld, VIEW_AXES, worldToSvg, zoomAbout, type Vec2, type ViewKind, type ViewTransform } from '../model/projection';
 import { itemsInRect } from '../model/boxSelect';
@@ -46,14 +46,19 @@ export function parseTarget(value: string | undefined): DragTarget | null {
 export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement | null>, t: ViewTransform) {
   const gesture = useRef<Gesture | null>(null);
   const view = useRef(t);
-  view.current = t;
+  useLayoutEffect(() => {
+    view.current = t;
+  });
   const [marquee, setMarquee] = useState<Marquee | null>(null);
 
-  const local = (event: { clientX: number; clientY: number }): Vec2 => {
-    if (!Number.isFinite(event.clientX) || !Number.isFinite(event.clientY)) return [view.current.width / 2, view.current.height / 2];
-    const rect = svgRef.current?.getBoundingClientRect();
-    return [event.clientX - (rect?.left ?? 0), event.clientY - (rect?.top ?? 0)];
-  };
+  const local = useCallback(
+    (event: { clientX: number; clientY: number }): Vec2 => {
+      if (!Number.isFinite(event.clientX) || !Number.isFinite(event.clientY)) return [view.current.width / 2, view.current.height / 2];
+      const rect = svgRef.current?.getBoundingClientRect();
+      return [event.clientX - (rect?.left ?? 0), event.clientY - (rect?.top ?? 0)];
+    },
+    [svgRef],
+  );
 
   useEffect(() => {
     const svg = svgRef.current;
@@ -65,7 +70,7 @@ export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement |
     };
     svg.addEventListener('wheel', onWheel, { passive: false });
     return () => svg.removeEventListener('wheel', onWheel);
-  }, [kind, svgRef]);
+  }, [kind, svgRef, local]);
 
   const onPointerDown = (event: ReactPointerEvent<SVGSVGElement>) => {
     if (gesture.current || (event.button !== 0 && event.button !== 1)) return;

@@ -1,4 +1,4 @@
-import { useEffect, useId, useRef, useState } from 'react';
+import { useEffect, useId, useLayoutEffect, useRef, useState } from 'react';
 import { FieldErrorMessage, useFieldError } from '../fieldErrors';
 
 const HEX = /^#[0-9a-fA-F]{6}$/;
@@ -44,7 +44,9 @@ export function ColorField({ label, path, value, onCommit, onPreview, onPreviewE
 
   // The native `change` event fires once the picker closes: that is the edit to keep.
   const latest = useRef({ value, onCommit });
-  latest.current = { value, onCommit };
+  useLayoutEffect(() => {
+    latest.current = { value, onCommit };
+  });
   useEffect(() => {
     const input = swatch.current;
     const done = () => {

@@ -25,6 +25,7 @@ export interface HistoryStripProps {
  * Compare sets one beside the render shown, with a slider; Restore scene puts its scene back in the
  * editor. Presentational: the panel owns the history.
  */
+// eslint-disable-next-line react-hooks/purity -- the ages shown are as of this render, by design
 export function HistoryStrip({ id, entries, shownId, isCurrentScene, onShow, onCompare, onRestore, now = Date.now() }: HistoryStripProps) {
   const shown = entries.find((e) => e.record.id === shownId) ?? null;
   return (
