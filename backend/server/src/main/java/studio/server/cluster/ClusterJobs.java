@@ -4,9 +4,11 @@ import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executor;
+import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -76,6 +78,12 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     /** Jobs this member took over and has not rendered yet: their tiles may be queued already. */
     private final Set<String> adopted = ConcurrentHashMap.newKeySet();
     private final ScheduledExecutorService background;
+    /** Writes a job's end to the job table (a compare-and-set, which has no asynchronous form), waited for in bounds. */
+    private final ExecutorService endWrites = Executors.newCachedThreadPool(r -> {
+        Thread t = new Thread(r, "cluster-end-writes");
+        t.setDaemon(true);
+        return t;
+    });
     /** The event streams this member serves of other members' jobs, by listener. */
     private final Map<JobListener, RemoteJobStream> remoteStreams = new ConcurrentHashMap<>();
     private final long remoteHeartbeatMillis;
@@ -202,7 +210,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             if (end.state() == JobState.DONE) {
                 images.setAsync(id, image).toCompletableFuture().get(END_WRITE_SECONDS, TimeUnit.SECONDS);
             }
-            jobs.update(id, new StatusUpdate(memberId, end));
+            CompletableFuture.runAsync(() -> jobs.update(id, new StatusUpdate(memberId, end)), endWrites)
+                    .get(END_WRITE_SECONDS, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (ExecutionException | TimeoutException | RuntimeException e) {
@@ -376,6 +385,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     @Override
     public void close() {
         background.shutdownNow();
+        endWrites.shutdownNow();
         workers.close();
         if (member.getLifecycleService().isRunning()) {
             try {

@@ -1,12 +1,9 @@
 package studio.server.render;
 
-import java.lang.reflect.Field;
-
-import org.apache.catalina.connector.RequestFacade;
 import org.apache.coyote.ActionCode;
 
 import jakarta.servlet.ServletRequest;
-import jakarta.servlet.ServletRequestWrapper;
+import studio.server.system.TomcatRequests;
 
 /**
  * Whether the client of a waiting request has gone away. The servlet API cannot tell: Tomcat
@@ -28,8 +25,6 @@ public final class ClientProbe {
     /** At most one read of the connection per this many nanoseconds. */
     private static final long MIN_INTERVAL_NANOS = 20_000_000;
 
-    private static final Field FACADE_REQUEST = facadeRequestField();
-
     private final org.apache.coyote.Request coyote;
     private boolean closed, gone;
     private long lastProbe;
@@ -41,19 +36,8 @@ public final class ClientProbe {
 
     /** A probe of the request's connection, or {@link #NONE} if it cannot be probed. */
     public static ClientProbe of(ServletRequest request) {
-        ServletRequest inner = request;
-        while (inner instanceof ServletRequestWrapper wrapper) {
-            inner = wrapper.getRequest();
-        }
-        if (FACADE_REQUEST == null || !(inner instanceof RequestFacade)) {
-            return NONE;
-        }
-        try {
-            var connector = (org.apache.catalina.connector.Request) FACADE_REQUEST.get(inner);
-            return connector != null ? new ClientProbe(connector.getCoyoteRequest()) : NONE;
-        } catch (ReflectiveOperationException | RuntimeException e) {
-            return NONE;
-        }
+        org.apache.coyote.Request coyote = TomcatRequests.coyote(request);
+        return coyote != null ? new ClientProbe(coyote) : NONE;
     }
 
     /** True once the client has closed or reset the connection. */
@@ -78,15 +62,5 @@ public final class ClientProbe {
     /** Stops probing: the request is completing and its connection may soon serve another. */
     public synchronized void close() {
         closed = true;
-    }
-
-    private static Field facadeRequestField() {
-        try {
-            Field field = RequestFacade.class.getDeclaredField("request");
-            field.setAccessible(true);
-            return field;
-        } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
-            return null;
-        }
     }
 }
