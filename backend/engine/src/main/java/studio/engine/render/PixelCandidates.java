@@ -91,15 +91,8 @@ final class PixelCandidates {
      * The longest list of a light worth testing among n objects: log2 n rounded down, at most {@value #MAX}
      * (0 for an empty scene). A ray's search of the tree tests about two boxes at each of its
      * log2 n levels, and testing an object costs about as much as two boxes, so a longer list costs
-     * more than the search it spares. Warm, 800x600, 16 samples, 2 threads, alternated JVMs,
-     * against no lists: glass-pattern (16 objects) 0.89-0.91 of the time with lists of at most 4,
-     * 0.92-0.93 with lists of up to 16; six-materials (8 objects) 0.75-0.81; mirror-room (6 planes
-     * and 2 objects), which the planes leave without lists, 1.02-1.08 when it listed them anyway
-     * (the same classes against themselves: 0.98-1.03). Whole processes: glass-pattern 0.95 of
-     * the time (lists of up to 16: 1.02), six-materials 0.96, the 10,000 spheres 1.02: not from
-     * their own lists (13 long instead of 16; 16 from 128 objects on gave 1.00 against 13) but from
-     * the start-up cache's training scene (72 objects), whose lists are shorter now; 16 from 64
-     * objects on, the training scene's too, took the spheres to 0.99 and glass-pattern to 1.02-1.06.
+     * more than the search it spares (whole processes against no lists: glass-pattern 0.95 of the
+     * time, six-materials 0.96; lists of up to 16: 1.02; docs/speed.md).
      */
     static int longest(int objects) {
         return objects <= 0 ? 0 : Math.min(MAX, 31 - Integer.numberOfLeadingZeros(objects));

@@ -40,18 +40,15 @@ import studio.engine.memory.MemoryGate;
  * it through {@link Sphere}'s static test, which the record itself calls, so the hit is the same to
  * the bit; other shapes are asked through {@link Shape}. This spares a call through the interface
  * (megamorphic once spheres, boxes and meshes share a tree) and two dependent loads per sphere
- * (record, then its centre): on one thread, 10,000 spheres in a block, primary plus one shadow ray,
- * 1,209 to 1,392 ns per ray before and 1,144 to 1,229 after (three alternating runs each).
+ * (record, then its centre); measured by the kernel benchmark ({@code studio-bench.jar kernel}).
  *
  * <p>A ray that most likely ends on one shape (refracted into a glass object, or reflected inside
  * it; {@link #intersect(Ray, double, Hit, int)}) tests that shape first. If the shape stands apart
  * (no other shape's box comes near its own, {@link #standsApart}) and the ray, from its origin to
  * where a hit could still win, stays inside the shape's box, no other bounded shape can be hit on
  * the way, and the tree is not searched at all: the same hit, found with one test instead of the
- * shape's test, a walk down the tree and the same test again in its leaf. In glass-pattern (a
- * glass sphere and box in front of striped boards) 30% of the searches are such rays, with 27% of
- * the node visits; warm, 800x600, 16 jittered samples, 2 threads, three alternated JVMs (medians
- * of the last 4 of 8 renders): 1,650-1,760 ms against 2,047-2,112 before.
+ * shape's test, a walk down the tree and the same test again in its leaf (glass at 16 samples
+ * 0.88 of the time in {@code studio-bench.jar peers}; docs/speed.md).
  *
  * <p>A bundle of rays inside one pyramid (a pixel's camera rays, or their shadow rays to a light)
  * can instead list the few shapes in the pyramid once ({@link #candidates}) and test only those:
