@@ -64,7 +64,7 @@ class JobController {
 
     @GetMapping("/api/jobs/{id}/image")
     ResponseEntity<byte[]> image(@PathVariable String id, Principal principal) {
-        JobService.JobImage image = jobs.image(id, SignIn.principal(principal));
+        JobImage image = jobs.image(id, SignIn.principal(principal));
         JobStatus status = image.status();
         return new RenderedImage(image.bytes(), status.mediaType(), status.fileName(), status.width(), status.height(),
                 status.elapsedMillis(), status.raysPerSecond()).toResponse();

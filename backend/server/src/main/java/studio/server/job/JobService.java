@@ -1,17 +1,14 @@
 package studio.server.job;
 
 import java.time.Duration;
-import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 import java.util.UUID;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
@@ -40,16 +37,13 @@ public final class JobService implements Drainable, AutoCloseable {
     private final ScheduledExecutorService janitor;
     /** Delivers events to listeners (see {@link JobSubscription}): a thread per subscription while it has news. */
     private final ExecutorService senders;
-    private final Map<String, RenderJob> jobs = new ConcurrentHashMap<>();
-    /** The jobs handed to other members on shutdown (see {@link JobCluster#handOver}). */
-    private final List<RenderJob> handedOver = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private final JobRegistry jobs;
+    private final JobDrain drain;
     private final JobCluster cluster;
-    private final OwnerLimits ownerLimits = new OwnerLimits(jobs::values, this::retryAfterSeconds);
+    private final OwnerLimits ownerLimits;
 
     /** Listeners (event streams) at once, over all jobs; each holds a sender thread while it has news. */
     static final int MAX_LISTENERS = 256;
-    /** A listener whose delivery has not returned for this long is dropped (see {@link JobSubscription}). */
-    static final long STALL_MILLIS = 5_000;
 
     /**
      * A service that is handed compiled scenes only ({@link #submit}; {@link #start} refuses): a
@@ -77,27 +71,24 @@ public final class JobService implements Drainable, AutoCloseable {
         this.cluster = cluster;
         this.budget = budget;
         this.shutdownGrace = shutdownGrace;
-        AtomicInteger threads = new AtomicInteger();
-        this.executor = new JobExecutor(settings.concurrent(), settings.queue(),
-                r -> {
-                    Thread t = new Thread(r, "render-job-" + threads.incrementAndGet());
-                    t.setDaemon(true);
-                    return t;
-                });
-        this.janitor = Executors.newSingleThreadScheduledExecutor(r -> {
-            Thread t = new Thread(r, "render-job-janitor");
-            t.setDaemon(true);
-            return t;
-        });
-        janitor.scheduleWithFixedDelay(this::sweep, 5, 5, TimeUnit.SECONDS);
-        janitor.scheduleWithFixedDelay(this::dropStalledListeners, 1, 1, TimeUnit.SECONDS);
-        AtomicInteger senderThreads = new AtomicInteger();
-        this.senders = Executors.newCachedThreadPool(r -> {
-            Thread t = new Thread(r, "job-events-" + senderThreads.incrementAndGet());
-            t.setDaemon(true);
-            return t;
-        });
+        this.executor = new JobExecutor(settings.concurrent(), settings.queue(), daemons("render-job-"));
+        this.jobs = new JobRegistry(settings, cluster, executor);
+        this.drain = new JobDrain(jobs, executor, cluster);
+        this.ownerLimits = new OwnerLimits(jobs::all, this::retryAfterSeconds);
+        this.janitor = Executors.newSingleThreadScheduledExecutor(daemons("render-job-janitor-"));
+        janitor.scheduleWithFixedDelay(jobs::sweep, 5, 5, TimeUnit.SECONDS);
+        janitor.scheduleWithFixedDelay(jobs::dropStalledListeners, 1, 1, TimeUnit.SECONDS);
+        this.senders = Executors.newCachedThreadPool(daemons("job-events-"));
         cluster.start(this::resume);
+    }
+
+    private static ThreadFactory daemons(String prefix) {
+        AtomicInteger count = new AtomicInteger();
+        return r -> {
+            Thread t = new Thread(r, prefix + count.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        };
     }
 
     /**
@@ -117,59 +108,35 @@ public final class JobService implements Drainable, AutoCloseable {
 
     /**
      * Reads a scene and queues it, as {@code POST /api/jobs} does: refuses at once while there is no
-     * room ({@link #checkRoom}), then compiles the scene with this service's threads per render, its
-     * building drawn on the request's {@code intake}, which hands its memory over to the job's.
+     * room ({@link #checkRoom}) or {@code owner} is at their limit, then compiles the scene with this
+     * service's threads per render, its building drawn on the request's {@code intake}, which hands
+     * its memory over to the job's.
      *
      * @param sceneJson the scene as sent; in a cluster it travels to the members that render the job's tiles
      * @throws JobQueueFullException when every slot and queue place, or the memory the render needs, is taken
      * @throws InvalidSceneException when the scene is invalid or its render could never fit the memory budget
      */
-    public JobStatus start(byte[] sceneJson, IntakeMemory intake) {
-        return start(sceneJson, intake, JobOwner.ANYONE);
-    }
-
-    /** As {@link #start(byte[], IntakeMemory)}, for {@code owner}: only they see the job, within their limit. */
     public JobStatus start(byte[] sceneJson, IntakeMemory intake, JobOwner owner) {
         if (compiler == null) {
             throw new IllegalStateException("this job service is handed compiled scenes only; submit them");
         }
         checkRoom();
         ownerLimits.check(owner);
-        return submit(compiler.compile(sceneJson, Map.of(), settings.renderThreads(), intake), sceneJson, intake,
-                owner);
+        CompiledScene scene = compiler.compile(sceneJson, Map.of(), settings.renderThreads(), intake);
+        return submit(new JobRequest(scene, sceneJson, intake, owner));
     }
 
     /**
-     * Queues a validated scene.
+     * Queues a validated scene. A limited owner's count and new job are taken together, so that
+     * simultaneous requests cannot pass the limit.
      *
      * @throws JobQueueFullException when every slot and queue place, or the memory the render needs, is taken
      * @throws InvalidSceneException when the render could never fit the memory budget
      */
-    public JobStatus submit(CompiledScene scene) {
-        return submit(scene, IntakeMemory.NONE);
-    }
-
-    /** As {@link #submit(CompiledScene)}; the request's {@code intake} hands its memory over to the job's. */
-    public JobStatus submit(CompiledScene scene, IntakeMemory intake) {
-        return submit(scene, null, intake);
-    }
-
-    /**
-     * As {@link #submit(CompiledScene, IntakeMemory)}, with the JSON the scene was compiled from: in a
-     * cluster it travels to the members that render the job's tiles.
-     */
-    public JobStatus submit(CompiledScene scene, byte[] sceneJson, IntakeMemory intake) {
-        return submit(scene, sceneJson, intake, JobOwner.ANYONE);
-    }
-
-    /**
-     * As {@link #submit(CompiledScene, byte[], IntakeMemory)}, for {@code owner}. A limited owner's count
-     * and new job are taken together, so that simultaneous requests cannot pass the limit.
-     */
-    public JobStatus submit(CompiledScene scene, byte[] sceneJson, IntakeMemory intake, JobOwner owner) {
-        Runnable admitted = ownerLimits.take(owner);
+    public JobStatus submit(JobRequest request) {
+        Runnable admitted = ownerLimits.take(request.owner());
         try {
-            return admit(scene, sceneJson, intake, owner);
+            return admit(request.scene(), request.sceneJson(), request.intake(), request.owner());
         } finally {
             admitted.run();
         }
@@ -198,7 +165,7 @@ public final class JobService implements Drainable, AutoCloseable {
         RenderJob job = new RenderJob(id, principal, scene, budget, memory,
                 (compiled, listener, cancelled) -> cluster.render(id, compiled, budget, listener, cancelled),
                 () -> cluster.workers(id), (end, image) -> cluster.ending(id, end, image));
-        jobs.put(job.id(), job);
+        jobs.put(job);
         JobListener publisher = cluster.accepted(id, principal, sceneJson, job::status, job::image, resumed);
         if (publisher != null) {
             job.subscribe(publisher, senders, true);
@@ -208,8 +175,7 @@ public final class JobService implements Drainable, AutoCloseable {
             executor.execute(job, !resumed);
         } catch (RejectedExecutionException e) {
             job.fail("the server is shutting down");
-            jobs.remove(job.id());
-            job.release();
+            jobs.forget(job);
             throw new JobQueueFullException(retryAfterSeconds());
         }
         return job.status();
@@ -221,7 +187,7 @@ public final class JobService implements Drainable, AutoCloseable {
      * budget is full (refusing it would lose the job).
      */
     void resume(String id, String principal, CompiledScene compiled, byte[] sceneJson) {
-        if (jobs.containsKey(id)) {
+        if (jobs.contains(id)) {
             return;
         }
         CompiledScene withThreads = new CompiledScene(compiled.scene(),
@@ -242,7 +208,7 @@ public final class JobService implements Drainable, AutoCloseable {
      * ({@link JobNotFoundException}), so that a job's id tells nobody else anything.
      */
     public JobStatus status(String id, String principal) {
-        RenderJob job = local(id, principal);
+        RenderJob job = jobs.local(id, principal);
         if (job == null) {
             return known(cluster.status(id, principal), id);
         }
@@ -257,7 +223,7 @@ public final class JobService implements Drainable, AutoCloseable {
 
     /** Cancels a job if it is {@code principal}'s (see {@link #status(String, String)}). */
     public JobStatus cancel(String id, String principal) {
-        RenderJob job = local(id, principal);
+        RenderJob job = jobs.local(id, principal);
         if (job == null) {
             return known(cluster.cancel(id, principal), id);
         }
@@ -272,19 +238,6 @@ public final class JobService implements Drainable, AutoCloseable {
         return status;
     }
 
-    /**
-     * This member's job of that id, if {@code principal}'s; null if this member has none.
-     *
-     * @throws JobNotFoundException if it is someone else's
-     */
-    private RenderJob local(String id, String principal) {
-        RenderJob job = jobs.get(id);
-        if (job != null && !job.principal().equals(principal)) {
-            throw new JobNotFoundException(id);
-        }
-        return job;
-    }
-
     /** The finished image with its job's status, with sign-in off. */
     public JobImage image(String id) {
         return image(id, "");
@@ -292,7 +245,7 @@ public final class JobService implements Drainable, AutoCloseable {
 
     /** The finished image with its job's status, if {@code principal}'s (see {@link #status(String, String)}). */
     public JobImage image(String id, String principal) {
-        RenderJob job = local(id, principal);
+        RenderJob job = jobs.local(id, principal);
         byte[] image;
         JobStatus status;
         if (job != null) {
@@ -309,10 +262,6 @@ public final class JobService implements Drainable, AutoCloseable {
         return new JobImage(status, image);
     }
 
-    /** A finished job's image and status. */
-    public record JobImage(JobStatus status, byte[] bytes) {
-    }
-
     /**
      * Subscribes a listener to a job's events.
      *
@@ -324,35 +273,18 @@ public final class JobService implements Drainable, AutoCloseable {
 
     /** As {@link #subscribe(String, JobListener)}, to a job of {@code principal}'s (see {@link #status(String, String)}). */
     void subscribe(String id, String principal, JobListener listener) {
-        RenderJob job = local(id, principal);
+        RenderJob job = jobs.local(id, principal);
         if (job == null) {
             if (!cluster.subscribe(id, principal, listener, senders)) {
                 throw new JobNotFoundException(id);
             }
             return;
         }
-        int listeners = 0;
-        for (RenderJob each : jobs.values()) {
-            listeners += each.subscriptionCount();
-        }
-        if (listeners >= MAX_LISTENERS) {
+        if (jobs.listeners() >= MAX_LISTENERS) {
             throw new JobQueueFullException(retryAfterSeconds(), "the server has as many event streams open as it "
                     + "serves (" + MAX_LISTENERS + "); poll the job's status instead, or try again shortly");
         }
         job.subscribe(listener, senders);
-    }
-
-    /**
-     * Drops every listener whose delivery has not returned for {@value #STALL_MILLIS} ms (its client
-     * does not read its event stream): it hears nothing more, and its job goes on.
-     */
-    void dropStalledListeners() {
-        long now = System.nanoTime();
-        for (RenderJob job : jobs.values()) {
-            for (JobSubscription stalled : job.stalled(TimeUnit.MILLISECONDS.toNanos(STALL_MILLIS), now)) {
-                job.drop(stalled);
-            }
-        }
     }
 
     void unsubscribe(String id, JobListener listener) {
@@ -401,11 +333,7 @@ public final class JobService implements Drainable, AutoCloseable {
     }
 
     RenderJob job(String id) {
-        RenderJob job = jobs.get(id);
-        if (job == null) {
-            throw new JobNotFoundException(id);
-        }
-        return job;
+        return jobs.job(id);
     }
 
     /** A rough wait before a retry: one typical render per queued job ahead, at least one second. */
@@ -415,38 +343,7 @@ public final class JobService implements Drainable, AutoCloseable {
 
     /** Drops expired finished jobs (beyond the time or the count) and cancels abandoned ones. */
     void sweep() {
-        long now = System.nanoTime();
-        List<RenderJob> finished = new ArrayList<>();
-        for (RenderJob job : jobs.values()) {
-            JobState state = job.state();
-            if (state.isFinal()) {
-                if (now - job.finishedNanos() > settings.keepFinished().toNanos()) {
-                    drop(job);
-                } else {
-                    finished.add(job);
-                }
-            } else {
-                job.heartbeat(); // lets event streams notice clients that went away
-            }
-            if (!state.isFinal() && !job.hasListeners()
-                    && now - job.lastSeenNanos() > settings.abandonAfter().toNanos()
-                    && System.currentTimeMillis() - cluster.lastSeenMillis(job.id()) > settings.abandonAfter().toMillis()) {
-                job.cancel();
-                executor.remove(job);
-            }
-        }
-        if (finished.size() > settings.maxFinished()) {
-            finished.sort(Comparator.comparingLong(RenderJob::finishedNanos));
-            for (RenderJob job : finished.subList(0, finished.size() - settings.maxFinished())) {
-                drop(job);
-            }
-        }
-    }
-
-    private void drop(RenderJob job) {
-        jobs.remove(job.id());
-        job.release();
-        cluster.dropped(job.id());
+        jobs.sweep();
     }
 
     /** Jobs known right now, finished ones included (for tests and metrics). */
@@ -464,76 +361,20 @@ public final class JobService implements Drainable, AutoCloseable {
         return executor.getActiveCount();
     }
 
-    /**
-     * Stops taking jobs (new ones get 429) and cancels the queued ones at once; their listeners hear the end.
-     * In a cluster, the unfinished jobs, queued and running, are handed to the other members instead.
-     */
+    /** See {@link JobDrain#stopAccepting}. */
     @Override
     public void stopAccepting() {
-        executor.shutdown();
-        executor.getQueue().clear();
-        List<RenderJob> unfinished = jobs.values().stream().filter(job -> !job.state().isFinal()).toList();
-        if (cluster.canHandOver()) {
-            String reason = "handed over to another member";
-            // clients first (they hear no end from here), then the cluster stops the renders, then they end here
-            unfinished.forEach(job -> job.handingOver(reason));
-            cluster.handOver(unfinished.stream().map(RenderJob::id).collect(java.util.stream.Collectors.toSet()));
-            unfinished.forEach(job -> job.cancel(reason));
-            handedOver.addAll(unfinished);
-            return;
-        }
-        for (RenderJob job : jobs.values()) {
-            if (job.state() == JobState.QUEUED) {
-                job.cancel("cancelled: the server is shutting down");
-            }
-        }
+        drain.stopAccepting();
     }
 
-    /**
-     * Waits until the running jobs have ended and their listeners have heard the end (or left), at
-     * most until the deadline.
-     *
-     * @return true if every job ended
-     */
     @Override
     public boolean awaitEnd(long deadlineNanos) throws InterruptedException {
-        boolean ended = executor.awaitTermination(Math.max(0, deadlineNanos - System.nanoTime()), TimeUnit.NANOSECONDS);
-        awaitListeners(deadlineNanos);
-        if (!handedOver.isEmpty()) {
-            // served by their new owners from now on; forgotten here, not in the cluster
-            ended &= cluster.awaitHandedOver(deadlineNanos);
-            for (RenderJob job : handedOver) {
-                jobs.remove(job.id());
-                job.release();
-            }
-            handedOver.clear();
-        }
-        return ended;
+        return drain.awaitEnd(deadlineNanos);
     }
 
-    /** Cancels the jobs still running (they stop within a tile) and waits for that as {@link #awaitEnd}. */
     @Override
     public void cancelRunning(long deadlineNanos) throws InterruptedException {
-        for (RenderJob job : jobs.values()) {
-            if (!job.state().isFinal()) {
-                job.cancel("cancelled: the server shut down before the render finished");
-            }
-        }
-        awaitEnd(deadlineNanos);
-    }
-
-    /** Until the deadline, waits for every listener of a finished job to hear its end (a stalled one is dropped). */
-    private void awaitListeners(long deadlineNanos) throws InterruptedException {
-        while (System.nanoTime() - deadlineNanos < 0) {
-            boolean heard = true;
-            for (RenderJob job : jobs.values()) {
-                heard &= !job.state().isFinal() || !job.hasSubscriptions();
-            }
-            if (heard) {
-                return;
-            }
-            Thread.sleep(10);
-        }
+        drain.cancelRunning(deadlineNanos);
     }
 
     /**

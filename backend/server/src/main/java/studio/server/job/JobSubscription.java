@@ -6,13 +6,13 @@ import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
- * One listener's outbox: its place in its job's event log. The job appends events under its lock
- * and only {@link #wake wakes} its subscriptions; a subscription's sender (a thread of the job
- * service's sender pool, one at a time per subscription) takes what is new under the job's lock and
- * hands it to the listener outside it. So no render thread and no holder of a job's lock ever waits
- * for a client's connection, and a listener that stops reading holds up nobody but itself: the job
- * service {@link RenderJob#drop drops} it when a delivery has not returned for
- * {@link JobService#STALL_MILLIS}, and the job goes on.
+ * One listener's outbox: its place in its job's {@link JobEvents}. The job appends events and only
+ * {@link #wake wakes} its subscriptions; a subscription's sender (a thread of the job service's
+ * sender pool, one at a time per subscription) takes what is new under the log's lock and hands it
+ * to the listener outside it. So no render thread and no holder of a job's lock ever waits for a
+ * client's connection, and a listener that stops reading holds up nobody but itself: the job
+ * service {@link JobEvents#drop drops} it when a delivery has not returned for
+ * {@link JobRegistry#STALL_MILLIS}, and the job goes on.
  *
  * <p>The outbox is bounded by the job's log (the tiles so far, which the job keeps anyway for
  * clients that connect late, within its render memory) and copies none of it.
@@ -26,7 +26,7 @@ final class JobSubscription {
     final JobListener listener;
     /** The cluster's listener, not a client's. */
     final boolean internal;
-    private final RenderJob job;
+    private final JobEvents job;
     private final Executor sender;
     private final AtomicBoolean scheduled = new AtomicBoolean();
     /** Since when a delivery has been under way (System.nanoTime), 0 when none is. */
@@ -34,10 +34,10 @@ final class JobSubscription {
     private volatile boolean heartbeatDue;
     private final AtomicBoolean droppedHeard = new AtomicBoolean();
 
-    // written under the job's lock
+    // written under the log's lock
     /** The status the listener hears first, until taken. */
     JobStatus first;
-    /** The index in the job's log of the next event to deliver. */
+    /** The index in the log of the next event to deliver. */
     int next;
     /** The log's length when the listener subscribed: status changes before it are not news to it. */
     int joinedAt;
@@ -48,7 +48,7 @@ final class JobSubscription {
     /** True if it left because it fell behind. */
     volatile boolean dropped;
 
-    JobSubscription(JobListener listener, RenderJob job, Executor sender, boolean internal) {
+    JobSubscription(JobListener listener, JobEvents job, Executor sender, boolean internal) {
         this.listener = listener;
         this.internal = internal;
         this.job = job;

@@ -1,10 +1,5 @@
 package studio.server.job;
 
-import java.io.ByteArrayOutputStream;
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.util.ArrayList;
-import java.util.Base64;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Executor;
@@ -12,8 +7,6 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 
-
-import studio.engine.image.ImageEncoder;
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
 import studio.engine.render.RenderListener;
@@ -27,17 +20,12 @@ import studio.server.scene.compiling.CompiledScene;
 import studio.server.system.MemoryBudget;
 
 /**
- * One render job: its scene, state, progress, its event log (state changes and the tiles finished
- * so far, for clients that connect late) and, when done, the encoded image. State changes and the
- * log are written under the job's lock; listeners hear them through their {@link JobSubscription}s,
- * off the lock and off the render threads, in order. A finished job lets go of its scene and, once
- * its last subscriber has heard the end, of its log: it is kept for a while only for its status
- * and image.
+ * One render job's state machine: its scene, state, progress and, when done, the encoded image,
+ * and the memory it holds (the render's while queued or running, then the image's). State changes
+ * are made under the job's lock and appended to its {@link JobEvents}, which listeners hear off the
+ * lock and off the render threads, in order. A finished job lets go of its scene.
  */
 final class RenderJob implements Runnable {
-
-    /** At most this many events of the log go to a listener in one pass of its sender. */
-    static final int DELIVERY_BATCH = 64;
 
     /** How the job's tiles get rendered: on this member's pool, or by the cluster's members. */
     @FunctionalInterface
@@ -73,10 +61,8 @@ final class RenderJob implements Runnable {
     /** The render's memory while it is queued or running; then the image's, until the job is dropped. */
     private MemoryBudget.Reservation memory;
     private final AtomicBoolean cancelRequested = new AtomicBoolean();
-    /** Status changes and finished tiles, in order; cleared when the job is final and nobody reads it. */
-    private final List<JobEvent> log = new ArrayList<>();
+    private final JobEvents events = new JobEvents();
     private int tileCount;
-    private final List<JobSubscription> subscriptions = new ArrayList<>();
     private final long createdNanos = System.nanoTime();
 
     private JobState state = JobState.QUEUED;
@@ -185,7 +171,7 @@ final class RenderJob implements Runnable {
     }
 
     private void tileFinished(Film film, TileRect tile, int done, int total) {
-        String png = tilePng(film, tile);
+        String png = TilePng.encode(film, tile);
         synchronized (this) {
             if (state.isFinal()) {
                 return; // a tile that finished after the job ended (cancelled) is not news
@@ -193,8 +179,7 @@ final class RenderJob implements Runnable {
             // the tiles recorded, not the renderer's count: with several threads a later count can
             // arrive here first, and progress would step back, or run ahead of what a late client replays
             progress = (double) ++tileCount / total;
-            log.add(new TileEvent(tile.x(), tile.y(), tile.width(), tile.height(), png, progress));
-            wakeAll();
+            events.add(new TileEvent(tile.x(), tile.y(), tile.width(), tile.height(), png, progress));
         }
     }
 
@@ -233,12 +218,8 @@ final class RenderJob implements Runnable {
             if (!cancelRequested.get()) {
                 cancelReason = reason;
             }
-            for (JobSubscription subscription : new ArrayList<>(subscriptions)) {
-                if (!subscription.internal) { // the cluster's own listener stops when the cluster says so
-                    drop(subscription);
-                }
-            }
         }
+        events.dropClients(); // the cluster's own listener stops when the cluster says so
     }
 
     /** Marks a job the executor refused or dropped. */
@@ -270,17 +251,14 @@ final class RenderJob implements Runnable {
         if (rendering != null) {
             rendering.close();
         }
-        if (subscriptions.isEmpty()) {
-            log.clear();
-        }
-        wakeAll();
+        events.ended(status());
     }
 
     /**
      * Registers a listener: its sender delivers the status, every tile so far, then what follows,
      * and last the end.
      */
-    synchronized JobSubscription subscribe(JobListener listener, Executor sender) {
+    JobSubscription subscribe(JobListener listener, Executor sender) {
         return subscribe(listener, sender, false);
     }
 
@@ -290,96 +268,27 @@ final class RenderJob implements Runnable {
      */
     synchronized JobSubscription subscribe(JobListener listener, Executor sender, boolean internal) {
         touch();
-        JobSubscription subscription = new JobSubscription(listener, this, sender, internal);
-        subscription.first = status();
-        subscription.joinedAt = log.size();
-        subscription.next = state.isFinal() ? log.size() : 0;
-        subscriptions.add(subscription);
-        subscription.wake();
-        return subscription;
+        return events.subscribe(listener, sender, internal, status());
     }
 
-    /** What the subscription has not heard yet (at most a batch of the log), or null if nothing. */
-    synchronized JobSubscription.Delivery take(JobSubscription subscription) {
-        if (subscription.detached) {
-            return null;
-        }
-        JobStatus first = subscription.first;
-        subscription.first = null;
-        int from = subscription.next, to = Math.min(log.size(), from + DELIVERY_BATCH);
-        List<JobEvent> events = new ArrayList<>(to - from);
-        for (int i = from; i < to; i++) {
-            JobEvent event = log.get(i);
-            if (event instanceof TileEvent || i >= subscription.joinedAt) {
-                events.add(event);
-            }
-        }
-        subscription.next = to;
-        JobStatus end = null;
-        if (state.isFinal() && to == log.size() && !subscription.endTaken) {
-            subscription.endTaken = true;
-            end = status();
-        }
-        return first == null && events.isEmpty() && end == null ? null
-                : new JobSubscription.Delivery(first, events, end);
-    }
-
-    /** True if {@link #take} has something for the subscription. */
-    synchronized boolean hasNews(JobSubscription subscription) {
-        return !subscription.detached && (subscription.first != null || subscription.next < log.size()
-                || state.isFinal() && !subscription.endTaken);
-    }
-
-    /** The subscription leaves the job (it heard the end, or its client went away); true if it was there. */
-    synchronized boolean detach(JobSubscription subscription) {
-        subscription.detached = true;
-        boolean removed = subscriptions.remove(subscription);
-        if (state.isFinal() && subscriptions.isEmpty()) {
-            log.clear();
-        }
-        return removed;
-    }
-
-    /** Drops a subscription that fell behind; the job goes on. Its sender tells its listener when free. */
-    synchronized void drop(JobSubscription subscription) {
-        subscription.dropped = true;
-        detach(subscription);
-        subscription.wake();
+    /** Drops a subscription that fell behind; the job goes on. */
+    void drop(JobSubscription subscription) {
+        events.drop(subscription);
     }
 
     /** The subscriptions whose deliveries have not returned for {@code nanos}. */
-    synchronized List<JobSubscription> stalled(long nanos, long now) {
-        List<JobSubscription> stalled = new ArrayList<>();
-        for (JobSubscription subscription : subscriptions) {
-            if (subscription.stalledFor(nanos, now)) {
-                stalled.add(subscription);
-            }
-        }
-        return stalled;
+    List<JobSubscription> stalled(long nanos, long now) {
+        return events.stalled(nanos, now);
     }
 
-    synchronized void unsubscribe(JobListener listener) {
-        JobSubscription subscription = subscriptionOf(listener);
-        if (subscription != null) {
-            detach(subscription);
-        }
+    void unsubscribe(JobListener listener) {
+        events.unsubscribe(listener);
         touch();
     }
 
     /** Removes the listener; true if it was the last one of an unfinished job. */
-    synchronized boolean unsubscribeLast(JobListener listener) {
-        JobSubscription subscription = subscriptionOf(listener);
-        boolean removed = subscription != null && detach(subscription);
-        return removed && subscriptionCount() == 0 && !state.isFinal();
-    }
-
-    private JobSubscription subscriptionOf(JobListener listener) {
-        for (JobSubscription subscription : subscriptions) {
-            if (subscription.listener == listener) {
-                return subscription;
-            }
-        }
-        return null;
+    boolean unsubscribeLast(JobListener listener) {
+        return events.unsubscribeLast(listener);
     }
 
     /** Gives back the memory the job holds (it is being dropped, or was never started). */
@@ -390,40 +299,27 @@ final class RenderJob implements Runnable {
         }
     }
 
-    synchronized void heartbeat() {
-        for (JobSubscription subscription : subscriptions) {
-            subscription.heartbeat();
-        }
+    void heartbeat() {
+        events.heartbeat();
     }
 
     /** The clients' subscriptions (not the cluster's). */
-    synchronized int subscriptionCount() {
-        int count = 0;
-        for (JobSubscription subscription : subscriptions) {
-            count += subscription.internal ? 0 : 1;
-        }
-        return count;
+    int subscriptionCount() {
+        return events.clients();
     }
 
     /** Whether a client (not the cluster) watches the job. */
-    synchronized boolean hasListeners() {
-        return subscriptionCount() > 0;
+    boolean hasListeners() {
+        return events.clients() > 0;
     }
 
     /** Whether any subscription, the cluster's too, has yet to hear the end. */
-    synchronized boolean hasSubscriptions() {
-        return !subscriptions.isEmpty();
+    boolean hasSubscriptions() {
+        return events.hasSubscriptions();
     }
 
     private void broadcastStatus() {
-        log.add(status());
-        wakeAll();
-    }
-
-    private void wakeAll() {
-        for (JobSubscription subscription : subscriptions) {
-            subscription.wake();
-        }
+        events.add(status());
     }
 
     synchronized JobStatus status() {
@@ -463,17 +359,5 @@ final class RenderJob implements Runnable {
 
     long lastSeenNanos() {
         return lastSeenNanos;
-    }
-
-    /** One tile of the film as a base64 PNG, written by the same encoder as whole images. */
-    static String tilePng(Film film, TileRect tile) {
-        var pixels = ImageEncoder.toImage(film, tile);
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        try {
-            ImageEncoder.writePng(pixels, out);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-        return Base64.getEncoder().encodeToString(out.toByteArray());
     }
 }

@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 
 import studio.engine.render.Renderer;
 import studio.server.Await;
+import studio.server.job.JobRequest;
 import studio.server.job.JobListener;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
@@ -55,7 +56,7 @@ class ClusterHandOverTest {
     private String submit(TestMember member) {
         byte[] json = SCENE.getBytes(StandardCharsets.UTF_8);
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(json);
-        return member.jobs.submit(scene, json, IntakeMemory.NONE).id();
+        return member.jobs.submit(JobRequest.of(scene).withJson(json)).id();
     }
 
     @Test

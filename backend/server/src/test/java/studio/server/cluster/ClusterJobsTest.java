@@ -22,6 +22,7 @@ import com.hazelcast.map.MapInterceptor;
 
 import studio.engine.render.Renderer;
 import studio.server.Await;
+import studio.server.job.JobRequest;
 import studio.server.job.JobListener;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
@@ -90,7 +91,7 @@ class ClusterJobsTest {
     private String submit(TestMember member) {
         byte[] json = SCENE.getBytes(StandardCharsets.UTF_8);
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(json);
-        return member.jobs.submit(scene, json, IntakeMemory.NONE).id();
+        return member.jobs.submit(JobRequest.of(scene).withJson(json)).id();
     }
 
     private static JobStatus awaitFinal(TestMember member, String id) throws Exception {

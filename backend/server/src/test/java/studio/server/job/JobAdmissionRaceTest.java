@@ -64,7 +64,7 @@ class JobAdmissionRaceTest {
         List<Throwable> unexpected = new CopyOnWriteArrayList<>();
         try {
             for (int round = 0; round < ROUNDS; round++) {
-                List<String> accepted = race(() -> jobs.submit(large).id(), unexpected);
+                List<String> accepted = race(() -> jobs.submit(JobRequest.of(large)).id(), unexpected);
                 for (String id : accepted) {
                     assertThat(jobs.status(id).state()).isNotEqualTo(JobState.FAILED);
                     jobs.cancel(id);
@@ -86,7 +86,7 @@ class JobAdmissionRaceTest {
         List<Throwable> unexpected = new CopyOnWriteArrayList<>();
         try {
             for (int round = 0; round < ROUNDS; round++) {
-                List<String> accepted = race(() -> jobs.submit(large, null, IntakeMemory.NONE, alice).id(), unexpected);
+                List<String> accepted = race(() -> jobs.submit(JobRequest.of(large).by(alice)).id(), unexpected);
                 assertThat(accepted).hasSizeLessThanOrEqualTo(2);
                 for (String id : accepted) {
                     jobs.cancel(id, "alice");

@@ -69,7 +69,7 @@ class JobServiceTest {
     @Test
     void jobGoesFromQueuedThroughRunningToDoneWithItsImage() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(compile(SMALL));
+        JobStatus started = jobs.submit(JobRequest.of(compile(SMALL)));
         assertTrue(started.state() == JobState.QUEUED || started.state() == JobState.RUNNING, started.toString());
         assertEquals("job-test.png", started.fileName());
         await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
@@ -99,7 +99,7 @@ class JobServiceTest {
             }
         };
         service = self[0] = new JobService(settings(1, 4), RenderBudget.unlimited(), Duration.ofSeconds(5), cluster);
-        JobStatus started = service.submit(compile(SMALL));
+        JobStatus started = service.submit(JobRequest.of(compile(SMALL)));
 
         await("done", () -> service.status(started.id()).state() == JobState.DONE);
 
@@ -109,8 +109,8 @@ class JobServiceTest {
     @Test
     void listenerHearsEachStateEveryTileAndTheEnd() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus blocker = jobs.submit(compile(LARGE));
-        JobStatus small = jobs.submit(compile(SMALL));
+        JobStatus blocker = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus small = jobs.submit(JobRequest.of(compile(SMALL)));
         Recorder recorder = new Recorder();
         jobs.subscribe(small.id(), recorder);
         jobs.cancel(blocker.id());
@@ -133,7 +133,7 @@ class JobServiceTest {
     @Test
     void lateSubscriberGetsTheTilesFinishedSoFar() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(compile(LARGE));
+        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
         await("a few tiles", () -> jobs.status(started.id()).progress() > 0.02);
         double progress = jobs.status(started.id()).progress();
         Recorder late = new Recorder();
@@ -147,7 +147,7 @@ class JobServiceTest {
     @Test
     void cancellingARunningJobStopsItWithinATile() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(compile(LARGE));
+        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
         await("running", () -> jobs.status(started.id()).progress() > 0);
         long before = System.nanoTime();
         jobs.cancel(started.id());
@@ -161,8 +161,8 @@ class JobServiceTest {
     @Test
     void cancellingAQueuedJobEndsItAtOnce() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus running = jobs.submit(compile(LARGE));
-        JobStatus queued = jobs.submit(compile(SMALL));
+        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus queued = jobs.submit(JobRequest.of(compile(SMALL)));
         assertEquals(JobState.QUEUED, queued.state());
         assertEquals(JobState.CANCELLED, jobs.cancel(queued.id()).state());
         jobs.cancel(running.id());
@@ -172,10 +172,10 @@ class JobServiceTest {
     void aFullQueueIsRefusedBeforeAnySceneIsRead() throws Exception {
         JobService jobs = service(settings(1, 1));
         jobs.checkRoom();
-        JobStatus running = jobs.submit(compile(LARGE));
+        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
         await("running", () -> jobs.status(running.id()).state() == JobState.RUNNING);
         jobs.checkRoom(); // the queue's one place is free
-        JobStatus queued = jobs.submit(compile(LARGE));
+        JobStatus queued = jobs.submit(JobRequest.of(compile(LARGE)));
         JobQueueFullException full = assertThrows(JobQueueFullException.class, jobs::checkRoom);
         assertTrue(full.retryAfterSeconds() >= 1);
         jobs.cancel(queued.id());
@@ -187,19 +187,19 @@ class JobServiceTest {
     @Test
     void startReadsTheSceneOnlyOnceThereIsRoom() throws Exception {
         JobService jobs = service(settings(1, 1));
-        JobStatus running = jobs.start(SMALL.getBytes(StandardCharsets.UTF_8), IntakeMemory.NONE);
+        JobStatus running = jobs.start(SMALL.getBytes(StandardCharsets.UTF_8), IntakeMemory.NONE, JobOwner.ANYONE);
         await("done", () -> jobs.status(running.id()).state() == JobState.DONE);
         assertNotNull(jobs.image(running.id()).bytes());
         InvalidSceneException invalid = assertThrows(InvalidSceneException.class,
-                () -> jobs.start("{}".getBytes(StandardCharsets.UTF_8), IntakeMemory.NONE));
+                () -> jobs.start("{}".getBytes(StandardCharsets.UTF_8), IntakeMemory.NONE, JobOwner.ANYONE));
         assertEquals("objects", invalid.problems().get(0).field());
 
-        JobStatus blocker = jobs.submit(compile(LARGE));
+        JobStatus blocker = jobs.submit(JobRequest.of(compile(LARGE)));
         await("running", () -> jobs.status(blocker.id()).state() == JobState.RUNNING);
-        JobStatus queued = jobs.submit(compile(LARGE));
+        JobStatus queued = jobs.submit(JobRequest.of(compile(LARGE)));
         // no room: refused before the scene is read, so an invalid one is refused for the queue, not itself
         assertThrows(JobQueueFullException.class, () -> jobs.start("{}".getBytes(StandardCharsets.UTF_8),
-                IntakeMemory.NONE));
+                IntakeMemory.NONE, JobOwner.ANYONE));
         jobs.cancel(queued.id());
         jobs.cancel(blocker.id());
     }
@@ -207,9 +207,9 @@ class JobServiceTest {
     @Test
     void fullQueueIsRefusedWithARetryDelay() {
         JobService jobs = service(settings(1, 1));
-        JobStatus running = jobs.submit(compile(LARGE));
-        jobs.submit(compile(LARGE));
-        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(compile(SMALL)));
+        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
+        jobs.submit(JobRequest.of(compile(LARGE)));
+        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequest.of(compile(SMALL))));
         assertTrue(full.retryAfterSeconds() >= 1);
         jobs.cancel(running.id());
     }
@@ -217,7 +217,7 @@ class JobServiceTest {
     @Test
     void finishedJobsExpireAfterTheirKeepTime() throws Exception {
         JobService jobs = service(new JobSettings(1, 4, Duration.ZERO, 50, Duration.ofMinutes(10), 2));
-        JobStatus started = jobs.submit(compile(SMALL));
+        JobStatus started = jobs.submit(JobRequest.of(compile(SMALL)));
         await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
         Thread.sleep(2);
         jobs.sweep();
@@ -227,9 +227,9 @@ class JobServiceTest {
     @Test
     void onlyTheNewestFinishedJobsAreKept() throws Exception {
         JobService jobs = service(new JobSettings(1, 4, Duration.ofMinutes(10), 1, Duration.ofMinutes(10), 2));
-        JobStatus first = jobs.submit(compile(SMALL));
+        JobStatus first = jobs.submit(JobRequest.of(compile(SMALL)));
         await("first done", () -> jobs.status(first.id()).state() == JobState.DONE);
-        JobStatus second = jobs.submit(compile(SMALL));
+        JobStatus second = jobs.submit(JobRequest.of(compile(SMALL)));
         await("second done", () -> jobs.status(second.id()).state() == JobState.DONE);
         jobs.sweep();
         assertThrows(JobNotFoundException.class, () -> jobs.status(first.id()));
@@ -239,7 +239,7 @@ class JobServiceTest {
     @Test
     void jobNobodyAsksAboutIsCancelled() throws Exception {
         JobService jobs = service(new JobSettings(1, 4, Duration.ofMinutes(10), 50, Duration.ofMillis(50), 2));
-        JobStatus started = jobs.submit(compile(LARGE));
+        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
         Thread.sleep(100);
         jobs.sweep();
         await("cancelled", () -> jobs.status(started.id()).state() == JobState.CANCELLED);
@@ -248,7 +248,7 @@ class JobServiceTest {
     @Test
     void jobWithAnOpenEventStreamIsNotAbandoned() throws Exception {
         JobService jobs = service(new JobSettings(1, 4, Duration.ofMinutes(10), 50, Duration.ofMillis(50), 2));
-        JobStatus started = jobs.submit(compile(LARGE));
+        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
         jobs.subscribe(started.id(), new Recorder());
         Thread.sleep(100);
         jobs.sweep();
@@ -263,8 +263,8 @@ class JobServiceTest {
         CompiledScene first = compile(SMALL), second = compile(SMALL);
         WeakReference<Scene> doneScene = new WeakReference<>(first.scene());
         WeakReference<Scene> cancelledScene = new WeakReference<>(second.scene());
-        JobStatus done = jobs.submit(first);
-        JobStatus cancelled = jobs.submit(second);
+        JobStatus done = jobs.submit(JobRequest.of(first));
+        JobStatus cancelled = jobs.submit(JobRequest.of(second));
         first = null;
         second = null;
         jobs.cancel(cancelled.id());
@@ -301,7 +301,7 @@ class JobServiceTest {
         JobService jobs = service(settings(1, 4), memory, Duration.ofSeconds(5));
         // long enough (a few hundred ms) to be running still when the reservation is read: SMALL
         // could finish first, leaving only its image (seen once)
-        JobStatus started = jobs.submit(compile(scene(320, 240, 64)));
+        JobStatus started = jobs.submit(JobRequest.of(compile(scene(320, 240, 64))));
         assertTrue(memory.reserved() > 320 * 240 * 40, "reserved " + memory.reserved());
         await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
         assertEquals(jobs.image(started.id()).bytes().length, memory.reserved());
@@ -312,8 +312,8 @@ class JobServiceTest {
         // LARGE needs about 1024 x 768 x 54 bytes = 41 MiB; two do not fit in 48 MiB
         MemoryBudget memory = new MemoryBudget(48L << 20);
         JobService jobs = service(settings(1, 4), memory, Duration.ofSeconds(5));
-        JobStatus running = jobs.submit(compile(LARGE));
-        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(compile(LARGE)));
+        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequest.of(compile(LARGE))));
         assertTrue(full.getMessage().contains("memory"), full.getMessage());
         assertTrue(full.retryAfterSeconds() >= 1);
         jobs.cancel(running.id());
@@ -322,7 +322,7 @@ class JobServiceTest {
     @Test
     void jobThatCouldNeverFitIsInvalid() {
         JobService jobs = service(settings(1, 4), new MemoryBudget(8L << 20), Duration.ofSeconds(5));
-        InvalidSceneException invalid = assertThrows(InvalidSceneException.class, () -> jobs.submit(compile(LARGE)));
+        InvalidSceneException invalid = assertThrows(InvalidSceneException.class, () -> jobs.submit(JobRequest.of(compile(LARGE))));
         assertEquals("image", invalid.problems().get(0).field());
     }
 
@@ -331,7 +331,7 @@ class JobServiceTest {
         MemoryBudget memory = new MemoryBudget(1L << 30);
         JobService jobs = service(new JobSettings(1, 4, Duration.ZERO, 50, Duration.ofMinutes(10), 2), memory,
                 Duration.ofSeconds(5));
-        JobStatus started = jobs.submit(compile(SMALL));
+        JobStatus started = jobs.submit(JobRequest.of(compile(SMALL)));
         await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
         Thread.sleep(2);
         jobs.sweep();
@@ -341,7 +341,7 @@ class JobServiceTest {
     @Test
     void lastWatcherDisconnectingCancelsTheJob() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(compile(LARGE));
+        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
         Recorder first = new Recorder(), second = new Recorder();
         jobs.subscribe(started.id(), first);
         jobs.subscribe(started.id(), second);
@@ -354,18 +354,18 @@ class JobServiceTest {
     @Test
     void shutdownLetsARunningJobFinishWithinTheGrace() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(compile(scene(256, 192, 4)));
+        JobStatus started = jobs.submit(JobRequest.of(compile(scene(256, 192, 4))));
         await("running", () -> jobs.status(started.id()).state() == JobState.RUNNING);
         jobs.shutdown(30_000);
         assertEquals(JobState.DONE, jobs.status(started.id()).state());
-        assertThrows(JobQueueFullException.class, () -> jobs.submit(compile(SMALL)));
+        assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequest.of(compile(SMALL))));
     }
 
     @Test
     void shutdownCancelsQueuedJobsAtOnceAndRunningOnesAfterTheGrace() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus running = jobs.submit(compile(LARGE));
-        JobStatus queued = jobs.submit(compile(SMALL));
+        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus queued = jobs.submit(JobRequest.of(compile(SMALL)));
         await("running", () -> jobs.status(running.id()).progress() > 0);
         long start = System.nanoTime();
         jobs.shutdown(300);
@@ -383,7 +383,7 @@ class JobServiceTest {
     @Test
     void listenerThatStopsReadingHoldsUpNeitherTheJobNorItsStatusAndIsDropped() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(compile(scene(512, 384, 16)));
+        JobStatus started = jobs.submit(JobRequest.of(compile(scene(512, 384, 16))));
         Stuck stuck = new Stuck();
         Recorder reading = new Recorder();
         jobs.subscribe(started.id(), stuck);
@@ -404,7 +404,7 @@ class JobServiceTest {
             assertEquals(JobState.DONE, reading.ended.state());
             await("the stuck listener dropped", () -> !jobs.job(started.id()).hasListeners());
             long droppedAfter = (System.nanoTime() - stuckAt) / 1_000_000;
-            assertTrue(droppedAfter >= JobService.STALL_MILLIS - 1_000, "dropped after " + droppedAfter + " ms");
+            assertTrue(droppedAfter >= JobRegistry.STALL_MILLIS - 1_000, "dropped after " + droppedAfter + " ms");
         } finally {
             stuck.release.countDown();
         }
@@ -415,8 +415,8 @@ class JobServiceTest {
     @Test
     void shutdownTellsTheListenersOfRunningAndQueuedJobsTheirEnd() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus running = jobs.submit(compile(LARGE));
-        JobStatus queued = jobs.submit(compile(SMALL));
+        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus queued = jobs.submit(JobRequest.of(compile(SMALL)));
         Recorder watchingRunning = new Recorder(), watchingQueued = new Recorder();
         jobs.subscribe(running.id(), watchingRunning);
         jobs.subscribe(queued.id(), watchingQueued);
@@ -425,7 +425,7 @@ class JobServiceTest {
         await("the queued job's end, at once", () -> watchingQueued.ended != null);
         assertEquals(JobState.CANCELLED, watchingQueued.ended.state());
         assertEquals(null, watchingRunning.ended, "the running job goes on for its grace period");
-        assertThrows(JobQueueFullException.class, () -> jobs.submit(compile(SMALL)));
+        assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequest.of(compile(SMALL))));
         jobs.cancelRunning(System.nanoTime() + 5_000_000_000L);
         assertEquals(JobState.CANCELLED, watchingRunning.ended.state());
         assertTrue(watchingRunning.ended.error().contains("shut down"), watchingRunning.ended.error());

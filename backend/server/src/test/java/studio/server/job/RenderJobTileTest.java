@@ -28,7 +28,7 @@ class RenderJobTileTest {
         }
         TileRect tile = new TileRect(8, 4, 32, 26);
 
-        BufferedImage png = ImageIO.read(new ByteArrayInputStream(Base64.getDecoder().decode(RenderJob.tilePng(film, tile))));
+        BufferedImage png = ImageIO.read(new ByteArrayInputStream(Base64.getDecoder().decode(TilePng.encode(film, tile))));
 
         BufferedImage whole = ImageEncoder.toImage(film);
         assertThat(png.getWidth()).isEqualTo(32);
