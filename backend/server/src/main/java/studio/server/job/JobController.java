@@ -31,20 +31,20 @@ class JobController {
 
     private final JobService jobs;
     private final SignIn signIn;
-    /** Jobs one principal may have queued or running at once (unlimited with sign-in off). */
-    private final int maxJobsPerPrincipal;
+    /** This member's running and queued places, which bound one principal's jobs by default. */
+    private final int slots;
 
     JobController(JobService jobs, SignIn signIn, StudioProperties properties) {
         this.jobs = jobs;
         this.signIn = signIn;
-        this.maxJobsPerPrincipal = signIn.maxJobsPerPrincipal(properties.jobs().concurrent() + properties.jobs().queue());
+        this.slots = properties.jobs().concurrent() + properties.jobs().queue();
     }
 
     /** The service reads the scene, as the render service does for POST /api/render. */
     @PostMapping(path = "/api/jobs", consumes = {SceneMediaTypes.JSON, SceneMediaTypes.JSON_SUFFIXED})
     ResponseEntity<JobStatus> start(@RequestBody(required = false) byte[] scene, HttpServletRequest request,
                                     Principal principal) {
-        JobOwner owner = signIn.required() ? new JobOwner(SignIn.principal(principal), maxJobsPerPrincipal)
+        JobOwner owner = signIn.required() ? new JobOwner(SignIn.principal(principal), signIn.maxJobsPerPrincipal(slots))
                 : JobOwner.ANYONE;
         JobStatus status = jobs.start(scene != null ? scene : new byte[0], IntakeMemory.of(request), owner);
         return ResponseEntity.accepted().location(URI.create("/api/jobs/" + status.id())).body(status);
