@@ -9,7 +9,6 @@ import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.
 import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.status;
 
 import java.io.ByteArrayInputStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -50,26 +49,6 @@ class MeshApiTest {
             objects.set(0, replaceFirstObject);
         }
         return JSON.writeValueAsString(scene);
-    }
-
-    @Test
-    void servesAShippedMeshAsObjText() throws Exception {
-        String expected = Files.readString(ExampleSceneFiles.dir().resolve("meshes/torus-knot.obj"));
-        String body = mvc.perform(get("/api/meshes").param("file", "meshes/torus-knot.obj"))
-                .andExpect(status().isOk())
-                .andExpect(content().contentTypeCompatibleWith(MediaType.TEXT_PLAIN))
-                .andReturn().getResponse().getContentAsString(StandardCharsets.UTF_8);
-        assertThat(body).isEqualTo(expected);
-    }
-
-    @Test
-    void refusesMeshNamesOutsideTheShippedOnes() throws Exception {
-        for (String bad : List.of("../application.properties", "meshes/none.obj", "/etc/passwd", "meshes/../mesh.json")) {
-            mvc.perform(get("/api/meshes").param("file", bad))
-                    .andExpect(status().isNotFound())
-                    .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON));
-        }
-        mvc.perform(get("/api/meshes")).andExpect(status().isBadRequest());
     }
 
     @Test

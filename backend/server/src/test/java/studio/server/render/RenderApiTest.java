@@ -4,7 +4,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.hamcrest.Matchers.containsInAnyOrder;
 import static org.hamcrest.Matchers.containsString;
 import static org.hamcrest.Matchers.hasItem;
-import static org.hamcrest.Matchers.not;
 import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.get;
 import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.post;
 import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.content;
@@ -20,8 +19,6 @@ import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -40,7 +37,6 @@ import org.springframework.test.web.servlet.MockMvc;
 import org.springframework.test.web.servlet.MvcResult;
 
 import studio.server.AsyncMvc;
-import studio.server.scene.examples.ExampleSceneFiles;
 import tools.jackson.databind.json.JsonMapper;
 
 /**
@@ -340,47 +336,6 @@ class RenderApiTest {
                 .POST(HttpRequest.BodyPublishers.ofString(sceneOfSize(2 * MAX_BODY_BYTES))).build());
         assertThat(response.statusCode()).isEqualTo(413);
         assertThat(new String(response.body(), StandardCharsets.UTF_8)).contains("\"status\":413");
-    }
-
-    // --- example scenes --------------------------------------------------------------------------
-
-    @Test
-    void listsEveryExampleScene() throws Exception {
-        List<String> expected = ExampleSceneFiles.all().stream().map(ExampleSceneFiles::stem).toList();
-        assertThat(expected).isNotEmpty();
-        mvc.perform(get("/api/scenes"))
-                .andExpect(status().isOk())
-                .andExpect(content().contentTypeCompatibleWith(MediaType.APPLICATION_JSON))
-                .andExpect(jsonPath("$.length()").value(expected.size()))
-                .andExpect(jsonPath("$[*].name").value(containsInAnyOrder(expected.toArray())));
-    }
-
-    @Test
-    void returnsAnExampleSceneAsItsFile() throws Exception {
-        Path file = ExampleSceneFiles.dir().resolve("still-life.json");
-        MvcResult result = mvc.perform(get("/api/scenes/still-life"))
-                .andExpect(status().isOk())
-                .andExpect(content().contentTypeCompatibleWith(MediaType.APPLICATION_JSON))
-                .andExpect(jsonPath("$.name").value("still-life"))
-                .andReturn();
-        assertThat(result.getResponse().getContentAsByteArray()).isEqualTo(Files.readAllBytes(file));
-    }
-
-    @Test
-    void unknownExampleSceneGives404Problem() throws Exception {
-        mvc.perform(get("/api/scenes/nope"))
-                .andExpect(status().isNotFound())
-                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
-                .andExpect(jsonPath("$.status").value(404))
-                .andExpect(jsonPath("$.detail").value(containsString("'nope'")));
-    }
-
-    @Test
-    void exampleSceneNameInProblemIsSanitised() throws Exception {
-        mvc.perform(get("/api/scenes/{name}", "<script>alert(1)</script>"))
-                .andExpect(status().isNotFound())
-                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
-                .andExpect(jsonPath("$.detail").value(not(containsString("<"))));
     }
 
     // --- everything else -------------------------------------------------------------------------
