@@ -2,7 +2,7 @@
 // add a sphere, drag it in the top view, change its material, render through a job and watch
 // it arrive, then send a value the server refuses and see the error by its field.
 // Usage: node e2e/editor.e2e.mjs path/to/studio.jar   (screenshots go to frontend/test-output/)
-import { mkdirSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import { chromium } from 'playwright-core';
 import { PerspectiveCamera, Vector3 } from 'three';
 import { startServer } from './server.mjs';
@@ -680,7 +680,7 @@ try {
     await page.getByRole('button', { name: /^History/ }).click();
     const strip = page.getByRole('region', { name: 'Render history' });
     for (const n of [first, second]) {
-      const name = await strip.getByRole('button', { name: new RegExp(`^Render ${n}: history · `) }).getAttribute('aria-label');
+      const name = await strip.getByRole('button', { name: new RegExp(`^Render ${n} history`) }).getAttribute('title');
       expect(/ · 160 × 120 px · up to 16 spp · /.test(name), `the history names a render "${name}"`);
     }
     await strip.getByRole('button', { name: `Compare Render ${first} with Render ${second}` }).click();
@@ -730,8 +730,36 @@ try {
     await until(async () => (await stats.innerText()).includes(`Render ${second} ·`), async () => `after a reload the stage shows "${await stats.innerText()}"`);
     await page.getByText('Out of date', { exact: true }).waitFor({ timeout: 5000 });
     await page.getByRole('button', { name: /^History/ }).click();
-    await strip.getByRole('button', { name: new RegExp(`^Render ${first}: `) }).waitFor();
+    await strip.getByRole('button', { name: new RegExp(`^Render ${first} `) }).waitFor();
     await page.screenshot({ path: `${out}render-history-reloaded.png` });
+  });
+
+  await step('axe-core finds no accessibility violations in the main states, at 1024x768 and 1440x900', async () => {
+    const axe = readFileSync(new URL('../node_modules/axe-core/axe.min.js', import.meta.url), 'utf8');
+    const violations = async (state) => {
+      await twoFrames(page);
+      if (!(await page.evaluate(() => 'axe' in window))) await page.addScriptTag({ content: axe });
+      const result = await page.evaluate(() => window.axe.run(document, { resultTypes: ['violations'] }));
+      return result.violations.map((v) => `${state}: ${v.id} (${v.impact}) at ${v.nodes.map((n) => n.target.join(' ')).slice(0, 3).join(', ')}`);
+    };
+    const found = [];
+    for (const [width, height] of [[1024, 768], [1440, 900]]) {
+      await page.setViewportSize({ width, height });
+      const at = `${width}x${height}`;
+      await page.getByRole('tab', { name: '3D preview' }).click();
+      found.push(...await violations(`${at} 3D preview`));
+      await page.getByRole('tab', { name: 'Image' }).click();
+      found.push(...await violations(`${at} image with its history`));
+      await page.getByRole('tab', { name: 'JSON' }).click();
+      found.push(...await violations(`${at} JSON`));
+      await page.getByRole('tab', { name: '3D preview' }).click();
+      await page.keyboard.press('?');
+      await page.getByRole('dialog', { name: 'Keyboard shortcuts' }).waitFor();
+      found.push(...await violations(`${at} shortcuts`));
+      await page.keyboard.press('Escape');
+    }
+    await page.setViewportSize({ width: 1440, height: 1000 });
+    expect(found.length === 0, `axe-core:\n${found.join('\n')}`);
   });
 
   await step('no uncaught errors in the page', async () => {

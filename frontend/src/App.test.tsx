@@ -243,6 +243,30 @@ describe('App', () => {
     expect(screen.getByLabelText('Width (px)')).not.toHaveAttribute('aria-invalid');
   });
 
+  it('refuses to render while a field holds text it refused, and says the stage is not the scene as typed', async () => {
+    const user = userEvent.setup();
+    const fetchFn = mockServer();
+    await renderApp(fetchFn);
+    act(() => store().select({ kind: 'object', index: 1 }));
+    const radius = screen.getByLabelText('Radius');
+    await user.clear(radius);
+    await user.type(radius, '-1{Enter}');
+    expect(store().scene.objects[1]).toMatchObject({ radius: 0.5 }); // not in the scene
+    expect(await screen.findByTestId('not-as-typed')).toHaveTextContent('Not as typed');
+    await user.click(screen.getByRole('button', { name: 'Render' }));
+    const summary = await screen.findByTestId('error-summary');
+    expect(summary).toHaveTextContent('Not rendered: fix these fields first');
+    expect(summary).toHaveTextContent('Sphere 2 › Radius');
+    expect(fetchFn.mock.calls.some(([url]) => url === '/api/jobs' || url === '/api/render')).toBe(false);
+    expect(await screen.findByRole('region', { name: 'Problems' })).toHaveTextContent('Sphere 2 › Radius');
+
+    // fixed: the refusal goes, and Render sends the scene
+    await user.clear(radius);
+    await user.type(radius, '0.8{Enter}');
+    expect(screen.queryByTestId('not-as-typed')).toBeNull();
+    expect(screen.queryByTestId('error-summary')).toBeNull();
+  });
+
   it('warns before Render about what the server would refuse: an opened radius of -1, Up along the view', async () => {
     await renderApp();
     act(() => store().loadScene({ camera: { position: [0, 5, 0], lookAt: [0, 0, 0], up: [0, 1, 0] }, objects: [{ type: 'sphere', radius: -1 }] }));

@@ -13,6 +13,7 @@ import { useMeshFiles } from './hooks/useMeshes';
 import { useSceneErrors } from './hooks/useSceneErrors';
 import { usePanels } from './hooks/usePanels';
 import type { Scene } from './model/types';
+import { useDraftErrors } from './store/draftErrors';
 import { useSceneStore } from './store/sceneStore';
 import { SideView } from './views/SideView';
 import { TopView } from './views/TopView';
@@ -39,6 +40,7 @@ export function App({ fetchFn }: AppProps) {
   const fieldErrors = useSceneErrors();
   const [tab, setTab] = useState<StageTab>('preview');
   const [panels, setPanels] = usePanels();
+  const unapplied = useDraftErrors((s) => s.errors);
   const scene = useSceneStore((s) => s.scene);
   const documentId = useSceneStore((s) => s.documentId);
   const report = useSceneStore((s) => s.reportServerErrors);
@@ -69,7 +71,9 @@ export function App({ fetchFn }: AppProps) {
   return (
     <FieldErrorsProvider errors={fieldErrors}>
       <div className="studio">
-        <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} />
+        <header>
+          <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} />
+        </header>
         {help && <ShortcutsHelp onClose={closeHelp} />}
         <SignInDialog />
         {message && (
@@ -94,6 +98,7 @@ export function App({ fetchFn }: AppProps) {
               tabs={tabs}
               showingRender={tab === 'render'}
               onRenderStarted={showRender}
+              unapplied={unapplied}
             >
               <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
                 <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
@@ -106,6 +111,7 @@ export function App({ fetchFn }: AppProps) {
             </RenderPanel>
           </div>
           <div className="studio-inspector" hidden={!panels.inspector}>
+            <h2 className="visually-hidden">Scene and selection</h2>
             <ProblemList />
             <Inspector />
           </div>

@@ -14,7 +14,7 @@ export const SHORTCUTS: [string, string][] = [
   ['F', 'Frame the selection (or the whole scene) in the 3D orbit view'],
   ['Arrow keys', 'Nudge the focused thing (or the whole selection it is part of) in a top or side view by one grid step'],
   ['F2', 'Rename the focused object in the list'],
-  ['Ctrl+Enter', 'Apply the JSON tab'],
+  ['Ctrl+Enter', 'Render (in the JSON tab: apply the JSON)'],
   ['?', 'Show or hide this panel'],
 ];
 
@@ -43,12 +43,12 @@ export function ShortcutsHelp({ onClose }: ShortcutsHelpProps) {
     // eslint-disable-next-line jsx-a11y/click-events-have-key-events, jsx-a11y/no-noninteractive-element-interactions
     <div className="shortcuts-help" role="dialog" aria-modal="true" aria-labelledby="shortcuts-title" onClick={(event) => event.target === event.currentTarget && onClose()}>
       <div className="shortcuts-help__panel">
-        <header>
+        <div className="shortcuts-help__header">
           <h2 id="shortcuts-title">Keyboard shortcuts</h2>
           <button ref={close} type="button" className="small" onClick={onClose}>
             Close
           </button>
-        </header>
+        </div>
         <dl>
           {SHORTCUTS.map(([keys, what]) => (
             <div key={keys}>

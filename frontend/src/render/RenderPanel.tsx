@@ -1,4 +1,5 @@
-import { useCallback, useId, useMemo, useState, type ReactNode } from 'react';
+import { useRenderShortcut } from './useRenderShortcut';
+import { useCallback, useEffect, useId, useMemo, useState, type ReactNode } from 'react';
 import type { FetchFn } from '../api/client';
 import type { EventSourceFactory } from '../api/jobs';
 import { sameJson } from '../model/sameJson';
@@ -33,6 +34,11 @@ export interface RenderPanelProps {
   fetchFn?: FetchFn;
   /** Opens the progress stream; `new EventSource(url)` by default, a fake in tests. */
   eventSourceFactory?: EventSourceFactory;
+  /**
+   * Fields whose typed text was refused and is not in the scene (JSON path → reason): Render
+   * refuses while there are any, and the stage says it does not show the scene as typed.
+   */
+  unapplied?: Record<string, string>;
   /** Shown at the start of the bar (the stage's tabs). */
   tabs?: ReactNode;
   /** What the stage shows instead of the render (the preview); without it the render is always shown. */
@@ -67,9 +73,19 @@ export function RenderPanel(props: RenderPanelProps) {
   const [sent, setSent] = useState<{ scene: unknown } | null>(null);
   const [viewing, setViewing] = useState(false);
   const [historyOpen, setHistoryOpen] = useState(false);
+  const [refused, setRefused] = useState(false);
+  const unapplied = useMemo(() => Object.entries(props.unapplied ?? {}).map(([field, message]) => ({ field, message })), [props.unapplied]);
+  useEffect(() => {
+    if (unapplied.length === 0) setRefused(false);
+  }, [unapplied.length]);
   const stripId = useId();
 
   const onRender = useCallback(async () => {
+    if (unapplied.length > 0) {
+      setRefused(true); // nothing is sent: the scene is not what the fields say
+      return;
+    }
+    setRefused(false);
     setSent({ scene });
     reset();
     onRenderStarted?.();
@@ -78,7 +94,9 @@ export function RenderPanel(props: RenderPanelProps) {
     else if (outcome.kind === 'rejected' && outcome.error.status === 400) {
       onFieldErrors(toFieldErrorMap(outcome.error.errors), scene);
     }
-  }, [start, scene, onFieldErrors, onRenderStarted, reset]);
+  }, [start, scene, onFieldErrors, onRenderStarted, reset, unapplied.length]);
+
+  useRenderShortcut(() => void onRender());
 
   const current = useMemo(() => (typeof scene === 'string' ? sceneOfSent(scene) : scene), [scene]);
   const shownImage = single ? imageOf(single) : image;
@@ -116,6 +134,14 @@ export function RenderPanel(props: RenderPanelProps) {
           </button>
         </p>
       )}
+      {unapplied.length > 0 && (refused ? (
+        <ErrorSummary title="Not rendered: fix these fields first" errors={unapplied} {...fieldWordsOf(scene)} />
+      ) : (
+        <p className="render-stale" role="status" data-testid="not-as-typed">
+          <strong>Not as typed</strong> — {unapplied.length === 1 ? 'a field holds' : `${unapplied.length} fields hold`} text
+          that is not valid; the views and the live render show the last valid values.
+        </p>
+      ))}
       {rejected && <ErrorSummary title={rejected.title} detail={rejected.detail} errors={rejected.errors} {...words} />}
       <RenderNotice error={rejected ? null : error} job={job} />
       {children !== undefined && (
@@ -123,7 +149,7 @@ export function RenderPanel(props: RenderPanelProps) {
           {children}
         </div>
       )}
-      <div className="stage__body stage__body--render" hidden={!showingRender}>
+      <div className="stage__body stage__body--render" hidden={!showingRender} {...(tabs !== undefined ? { role: 'tabpanel', id: 'panel-render', 'aria-labelledby': 'tab-render' } : {})}>
         <TileCanvas canvasRef={render.canvasRef} width={job?.width ?? 0} height={job?.height ?? 0} hidden={!job || image !== null || single !== null || pair !== null} />
         {pair && <CompareView left={sideOf(pair[0])} right={sideOf(pair[1])} onClose={stage.endCompare} />}
         {!pair && shownImage && <RenderResult image={shownImage} stale={outOfDate} caption={shown ? recordCaption(shown.record) : undefined} onViewFullSize={() => setViewing(true)} />}

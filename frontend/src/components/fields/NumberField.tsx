@@ -1,4 +1,5 @@
 import { useEffect, useId, useState, type CSSProperties, type KeyboardEvent } from 'react';
+import { useDraftErrors } from '../../store/draftErrors';
 import { FieldErrorMessage, useFieldError } from '../fieldErrors';
 
 /** Props of {@link NumberField}. */
@@ -49,6 +50,13 @@ export function NumberField(props: NumberFieldProps) {
 
   const localError = check(draft, props);
   const refused = !editing && localError !== undefined;
+  // refused text is not in the scene: Render and the stage hear of it until it is fixed or reverted
+  const report = useDraftErrors((s) => s.report);
+  const refusal = refused ? localError : null;
+  useEffect(() => {
+    report(path, refusal);
+    return () => report(path, null);
+  }, [report, path, refusal]);
 
   const commitText = (text: string) => {
     setEditing(false);
@@ -102,6 +110,7 @@ type Bounds = Pick<NumberFieldProps, 'integer' | 'min' | 'max' | 'minExclusive' 
 /** Why a typed text is not an acceptable value, or undefined when it is (the server's wording). */
 export function check(text: string, { integer, min, max, minExclusive, maxExclusive }: Bounds): string | undefined {
   const n = text.trim() === '' ? NaN : Number(text);
+  if (text.trim() === '') return 'enter a number';
   if (!Number.isFinite(n)) return `"${text}" is not a number`;
   if (integer && !Number.isInteger(n)) return 'must be a whole number';
   if (min !== undefined && (minExclusive ? n <= min : n < min)) return minExclusive ? `must be greater than ${min}` : `must be at least ${min}`;

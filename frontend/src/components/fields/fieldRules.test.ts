@@ -22,6 +22,7 @@ describe('check (a typed number)', () => {
     expect(check('8000', { max: 4096 })).toBe('must be at most 4096');
     expect(check('2.5', { integer: true })).toBe('must be a whole number');
     expect(check('abc', {})).toBe('"abc" is not a number');
-    expect(check('', {})).toBe('"" is not a number');
+    expect(check('', {})).toBe('enter a number');
+    expect(check('  ', {})).toBe('enter a number');
   });
 });

@@ -1,6 +1,6 @@
 import { HISTORY_LIMIT } from './boundedHistory';
 import type { HistoryEntry } from './RenderHistory';
-import { formatFinished, formatSamples, recordName, recordSummary, recordTitle, type RenderRecord } from './renderRecord';
+import { formatFinished, formatSamples, recordName, recordTitle, type RenderRecord } from './renderRecord';
 import './history.css';
 
 /** Props of {@link HistoryStrip}. */
@@ -43,7 +43,7 @@ export function HistoryStrip({ id, entries, shownId, isCurrentScene, onShow, onC
             const current = isCurrentScene(record);
             return (
               <li key={record.id} className={isShown ? 'render-history__item is-shown' : 'render-history__item'}>
-                <button type="button" className="render-history__show" aria-pressed={isShown} aria-label={recordName(record, now)} title={recordSummary(record, now)} onClick={() => onShow(record.id)}>
+                <button type="button" className="render-history__show" aria-pressed={isShown} title={recordName(record, now)} onClick={() => onShow(record.id)}>
                   <img src={thumbnailUrl} alt="" draggable={false} />
                   <span className="render-history__title">
                     {title} <span className="render-history__name">{record.sceneName}</span>
