@@ -208,6 +208,9 @@ describe('Inspector', () => {
     await user.click(within(outline).getByRole('button', { name: /Box 2/ }));
     expect(store().selection).toEqual({ kind: 'object', index: 1 });
     expect(within(outline).getByRole('button', { name: /Box 2/ })).toHaveAttribute('aria-pressed', 'true');
+    // a second click (or the first half of a double-click to rename) keeps it selected
+    await user.click(within(outline).getByRole('button', { name: /Box 2/ }));
+    expect(store().selection).toEqual({ kind: 'object', index: 1 });
   });
 
   it('shows a server field error next to the input whose path it names', () => {

@@ -57,7 +57,7 @@ export function SceneOutline() {
           title={renamable ? `Select ${label} (Shift or Ctrl to add to the selection; double-click or F2 to rename)` : `Select ${label}`}
           onClick={(e) => {
             if (e.shiftKey || e.ctrlKey || e.metaKey) toggleSelect(target);
-            else select(selected && selectedItems.length <= 1 ? null : target);
+            else select(target); // a selected item stays selected (Escape or an empty click clears)
           }}
           onDoubleClick={() => renamable && setRenaming(key)}
           onKeyDown={(e) => e.key === 'F2' && renamable && setRenaming(key)}
