@@ -1,5 +1,5 @@
 import { describe, expect, it, vi } from 'vitest';
-import { fakeEventSources, statusJson, tileJson } from '../render/fakes';
+import { fakeEventSources, statusJson, tileJson } from '../test/renderFakes';
 import { ApiError, type FetchFn } from './client';
 import {
   JobApiError,

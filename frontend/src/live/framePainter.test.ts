@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { recordingContext } from '../render/fakes';
+import { recordingContext } from '../test/renderFakes';
 import { encodeFrame, frameHeader } from './fakes';
 import { decodeImage, drawFrame, type DecodedImage } from './framePainter';
 import { decodeFrame } from './protocol';

@@ -1,6 +1,6 @@
 import { act, renderHook } from '@testing-library/react';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { recordingContext } from '../render/fakes';
+import { recordingContext } from '../test/renderFakes';
 import { fakeSockets, instantDecoder, manualDecoder } from './fakes';
 import type { ImageDecoder } from './framePainter';
 import { RETRY_DELAYS } from './liveSession';

@@ -1,8 +1,8 @@
 import { act, screen, waitFor } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { beforeEach, describe, expect, it, vi } from 'vitest';
-import { recordingContext, statusJson, tileJson } from './fakes';
-import { calls, mockServer, PROBLEM, SCENE, setup } from './panelHarness';
+import { recordingContext, statusJson, tileJson } from '../test/renderFakes';
+import { calls, mockServer, PROBLEM, SCENE, setup } from '../test/panelHarness';
 import { RenderPanel } from './RenderPanel';
 
 describe('RenderPanel', () => {

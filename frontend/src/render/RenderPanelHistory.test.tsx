@@ -1,8 +1,8 @@
 import { act, cleanup, fireEvent, screen, within } from '@testing-library/react';
 import { beforeEach, describe, expect, it, vi } from 'vitest';
 import { useSceneStore } from '../store/sceneStore';
-import { MemoryHistoryStorage } from './fakes';
-import { freshHistory, mockServer, SCENE, setup } from './panelHarness';
+import { MemoryHistoryStorage } from '../test/renderFakes';
+import { freshHistory, mockServer, SCENE, setup } from '../test/panelHarness';
 
 const RED = { ...SCENE, objects: [{ type: 'sphere', material: { type: 'chalk', color: '#d03020' } }] };
 const BLUE = { ...SCENE, objects: [{ type: 'sphere', material: { type: 'chalk', color: '#2040d0' } }] };

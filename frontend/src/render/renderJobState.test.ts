@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { ApiError } from '../api/client';
 import { JobApiError, parseJobStatus, type JobStatus } from '../api/jobs';
-import { statusJson } from './fakes';
+import { statusJson } from '../test/renderFakes';
 import {
   INITIAL_STATE,
   renderJobReducer,

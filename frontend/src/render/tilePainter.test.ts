@@ -1,5 +1,5 @@
 import { describe, expect, it, vi } from 'vitest';
-import { recordingContext, tileJson } from './fakes';
+import { recordingContext, tileJson } from '../test/renderFakes';
 import { base64ToBytes, paintTile, resetCanvas, type DecodedTile } from './tilePainter';
 import type { JobTile } from '../api/jobs';
 

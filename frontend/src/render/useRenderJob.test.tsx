@@ -2,7 +2,7 @@ import { act, renderHook, waitFor } from '@testing-library/react';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import type { FetchFn } from '../api/client';
 import { parseJobStatus, type JobStatus } from '../api/jobs';
-import { fakeEventSources, statusJson } from './fakes';
+import { fakeEventSources, statusJson } from '../test/renderFakes';
 import { useRenderJob } from './useRenderJob';
 
 function status(overrides: Record<string, unknown> = {}): JobStatus {

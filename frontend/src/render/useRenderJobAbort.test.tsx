@@ -1,7 +1,7 @@
 import { act, renderHook, waitFor } from '@testing-library/react';
 import { beforeEach, describe, expect, it, vi } from 'vitest';
 import type { FetchFn } from '../api/client';
-import { fakeEventSources, recordingContext, statusJson, tileJson } from './fakes';
+import { fakeEventSources, recordingContext, statusJson, tileJson } from '../test/renderFakes';
 import type { DecodedTile, TileDecoder } from './tilePainter';
 import { useRenderJob, type StartOutcome } from './useRenderJob';
 

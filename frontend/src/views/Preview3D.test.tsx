@@ -3,7 +3,7 @@ import userEvent from '@testing-library/user-event';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { fakeSockets } from '../live/fakes';
 import type { Scene } from '../model/types';
-import { recordingContext } from '../render/fakes';
+import { recordingContext } from '../test/renderFakes';
 import { useSceneStore } from '../store/sceneStore';
 import { Preview3D } from './Preview3D';
 import { ORBIT_SPEEDS } from './previewEngine';

@@ -1,5 +1,5 @@
 import { beforeEach, describe, expect, it, vi } from 'vitest';
-import { MemoryHistoryStorage } from '../fakes';
+import { MemoryHistoryStorage } from '../../test/renderFakes';
 import { RenderHistory } from './RenderHistory';
 import type { FinishedRender } from './renderRecord';
 

@@ -3,8 +3,8 @@
  * what was drawn, and a history storage in memory. Only tests import this file.
  */
 import type { EventSourceFactory, EventSourceLike } from '../api/jobs';
-import type { HistoryStorage, StoredHistory } from './history/historyStorage';
-import type { RenderRecord } from './history/renderRecord';
+import type { HistoryStorage, StoredHistory } from '../render/history/historyStorage';
+import type { RenderRecord } from '../render/history/renderRecord';
 
 type Listener = (event: MessageEvent) => void;
 

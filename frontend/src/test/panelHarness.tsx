@@ -6,9 +6,9 @@ import { act, render, screen, waitFor } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { expect, vi } from 'vitest';
 import type { FetchFn } from '../api/client';
-import { fakeEventSources, MemoryHistoryStorage, statusJson } from './fakes';
-import { RenderHistory } from './history/RenderHistory';
-import { RenderPanel, type RenderPanelProps } from './RenderPanel';
+import { fakeEventSources, MemoryHistoryStorage, statusJson } from './renderFakes';
+import { RenderHistory } from '../render/history/RenderHistory';
+import { RenderPanel, type RenderPanelProps } from '../render/RenderPanel';
 
 export const SCENE = { name: 'still-life', image: { width: 64, height: 32 }, objects: [{ type: 'sphere' }] };
 export const PROBLEM = { 'Content-Type': 'application/problem+json' };
