@@ -19,6 +19,7 @@ import studio.engine.mesh.MeshData;
 import studio.engine.mesh.ObjReader;
 import studio.engine.render.RenderResult;
 import studio.engine.render.RenderSettings;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.Sampler;
 import studio.engine.scene.Scene;
@@ -167,14 +168,14 @@ public final class ScalingCommand {
      */
     static Row measure(String series, int count, long buildNanos, long bvhNanos, Scene scene, RenderSettings settings,
                        int runs, Path work, PrintStream err) throws IOException {
-        RenderResult warmUp = Renderer.render(scene, settings);
+        RenderResult warmUp = Renderer.render(RenderRequest.of(scene, settings));
         ImageIO.write(ImageEncoder.toImage(warmUp.film()), "png", work.resolve("scaling-" + series + "-" + count + ".png")
                 .toFile());
         long[] times = new long[runs];
         long rays = 0;
         for (int i = 0; i < runs; i++) {
             long start = System.nanoTime();
-            RenderResult result = Renderer.render(scene, settings);
+            RenderResult result = Renderer.render(RenderRequest.of(scene, settings));
             times[i] = System.nanoTime() - start;
             rays = result.raysTraced();
             if (result.nonFiniteSamples() > 0) {
@@ -200,7 +201,7 @@ public final class ScalingCommand {
         TriangleMesh mesh = ScalingScenes.placedKnot(parsed);
         Scene scene = ScalingScenes.scene(ScalingScenes.withGround(List.of(ScalingScenes.knotObject(mesh))));
         long t2 = System.nanoTime();
-        Renderer.render(scene, settings);
+        Renderer.render(RenderRequest.of(scene, settings));
         long t3 = System.nanoTime();
         double total = (t3 - t0) / 1e9;
         String verdict = parsed.triangleCount() >= TARGET_TRIANGLES

@@ -18,6 +18,7 @@ import jakarta.validation.Validation;
 import jakarta.validation.ValidatorFactory;
 
 import studio.engine.image.ImageEncoder;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.MeshFiles;
@@ -52,7 +53,7 @@ final class TestRenders {
                     Map.of("image.width", width, "image.height", height, "render.samples", 1,
                             "render.sampler", "regular"));
             CompiledScene compiled = new SceneMapper(SceneLimits.DEFAULTS).map(dto, 1, meshFiles);
-            return ImageEncoder.toImage(Renderer.render(compiled.scene(), compiled.settings()).film());
+            return ImageEncoder.toImage(Renderer.render(RenderRequest.of(compiled.scene(), compiled.settings())).film());
         }
     }
 

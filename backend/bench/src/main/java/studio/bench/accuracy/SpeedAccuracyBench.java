@@ -14,6 +14,7 @@ import java.util.Optional;
 import studio.engine.render.Film;
 import studio.engine.render.RenderResult;
 import studio.engine.render.RenderSettings;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.Sampler;
 import studio.engine.scene.Scene;
@@ -95,7 +96,7 @@ final class SpeedAccuracyBench {
                 EngineFeatures.sampler(REFERENCE_SAMPLER, config.referenceSamples()).orElseThrow(), Double.NaN,
                 base.seed() + REFERENCE_SEED_OFFSET, adaptive);
         long start = System.nanoTime();
-        Film reference = Renderer.render(scene, referenceSettings).film();
+        Film reference = Renderer.render(RenderRequest.of(scene, referenceSettings)).film();
         double referenceMillis = (System.nanoTime() - start) / 1e6;
         log.printf(Locale.ROOT, "%s: reference, %s at %d samples/pixel, %.0f ms%n", name, REFERENCE_SAMPLER,
                 config.referenceSamples(), referenceMillis);
@@ -150,11 +151,11 @@ final class SpeedAccuracyBench {
     private void warmUp(Scene scene, RenderSettings base) {
         boolean adaptive = EngineFeatures.hasAdaptive();
         for (int i = 0; i < 3; i++) {
-            Renderer.render(scene, settings(base, EngineFeatures.sampler(REFERENCE_SAMPLER, 16).orElseThrow(),
-                    Double.NaN, base.seed(), adaptive));
+            Renderer.render(RenderRequest.of(scene, settings(base, EngineFeatures.sampler(REFERENCE_SAMPLER, 16).orElseThrow(),
+                    Double.NaN, base.seed(), adaptive)));
             if (adaptive && adaptiveAccepts(base, "sobol")) {
-                Renderer.render(scene, settings(base, EngineFeatures.sampler("sobol", 64).orElseThrow(), 0.1,
-                        base.seed(), true));
+                Renderer.render(RenderRequest.of(scene, settings(base, EngineFeatures.sampler("sobol", 64).orElseThrow(), 0.1,
+                        base.seed(), true)));
             }
         }
     }
@@ -260,7 +261,7 @@ final class SpeedAccuracyBench {
             log.printf(Locale.ROOT, "%s: round %d of %d, %d settings%n", scene, run + 1, config.runs(), plans.size());
             for (int i = 0; i < plans.size(); i++) {
                 RenderSettings settings = plans.get(i).settings();
-                RoundTiming timing = RoundTiming.of(() -> Renderer.render(world, settings));
+                RoundTiming timing = RoundTiming.of(() -> Renderer.render(RenderRequest.of(world, settings)));
                 millis[i][run] = timing.millis();
                 cpuMillis[i][run] = timing.cpuMillis();
                 if (run == 0) {
@@ -300,7 +301,7 @@ final class SpeedAccuracyBench {
     private void warmUpRound(String scene, List<Planned> plans, Scene world) {
         log.printf(Locale.ROOT, "%s: warm-up round, %d settings%n", scene, plans.size());
         for (Planned plan : plans) {
-            Renderer.render(world, plan.settings());
+            Renderer.render(RenderRequest.of(world, plan.settings()));
         }
     }
 

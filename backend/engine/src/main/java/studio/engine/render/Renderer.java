@@ -48,50 +48,30 @@ public final class Renderer {
     private Renderer() {
     }
 
-    public static RenderResult render(Scene scene, RenderSettings settings) {
-        return render(scene, settings, RenderListener.NONE, () -> false);
-    }
-
     /**
-     * Renders the scene. {@code cancelled} is asked before each tile and, while tiles are being
-     * rendered, every {@value #POLL_MILLIS} ms by the calling thread (never per sample: it may be
-     * slow); once it answers true, every tile stops within one camera sample (see {@link StopSignal}).
-     * The render returns or throws once no tile is being rendered any more (unless the calling
-     * thread is interrupted: then at once, and the tiles stop within a sample).
+     * Renders what the request asks: its {@code pixels} not on its {@code except} and not known to
+     * its {@code paths} into its film, which has the settings' size (the film's other pixels are
+     * left as they are). Each pixel comes out as in a whole render, so rendering nested lattices one
+     * after the other (see {@link PixelLattice}) fills the film with the whole render's pixels; a
+     * lattice other than every pixel is only for fixed sampling (adaptive sampling with sobol judges
+     * a pixel by its neighbours). {@code cancelled} is asked before each tile and, while tiles are
+     * being rendered, every {@value #POLL_MILLIS} ms by the calling thread (never per sample: it may
+     * be slow); once it answers true, every tile stops within one camera sample (see
+     * {@link StopSignal}). The render returns or throws once no tile is being rendered any more
+     * (unless the calling thread is interrupted: then at once, and the tiles stop within a sample).
      *
      * @throws RenderCancelledException if {@code cancelled} turned true before the last tile was done
-     */
-    public static RenderResult render(Scene scene, RenderSettings settings, RenderListener listener,
-                                     BooleanSupplier cancelled) {
-        return render(scene, settings, new Film(settings.width(), settings.height()), PixelLattice.ALL, null,
-                listener, cancelled);
-    }
-
-    /**
-     * Renders only the pixels of {@code pixels} that are not on {@code except} (null: none
-     * excepted) into {@code film}, which has the settings' size; the film's other pixels are left
-     * as they are. Each pixel comes out as in a whole render, so rendering nested lattices one
-     * after the other (see {@link PixelLattice}) fills the film with the whole render's pixels.
-     * Only for fixed sampling: adaptive sampling with sobol judges a pixel by its neighbours.
-     * Cancelled as {@link #render(Scene, RenderSettings, RenderListener, BooleanSupplier)} is.
-     *
      * @throws IllegalArgumentException if the settings are adaptive (and the lattice is not every
      *                                  pixel), or the film's size is not the settings'
      */
-    public static RenderResult render(Scene scene, RenderSettings settings, Film film, PixelLattice pixels,
-                                     PixelLattice except, RenderListener listener, BooleanSupplier cancelled) {
-        return render(scene, settings, film, pixels, except, null, listener, cancelled);
-    }
-
-    /**
-     * {@link #render(Scene, RenderSettings, Film, PixelLattice, PixelLattice, RenderListener, BooleanSupplier)}
-     * that also leaves out the pixels known to {@code paths} (null: none), which the film holds
-     * from an earlier render of this scene or of one that differs only where those pixels' rays do
-     * not go, and records the rays of the pixels it renders there (see {@link PixelPaths}).
-     */
-    public static RenderResult render(Scene scene, RenderSettings settings, Film film, PixelLattice pixels,
-                                     PixelLattice except, PixelPaths paths, RenderListener listener,
-                                     BooleanSupplier cancelled) {
+    public static RenderResult render(RenderRequest request) {
+        Scene scene = request.scene();
+        RenderSettings settings = request.settings();
+        Film film = request.film();
+        PixelLattice pixels = request.pixels(), except = request.except();
+        PixelPaths paths = request.paths();
+        RenderListener listener = request.listener();
+        BooleanSupplier cancelled = request.cancelled();
         if (film.width() != settings.width() || film.height() != settings.height()) {
             throw new IllegalArgumentException("the film is " + film.width() + "x" + film.height()
                     + ", the settings " + settings.width() + "x" + settings.height());

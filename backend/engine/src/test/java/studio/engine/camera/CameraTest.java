@@ -22,6 +22,7 @@ import studio.engine.math.Vec3;
 import studio.engine.render.Film;
 import studio.engine.render.RenderResult;
 import studio.engine.render.RenderSettings;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.RegularSampler;
 import studio.engine.scene.Scene;
@@ -134,7 +135,7 @@ class CameraTest {
                 List.of(new SceneObject(new Sphere(Vec3.ZERO, 1),
                         MaterialDefaults.of(MaterialKind.FLAT, new Rgb(1, 0, 0)))),
                 List.of(), new Rgb(0, 0, 1), 0);
-        RenderResult result = Renderer.render(scene, new RenderSettings(33, 33, new RegularSampler(1), 1, 1));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(33, 33, new RegularSampler(1), 1, 1)));
         assertEquals(0, result.nonFiniteSamples());
         return result.film();
     }
@@ -211,7 +212,7 @@ class CameraTest {
                         MaterialDefaults.of(MaterialKind.CHALK, new Rgb(0, 1, 0)))),
                 List.of(new PointLight(new Vec3(0, 5, 0), Rgb.WHITE, 1, false)), new Rgb(0, 0, 1), 0.1);
 
-        RenderResult result = Renderer.render(scene, new RenderSettings(512, 512, new RegularSampler(1), 1, 2));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(512, 512, new RegularSampler(1), 1, 2)));
 
         assertEquals(0, result.nonFiniteSamples());
         Film film = result.film();

@@ -19,6 +19,7 @@ import studio.engine.mesh.MeshShapes;
 import studio.engine.render.Film;
 import studio.engine.render.RenderResult;
 import studio.engine.render.RenderSettings;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.RegularSampler;
 import studio.engine.scene.Scene;
@@ -66,7 +67,7 @@ class MeshRenderTest {
         }
         Scene scene = new Scene(CAMERA, objects, List.of(new PointLight(new Vec3(3, 6, 4), Rgb.WHITE, 1, false)),
                 new Rgb(0.1, 0.1, 0.15), 0.1);
-        RenderResult result = Renderer.render(scene, new RenderSettings(SIZE, SIZE, new RegularSampler(1), 3, 1));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(SIZE, SIZE, new RegularSampler(1), 3, 1)));
         assertEquals(0, result.nonFiniteSamples());
         return result.film();
     }

@@ -17,6 +17,7 @@ import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
 import studio.engine.render.RenderResult;
 import studio.engine.render.RenderSettings;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.RegularSampler;
 import studio.engine.scene.Scene;
@@ -151,7 +152,7 @@ class StabilityIntersectionTest {
                         MaterialDefaults.of(MaterialKind.CHALK, new Rgb(0.5, 0.5, 0.5)))),
                 List.of(new PointLight(new Vec3(2, 3, 0), Rgb.WHITE, 1, false)), new Rgb(0, 0, 1), 0.1);
 
-        RenderResult result = Renderer.render(scene, new RenderSettings(5, 5, new RegularSampler(1), 4, 1));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(5, 5, new RegularSampler(1), 4, 1)));
 
         // The camera sits in the plane: every ray starts on it and leaves it, so every pixel is background.
         assertEquals(0, result.nonFiniteSamples());

@@ -20,6 +20,7 @@ import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
 import studio.engine.render.RenderResult;
 import studio.engine.render.RenderSettings;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.RegularSampler;
 import studio.engine.scene.Scene;
@@ -78,7 +79,7 @@ public final class MeshBenchmark {
                 new SceneObject(mesh, MaterialDefaults.of(MaterialKind.PLASTIC, new Rgb(0.8, 0.3, 0.2)))),
                 List.of(new PointLight(new Vec3(3, 6, 4), Rgb.WHITE, 1, false)), new Rgb(0.1, 0.1, 0.15), 0.1);
 
-        RenderResult result = Renderer.render(scene, new RenderSettings(WIDTH, HEIGHT, new RegularSampler(1), 4, 0));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(WIDTH, HEIGHT, new RegularSampler(1), 4, 0)));
         long rendered = System.nanoTime();
         System.out.printf("render: %dx%d, 1 spp, %d threads: %d ms (%,d rays, non-finite samples %d)%n", WIDTH, HEIGHT,
                 Runtime.getRuntime().availableProcessors(), ms(rendered - built), result.raysTraced(),

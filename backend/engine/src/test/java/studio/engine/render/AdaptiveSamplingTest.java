@@ -77,7 +77,7 @@ class AdaptiveSamplingTest {
     }
 
     private static long samplesOfOnePixel(Scene scene, String sampler, int max, double threshold) {
-        return Renderer.render(scene, settings(1, 1, Sampler.of(sampler, max), threshold, 1)).samplesTaken();
+        return Renderer.render(RenderRequest.of(scene, settings(1, 1, Sampler.of(sampler, max), threshold, 1))).samplesTaken();
     }
 
     @ParameterizedTest
@@ -87,8 +87,8 @@ class AdaptiveSamplingTest {
         Scene inside = flatSphere(new Camera(new Vec3(0, 0, 5), Vec3.ZERO, UP, 10));
         Scene outside = flatSphere(new Camera(new Vec3(0, 0, 5), new Vec3(0, 0, 10), UP, 10));
 
-        RenderResult a = Renderer.render(inside, settings(24, 16, Sampler.of(sampler, 64), 0.01, 2));
-        RenderResult b = Renderer.render(outside, settings(24, 16, Sampler.of(sampler, 64), 0.01, 2));
+        RenderResult a = Renderer.render(RenderRequest.of(inside, settings(24, 16, Sampler.of(sampler, 64), 0.01, 2)));
+        RenderResult b = Renderer.render(RenderRequest.of(outside, settings(24, 16, Sampler.of(sampler, 64), 0.01, 2)));
 
         assertEquals(minimum(sampler) * 24 * 16, a.samplesTaken());
         assertEquals(minimum(sampler), a.meanSamplesPerPixel(), 0.0);
@@ -143,8 +143,8 @@ class AdaptiveSamplingTest {
     void oneAndTwoThreadsGiveBitIdenticalImagesAndSampleCounts() {
         RenderSettings one = settings(100, 70, Sampler.of("sobol", 64), 0.05, 1);
 
-        RenderResult single = Renderer.render(MIXED, one);
-        RenderResult multi = Renderer.render(MIXED, one.withThreads(2));
+        RenderResult single = Renderer.render(RenderRequest.of(MIXED, one));
+        RenderResult multi = Renderer.render(RenderRequest.of(MIXED, one.withThreads(2)));
 
         assertEquals(single.samplesTaken(), multi.samplesTaken());
         assertEquals(single.raysTraced(), multi.raysTraced());
@@ -165,7 +165,7 @@ class AdaptiveSamplingTest {
         // unlit and flat: one ray per sample; the tiles' one-pixel rings would add about 10% more rays
         Scene scene = flatSphere(new Camera(new Vec3(0, 0, 4), Vec3.ZERO, UP, 40));
         for (int threads = 1; threads <= 3; threads++) {
-            RenderResult result = Renderer.render(scene, settings(150, 110, Sampler.of("sobol", 64), 0.05, threads));
+            RenderResult result = Renderer.render(RenderRequest.of(scene, settings(150, 110, Sampler.of("sobol", 64), 0.05, threads)));
             assertTrue(result.meanSamplesPerPixel() > ProgressiveSobolSampling.BASE, "the edge is refined");
             assertEquals(result.samplesTaken(), result.raysTraced(), threads + " threads");
         }
@@ -179,7 +179,7 @@ class AdaptiveSamplingTest {
                 List.of(new SceneObject(new Box(new Vec3(-50, 0, 0), new Vec3(100, 100, 1)),
                         MaterialDefaults.of(MaterialKind.FLAT, Rgb.WHITE))), List.of(), Rgb.BLACK, 0);
 
-        RenderResult result = Renderer.render(halfWhite, settings(8, 4, Sampler.of("sobol", 64), 0.05, 1));
+        RenderResult result = Renderer.render(RenderRequest.of(halfWhite, settings(8, 4, Sampler.of("sobol", 64), 0.05, 1)));
 
         // the refined pixels' halves then agree and their samples have no range: they stop at 2 x FIRST_JUDGED
         assertEquals(ProgressiveSobolSampling.BASE * 6 * 4 + 2 * ProgressiveSobolSampling.FIRST_JUDGED * 2 * 4,
@@ -193,8 +193,8 @@ class AdaptiveSamplingTest {
         // flat: every sample is the same; a 2 x 2 image's corner has 4 pixels around it, a column's pixel at most 3
         Scene inside = flatSphere(new Camera(new Vec3(0, 0, 5), Vec3.ZERO, UP, 10));
 
-        RenderResult square = Renderer.render(inside, settings(2, 2, Sampler.of("sobol", 64), 0.05, 1));
-        RenderResult column = Renderer.render(inside, settings(1, 5, Sampler.of("sobol", 64), 0.05, 1));
+        RenderResult square = Renderer.render(RenderRequest.of(inside, settings(2, 2, Sampler.of("sobol", 64), 0.05, 1)));
+        RenderResult column = Renderer.render(RenderRequest.of(inside, settings(1, 5, Sampler.of("sobol", 64), 0.05, 1)));
 
         assertEquals(4L * ProgressiveSobolSampling.BASE, square.samplesTaken());
         // judged on their own: the first judged samples, then halves of them that agree
@@ -206,8 +206,8 @@ class AdaptiveSamplingTest {
         for (String sampler : List.of("jittered", "sobol")) {
             RenderSettings withThreshold = settings(40, 30, Sampler.of(sampler, 1), 0.05, 2);
 
-            RenderResult adaptive = Renderer.render(MIXED, withThreshold);
-            RenderResult fixed = Renderer.render(MIXED, withThreshold.withAdaptiveThreshold(0));
+            RenderResult adaptive = Renderer.render(RenderRequest.of(MIXED, withThreshold));
+            RenderResult fixed = Renderer.render(RenderRequest.of(MIXED, withThreshold.withAdaptiveThreshold(0)));
 
             assertFalse(withThreshold.adaptive(), sampler);
             assertEquals(fixed.samplesTaken(), adaptive.samplesTaken(), sampler);
@@ -219,7 +219,7 @@ class AdaptiveSamplingTest {
 
     @Test
     void withoutAdaptiveSamplingEveryPixelTakesEverySample() {
-        RenderResult result = Renderer.render(MIXED, settings(30, 20, new JitteredSampler(9), 0, 2));
+        RenderResult result = Renderer.render(RenderRequest.of(MIXED, settings(30, 20, new JitteredSampler(9), 0, 2)));
 
         assertEquals(9L * 30 * 20, result.samplesTaken());
         assertEquals(9, result.meanSamplesPerPixel(), 0.0);
@@ -234,10 +234,10 @@ class AdaptiveSamplingTest {
     @ValueSource(strings = {"jittered", "sobol"})
     void adaptiveImageConvergesToTheNonAdaptiveHighSampleImage(String sampler) {
         int w = 64, h = 48;
-        Film reference = Renderer.render(MIXED, tracingAll(w, h, new JitteredSampler(1024), 0)).film();
+        Film reference = Renderer.render(RenderRequest.of(MIXED, tracingAll(w, h, new JitteredSampler(1024), 0))).film();
 
-        RenderResult tight = Renderer.render(MIXED, tracingAll(w, h, Sampler.of(sampler, 256), 0.01));
-        RenderResult loose = Renderer.render(MIXED, tracingAll(w, h, Sampler.of(sampler, 256), 0.1));
+        RenderResult tight = Renderer.render(RenderRequest.of(MIXED, tracingAll(w, h, Sampler.of(sampler, 256), 0.01)));
+        RenderResult loose = Renderer.render(RenderRequest.of(MIXED, tracingAll(w, h, Sampler.of(sampler, 256), 0.1)));
 
         double tightError = rmse(reference, tight.film()), looseError = rmse(reference, loose.film());
         assertTrue(tightError <= 0.01, sampler + ": RMSE " + tightError);

@@ -127,10 +127,10 @@ class BranchRouletteTest {
     @Test
     void aGlassRenderIsTheSameToTheBitOnOneThreadAndOnTwo() {
         Scene scene = MixedScene.SCENE;
-        Film one = Renderer.render(scene, new RenderSettings(48, 32, new JitteredSampler(8), 8, 1, 3L,
-                RenderSettings.DEFAULT_MIN_PATH_WEIGHT)).film();
-        Film two = Renderer.render(scene, new RenderSettings(48, 32, new JitteredSampler(8), 8, 2, 3L,
-                RenderSettings.DEFAULT_MIN_PATH_WEIGHT)).film();
+        Film one = Renderer.render(RenderRequest.of(scene, new RenderSettings(48, 32, new JitteredSampler(8), 8, 1, 3L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT))).film();
+        Film two = Renderer.render(RenderRequest.of(scene, new RenderSettings(48, 32, new JitteredSampler(8), 8, 2, 3L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT))).film();
         for (int y = 0; y < 32; y++) {
             for (int x = 0; x < 48; x++) {
                 for (int c = 0; c < 3; c++) {

@@ -123,8 +123,8 @@ class GlassOpticsTest {
             }
         }
 
-        RenderResult result = Renderer.render(scene, new RenderSettings(128, 128, new JitteredSampler(4), 12, 2,
-                1L, 0));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(128, 128, new JitteredSampler(4), 12, 2,
+                1L, 0)));
 
         assertEquals(0, result.nonFiniteSamples());
         Film film = result.film();
@@ -166,7 +166,7 @@ class GlassOpticsTest {
                         new Rgb(0.8, 0.8, 0.8)))),
                 List.of(new PointLight(new Vec3(2, 6, 3), Rgb.WHITE, 1, false)), new Rgb(0.2, 0.3, 0.5), 0.1);
 
-        RenderResult result = Renderer.render(scene, new RenderSettings(128, 128, new JitteredSampler(4), 12, 2));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(128, 128, new JitteredSampler(4), 12, 2)));
 
         assertEquals(0, result.nonFiniteSamples());
     }

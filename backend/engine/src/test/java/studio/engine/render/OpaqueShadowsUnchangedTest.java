@@ -57,7 +57,7 @@ class OpaqueShadowsUnchangedTest {
         RenderSettings settings = new RenderSettings(64, 48, Sampler.of("jittered", 4), 4, 2, 42L,
                 RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
 
-        RenderResult result = Renderer.render(scene(), settings);
+        RenderResult result = Renderer.render(RenderRequest.of(scene(), settings));
 
         assertEquals("58181f3cfee8cf6e", SampledImagesUnchangedTest.fingerprint(result.film()));
     }

@@ -36,13 +36,13 @@ class PixelLatticeTest {
         // an odd size, so the last row and column of blocks are partial
         for (int samples : new int[] {1, 4}) {
             RenderSettings settings = new RenderSettings(61, 45, new JitteredSampler(samples), 6, 2, 7, 1.0 / 1024, 0);
-            Film whole = Renderer.render(SCENE, settings).film();
+            Film whole = Renderer.render(RenderRequest.of(SCENE, settings)).film();
 
             Film mosaic = new Film(61, 45);
             PixelLattice[] passes = {new PixelLattice(8, 4), new PixelLattice(4, 0), new PixelLattice(2, 0), PixelLattice.ALL};
             PixelLattice before = null;
             for (PixelLattice pass : passes) {
-                Renderer.render(SCENE, settings, mosaic, pass, before, RenderListener.NONE, () -> false);
+                Renderer.render(RenderRequest.of(SCENE, settings).into(mosaic, pass, before));
                 before = pass;
             }
 
@@ -63,8 +63,8 @@ class PixelLatticeTest {
         Film film = new Film(40, 30);
         PixelLattice coarse = new PixelLattice(8, 4), next = new PixelLattice(4, 0);
 
-        RenderResult first = Renderer.render(SCENE, settings, film, coarse, null, RenderListener.NONE, () -> false);
-        RenderResult second = Renderer.render(SCENE, settings, film, next, coarse, RenderListener.NONE, () -> false);
+        RenderResult first = Renderer.render(RenderRequest.of(SCENE, settings).into(film, coarse, null));
+        RenderResult second = Renderer.render(RenderRequest.of(SCENE, settings).into(film, next, coarse));
 
         assertEquals(5L * 4, first.samplesTaken(), "one pixel of each 8x8 block");
         assertEquals(10L * 8 - 5 * 4, second.samplesTaken(), "every fourth pixel but those already taken");
@@ -106,10 +106,8 @@ class PixelLatticeTest {
     @Test
     void adaptiveSamplingAndAWrongFilmAreRefused() {
         RenderSettings adaptive = new RenderSettings(16, 16, new SobolSampler(16), 4, 1, 1, 1.0 / 1024, 0.05);
-        assertThrows(IllegalArgumentException.class, () -> Renderer.render(SCENE, adaptive, new Film(16, 16),
-                new PixelLattice(2, 0), null, RenderListener.NONE, () -> false));
+        assertThrows(IllegalArgumentException.class, () -> Renderer.render(RenderRequest.of(SCENE, adaptive).into(new Film(16, 16), new PixelLattice(2, 0), null)));
         RenderSettings fixed = adaptive.withAdaptiveThreshold(0);
-        assertThrows(IllegalArgumentException.class, () -> Renderer.render(SCENE, fixed, new Film(8, 16),
-                PixelLattice.ALL, null, RenderListener.NONE, () -> false));
+        assertThrows(IllegalArgumentException.class, () -> Renderer.render(RenderRequest.of(SCENE, fixed).into(new Film(8, 16), PixelLattice.ALL, null)));
     }
 }

@@ -65,8 +65,7 @@ class PixelPathsTest {
     }
 
     private static RenderResult render(Scene scene, Film film, PixelPaths paths) {
-        return Renderer.render(scene, oneSample(), film, PixelLattice.ALL, null, paths, RenderListener.NONE,
-                () -> false);
+        return Renderer.render(RenderRequest.of(scene, oneSample()).into(film, PixelLattice.ALL, null).recording(paths));
     }
 
     private static int firstOf(Scene scene, MaterialKind kind) {
@@ -93,7 +92,7 @@ class PixelPathsTest {
         int kept = paths.knownCount();
         RenderResult again = render(after, film, paths);
 
-        Film fresh = Renderer.render(after, oneSample()).film();
+        Film fresh = Renderer.render(RenderRequest.of(after, oneSample())).film();
         for (int y = 0; y < HEIGHT; y++) {
             for (int x = 0; x < WIDTH; x++) {
                 for (int c = 0; c < 3; c++) {
@@ -142,7 +141,7 @@ class PixelPathsTest {
         render(scene, film, paths);
         RenderResult again = render(after, film, paths);
         assertTrue(again.samplesTaken() < WIDTH * HEIGHT / 10, "nearly every pixel kept: " + again.samplesTaken());
-        assertNotEquals(SampledImagesUnchangedTest.fingerprint(Renderer.render(after, oneSample()).film()),
+        assertNotEquals(SampledImagesUnchangedTest.fingerprint(Renderer.render(RenderRequest.of(after, oneSample())).film()),
                 SampledImagesUnchangedTest.fingerprint(film));
     }
 
@@ -154,10 +153,10 @@ class PixelPathsTest {
         PixelLattice before = null;
         for (PixelLattice lattice : List.of(new PixelLattice(8, 4), new PixelLattice(4, 0), new PixelLattice(2, 0),
                 PixelLattice.ALL)) {
-            Renderer.render(scene, oneSample(), film, lattice, before, paths, RenderListener.NONE, () -> false);
+            Renderer.render(RenderRequest.of(scene, oneSample()).into(film, lattice, before).recording(paths));
             before = lattice;
         }
-        assertEquals(SampledImagesUnchangedTest.fingerprint(Renderer.render(scene, oneSample()).film()),
+        assertEquals(SampledImagesUnchangedTest.fingerprint(Renderer.render(RenderRequest.of(scene, oneSample())).film()),
                 SampledImagesUnchangedTest.fingerprint(film));
         assertTrue(paths.knownCount() > WIDTH * HEIGHT * 9 / 10, "known " + paths.knownCount());
     }
@@ -183,8 +182,7 @@ class PixelPathsTest {
         RenderSettings four = new RenderSettings(WIDTH, HEIGHT, Sampler.of("sobol", 4), 4, 2, 42L,
                 RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
         PixelPaths fourSamples = new PixelPaths(WIDTH, HEIGHT);
-        Renderer.render(opaque, four, new Film(WIDTH, HEIGHT), PixelLattice.ALL, null, fourSamples,
-                RenderListener.NONE, () -> false);
+        Renderer.render(RenderRequest.of(opaque, four).into(new Film(WIDTH, HEIGHT), PixelLattice.ALL, null).recording(fourSamples));
         assertEquals(0, fourSamples.knownCount());
     }
 
@@ -243,11 +241,11 @@ class PixelPathsTest {
         PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
         render(a, film, paths);
         forget(paths, a, b);
-        Renderer.render(b, oneSample(), film, new PixelLattice(8, 4), null, paths, RenderListener.NONE, () -> false);
+        Renderer.render(RenderRequest.of(b, oneSample()).into(film, new PixelLattice(8, 4), null).recording(paths));
         forget(paths, b, c);
         forget(paths, c, d);
         RenderResult last = render(d, film, paths);
-        assertSameFilm(Renderer.render(d, oneSample()).film(), film);
+        assertSameFilm(Renderer.render(RenderRequest.of(d, oneSample())).film(), film);
         assertTrue(last.samplesTaken() < WIDTH * HEIGHT / 4, "rendered " + last.samplesTaken());
     }
 
@@ -333,14 +331,13 @@ class PixelPathsTest {
                     .get(random.nextInt(3));
             java.util.concurrent.atomic.AtomicInteger asked = new java.util.concurrent.atomic.AtomicInteger();
             try {
-                rendered += (int) Renderer.render(scene, oneSample(), film, lattice, null, paths, RenderListener.NONE,
-                        () -> asked.incrementAndGet() > tiles).samplesTaken();
+                rendered += (int) Renderer.render(RenderRequest.of(scene, oneSample()).into(film, lattice, null).recording(paths).cancelledWhen(() -> asked.incrementAndGet() > tiles)).samplesTaken();
             } catch (RenderCancelledException e) {
                 // cut short: the pixels it finished are known, the others not
             }
             if (step % 8 == 7) {
                 rendered += (int) render(scene, film, paths).samplesTaken();
-                assertSameFilm(Renderer.render(scene, oneSample()).film(), film);
+                assertSameFilm(Renderer.render(RenderRequest.of(scene, oneSample())).film(), film);
             }
         }
         assertTrue(rendered < 40 * WIDTH * HEIGHT / 2, "most pixels kept over the edits: rendered " + rendered);

@@ -29,9 +29,9 @@ class RendererTest {
 
     @Test
     void oneAndTwoThreadsGiveBitIdenticalFilms() {
-        RenderResult single = Renderer.render(SCENE, SETTINGS);
-        RenderResult multi = Renderer.render(SCENE, SETTINGS.withThreads(2));
-        RenderResult again = Renderer.render(SCENE, SETTINGS.withThreads(3));
+        RenderResult single = Renderer.render(RenderRequest.of(SCENE, SETTINGS));
+        RenderResult multi = Renderer.render(RenderRequest.of(SCENE, SETTINGS.withThreads(2)));
+        RenderResult again = Renderer.render(RenderRequest.of(SCENE, SETTINGS.withThreads(3)));
 
         assertEquals(0, single.nonFiniteSamples());
         assertBitIdentical(single.film(), multi.film());
@@ -44,7 +44,7 @@ class RendererTest {
     @Test
     void cpuTimeIsTheRenderThreadsOwn() {
         for (int threads : new int[] {1, 2}) {
-            RenderResult result = Renderer.render(SCENE, SETTINGS.withThreads(threads));
+            RenderResult result = Renderer.render(RenderRequest.of(SCENE, SETTINGS.withThreads(threads)));
             assertTrue(result.cpuNanos() > 0, "cpu " + result.cpuNanos());
             // thread clocks tick a little coarser than the wall clock: a millisecond of slack per thread
             assertTrue(result.cpuNanos() <= threads * (result.elapsedNanos() + 1_000_000L),
@@ -54,9 +54,9 @@ class RendererTest {
 
     @Test
     void anotherSeedGivesAnotherJitteredImage() {
-        Film a = Renderer.render(SCENE, SETTINGS).film();
-        Film b = Renderer.render(SCENE, new RenderSettings(WIDTH, HEIGHT, new JitteredSampler(4), 6, 1, 43L,
-                RenderSettings.DEFAULT_MIN_PATH_WEIGHT)).film();
+        Film a = Renderer.render(RenderRequest.of(SCENE, SETTINGS)).film();
+        Film b = Renderer.render(RenderRequest.of(SCENE, new RenderSettings(WIDTH, HEIGHT, new JitteredSampler(4), 6, 1, 43L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT))).film();
 
         int differing = 0;
         for (int y = 0; y < HEIGHT; y++) {
@@ -78,7 +78,7 @@ class RendererTest {
             };
 
             assertThrows(RenderCancelledException.class,
-                    () -> Renderer.render(SCENE, SETTINGS.withThreads(threads), listener, cancelled::get));
+                    () -> Renderer.render(RenderRequest.of(SCENE, SETTINGS.withThreads(threads)).heardBy(listener).cancelledWhen(cancelled::get)));
 
             assertTrue(finished.get() >= 1 && finished.get() < TILES, threads + " threads finished " + finished);
         }
@@ -88,8 +88,7 @@ class RendererTest {
     void cancelledBeforeStartingRendersNoTile() {
         AtomicInteger finished = new AtomicInteger();
 
-        assertThrows(RenderCancelledException.class, () -> Renderer.render(SCENE, SETTINGS.withThreads(2),
-                (film, tile, done, total) -> finished.incrementAndGet(), () -> true));
+        assertThrows(RenderCancelledException.class, () -> Renderer.render(RenderRequest.of(SCENE, SETTINGS.withThreads(2)).heardBy((film, tile, done, total) -> finished.incrementAndGet()).cancelledWhen(() -> true)));
 
         assertEquals(0, finished.get());
     }
@@ -113,7 +112,7 @@ class RendererTest {
         RenderListener listener = (film, tile, done, total) -> reports.add(new Report(tile, done, total,
                 snapshot(film, tile)));
 
-        RenderResult result = Renderer.render(SCENE, SETTINGS.withThreads(2), listener, () -> false);
+        RenderResult result = Renderer.render(RenderRequest.of(SCENE, SETTINGS.withThreads(2)).heardBy(listener));
 
         assertEquals(TILES, reports.size());
         List<Integer> dones = new ArrayList<>();

@@ -61,7 +61,7 @@ class SampledImagesUnchangedTest {
     void rendersTheRecordedImage(String sampler, int samples, double threshold, String fingerprint, long taken) {
         RenderSettings settings = new RenderSettings(WIDTH, HEIGHT, Sampler.of(sampler, samples), 6, 1, 42L,
                 RenderSettings.DEFAULT_MIN_PATH_WEIGHT, threshold);
-        RenderResult result = Renderer.render(SCENE, settings);
+        RenderResult result = Renderer.render(RenderRequest.of(SCENE, settings));
 
         long pixels = (long) WIDTH * HEIGHT;
         if (threshold > 0) { // the strategy's decisions are exercised: some pixels stop early, some go on

@@ -114,7 +114,7 @@ class SelfIntersectionTest {
                 new SceneObject(new Sphere(center, 1), SPHERE_MATERIAL)),
                 List.of(new PointLight(light, Rgb.WHITE, 1, false)), new Rgb(0, 0, 0.5), AMBIENT);
 
-        RenderResult result = Renderer.render(scene, new RenderSettings(SIZE, SIZE, new RegularSampler(1), 1, 2));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(SIZE, SIZE, new RegularSampler(1), 1, 2)));
 
         assertEquals(0, result.nonFiniteSamples());
         int facing = 0, dark = 0;
@@ -163,7 +163,7 @@ class SelfIntersectionTest {
                         new SceneObject(new Sphere(new Vec3(0, 1, 0).times(s).plus(shift), s), SPHERE_MATERIAL)),
                 List.of(new PointLight(new Vec3(3, 6, 2).times(s).plus(shift), Rgb.WHITE, 1, false)),
                 new Rgb(0, 0, 0.5), AMBIENT);
-        RenderResult result = Renderer.render(scene, new RenderSettings(SIZE, SIZE, new RegularSampler(1), 1, 2));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(SIZE, SIZE, new RegularSampler(1), 1, 2)));
         assertEquals(0, result.nonFiniteSamples());
         return result.film();
     }

@@ -84,8 +84,7 @@ class StopWithinTileTest {
             return System.nanoTime() - stopAt > 0;
         };
 
-        assertThrows(RenderCancelledException.class, () -> Renderer.render(HALL_OF_GLASS,
-                settings(16, new JitteredSampler(256), 0, 1), RenderListener.NONE, cancelled));
+        assertThrows(RenderCancelledException.class, () -> Renderer.render(RenderRequest.of(HALL_OF_GLASS, settings(16, new JitteredSampler(256), 0, 1)).cancelledWhen(cancelled)));
 
         long millis = (System.nanoTime() - start) / 1_000_000;
         // one tile: asked before it, then at most once per poll interval while it runs
@@ -99,8 +98,7 @@ class StopWithinTileTest {
 
     private static void assertStopsWithinASecond(RenderSettings settings, long cancelAfterMillis) {
         long stopAt = System.nanoTime() + cancelAfterMillis * 1_000_000;
-        assertThrows(RenderCancelledException.class, () -> Renderer.render(HALL_OF_GLASS, settings,
-                RenderListener.NONE, () -> System.nanoTime() - stopAt > 0));
+        assertThrows(RenderCancelledException.class, () -> Renderer.render(RenderRequest.of(HALL_OF_GLASS, settings).cancelledWhen(() -> System.nanoTime() - stopAt > 0)));
         long late = (System.nanoTime() - stopAt) / 1_000_000;
         assertTrue(late < STOP_MILLIS, settings.sampler() + " at threshold " + settings.adaptiveThreshold()
                 + " on " + settings.threads() + " threads: the render ended " + late + " ms after its cancel");

@@ -45,7 +45,7 @@ class TileRendererTest {
                 new RenderSettings(70, 50, new JitteredSampler(16), 6, 2, 11, 1.0 / 1024, 0.05), // batch-adaptive
                 new RenderSettings(70, 50, new SobolSampler(16), 6, 2, 11, 1.0 / 1024, 0.05));   // progressive sobol
         for (RenderSettings settings : strategies) {
-            RenderResult whole = Renderer.render(SCENE, settings);
+            RenderResult whole = Renderer.render(RenderRequest.of(SCENE, settings));
 
             List<TileRect> tiles = new ArrayList<>(Renderer.tiles(70, 50, 16));
             Collections.shuffle(tiles, new Random(5));
@@ -76,7 +76,7 @@ class TileRendererTest {
             for (RenderSettings settings : List.of(
                     new RenderSettings(70, 50, new JitteredSampler(16), 6, 2, 11, 1.0 / 1024, threshold),
                     new RenderSettings(70, 50, new SobolSampler(16), 6, 2, 11, 1.0 / 1024, threshold))) {
-                RenderResult whole = Renderer.render(SCENE, settings); // 16-pixel tiles
+                RenderResult whole = Renderer.render(RenderRequest.of(SCENE, settings)); // 16-pixel tiles
                 Film apart = new Film(70, 50);
                 for (TileRect tile : Renderer.tiles(70, 50, 24)) {
                     new TileRenderer(SCENE, settings).render(apart, tile);
@@ -96,7 +96,7 @@ class TileRendererTest {
     @Test
     void aTileRenderedIntoAFilmOfItsOwnHasTheWholeRendersPixels() {
         RenderSettings settings = new RenderSettings(70, 50, new SobolSampler(16), 6, 2, 11, 1.0 / 1024, 0.05);
-        RenderResult whole = Renderer.render(SCENE, settings);
+        RenderResult whole = Renderer.render(RenderRequest.of(SCENE, settings));
         for (TileRect tile : Renderer.tiles(70, 50, 16)) {
             Film own = Film.ofTile(tile);
             new TileRenderer(SCENE, settings).render(own, tile);

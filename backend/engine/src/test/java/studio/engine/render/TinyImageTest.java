@@ -81,6 +81,6 @@ class TinyImageTest {
         Scene scene = new Scene(CAMERA,
                 List.of(new SceneObject(new Sphere(Vec3.ZERO, radius), MaterialDefaults.of(MaterialKind.FLAT, SPHERE))),
                 List.of(), BACKGROUND, 0.1);
-        return Renderer.render(scene, new RenderSettings(w, h, new RegularSampler(1), 1, 1));
+        return Renderer.render(RenderRequest.of(scene, new RenderSettings(w, h, new RegularSampler(1), 1, 1)));
     }
 }

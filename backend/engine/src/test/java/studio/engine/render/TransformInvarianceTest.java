@@ -87,8 +87,7 @@ class TransformInvarianceTest {
         Camera camera = new Camera(p.apply(new Vec3(0.5, 2.6, 5.5)), p.apply(new Vec3(0, 0.6, -0.3)),
                 new Vec3(0, 1, 0), 50);
         Scene scene = new Scene(camera, objects, lights, new Rgb(0.05, 0.06, 0.08), 0.08);
-        RenderResult result = Renderer.render(scene,
-                new RenderSettings(SIZE, SIZE, new RegularSampler(1), 8, 2, 0, 0));
+        RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(SIZE, SIZE, new RegularSampler(1), 8, 2, 0, 0)));
         assertEquals(0, result.nonFiniteSamples());
         return result.film();
     }

@@ -22,6 +22,7 @@ import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.MeshShapes;
 import studio.engine.render.Film;
 import studio.engine.render.RenderSettings;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.JitteredSampler;
 
@@ -58,10 +59,10 @@ class MeshLightBuffersTest {
     void aSceneRendersTheSamePixelsWithAndWithoutLightBuffers() {
         Camera camera = new Camera(new Vec3(0, 3.2, 7.5), new Vec3(0, 1.4, 0), new Vec3(0, 1, 0), 40);
         RenderSettings settings = new RenderSettings(160, 120, new JitteredSampler(4), 6, 2);
-        Film plain = Renderer.render(new Scene(camera, objects(), LIGHTS, new Rgb(0.1, 0.1, 0.12), 0.07), settings).film();
+        Film plain = Renderer.render(RenderRequest.of(new Scene(camera, objects(), LIGHTS, new Rgb(0.1, 0.1, 0.12), 0.07), settings)).film();
         List<SceneObject> lit = MeshLightBuffers.forRender(objects(), LIGHTS, settings.cameraSamples(), MemoryGate.UNLIMITED);
         assertTrue(((TriangleMesh) lit.get(0).shape()).lightBufferCount() > 0);
-        Film buffered = Renderer.render(new Scene(camera, lit, LIGHTS, new Rgb(0.1, 0.1, 0.12), 0.07), settings).film();
+        Film buffered = Renderer.render(RenderRequest.of(new Scene(camera, lit, LIGHTS, new Rgb(0.1, 0.1, 0.12), 0.07), settings)).film();
         int differing = 0;
         for (int y = 0; y < 120; y++) {
             for (int x = 0; x < 160; x++) {

@@ -19,6 +19,7 @@ import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
 import studio.engine.render.Film;
 import studio.engine.render.RenderSettings;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.RegularSampler;
 
@@ -69,8 +70,8 @@ class SceneTieRuleTest {
         Scene scene = scene(PLANE, BOX);
         RenderSettings settings = new RenderSettings(SIZE, SIZE, new RegularSampler(1), 2, 1);
 
-        Film single = Renderer.render(scene, settings).film();
-        Film multi = Renderer.render(scene, settings.withThreads(2)).film();
+        Film single = Renderer.render(RenderRequest.of(scene, settings)).film();
+        Film multi = Renderer.render(RenderRequest.of(scene, settings.withThreads(2))).film();
 
         int blue = 0;
         for (int y = 0; y < SIZE; y++) {

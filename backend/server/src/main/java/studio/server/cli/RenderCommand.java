@@ -14,6 +14,7 @@ import java.util.Locale;
 import java.util.Map;
 
 import studio.engine.render.RenderResult;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.render.ImageFiles;
 import studio.server.scene.compiling.CompiledScene;
@@ -77,8 +78,8 @@ public final class RenderCommand {
         }
 
         ProgressBar progress = options.quiet ? null : ProgressBar.forTerminal(err);
-        RenderResult result = Renderer.render(compiled.scene(), compiled.settings(),
-                progress != null ? progress::tileFinished : (film, tile, done, total) -> { }, () -> false);
+        RenderRequest request = compiled.request();
+        RenderResult result = Renderer.render(progress != null ? request.heardBy(progress::tileFinished) : request);
         if (progress != null) {
             progress.finish();
         }

@@ -47,7 +47,7 @@ public interface JobCluster {
      */
     default RenderResult render(String id, CompiledScene scene, RenderBudget budget, RenderListener listener,
                                 BooleanSupplier cancelled) {
-        return budget.render(scene, listener, cancelled);
+        return budget.render(scene.request().heardBy(listener).cancelledWhen(cancelled));
     }
 
     /**

@@ -77,7 +77,9 @@ final class RenderJob implements Runnable {
     private volatile long lastSeenNanos = System.nanoTime();
 
     RenderJob(String id, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory) {
-        this(id, "", scene, budget, memory, budget::render, () -> null, Ending.NONE);
+        this(id, "", scene, budget, memory,
+                (compiled, listener, cancelled) -> budget.render(compiled.request().heardBy(listener).cancelledWhen(cancelled)),
+                () -> null, Ending.NONE);
     }
 
     RenderJob(String id, String principal, CompiledScene scene, RenderBudget budget, MemoryBudget.Reservation memory,

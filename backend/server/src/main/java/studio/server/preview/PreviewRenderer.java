@@ -103,8 +103,8 @@ final class PreviewRenderer {
      */
     byte[] render(CompiledScene scene, PreviewPass pass, Film film, PixelPaths paths, long revision,
                   long receivedNanos, BooleanSupplier superseded) {
-        RenderResult rendered = budget.render(passScene(scene, pass.settings()), film, pass.pixels(), pass.except(),
-                paths, superseded);
+        RenderResult rendered = budget.render(passScene(scene, pass.settings()).request()
+                .into(film, pass.pixels(), pass.except()).recording(paths).cancelledWhen(superseded));
         budget.metrics().rendered(RenderMetrics.Kind.LIVE_VIEW, rendered);
         try {
             ByteArrayOutputStream image = new ByteArrayOutputStream();

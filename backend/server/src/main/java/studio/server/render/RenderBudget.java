@@ -4,12 +4,9 @@ import java.time.Duration;
 import java.util.function.BooleanSupplier;
 import java.util.function.Function;
 
-import studio.engine.render.Film;
-import studio.engine.render.PixelLattice;
-import studio.engine.render.PixelPaths;
 import studio.engine.render.RenderCancelledException;
-import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.format.InvalidSceneException;
@@ -90,37 +87,13 @@ public final class RenderBudget {
     }
 
     /**
-     * Renders within the time budget.
+     * Renders what {@code request} asks (see {@link Renderer#render}) within the time budget.
      *
-     * @throws RenderCancelledException    if {@code cancelled} turned true first
+     * @throws RenderCancelledException    if the request's {@code cancelled} turned true first
      * @throws RenderTimeExceededException if the budget ran out first
      */
-    public RenderResult render(CompiledScene scene, RenderListener listener, BooleanSupplier cancelled) {
-        return withinTime(cancelled, stop -> Renderer.render(scene.scene(), scene.settings(), listener, stop));
-    }
-
-    /**
-     * Renders the pixels of {@code pixels} not on {@code except} into {@code film} (see
-     * {@link Renderer#render(studio.engine.scene.Scene, studio.engine.render.RenderSettings, Film,
-     * PixelLattice, PixelLattice, RenderListener, BooleanSupplier)}) within the time budget.
-     *
-     * @throws RenderCancelledException    if {@code cancelled} turned true first
-     * @throws RenderTimeExceededException if the budget ran out first
-     */
-    public RenderResult render(CompiledScene scene, Film film, PixelLattice pixels, PixelLattice except,
-                               BooleanSupplier cancelled) {
-        return render(scene, film, pixels, except, null, cancelled);
-    }
-
-    /**
-     * {@link #render(CompiledScene, Film, PixelLattice, PixelLattice, BooleanSupplier)} leaving out
-     * the pixels known to {@code paths} (null: none) and recording the others' paths there (see
-     * {@link studio.engine.render.PixelPaths}).
-     */
-    public RenderResult render(CompiledScene scene, Film film, PixelLattice pixels, PixelLattice except,
-                               PixelPaths paths, BooleanSupplier cancelled) {
-        return withinTime(cancelled, stop -> Renderer.render(scene.scene(), scene.settings(), film, pixels, except,
-                paths, RenderListener.NONE, stop));
+    public RenderResult render(RenderRequest request) {
+        return withinTime(request.cancelled(), stop -> Renderer.render(request.cancelledWhen(stop)));
     }
 
     /**

@@ -206,7 +206,7 @@ public final class RenderService implements Drainable, AutoCloseable {
                 if (cancelRequested.get()) {
                     throw new RenderCancelledException();
                 }
-                RenderResult rendered = budget.render(scene, RenderListener.NONE, this::stopRequested);
+                RenderResult rendered = budget.render(scene.request().cancelledWhen(this::stopRequested));
                 budget.metrics().rendered(RenderMetrics.Kind.SYNC, rendered);
                 byte[] bytes = ImageFiles.encode(rendered.film(), scene.format(), scene.quality());
                 image = new RenderedImage(bytes, scene.mediaType(), scene.fileName(), scene.settings().width(),

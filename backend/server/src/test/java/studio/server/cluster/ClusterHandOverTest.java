@@ -13,6 +13,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.Await;
 import studio.server.job.JobRequest;
@@ -44,7 +45,7 @@ class ClusterHandOverTest {
     static void renderOnOneMachine() {
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator)
                 .compile(SCENE.getBytes(StandardCharsets.UTF_8));
-        oneMachine = ImageFiles.encode(Renderer.render(scene.scene(), scene.settings()).film(), scene.format(),
+        oneMachine = ImageFiles.encode(Renderer.render(RenderRequest.of(scene.scene(), scene.settings())).film(), scene.format(),
                 scene.quality());
     }
 

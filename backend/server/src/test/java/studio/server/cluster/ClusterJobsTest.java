@@ -20,6 +20,7 @@ import org.junit.jupiter.api.Test;
 
 import com.hazelcast.map.MapInterceptor;
 
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.Await;
 import studio.server.job.JobRequest;
@@ -61,7 +62,7 @@ class ClusterJobsTest {
     static void renderOnOneMachine() {
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator)
                 .compile(SCENE.getBytes(StandardCharsets.UTF_8));
-        oneMachine = ImageFiles.encode(Renderer.render(scene.scene(), scene.settings()).film(), scene.format(),
+        oneMachine = ImageFiles.encode(Renderer.render(RenderRequest.of(scene.scene(), scene.settings())).film(), scene.format(),
                 scene.quality());
     }
 

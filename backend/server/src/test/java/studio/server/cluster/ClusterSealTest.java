@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Test;
 
 import com.hazelcast.map.IMap;
 
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.Await;
 import studio.server.job.JobRequest;
@@ -40,7 +41,7 @@ class ClusterSealTest {
     static void renderOnOneMachine() {
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator)
                 .compile(ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8));
-        oneMachine = ImageFiles.encode(Renderer.render(scene.scene(), scene.settings()).film(), scene.format(),
+        oneMachine = ImageFiles.encode(Renderer.render(RenderRequest.of(scene.scene(), scene.settings())).film(), scene.format(),
                 scene.quality());
     }
 

@@ -8,6 +8,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 import studio.engine.render.Film;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.render.TileRect;
 import studio.engine.render.TileRenderer;
@@ -41,7 +42,7 @@ class ClusterTileSizeTest {
     void largeTilesRenderOneMachinesPixels(String render) {
         CompiledScene scene = scene(render);
         int width = scene.settings().width(), height = scene.settings().height();
-        Film oneMachine = Renderer.render(scene.scene(), scene.settings()).film();
+        Film oneMachine = Renderer.render(RenderRequest.of(scene.scene(), scene.settings())).film();
         TileRenderer worker = new TileRenderer(scene.scene(), scene.settings());
         for (TileRect tile : Renderer.tiles(width, height, ClusterJobs.LARGE_TILE)) {
             Film film = Film.ofTile(tile);

@@ -17,6 +17,7 @@ import studio.engine.mesh.MeshShapes;
 import studio.engine.mesh.ObjWriter;
 import studio.engine.render.Film;
 import studio.engine.render.RenderSettings;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.sampler.Sampler;
 import studio.engine.scene.Scene;
@@ -75,8 +76,8 @@ class SceneReuseTest {
 
     /** Every bit of every pixel of a small render. */
     private static double[] pixels(Scene scene) {
-        Film film = Renderer.render(scene, new RenderSettings(48, 36, Sampler.of("jittered", 4), 4, 1, 7L,
-                RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0)).film();
+        Film film = Renderer.render(RenderRequest.of(scene, new RenderSettings(48, 36, Sampler.of("jittered", 4), 4, 1, 7L,
+                RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0))).film();
         double[] all = new double[48 * 36 * 3];
         for (int y = 0, k = 0; y < 36; y++) {
             for (int x = 0; x < 48; x++) {

@@ -18,6 +18,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.RenderResult;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.SceneCompiler;
@@ -90,7 +91,7 @@ class ReferenceRenderTest {
         int samples = full.settings().sampler().samplesPerPixel();
         CompiledScene small = compiler.compile(json, Map.of("image.width", WIDTH, "image.height", height,
                 "render.samples", samples > MAX_SAMPLES ? MAX_SAMPLES : samples), 0);
-        RenderResult result = Renderer.render(small.scene(), small.settings());
+        RenderResult result = Renderer.render(RenderRequest.of(small.scene(), small.settings()));
         assertEquals(0, result.nonFiniteSamples(), "NaN or infinite samples in " + file);
         return ImageEncoder.toImage(result.film());
     }

@@ -1,5 +1,6 @@
 package studio.server.scene.compiling;
 
+import studio.engine.render.RenderRequest;
 import studio.engine.render.RenderSettings;
 import studio.engine.scene.Scene;
 
@@ -18,5 +19,10 @@ public record CompiledScene(Scene scene, RenderSettings settings, String format,
 
     public String mediaType() {
         return format.equals("jpg") ? "image/jpeg" : "image/png";
+    }
+
+    /** The whole render of this scene with its settings, into a new film (see {@link RenderRequest}). */
+    public RenderRequest request() {
+        return RenderRequest.of(scene, settings);
     }
 }
