@@ -18,6 +18,7 @@ import studio.bench.ResolvedScene;
 import studio.server.render.ImageFiles;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.scene.reading.LazyValidation;
@@ -72,7 +73,7 @@ public final class BenchCommand {
                 try {
                     byte[] json = Files.readAllBytes(file);
                     MeshFiles meshes = MeshFiles.in(file.toAbsolutePath().getParent());
-                    CompiledScene compiled = compiler.compile(json, options.overrides(), 0, meshes);
+                    CompiledScene compiled = compiler.compile(CompileRequest.of(json).overriding(options.overrides()).readingMeshesFrom(meshes));
                     scenes.put(stem(file), compiled);
                     forPovray.put(stem(file), ResolvedScene.of(reader.read(json), compiled.settings().width(),
                             compiled.settings().height(), meshes));

@@ -11,6 +11,7 @@ import studio.bench.PeersCommand;
 import studio.engine.scene.Scene;
 import studio.server.cli.Args;
 import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.CameraDto;
 import studio.server.scene.format.InvalidSceneException;
@@ -61,7 +62,7 @@ public final class KernelCommand {
                 byte[] json = name.equals("still-life") ? Files.readAllBytes(o.scenesDir.resolve("still-life.json"))
                         : PeersCommand.generated(name, o.work);
                 Path meshFolder = name.equals("still-life") ? o.scenesDir : o.work;
-                Scene scene = SceneCompiler.standalone(validation, MeshFiles.in(meshFolder)).compile(json).scene();
+                Scene scene = SceneCompiler.standalone(validation, MeshFiles.in(meshFolder)).compile(CompileRequest.of(json)).scene();
                 CameraDto camera = reader.read(json).camera();
                 double fov = camera != null && camera.fov() != null ? camera.fov() : SceneDefaults.CAMERA_FOV_DEGREES;
                 KernelGeometry.write(scene, fov, o.width, o.height, o.work.resolve(name + ".kernel"));

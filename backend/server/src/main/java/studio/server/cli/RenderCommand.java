@@ -19,6 +19,7 @@ import studio.engine.render.Renderer;
 import studio.server.render.ImageFiles;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.MeshFiles;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.scene.reading.LazyValidation;
@@ -63,8 +64,8 @@ public final class RenderCommand {
         CompiledScene compiled;
         try (LazyValidation validation = new LazyValidation()) {
             SceneCompiler compiler = SceneCompiler.standalone(validation);
-            compiled = compiler.compile(json, options.overrides(), options.threads,
-                    MeshFiles.in(options.scene.toAbsolutePath().getParent()));
+            compiled = compiler.compile(CompileRequest.of(json).overriding(options.overrides()).onThreads(options.threads)
+                    .readingMeshesFrom(MeshFiles.in(options.scene.toAbsolutePath().getParent())));
         } catch (InvalidSceneException e) {
             err.println("error: invalid scene " + options.scene + ": " + e.getMessage());
             return INVALID;

@@ -33,6 +33,7 @@ import studio.server.job.JobState;
 import studio.server.job.JobStatus;
 import studio.server.render.RenderBudget;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 
 /**
@@ -342,7 +343,7 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
             if (json == null) {
                 throw new IllegalStateException("its scene is gone");
             }
-            CompiledScene scene = compiler.compile(json);
+            CompiledScene scene = compiler.compile(CompileRequest.of(json));
             adopted.add(id);
             resume.resume(id, job.principal(), scene, json);
             log.info("took over job {} from a member that left", id);

@@ -4,6 +4,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
@@ -59,7 +60,7 @@ final class JobScenes {
         IntakeMemory held = IntakeMemory.of(memory);
         CompiledScene compiled;
         try {
-            compiled = compiler.compile(bytes, held);
+            compiled = compiler.compile(CompileRequest.of(bytes).within(held));
         } catch (RuntimeException e) {
             held.close();
             throw e;

@@ -2,7 +2,6 @@ package studio.server.job;
 
 import java.time.Duration;
 import java.util.List;
-import java.util.Map;
 import java.util.UUID;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -14,6 +13,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 import studio.server.render.RenderBudget;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.Drainable;
@@ -122,7 +122,7 @@ public final class JobService implements Drainable, AutoCloseable {
         }
         checkRoom();
         ownerLimits.check(owner);
-        CompiledScene scene = compiler.compile(sceneJson, Map.of(), settings.renderThreads(), intake);
+        CompiledScene scene = compiler.compile(CompileRequest.of(sceneJson).onThreads(settings.renderThreads()).within(intake));
         return submit(new JobRequest(scene, sceneJson, intake, owner));
     }
 

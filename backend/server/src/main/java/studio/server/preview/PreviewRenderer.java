@@ -19,6 +19,7 @@ import studio.engine.render.RenderSettings;
 import studio.server.render.RenderBudget;
 import studio.server.render.RenderMetrics;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.IntakeMemory;
@@ -79,7 +80,7 @@ final class PreviewRenderer {
             overrides.put("image.height", request.height());
         }
         overrides.put("image.format", "png");
-        return compiler.compile(json, overrides, threads, memory);
+        return compiler.compile(CompileRequest.of(json).overriding(overrides).onThreads(threads).within(memory));
     }
 
     /**

@@ -1,7 +1,6 @@
 package studio.server.render;
 
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
@@ -15,9 +14,9 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 
 import studio.engine.render.RenderCancelledException;
-import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.Drainable;
 import studio.server.system.IntakeMemory;
@@ -88,7 +87,7 @@ public final class RenderService implements Drainable, AutoCloseable {
         CompiledScene compiled;
         MemoryBudget.Reservation memory;
         try {
-            compiled = compiler.compile(sceneJson, Map.of(), threads, intake);
+            compiled = compiler.compile(CompileRequest.of(sceneJson).onThreads(threads).within(intake));
             memory = budget.reserve(compiled, intake);
         } catch (RuntimeException | Error e) {
             slots.release();

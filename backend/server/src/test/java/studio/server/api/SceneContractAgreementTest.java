@@ -28,6 +28,7 @@ import com.networknt.schema.Schema;
 import com.networknt.schema.SchemaRegistry;
 import com.networknt.schema.SpecificationVersion;
 
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.examples.ExampleSceneFiles;
 import studio.server.scene.format.FieldProblem;
@@ -310,7 +311,7 @@ class SceneContractAgreementTest {
 
     private List<FieldProblem> serverProblems(byte[] scene) {
         try {
-            compiler.compile(scene);
+            compiler.compile(CompileRequest.of(scene));
             return List.of();
         } catch (InvalidSceneException e) {
             return e.problems();

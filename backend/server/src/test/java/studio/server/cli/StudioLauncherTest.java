@@ -15,6 +15,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import studio.server.scene.compiling.CompileRequest;
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.material.MaterialKind;
 import studio.engine.render.Renderer;
@@ -154,7 +155,7 @@ class StudioLauncherTest {
     private static Scene compile(Path scene) throws IOException {
         try (LazyValidation validation = new LazyValidation()) {
             CompiledScene compiled = SceneCompiler.standalone(validation, MeshFiles.in(scene.getParent()))
-                    .compile(Files.readAllBytes(scene));
+                    .compile(CompileRequest.of(Files.readAllBytes(scene)));
             assertThat(compiled.settings().sampler().samplesPerPixel()).as(scene + "'s samples").isEqualTo(16);
             assertThat(compiled.settings().width() * compiled.settings().height()).as(scene + "'s size")
                     .isEqualTo(160 * 120);

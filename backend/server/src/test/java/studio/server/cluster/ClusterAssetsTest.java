@@ -10,6 +10,7 @@ import java.util.UUID;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.Await;
 import studio.server.asset.Asset;
 import studio.server.asset.AssetType;
@@ -17,7 +18,6 @@ import studio.server.asset.LocalAssets;
 import studio.server.job.JobRequest;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
-import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -47,7 +47,7 @@ class ClusterAssetsTest {
 
     private static String render(TestMember through, String json) throws Exception {
         byte[] bytes = json.getBytes(StandardCharsets.UTF_8);
-        String id = through.jobs.submit(JobRequest.of(through.compiler.compile(bytes)).withJson(bytes)).id();
+        String id = through.jobs.submit(JobRequest.of(through.compiler.compile(CompileRequest.of(bytes))).withJson(bytes)).id();
         Await.until("job " + id + " to end", ClusterJobsTest.WAIT_MILLIS, () -> through.jobs.status(id).state().isFinal());
         JobStatus status = through.jobs.status(id);
         assertThat(status.state()).as(String.valueOf(status.error())).isEqualTo(JobState.DONE);

@@ -23,8 +23,8 @@ import studio.server.job.JobStatus;
 import studio.server.job.TileEvent;
 import studio.server.render.ImageFiles;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
-import studio.server.system.IntakeMemory;
 
 /**
  * A member told to stop (SIGTERM) hands its jobs to the others at once, and leaves as soon as they
@@ -44,7 +44,7 @@ class ClusterHandOverTest {
     @BeforeAll
     static void renderOnOneMachine() {
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator)
-                .compile(SCENE.getBytes(StandardCharsets.UTF_8));
+                .compile(CompileRequest.of(SCENE.getBytes(StandardCharsets.UTF_8)));
         oneMachine = ImageFiles.encode(Renderer.render(RenderRequest.of(scene.scene(), scene.settings())).film(), scene.format(),
                 scene.quality());
     }
@@ -56,7 +56,7 @@ class ClusterHandOverTest {
 
     private String submit(TestMember member) {
         byte[] json = SCENE.getBytes(StandardCharsets.UTF_8);
-        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(json);
+        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(CompileRequest.of(json));
         return member.jobs.submit(JobRequest.of(scene).withJson(json)).id();
     }
 

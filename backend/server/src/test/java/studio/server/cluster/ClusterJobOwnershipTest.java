@@ -21,8 +21,8 @@ import studio.server.job.JobState;
 import studio.server.job.JobStatus;
 import studio.server.job.TileEvent;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
-import studio.server.system.IntakeMemory;
 
 /**
  * With sign-in on, a job belongs to its principal cluster-wide: any member serves it to them, and to
@@ -52,7 +52,7 @@ class ClusterJobOwnershipTest {
 
     private static String submitAsAlice(TestMember member) {
         byte[] json = ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8);
-        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(json);
+        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(CompileRequest.of(json));
         return member.jobs.submit(JobRequest.of(scene).withJson(json).by(new JobOwner("alice", 4))).id();
     }
 

@@ -30,8 +30,8 @@ import studio.server.job.JobStatus;
 import studio.server.job.TileEvent;
 import studio.server.render.ImageFiles;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
-import studio.server.system.IntakeMemory;
 
 /**
  * Several members in one JVM, on loopback: a job accepted by one member is served by every member
@@ -61,7 +61,7 @@ class ClusterJobsTest {
     @BeforeAll
     static void renderOnOneMachine() {
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator)
-                .compile(SCENE.getBytes(StandardCharsets.UTF_8));
+                .compile(CompileRequest.of(SCENE.getBytes(StandardCharsets.UTF_8)));
         oneMachine = ImageFiles.encode(Renderer.render(RenderRequest.of(scene.scene(), scene.settings())).film(), scene.format(),
                 scene.quality());
     }
@@ -91,7 +91,7 @@ class ClusterJobsTest {
 
     private String submit(TestMember member) {
         byte[] json = SCENE.getBytes(StandardCharsets.UTF_8);
-        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(json);
+        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(CompileRequest.of(json));
         return member.jobs.submit(JobRequest.of(scene).withJson(json)).id();
     }
 

@@ -21,8 +21,8 @@ import studio.server.job.JobState;
 import studio.server.job.JobStatus;
 import studio.server.render.ImageFiles;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
-import studio.server.system.IntakeMemory;
 
 /**
  * Nothing read from the cluster is used before its seal is checked: values written into a running
@@ -40,7 +40,7 @@ class ClusterSealTest {
     @BeforeAll
     static void renderOnOneMachine() {
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator)
-                .compile(ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8));
+                .compile(CompileRequest.of(ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8)));
         oneMachine = ImageFiles.encode(Renderer.render(RenderRequest.of(scene.scene(), scene.settings())).film(), scene.format(),
                 scene.quality());
     }
@@ -56,7 +56,7 @@ class ClusterSealTest {
         members.add(new TestMember(name, P + 1, P, P + 1));
         TestMember owner = members.get(0), other = members.get(1);
         byte[] json = ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8);
-        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(json);
+        CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(CompileRequest.of(json));
         String id = owner.jobs.submit(JobRequest.of(scene).withJson(json)).id();
         Await.until("the job to run", ClusterJobsTest.WAIT_MILLIS,
                 () -> owner.jobs.status(id).state() == JobState.RUNNING);

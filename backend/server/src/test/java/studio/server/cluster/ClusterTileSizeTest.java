@@ -7,6 +7,7 @@ import java.nio.charset.StandardCharsets;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
+import studio.server.scene.compiling.CompileRequest;
 import studio.engine.render.Film;
 import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
@@ -32,7 +33,7 @@ class ClusterTileSizeTest {
                              {"type": "box", "center": [1.6, 0.5, 0], "size": [1, 1, 1], "rotation": [0, 30, 0]},
                              {"type": "plane"}]}
                 """.formatted(render);
-        return ExampleSceneFiles.compiler().compile(json.getBytes(StandardCharsets.UTF_8));
+        return ExampleSceneFiles.compiler().compile(CompileRequest.of(json.getBytes(StandardCharsets.UTF_8)));
     }
 
     @ParameterizedTest

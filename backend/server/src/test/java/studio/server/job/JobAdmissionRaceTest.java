@@ -16,7 +16,6 @@ import org.springframework.boot.test.system.OutputCaptureExtension;
 
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.examples.ExampleSceneFiles;
-import studio.server.system.IntakeMemory;
 
 /**
  * Submits racing for the last places of the queue, or of one principal's share: each is accepted

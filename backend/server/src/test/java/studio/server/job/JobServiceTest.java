@@ -16,6 +16,7 @@ import java.util.function.BooleanSupplier;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
+import studio.server.scene.compiling.CompileRequest;
 import studio.engine.scene.Scene;
 import studio.server.Await;
 import studio.server.render.RenderBudget;
@@ -41,7 +42,7 @@ class JobServiceTest {
     }
 
     static CompiledScene compile(String json) {
-        return ExampleSceneFiles.compiler().compile(json.getBytes(StandardCharsets.UTF_8));
+        return ExampleSceneFiles.compiler().compile(CompileRequest.of(json.getBytes(StandardCharsets.UTF_8)));
     }
 
     private JobService service;

@@ -22,6 +22,7 @@ import studio.engine.render.Renderer;
 import studio.engine.sampler.Sampler;
 import studio.engine.scene.Scene;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.scene.reading.LazyValidation;
@@ -33,7 +34,7 @@ class SceneReuseTest {
     private static final LazyValidation VALIDATION = new LazyValidation();
     private static final SceneCompiler COMPILER = SceneCompiler.standalone(VALIDATION);
     private static final Function<byte[], CompiledScene> READ =
-            json -> COMPILER.compile(json, Map.of("image.width", 48, "image.height", 36), 1);
+            json -> COMPILER.compile(CompileRequest.of(json).overriding(Map.of("image.width", 48, "image.height", 36)).onThreads(1));
 
     @AfterAll
     static void close() {
@@ -133,7 +134,7 @@ class SceneReuseTest {
             assertThat(grown.scene().shape(3)).isNotSameAs(relit.scene().shape(3));
 
             CompiledScene otherSize = reuse.compile(request(4, many, 64, 48),
-                    MemoryGate.UNLIMITED, json -> COMPILER.compile(json, Map.of("image.width", 64, "image.height", 48), 1));
+                    MemoryGate.UNLIMITED, json -> COMPILER.compile(CompileRequest.of(json).overriding(Map.of("image.width", 64, "image.height", 48)).onThreads(1)));
             assertThat(otherSize.settings().width()).isEqualTo(64);
             assertThat(reuse.reused()).isZero();
         }

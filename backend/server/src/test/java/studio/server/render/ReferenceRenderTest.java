@@ -21,6 +21,7 @@ import studio.engine.render.RenderResult;
 import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.examples.ExampleSceneFiles;
 
@@ -86,11 +87,11 @@ class ReferenceRenderTest {
     static BufferedImage renderSmall(Path file) throws IOException {
         byte[] json = Files.readAllBytes(file);
         SceneCompiler compiler = ExampleSceneFiles.compiler();
-        CompiledScene full = compiler.compile(json);
+        CompiledScene full = compiler.compile(CompileRequest.of(json));
         int height = Math.max(1, Math.round((float) WIDTH * full.settings().height() / full.settings().width()));
         int samples = full.settings().sampler().samplesPerPixel();
-        CompiledScene small = compiler.compile(json, Map.of("image.width", WIDTH, "image.height", height,
-                "render.samples", samples > MAX_SAMPLES ? MAX_SAMPLES : samples), 0);
+        CompiledScene small = compiler.compile(CompileRequest.of(json).overriding(Map.of("image.width", WIDTH, "image.height", height,
+                "render.samples", samples > MAX_SAMPLES ? MAX_SAMPLES : samples)));
         RenderResult result = Renderer.render(RenderRequest.of(small.scene(), small.settings()));
         assertEquals(0, result.nonFiniteSamples(), "NaN or infinite samples in " + file);
         return ImageEncoder.toImage(result.film());

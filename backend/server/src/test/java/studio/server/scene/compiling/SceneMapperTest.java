@@ -145,8 +145,7 @@ class SceneMapperTest {
     @Test
     void appliesOverridesBeforeValidation() {
         SceneCompiler compiler = new SceneCompiler(READER, new SceneMapper(SceneLimits.DEFAULTS));
-        CompiledScene compiled = compiler.compile(SceneValidationTest.json("{'image':{'width':0},'objects':[]}"),
-                Map.of("image.width", 20, "image.height", 10, "render.samples", 4), 1);
+        CompiledScene compiled = compiler.compile(CompileRequest.of(SceneValidationTest.json("{'image':{'width':0},'objects':[]}")).overriding(Map.of("image.width", 20, "image.height", 10, "render.samples", 4)).onThreads(1));
         assertThat(compiled.settings().width()).isEqualTo(20);
         assertThat(compiled.settings().height()).isEqualTo(10);
         assertThat(compiled.settings().sampler().samplesPerPixel()).isEqualTo(4);

@@ -15,6 +15,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
 
@@ -46,7 +47,7 @@ class BenchScenesValidTest {
     @MethodSource("scenes")
     void compilesWithoutProblems(String name, Path file) throws IOException {
         try {
-            CompiledScene compiled = COMPILER.compile(Files.readAllBytes(file));
+            CompiledScene compiled = COMPILER.compile(CompileRequest.of(Files.readAllBytes(file)));
             // no acceleration structure yet: render time grows with the object count
             assertThat(compiled.scene().objectCount()).as("objects in %s", name).isBetween(1, 40);
         } catch (InvalidSceneException e) {

@@ -14,6 +14,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 import studio.server.scene.compiling.CompiledScene;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
 
@@ -36,7 +37,7 @@ class ExampleScenesValidTest {
     void compilesWithoutProblems(String name, Path file) throws IOException {
         byte[] json = Files.readAllBytes(file);
         try {
-            CompiledScene compiled = COMPILER.compile(json);
+            CompiledScene compiled = COMPILER.compile(CompileRequest.of(json));
             assertThat(compiled.scene().objectCount()).as("objects in %s", name).isPositive();
         } catch (InvalidSceneException e) {
             fail(name + " is not a valid scene: " + e.getMessage());
