@@ -1,0 +1,14 @@
+package studio.server.gltf;
+
+import studio.engine.material.Material;
+import studio.engine.mesh.MeshData;
+
+/**
+ * The triangles of a model that share one material (every instance of every primitive with it,
+ * placed by its node's transform), as one engine mesh.
+ *
+ * @param uvs     TEXCOORD_0, two per vertex (u, v as glTF has them: v down the image), or null
+ * @param texture the base colour texture, or null
+ */
+public record GltfPart(MeshData mesh, double[] uvs, Material material, GltfTexture texture) {
+}
