@@ -2,6 +2,8 @@ package studio.server.gltf;
 
 import static studio.server.gltf.GltfJson.bad;
 
+import java.util.HashMap;
+import java.util.Map;
 import java.util.Set;
 
 import tools.jackson.databind.JsonNode;
@@ -13,7 +15,7 @@ import studio.engine.memory.MemoryGate;
  * bytes and shorts, unsigned ints, floats; integers scaled to [0, 1] or [-1, 1] when normalized), at
  * the view's stride. Each accessor is checked to lie within its buffer view before its array is asked
  * of the {@link MemoryGate} and allocated, so an accessor can never cost more than the bytes it reads
- * (at most 8 times as many). Sparse accessors, and accessors without a buffer view (all zeros), are
+ * (at most 8 times as many), and each is read once however many primitives share it. Sparse accessors, and accessors without a buffer view (all zeros), are
  * refused.
  */
 final class GltfAccessors {
@@ -21,6 +23,8 @@ final class GltfAccessors {
     private final JsonNode accessors;
     private final GltfBuffers buffers;
     private final MemoryGate memory;
+    /** Accessors read already, by index: primitives that share one (a vertex buffer, say) read it once. */
+    private final Map<Integer, double[]> read = new HashMap<>();
 
     GltfAccessors(JsonNode root, GltfBuffers buffers, MemoryGate memory) {
         this.accessors = GltfJson.array(root, "accessors", "");
@@ -54,6 +58,10 @@ final class GltfAccessors {
      */
     double[] numbers(int i, String type, int components, Set<Integer> types, String use) {
         Layout l = layout(i, type, components, types, use);
+        double[] known = read.get(i);
+        if (known != null) {
+            return known;
+        }
         memory.reserve(MemoryGate.doubles((long) l.count * components));
         double[] out = new double[l.count * components];
         for (int e = 0; e < l.count; e++) {
@@ -66,6 +74,7 @@ final class GltfAccessors {
                 out[e * components + c] = v;
             }
         }
+        read.put(i, out);
         return out;
     }
 

@@ -2,6 +2,7 @@ package studio.server.gltf;
 
 import static studio.server.gltf.GltfJson.bad;
 
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Set;
@@ -35,6 +36,8 @@ final class GltfPrimitives {
     private final int materials;
     private final Set<String> warnings;
     private final Map<String, Primitive> read = new HashMap<>();
+    /** Each vertex's number in the primitive being compacted, or -1: one table for all, reset after each. */
+    private int[] renumbered = new int[0];
 
     GltfPrimitives(JsonNode root, GltfAccessors accessors, int materials, Set<String> warnings) {
         this.meshes = GltfJson.array(root, "meshes", "");
@@ -127,7 +130,59 @@ final class GltfPrimitives {
             throw bad(path, "its " + indices.length + " vertices (indexed or not) are not a whole number of triangles");
         }
         int material = GltfJson.optionalIndex(prim, "material", materials, "materials", path);
-        return new Primitive(positions, normals, uvs, indices, material);
+        return compacted(new Primitive(positions, normals, uvs, indices, material));
+    }
+
+    /**
+     * The primitive with only the vertices its triangles use, numbered in the order they are first
+     * used: primitives that share a large vertex buffer, each using part of it, then cost no more than
+     * their triangles (at most 3 vertices a triangle), whatever the buffer's size.
+     */
+    private Primitive compacted(Primitive p) {
+        int[] indices = p.indices();
+        int vertices = p.vertexCount();
+        if (renumbered.length < vertices) {
+            accessors.memory().reserve(MemoryGate.ints(vertices));
+            renumbered = new int[vertices];
+            Arrays.fill(renumbered, -1);
+        }
+        accessors.memory().reserve(MemoryGate.ints(indices.length));
+        int used = 0;
+        boolean inOrder = true;
+        int[] compact = new int[indices.length];
+        for (int i = 0; i < indices.length; i++) {
+            int v = indices[i];
+            if (renumbered[v] < 0) {
+                inOrder &= v == used;
+                renumbered[v] = used++;
+            }
+            compact[i] = renumbered[v];
+        }
+        try {
+            if (used == vertices && inOrder) {
+                return p;
+            }
+            accessors.memory().reserve(MemoryGate.doubles(3L * used) * (p.normals() != null ? 2 : 1)
+                    + (p.uvs() != null ? MemoryGate.doubles(2L * used) : 0));
+            double[] positions = new double[3 * used];
+            double[] normals = p.normals() != null ? new double[3 * used] : null;
+            double[] uvs = p.uvs() != null ? new double[2 * used] : null;
+            for (int v : indices) {
+                int to = renumbered[v];
+                System.arraycopy(p.positions(), 3 * v, positions, 3 * to, 3);
+                if (normals != null) {
+                    System.arraycopy(p.normals(), 3 * v, normals, 3 * to, 3);
+                }
+                if (uvs != null) {
+                    System.arraycopy(p.uvs(), 2 * v, uvs, 2 * to, 2);
+                }
+            }
+            return new Primitive(positions, normals, uvs, compact, p.material());
+        } finally {
+            for (int v : indices) {
+                renumbered[v] = -1;
+            }
+        }
     }
 
     private double[] sameCount(JsonNode attributes, String name, String type, int components, Set<Integer> types,

@@ -145,6 +145,40 @@ class GltfReaderTest {
     }
 
     @Test
+    void readsInterleavedVerticesAndSmallComponentTypes() {
+        // one view of (position, normal) pairs at a stride of 24; TEXCOORD_0 as normalized unsigned bytes
+        // (padded to 4 a vertex); the indices as unsigned bytes
+        java.nio.ByteBuffer b = java.nio.ByteBuffer.allocate(72 + 12 + 4).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        float[][] corners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+        for (float[] c : corners) {
+            b.putFloat(c[0]).putFloat(c[1]).putFloat(c[2]).putFloat(0).putFloat(0).putFloat(2);
+        }
+        b.put(new byte[] {0, 0, 0, 0, (byte) 255, 0, 0, 0, 0, (byte) 255, 0, 0});
+        b.put(new byte[] {2, 1, 0, 0});
+        ObjectNode gltf = TestGltf.triangle();
+        gltf.set("accessors", TestGltf.JSON.readTree("""
+                [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                 {"bufferView": 2, "componentType": 5121, "count": 3, "type": "SCALAR"},
+                 {"bufferView": 0, "byteOffset": 12, "componentType": 5126, "count": 3, "type": "VEC3"},
+                 {"bufferView": 1, "componentType": 5121, "normalized": true, "count": 3, "type": "VEC2"}]"""));
+        gltf.set("bufferViews", TestGltf.JSON.readTree("""
+                [{"buffer": 0, "byteLength": 72, "byteStride": 24},
+                 {"buffer": 0, "byteOffset": 72, "byteLength": 12, "byteStride": 4},
+                 {"buffer": 0, "byteOffset": 84, "byteLength": 3}]"""));
+        ((ObjectNode) gltf.get("meshes").get(0).get("primitives").get(0)).set("attributes",
+                TestGltf.JSON.readTree("{\"POSITION\": 0, \"NORMAL\": 2, \"TEXCOORD_0\": 3}"));
+        ((ObjectNode) gltf.get("buffers").get(0)).put("byteLength", 88);
+        GltfPart part = read(TestGltf.glb(gltf, b.array())).parts().get(0);
+        MeshData mesh = part.mesh();
+        // the indices 2, 1, 0 renumber the vertices in the order they are used
+        assertArrayEquals(new int[] {0, 1, 2}, mesh.indices());
+        assertVertex(mesh, 0, 0, 1, 0);
+        assertVertex(mesh, 2, 0, 0, 0);
+        assertArrayEquals(new double[] {0, 0, 1, 0, 0, 1, 0, 0, 1}, mesh.normals(), 0);
+        assertArrayEquals(new double[] {0, 1, 1, 0, 0, 0}, part.uvs(), 0);
+    }
+
+    @Test
     void aPrimitiveWithoutIndicesIsItsVerticesInOrder() {
         ObjectNode gltf = TestGltf.triangle();
         ((ObjectNode) gltf.get("meshes").get(0).get("primitives").get(0)).remove("indices");

@@ -166,6 +166,35 @@ class GltfRefusalTest {
     }
 
     @Test
+    void primitivesSharingALargeVertexBufferCostTheirTrianglesNotTheBuffer() {
+        int vertices = 20_000;
+        java.nio.ByteBuffer b = java.nio.ByteBuffer.allocate(12 * vertices + 8).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        for (int v = 0; v < vertices; v++) {
+            b.putFloat(v).putFloat(v % 7).putFloat(0);
+        }
+        b.putShort((short) 5).putShort((short) 900).putShort((short) 19_999);
+        StringBuilder primitives = new StringBuilder("[");
+        for (int p = 0; p < 200; p++) {
+            primitives.append(p > 0 ? "," : "").append("{\"attributes\": {\"POSITION\": 0}, \"indices\": 1}");
+        }
+        ObjectNode gltf = TestGltf.triangle();
+        ((ObjectNode) gltf.get("meshes").get(0)).set("primitives", TestGltf.JSON.readTree(primitives + "]"));
+        at(gltf, "accessors", 0).put("count", vertices);
+        at(gltf, "bufferViews", 0).put("byteLength", 12 * vertices);
+        at(gltf, "bufferViews", 1).put("byteOffset", 12 * vertices);
+        at(gltf, "buffers", 0).put("byteLength", 12 * vertices + 8)
+                .put("uri", "data:application/octet-stream;base64," + java.util.Base64.getEncoder().encodeToString(b.array()));
+        long[] asked = {0};
+        GltfModel model = GltfReader.read(TestGltf.bytes(gltf), GltfAssets.none(), 1000, bytes -> asked[0] += bytes);
+        assertEquals(600, model.parts().get(0).mesh().vertexCount());
+        assertEquals(200, model.triangleCount());
+        // the buffer's 20,000 vertices read once (480,000 bytes as doubles), not once for each of the 200 primitives
+        assertTrue(asked[0] < 1_000_000, () -> asked[0] + " bytes asked for");
+        double[] p = model.parts().get(0).mesh().positions();
+        assertEquals(19_999, p[3 * model.parts().get(0).mesh().indices()[5]], 0);
+    }
+
+    @Test
     void refusesNonFiniteTransformsAndProjections() {
         assertEquals("nodes[0].matrix: the matrix's last row must be (0, 0, 0, 1), not a projection",
                 refusal(TestGltf.triangle("[{\"mesh\": 0, \"matrix\": [1,0,0,1, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]")));
