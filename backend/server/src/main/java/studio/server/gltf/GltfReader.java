@@ -147,7 +147,11 @@ public final class GltfReader {
                 p.transform().applyToNormals(prim.normals(), n, normals, 3 * base);
             }
             if (uvs != null) {
-                System.arraycopy(prim.uvs(), 0, uvs, 2 * base, 2 * n);
+                double[] from = prim.uvs();
+                for (int k = 0; k < n; k++) {
+                    uvs[2 * (base + k)] = from[2 * k];
+                    uvs[2 * (base + k) + 1] = 1 - from[2 * k + 1]; // glTF's v runs down the image, the engine's up
+                }
             }
             boolean mirrored = p.transform().determinant() < 0;
             int[] ix = prim.indices();

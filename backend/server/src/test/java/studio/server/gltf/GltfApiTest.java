@@ -147,7 +147,7 @@ class GltfApiTest {
                 new Bad(Map.of("type", "gltf", "asset", missing, "file", "m.glb"), "objects[0]", "not both"),
                 new Bad(Map.of("type", "gltf", "file", "../m.glb"), "objects[0].file", ".glb or .gltf"),
                 new Bad(Map.of("type", "gltf", "file", "m.obj"), "objects[0].file", ".glb or .gltf"),
-                new Bad(Map.of("type", "gltf", "file", "m.glb"), "objects[0].file", "ships with this server"),
+                new Bad(Map.of("type", "gltf", "file", "m.glb"), "objects[0].file", "upload the model"),
                 new Bad(Map.of("type", "gltf", "asset", missing, "scale", 0), "objects[0].scale", "greater than 0"),
                 new Bad(Map.of("type", "gltf", "asset", missing, "scale", List.of(1, 2, 3)), "objects[0].scale", ""),
                 new Bad(Map.of("type", "gltf", "asset", missing, "position", List.of(1, 2)), "objects[0].position", ""),

@@ -102,7 +102,8 @@ class GltfReaderTest {
         assertEquals(12, part.mesh().triangleCount());
         assertNotNull(part.uvs());
         assertEquals(48, part.uvs().length);
-        assertEquals(6, part.uvs()[0], 0); // the first TEXCOORD_0 is (6, 0)
+        assertEquals(6, part.uvs()[0], 0); // the first TEXCOORD_0 is (6, 0): v turned up, 1 - 0
+        assertEquals(1, part.uvs()[1], 0);
         assertEquals("image/png", part.texture().mediaType());
         assertEquals(2433, part.texture().image().length);
         assertEquals("images[0]", part.texture().source());
@@ -175,7 +176,8 @@ class GltfReaderTest {
         assertVertex(mesh, 0, 0, 1, 0);
         assertVertex(mesh, 2, 0, 0, 0);
         assertArrayEquals(new double[] {0, 0, 1, 0, 0, 1, 0, 0, 1}, mesh.normals(), 0);
-        assertArrayEquals(new double[] {0, 1, 1, 0, 0, 0}, part.uvs(), 0);
+        // TEXCOORD_0 (0, 1), (1, 0), (0, 0) in the order used, v turned up
+        assertArrayEquals(new double[] {0, 0, 1, 1, 0, 1}, part.uvs(), 0);
     }
 
     @Test

@@ -11,82 +11,93 @@ import studio.server.scene.format.GltfFileNames;
 import studio.server.scene.format.MeshFileNames;
 
 /**
- * Where a mesh's or a glTF model's {@code file} is read from. The command line reads files beside the
- * scene file; the service reads only the meshes shipped with its example scenes (anything else is
- * sent inline as {@code obj}, or uploaded as an asset).
+ * Where a mesh's {@code file} is read from, and a glTF model's ({@link #gltf}). The command line reads files beside the scene file; the
+ * service reads only the meshes shipped with its example scenes (anything else is sent inline as
+ * {@code obj}, which is how a mesh is uploaded).
  */
 @FunctionalInterface
 public interface MeshFiles {
-
-    /**
-     * The bytes of {@code file}, a name that follows one of the format's rules.
-     *
-     * @throws IllegalArgumentException saying that there is no such file, or that it cannot be read
-     */
-    byte[] bytes(String file);
 
     /**
      * The OBJ text of {@code file}.
      *
      * @throws IllegalArgumentException saying what is wrong with the name, or that there is no such file
      */
-    default String read(String file) {
-        if (!MeshFileNames.PATTERN.matcher(file).matches()) {
-            throw new IllegalArgumentException(MeshFileNames.MESSAGE);
-        }
-        return new String(bytes(file), StandardCharsets.UTF_8);
-    }
+    String read(String file);
 
     /**
-     * The bytes of the glTF model (.glb or .gltf) {@code file}.
+     * The bytes of the glTF model (.glb or .gltf) {@code file}; only files beside a scene (the command
+     * line) can be: the service takes models as assets.
      *
      * @throws IllegalArgumentException saying what is wrong with the name, or that there is no such file
      */
     default byte[] gltf(String file) {
-        if (!GltfFileNames.PATTERN.matcher(file).matches()) {
-            throw new IllegalArgumentException(GltfFileNames.MESSAGE);
-        }
-        return bytes(file);
+        throw new IllegalArgumentException("glTF files cannot be read here; upload the model (POST /api/assets) "
+                + "and name it by its id in \"asset\"");
     }
 
     /** The meshes shipped in the jar under scenes/ (copied from scenes/ at build time). */
     static MeshFiles bundled() {
         return file -> {
+            requireName(file);
             try (InputStream in = MeshFiles.class.getClassLoader().getResourceAsStream("scenes/" + file)) {
                 if (in == null) {
-                    throw new IllegalArgumentException("no mesh '" + file + "' ships with this server; " + instead(file)
-                            + " instead");
+                    throw new IllegalArgumentException("no mesh '" + file + "' ships with this server; send the "
+                            + "OBJ text inline as \"obj\" instead");
                 }
-                return in.readAllBytes();
+                return new String(in.readAllBytes(), StandardCharsets.UTF_8);
             } catch (IOException e) {
                 throw new IllegalArgumentException("cannot read the mesh '" + file + "': " + e.getMessage());
             }
         };
     }
 
-    /** Files relative to a folder, e.g. the one holding the scene file. */
+    /** Files relative to a folder, e.g. the one holding the scene file: meshes and glTF models. */
     static MeshFiles in(Path folder) {
-        return file -> {
-            Path path = folder.resolve(file);
-            try {
-                return Files.readAllBytes(path);
-            } catch (NoSuchFileException e) {
-                throw new IllegalArgumentException("no such file: " + path);
-            } catch (IOException e) {
-                throw new IllegalArgumentException("cannot read " + path + ": " + e.getMessage());
+        return new MeshFiles() {
+            @Override
+            public String read(String file) {
+                requireName(file);
+                Path path = folder.resolve(file);
+                try {
+                    return Files.readString(path, StandardCharsets.UTF_8);
+                } catch (NoSuchFileException e) {
+                    throw new IllegalArgumentException("no such file: " + path);
+                } catch (IOException e) {
+                    throw new IllegalArgumentException("cannot read " + path + ": " + e.getMessage());
+                }
+            }
+
+            @Override
+            public byte[] gltf(String file) {
+                if (!GltfFileNames.PATTERN.matcher(file).matches()) {
+                    throw new IllegalArgumentException(GltfFileNames.MESSAGE);
+                }
+                return bytes(folder.resolve(file));
             }
         };
     }
 
-    /** No files at all: meshes must be inline, models uploaded as assets. */
+    private static byte[] bytes(Path path) {
+        try {
+            return Files.readAllBytes(path);
+        } catch (NoSuchFileException e) {
+            throw new IllegalArgumentException("no such file: " + path);
+        } catch (IOException e) {
+            throw new IllegalArgumentException("cannot read " + path + ": " + e.getMessage());
+        }
+    }
+
+    /** No files at all: meshes must be inline. */
     static MeshFiles none() {
         return file -> {
-            throw new IllegalArgumentException("mesh files cannot be read here; " + instead(file));
+            throw new IllegalArgumentException("mesh files cannot be read here; send the OBJ text inline as \"obj\"");
         };
     }
 
-    private static String instead(String file) {
-        return file.endsWith(".obj") ? "send the OBJ text inline as \"obj\""
-                : "upload it (POST /api/assets) and name its id in \"asset\"";
+    private static void requireName(String file) {
+        if (!MeshFileNames.PATTERN.matcher(file).matches()) {
+            throw new IllegalArgumentException(MeshFileNames.MESSAGE);
+        }
     }
 }

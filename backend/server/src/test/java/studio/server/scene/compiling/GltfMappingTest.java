@@ -133,8 +133,8 @@ class GltfMappingTest {
         assertThat(problems("{'type':'gltf','asset':'" + ID + "','file':'a.glb'}", mapper).get(0).field())
                 .isEqualTo("objects[0]");
         assertThat(problems("{'type':'gltf','file':'a.glb'}", mapper).get(0))
-                .isEqualTo(new FieldProblem("objects[0].file", "mesh files cannot be read here; upload it "
-                        + "(POST /api/assets) and name its id in \"asset\""));
+                .isEqualTo(new FieldProblem("objects[0].file", "glTF files cannot be read here; upload the model "
+                        + "(POST /api/assets) and name it by its id in \"asset\""));
     }
 
     @Test
