@@ -3,6 +3,7 @@ package studio.server.gltf;
 import static studio.server.gltf.GltfJson.bad;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -72,14 +73,27 @@ public final class GltfReader {
         GltfPrimitives primitives = new GltfPrimitives(root, accessors, materials.size(), warnings);
         List<GltfNodes.Instance> instances = GltfNodes.walk(root, warnings);
 
-        long triangles = 0;
+        // each mesh's triangles and primitives once, then each instance's: linear in the file, whatever it nests
+        Map<Integer, long[]> perMesh = new HashMap<>();
+        long triangles = 0, placed = 0;
         for (GltfNodes.Instance instance : instances) {
-            for (int p = 0; p < primitives.of(instance.mesh()).size(); p++) {
-                triangles += primitives.triangles(instance.mesh(), p);
-            }
+            long[] counts = perMesh.computeIfAbsent(instance.mesh(), m -> {
+                int count = primitives.of(m).size();
+                long sum = 0;
+                for (int p = 0; p < count; p++) {
+                    sum += primitives.triangles(m, p);
+                }
+                return new long[] {sum, count};
+            });
+            triangles += counts[0];
+            placed += counts[1];
         }
         if (triangles > maxTriangles) {
             throw new TooManyTrianglesException(triangles, maxTriangles);
+        }
+        if (placed > maxTriangles) {
+            throw bad("nodes", "they place " + placed + " primitives; at most " + maxTriangles + " are read (as many "
+                    + "as triangles)");
         }
 
         Map<Group, List<Placed>> groups = new LinkedHashMap<>();

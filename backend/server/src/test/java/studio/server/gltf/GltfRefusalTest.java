@@ -195,6 +195,25 @@ class GltfRefusalTest {
     }
 
     @Test
+    void refusesMorePlacedPrimitivesThanTheLimitWhateverTheyDraw() {
+        // 2,000 nodes on a mesh of 1,000 line primitives (no triangles): 2,000,000 primitives placed
+        StringBuilder primitives = new StringBuilder("[");
+        for (int p = 0; p < 1000; p++) {
+            primitives.append(p > 0 ? "," : "").append("{\"attributes\": {\"POSITION\": 0}, \"mode\": 1}");
+        }
+        StringBuilder nodes = new StringBuilder("[{\"children\": [");
+        for (int i = 1; i <= 2000; i++) {
+            nodes.append(i).append(i < 2000 ? "," : "]}");
+        }
+        nodes.append(",{\"mesh\": 0}".repeat(2000)).append("]");
+        ObjectNode gltf = TestGltf.triangle();
+        ((ObjectNode) gltf.get("meshes").get(0)).set("primitives", TestGltf.JSON.readTree(primitives + "]"));
+        gltf.set("nodes", TestGltf.JSON.readTree(nodes.toString()));
+        assertEquals("nodes: they place 2000000 primitives; at most 1000 are read (as many as triangles)",
+                refusal(gltf));
+    }
+
+    @Test
     void refusesNonFiniteTransformsAndProjections() {
         assertEquals("nodes[0].matrix: the matrix's last row must be (0, 0, 0, 1), not a projection",
                 refusal(TestGltf.triangle("[{\"mesh\": 0, \"matrix\": [1,0,0,1, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]")));

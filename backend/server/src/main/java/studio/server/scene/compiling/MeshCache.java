@@ -15,8 +15,9 @@ import studio.server.gltf.GltfModel;
 import studio.server.system.MemoryBudget;
 
 /**
- * Meshes already read and built, by content: the OBJ text's SHA-256 and, for a built mesh (its
- * triangles placed in the world with their bounding volume hierarchy), its placement. The live view
+ * Meshes and glTF models already read, and meshes built, by content: the OBJ text's (or the model
+ * file's) SHA-256 and, for a built mesh (its triangles placed in the world with their bounding volume
+ * hierarchy; a model's part is keyed by its file's digest and its index), its placement. The live view
  * sends the whole scene on every edit; with this, moving a light or another object reuses an
  * unchanged mesh as it is, and moving the mesh reuses its parsed OBJ and its tree (only the tree's
  * boxes are fitted to the moved triangles, {@link TriangleMesh#movedTo}). A digest, not the text's hash
