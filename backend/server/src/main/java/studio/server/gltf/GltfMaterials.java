@@ -19,7 +19,7 @@ import studio.engine.math.Rgb;
  * the base colour, its index from {@code KHR_materials_ior} (1.5 without);</li>
  * <li>{@code metallicFactor} of 0.5 or more -> metal, else plastic, in the base colour; the highlight's
  * Blinn-Phong exponent from the roughness r as 2/a^2 - 2 with a = r^2 (within [1, 10000]), and a metal's
- * reflectivity 0.5 * (1 - r).</li>
+ * reflectivity 0.5 * (1 - r) and diffuse weight 0.15 + 0.65 * r.</li>
  * </ul>
  * glTF's colours are linear already, as the engine's are. A primitive without a material takes glTF's
  * default (white, metallic 1, roughness 1: a rough white metal, as three.js draws it).
@@ -101,8 +101,13 @@ final class GltfMaterials {
                 : MaterialDefaults.of(MaterialKind.PLASTIC, color, null, null, shininess(roughness), null, null), texture);
     }
 
+    /**
+     * A metal of roughness r: the smoother, the more it mirrors (reflectivity 0.5 * (1 - r)); the rougher,
+     * the more its colour shows diffusely (diffuse 0.15 + 0.65 * r), as a rough metal scatters its
+     * tinted reflection every way: a fully rough one has a plastic's diffuse weight, in its own colour.
+     */
     private static Material metallic(Rgb color, double roughness) {
-        return MaterialDefaults.of(MaterialKind.METAL, color, null, null, shininess(roughness),
+        return MaterialDefaults.of(MaterialKind.METAL, color, 0.15 + 0.65 * roughness, null, shininess(roughness),
                 0.5 * (1 - roughness), null);
     }
 

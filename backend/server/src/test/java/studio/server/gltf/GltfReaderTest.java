@@ -92,6 +92,7 @@ class GltfReaderTest {
         assertEquals(MaterialKind.METAL, part.material().kind());
         assertEquals(0.800000011920929, part.material().color().r(), 0);
         assertEquals(0, part.material().reflectivity(), 0);
+        assertEquals(0.8, part.material().diffuse(), 1e-12); // fully rough: its colour shows as a plastic's would
         assertEquals(List.of(), model.warnings());
     }
 
@@ -119,6 +120,7 @@ class GltfReaderTest {
         assertEquals(MaterialKind.METAL, metal.kind());
         assertEquals(30, metal.shininess(), 1e-9); // a = 0.25: 2 / 0.0625 - 2
         assertEquals(0.25, metal.reflectivity(), 1e-12);
+        assertEquals(0.475, metal.diffuse(), 1e-12);
         material.set("extensions", TestGltf.JSON.readTree(
                 "{\"KHR_materials_transmission\": {\"transmissionFactor\": 1}, \"KHR_materials_ior\": {\"ior\": 1.33}}"));
         var glass = read(TestGltf.bytes(gltf)).parts().get(0).material();
