@@ -148,6 +148,25 @@ class GltfMappingTest {
     }
 
     @Test
+    void aModelIsAnObjectForEachOfItsMaterialsAndEachCountsTowardsTheLimit() {
+        ObjectNode gltf = nestedTriangle();
+        gltf.withArray("materials").add(TestGltf.JSON.readTree("{\"pbrMetallicRoughness\": {\"metallicFactor\": 1}}"));
+        ((ObjectNode) gltf.get("meshes").get(0)).withArray("primitives").add(TestGltf.JSON.readTree(
+                "{\"attributes\": {\"POSITION\": 0}, \"indices\": 1, \"material\": 1}"));
+        MeshAssets assets = holding(TestGltf.bytes(gltf));
+        CompiledScene compiled = map("{'type':'gltf','asset':'" + ID + "'}",
+                new SceneMapper(SceneLimits.DEFAULTS, MeshCache.none(), assets), MeshFiles.none());
+        assertThat(compiled.scene().objectCount()).isEqualTo(2);
+        assertThat(compiled.scene().material(0).kind()).isEqualTo(MaterialKind.PLASTIC);
+        assertThat(compiled.scene().material(1).kind()).isEqualTo(MaterialKind.METAL);
+
+        SceneLimits twoObjects = new SceneLimits(640, 480, 64, 4, 2, 3, 1000, 1 << 20);
+        assertThat(problems("{'type':'sphere'},{'type':'gltf','asset':'" + ID + "'}",
+                new SceneMapper(twoObjects, MeshCache.none(), assets))).containsExactly(new FieldProblem("objects[1]",
+                "brings the scene to 3 objects (one for each of a model's materials); this server's limit is 2"));
+    }
+
+    @Test
     void countsAModelsTrianglesWithTheScenesMeshes() {
         SceneLimits oneTriangle = new SceneLimits(640, 480, 64, 4, 50, 3, 1, 1 << 20);
         SceneMapper mapper = new SceneMapper(oneTriangle, MeshCache.none(), holding(TestGltf.bytes(nestedTriangle())));
