@@ -127,7 +127,20 @@ public final class GltfReader {
                         + "material's base colour factor is");
             }
         }
-        return new GltfModel(parts, new ArrayList<>(warnings));
+        return new GltfModel(parts, listed(warnings));
+    }
+
+    /** The most warnings an answer lists; a file of 10,000 cameras gets the first of them and a count. */
+    static final int MAX_WARNINGS = 50;
+
+    private static List<String> listed(Set<String> warnings) {
+        List<String> all = new ArrayList<>(warnings);
+        if (all.size() <= MAX_WARNINGS) {
+            return all;
+        }
+        List<String> first = new ArrayList<>(all.subList(0, MAX_WARNINGS));
+        first.add("and " + (all.size() - MAX_WARNINGS) + " more warnings of the same kinds");
+        return first;
     }
 
     /** Primitives that become one engine mesh: one material, all with normals and TEXCOORD_0 or all without. */

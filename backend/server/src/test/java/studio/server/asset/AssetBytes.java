@@ -5,6 +5,8 @@ import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 
+import tools.jackson.databind.node.ObjectNode;
+
 import studio.server.gltf.TestGltf;
 
 /** Small assets of each kind, well-formed or broken in one way, built byte by byte. */
@@ -53,6 +55,23 @@ final class AssetBytes {
     /** A .gltf of one triangle, its buffer a data: URI. */
     static byte[] gltf() {
         return TestGltf.bytes(TestGltf.triangle());
+    }
+
+    /** A .gltf that places its one triangle {@code count} times, each under a node of its own. */
+    static byte[] gltfOf(int count) {
+        StringBuilder nodes = new StringBuilder("[{\"children\": [");
+        for (int i = 1; i <= count; i++) {
+            nodes.append(i).append(i < count ? "," : "]}");
+        }
+        nodes.append(",{\"mesh\": 0}".repeat(count)).append("]");
+        return TestGltf.bytes(TestGltf.triangle(nodes.toString()));
+    }
+
+    /** The .gltf of one triangle whose positions' accessor claims a fourth vertex, past its buffer view. */
+    static byte[] gltfPastItsView() {
+        ObjectNode gltf = TestGltf.triangle();
+        ((ObjectNode) gltf.get("accessors").get(0)).put("count", 4);
+        return TestGltf.bytes(gltf);
     }
 
     /** A glb of one triangle: a JSON chunk (padded with spaces) and its BIN chunk. */

@@ -183,6 +183,43 @@ class GltfReaderTest {
     }
 
     @Test
+    void listsAtMostFiftyWarningsAndHowManyMore() {
+        StringBuilder nodes = new StringBuilder("[{\"mesh\": 0, \"children\": [");
+        for (int i = 1; i <= 60; i++) {
+            nodes.append(i).append(i < 60 ? "," : "]}");
+        }
+        nodes.append(",{\"camera\": 0}".repeat(60)).append("]");
+        List<String> warnings = read(TestGltf.bytes(TestGltf.triangle(nodes.toString()))).warnings();
+        assertEquals(51, warnings.size());
+        assertEquals("nodes[1]: cameras are not used (the scene's camera is)", warnings.get(0));
+        assertEquals("and 10 more warnings of the same kinds", warnings.get(50));
+    }
+
+    @Test
+    void readsAnImageFromTheGlbsBinChunk() {
+        byte[] png = TestGltf.khronos("BoxTextured/BoxTextured.gltf"); // its PNG, decoded from its data: URI below
+        String text = new String(png, java.nio.charset.StandardCharsets.UTF_8);
+        int at = text.indexOf("data:image/png;base64,") + "data:image/png;base64,".length();
+        byte[] image = java.util.Base64.getDecoder().decode(text.substring(at, text.indexOf('"', at)));
+        byte[] bin = java.util.Arrays.copyOf(TestGltf.triangleBuffer(), 44 + (image.length + 3) / 4 * 4);
+        System.arraycopy(image, 0, bin, 44, image.length);
+        ObjectNode gltf = TestGltf.triangle();
+        gltf.withArray("bufferViews").add(TestGltf.JSON.readTree(
+                "{\"buffer\": 0, \"byteOffset\": 44, \"byteLength\": " + image.length + "}"));
+        gltf.set("images", TestGltf.JSON.readTree("[{\"bufferView\": 2, \"mimeType\": \"image/png\"}]"));
+        gltf.set("textures", TestGltf.JSON.readTree("[{\"source\": 0}]"));
+        ((ObjectNode) gltf.get("materials").get(0).get("pbrMetallicRoughness"))
+                .set("baseColorTexture", TestGltf.JSON.readTree("{\"index\": 0}"));
+        ((ObjectNode) gltf.get("buffers").get(0)).put("byteLength", bin.length);
+        GltfModel model = read(TestGltf.glb(gltf, bin));
+        GltfTexture texture = model.parts().get(0).texture();
+        assertArrayEquals(image, texture.image());
+        assertEquals("image/png", texture.mediaType());
+        assertEquals(List.of("images[0]: base colour textures are read but not drawn yet; the material's base colour "
+                + "factor is"), model.warnings());
+    }
+
+    @Test
     void aPrimitiveWithoutIndicesIsItsVerticesInOrder() {
         ObjectNode gltf = TestGltf.triangle();
         ((ObjectNode) gltf.get("meshes").get(0).get("primitives").get(0)).remove("indices");
