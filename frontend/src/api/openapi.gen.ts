@@ -280,6 +280,7 @@ export interface components {
             /** Format: int64 */
             bytes?: number;
             mediaType?: string;
+            warnings?: string[];
         };
         /** @description One example scene, by its file stem. */
         SceneSummary: {
@@ -377,7 +378,7 @@ export interface components {
             falloff: boolean;
             name?: string;
         };
-        Object: components["schemas"]["SphereObject"] | components["schemas"]["BoxObject"] | components["schemas"]["PlaneObject"] | components["schemas"]["MeshObject"];
+        Object: components["schemas"]["SphereObject"] | components["schemas"]["BoxObject"] | components["schemas"]["PlaneObject"] | components["schemas"]["MeshObject"] | components["schemas"]["GltfObject"];
         Material: components["schemas"]["FlatMaterial"] | components["schemas"]["ChalkMaterial"] | components["schemas"]["PlasticMaterial"] | components["schemas"]["MetalMaterial"] | components["schemas"]["MirrorMaterial"] | components["schemas"]["GlassMaterial"];
         FlatMaterial: {
             /** @constant */
@@ -534,6 +535,31 @@ export interface components {
             material?: components["schemas"]["Material"];
             name?: string;
         } & (unknown | unknown | unknown);
+        GltfObject: {
+            /** @constant */
+            type: "gltf";
+            file?: string;
+            asset?: string;
+            /**
+             * @default [
+             *       0,
+             *       0,
+             *       0
+             *     ]
+             */
+            position: number[];
+            /** @default 1 */
+            scale: number;
+            /**
+             * @default [
+             *       0,
+             *       0,
+             *       0
+             *     ]
+             */
+            rotation: number[];
+            name?: string;
+        } & (unknown | unknown);
         /** @description An RFC 9457 problem (application/problem+json). */
         Problem: {
             type?: string;

@@ -2,6 +2,7 @@ package studio.server.asset;
 
 import java.net.URI;
 import java.time.Duration;
+import java.util.List;
 
 import org.springframework.http.CacheControl;
 import org.springframework.http.HttpHeaders;
@@ -22,17 +23,23 @@ import studio.server.system.IntakeMemory;
 
 /**
  * POST /api/assets: raw bytes in (their media type as Content-Type), checked and kept by their
- * content's hash: 201 with Location the first time, 200 with the same body after. HEAD tells whether
+ * content's hash: 201 with Location the first time, 200 with the same body after; a glTF model's
+ * answer lists what it holds that is not drawn in {@code warnings}. HEAD tells whether
  * an asset is kept (200 or 404); GET returns its bytes, immutable (the ETag is the id). Whoever knows
  * an id may read it: ids are hashes of content the caller had.
  */
 @RestController
 class AssetController {
 
-    /** What an upload answers. */
-    record AssetView(String id, long bytes, String mediaType) {
-        static AssetView of(Asset asset) {
-            return new AssetView(asset.id(), asset.bytes().length, asset.type().mediaType());
+    /**
+     * What an upload answers.
+     *
+     * @param warnings what a glTF model holds that is not drawn (skins, animations, extensions...); empty for
+     *                 every other kind
+     */
+    record AssetView(String id, long bytes, String mediaType, List<String> warnings) {
+        static AssetView of(Asset asset, List<String> warnings) {
+            return new AssetView(asset.id(), asset.bytes().length, asset.type().mediaType(), warnings);
         }
     }
 
@@ -60,14 +67,14 @@ class AssetController {
         if (bytes.length > maxBytes) {
             throw AssetRefusedException.tooLarge(bytes.length, maxBytes);
         }
-        checks.check(type, bytes, IntakeMemory.of(request));
+        List<String> warnings = checks.check(type, bytes, IntakeMemory.of(request), store.meshes()::bytes);
         Asset asset = Asset.of(type, bytes);
         Asset kept = store.get(asset.id());
         if (kept != null) {
-            return ResponseEntity.ok(AssetView.of(kept));
+            return ResponseEntity.ok(AssetView.of(kept, warnings));
         }
         boolean added = store.put(asset);
-        AssetView view = AssetView.of(asset);
+        AssetView view = AssetView.of(asset, warnings);
         return added ? ResponseEntity.created(URI.create("/api/assets/" + asset.id())).body(view)
                 : ResponseEntity.ok(view);
     }

@@ -19,15 +19,36 @@ public interface AssetStore {
     /** Whether an asset is kept by that id on this member (without counting it as used). */
     boolean contains(String id);
 
-    /** The store as the scene compiler reads meshes' assets: OBJ bytes, or null if none is kept by that id. */
+    /**
+     * The store as the scene compiler reads meshes' and models' assets: OBJ bytes for a mesh, glTF
+     * bytes for a model, any bytes for a .gltf's buffer or image; null if none is kept by that id.
+     */
     default MeshAssets meshes() {
-        return id -> {
-            Asset asset = get(id);
-            if (asset != null && asset.type() != AssetType.OBJ) {
-                throw new IllegalArgumentException("the asset " + id + " is " + asset.type().mediaType()
-                        + ", not a model/obj mesh");
+        return new MeshAssets() {
+            @Override
+            public byte[] obj(String id) {
+                return of(id, AssetType.OBJ, AssetType.OBJ, "a model/obj mesh");
             }
-            return asset != null ? asset.bytes() : null;
+
+            @Override
+            public byte[] gltf(String id) {
+                return of(id, AssetType.GLB, AssetType.GLTF, "a glTF model (model/gltf-binary or model/gltf+json)");
+            }
+
+            @Override
+            public byte[] bytes(String id) {
+                Asset asset = get(id);
+                return asset != null ? asset.bytes() : null;
+            }
+
+            private byte[] of(String id, AssetType one, AssetType other, String what) {
+                Asset asset = get(id);
+                if (asset != null && asset.type() != one && asset.type() != other) {
+                    throw new IllegalArgumentException("the asset " + id + " is " + asset.type().mediaType()
+                            + ", not " + what);
+                }
+                return asset != null ? asset.bytes() : null;
+            }
         };
     }
 }

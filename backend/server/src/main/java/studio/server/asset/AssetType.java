@@ -14,7 +14,9 @@ public enum AssetType {
     PNG("image/png", "a PNG image"),
     JPEG("image/jpeg", "a JPEG image"),
     GLB("model/gltf-binary", "a binary glTF (glb)"),
-    GLTF("model/gltf+json", "JSON (glTF)");
+    GLTF("model/gltf+json", "JSON (glTF)"),
+    /** Any bytes: a .gltf's buffer (a .bin file), which the .gltf names by its id. */
+    BIN("application/octet-stream", "binary data");
 
     static final byte[] PNG_SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     static final byte[] GLB_MAGIC = "glTF".getBytes(StandardCharsets.US_ASCII);

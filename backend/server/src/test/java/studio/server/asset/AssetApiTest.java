@@ -122,6 +122,10 @@ class AssetApiTest {
                         "pixels"),
                 new Bad("a truncated PNG", Arrays.copyOf(AssetBytes.png(2, 2), 20), "image/png", 400, "IHDR"),
                 new Bad("an OBJ past the triangle limit", AssetBytes.fan(1001), "model/obj", 400, "max-triangles"),
+                new Bad("a glTF past the triangle limit", AssetBytes.gltfOf(1001), "model/gltf+json", 400,
+                        "draws 1001 triangles; this server's limit is 1000 (studio.limits.max-triangles)"),
+                new Bad("a glTF whose accessor runs past its view", AssetBytes.gltfPastItsView(), "model/gltf+json",
+                        400, "accessors[0]: its 4 elements run past the end of bufferViews[0]"),
                 new Bad("an OBJ that does not parse", "v 0 0 zero\nf 1 2 3\n".getBytes(), "model/obj", 400, "OBJ"),
                 new Bad("PNG bytes sent as image/jpeg", AssetBytes.png(2, 2), "image/jpeg", 400, "image/png"),
                 new Bad("JSON sent as model/gltf-binary", "{\"asset\":{\"version\":\"2.0\"}}".getBytes(),
@@ -146,6 +150,7 @@ class AssetApiTest {
         }
         mvc.perform(get("/actuator/health")).andExpect(status().isOk());
         upload(AssetBytes.fan(1000), "model/obj", 201); // at the limit
+        upload(AssetBytes.gltfOf(1000), "model/gltf+json", 201);
     }
 
     @SuppressWarnings("unchecked")

@@ -5,6 +5,10 @@ import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 
+import tools.jackson.databind.node.ObjectNode;
+
+import studio.server.gltf.TestGltf;
+
 /** Small assets of each kind, well-formed or broken in one way, built byte by byte. */
 final class AssetBytes {
 
@@ -48,22 +52,30 @@ final class AssetBytes {
         return out.toByteArray();
     }
 
+    /** A .gltf of one triangle, its buffer a data: URI. */
     static byte[] gltf() {
-        return "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[]}".getBytes(StandardCharsets.UTF_8);
+        return TestGltf.bytes(TestGltf.triangle());
     }
 
-    /** A glb of a JSON chunk (padded with spaces) and a BIN chunk of 8 bytes. */
-    static byte[] glb() {
-        byte[] json = "{\"asset\":{\"version\":\"2.0\"}}".getBytes(StandardCharsets.UTF_8);
-        int jsonLength = (json.length + 3) / 4 * 4;
-        int length = 12 + 8 + jsonLength + 8 + 8;
-        ByteBuffer b = ByteBuffer.allocate(length).order(ByteOrder.LITTLE_ENDIAN);
-        b.put("glTF".getBytes(StandardCharsets.US_ASCII)).putInt(2).putInt(length);
-        b.putInt(jsonLength).putInt(0x4E4F534A).put(json);
-        for (int i = json.length; i < jsonLength; i++) {
-            b.put((byte) ' ');
+    /** A .gltf that places its one triangle {@code count} times, each under a node of its own. */
+    static byte[] gltfOf(int count) {
+        StringBuilder nodes = new StringBuilder("[{\"children\": [");
+        for (int i = 1; i <= count; i++) {
+            nodes.append(i).append(i < count ? "," : "]}");
         }
-        b.putInt(8).putInt(0x004E4942).putLong(0);
-        return b.array();
+        nodes.append(",{\"mesh\": 0}".repeat(count)).append("]");
+        return TestGltf.bytes(TestGltf.triangle(nodes.toString()));
+    }
+
+    /** The .gltf of one triangle whose positions' accessor claims a fourth vertex, past its buffer view. */
+    static byte[] gltfPastItsView() {
+        ObjectNode gltf = TestGltf.triangle();
+        ((ObjectNode) gltf.get("accessors").get(0)).put("count", 4);
+        return TestGltf.bytes(gltf);
+    }
+
+    /** A glb of one triangle: a JSON chunk (padded with spaces) and its BIN chunk. */
+    static byte[] glb() {
+        return TestGltf.glb(TestGltf.triangle(), TestGltf.triangleBuffer());
     }
 }

@@ -240,7 +240,7 @@ class StudioLauncherTest {
     }
 
     /**
-     * A longer render runs without on-stack replacement unless its scene file names a mesh, whose
+     * A longer render runs without on-stack replacement unless its scene file names a mesh (or a glTF model), whose
      * one-pass reading and tree building need it; a short one, on C1 alone, keeps it.
      */
     @Test
@@ -253,6 +253,9 @@ class StudioLauncherTest {
         assertThat(launched("render", spheres.toString(), "-o", "x.png", "--samples", "16")).contains(noOsr);
         assertThat(launched("render", "--threads", "2", "-o", "x.png", spheres.toString())).contains(noOsr);
         assertThat(launched("render", mesh.toString(), "--samples", "16")).doesNotContain(noOsr);
+        Path model = Files.writeString(dir.resolve("model.json"),
+                "{\"objects\": [{\"type\": \"gltf\", \"file\": \"model.glb\"}]}");
+        assertThat(launched("render", model.toString(), "--samples", "16")).doesNotContain(noOsr);
         assertThat(launched("render", spheres.toString(), "--width", "800", "--height", "600", "--samples", "1"))
                 .doesNotContain(noOsr);
         assertThat(launched("render", dir.resolve("missing.json").toString())).doesNotContain(noOsr);

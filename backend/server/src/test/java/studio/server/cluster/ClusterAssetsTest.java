@@ -10,14 +10,17 @@ import java.util.UUID;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
-import studio.server.scene.compiling.CompileRequest;
+import tools.jackson.databind.node.ObjectNode;
+
 import studio.server.Await;
 import studio.server.asset.Asset;
 import studio.server.asset.AssetType;
 import studio.server.asset.LocalAssets;
+import studio.server.gltf.TestGltf;
 import studio.server.job.JobRequest;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
+import studio.server.scene.compiling.CompileRequest;
 import studio.server.system.MemoryBudget;
 
 /**
@@ -75,6 +78,37 @@ class ClusterAssetsTest {
 
         assertThat(renderedThrough.jobs.image(byAsset).bytes()).isEqualTo(renderedThrough.jobs.image(inline).bytes());
         assertThat(uploadedTo.jobs.image(byAsset).bytes()).isEqualTo(renderedThrough.jobs.image(inline).bytes());
+    }
+
+    @Test
+    void aGltfWhoseBufferIsAnotherAssetRendersThroughAnotherMemberAsTheSameModelEmbedded() throws Exception {
+        int[] ports = {TestMember.BASE_PORT, TestMember.BASE_PORT + 1};
+        for (int port : ports) {
+            TestMember member = new TestMember(name, port, ports);
+            member.assets = new LocalAssets(1 << 20, MemoryBudget.unlimited(),
+                    new ClusterAssets(member.data.assets())).meshes();
+            members.add(member);
+        }
+        TestMember uploadedTo = members.get(0), renderedThrough = members.get(1);
+        Await.until("the cluster to be safe", ClusterJobsTest.WAIT_MILLIS,
+                () -> members.stream().allMatch(m -> m.hazelcast.getPartitionService().isClusterSafe()));
+        LocalAssets upload = new LocalAssets(1 << 20, MemoryBudget.unlimited(), new ClusterAssets(uploadedTo.data.assets()));
+        Asset buffer = Asset.of(AssetType.BIN, TestGltf.triangleBuffer());
+        upload.put(buffer);
+        ObjectNode embedded = TestGltf.triangle("[{\"scale\": [2, 2, 2], \"mesh\": 0}]");
+        ObjectNode byId = embedded.deepCopy();
+        ((ObjectNode) byId.get("buffers").get(0)).put("uri", buffer.id());
+        Asset model = Asset.of(AssetType.GLTF, TestGltf.bytes(byId));
+        upload.put(model);
+        Asset whole = Asset.of(AssetType.GLTF, TestGltf.bytes(embedded));
+        upload.put(whole);
+
+        String viaIds = render(renderedThrough, scene("{\"type\": \"gltf\", \"asset\": \"" + model.id() + "\"}"));
+        String inOne = render(renderedThrough, scene("{\"type\": \"gltf\", \"asset\": \"" + whole.id() + "\"}"));
+        String nothing = render(renderedThrough, scene("{\"type\": \"sphere\", \"radius\": 0.01}"));
+
+        assertThat(renderedThrough.jobs.image(viaIds).bytes()).isEqualTo(renderedThrough.jobs.image(inOne).bytes());
+        assertThat(renderedThrough.jobs.image(viaIds).bytes()).isNotEqualTo(renderedThrough.jobs.image(nothing).bytes());
     }
 
     @Test

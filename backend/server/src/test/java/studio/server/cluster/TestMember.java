@@ -75,7 +75,22 @@ final class TestMember implements AutoCloseable {
         hazelcast = Hazelcast.newHazelcastInstance(config);
         data = new ClusterData(hazelcast, new Seal(ClusterSecret.of(properties), registry));
         compiler = new SceneCompiler(SceneReader.forOneScene(VALIDATION::getValidator),
-                new SceneMapper(SceneLimits.DEFAULTS, MeshCache.none(), id -> assets.obj(id)), MeshFiles.none());
+                new SceneMapper(SceneLimits.DEFAULTS, MeshCache.none(), new MeshAssets() {
+                    @Override
+                    public byte[] obj(String id) {
+                        return assets.obj(id);
+                    }
+
+                    @Override
+                    public byte[] gltf(String id) {
+                        return assets.gltf(id);
+                    }
+
+                    @Override
+                    public byte[] bytes(String id) {
+                        return assets.bytes(id);
+                    }
+                }), MeshFiles.none());
         TileWorkers workers = new TileWorkers(data, new JobScenes(data.scenes(), compiler, MemoryBudget.unlimited()), 1,
                 new TileWorkers.Steps() {
                     @Override

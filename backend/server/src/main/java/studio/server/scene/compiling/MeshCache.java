@@ -11,11 +11,13 @@ import java.util.Map;
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.math.Vec3;
 import studio.engine.mesh.MeshData;
+import studio.server.gltf.GltfModel;
 import studio.server.system.MemoryBudget;
 
 /**
- * Meshes already read and built, by content: the OBJ text's SHA-256 and, for a built mesh (its
- * triangles placed in the world with their bounding volume hierarchy), its placement. The live view
+ * Meshes and glTF models already read, and meshes built, by content: the OBJ text's (or the model
+ * file's) SHA-256 and, for a built mesh (its triangles placed in the world with their bounding volume
+ * hierarchy; a model's part is keyed by its file's digest and its index), its placement. The live view
  * sends the whole scene on every edit; with this, moving a light or another object reuses an
  * unchanged mesh as it is, and moving the mesh reuses its parsed OBJ and its tree (only the tree's
  * boxes are fitted to the moved triangles, {@link TriangleMesh#movedTo}). A digest, not the text's hash
@@ -48,6 +50,7 @@ public final class MeshCache {
     private final long maxTriangles;
     private final MemoryBudget memory;
     private final Map<String, Entry<MeshData>> parsed = new LinkedHashMap<>(16, 0.75f, true);
+    private final Map<String, Entry<GltfModel>> models = new LinkedHashMap<>(16, 0.75f, true);
     private final Map<Placement, Entry<TriangleMesh>> built = new LinkedHashMap<>(16, 0.75f, true);
     private long triangles;
 
@@ -78,11 +81,20 @@ public final class MeshCache {
         return maxTriangles > 0 ? assetId.substring(assetId.indexOf('-') + 1) : null;
     }
 
+    /** The key of a model file's entries: its bytes' SHA-256 (as its asset id's); null in a cache that keeps nothing. */
+    String keyOf(byte[] file) {
+        return maxTriangles > 0 ? digest(file) : null;
+    }
+
     /** The SHA-256 of an OBJ text. */
     private static String digest(String objText) {
+        return digest(objText.getBytes(StandardCharsets.UTF_8));
+    }
+
+    private static String digest(byte[] bytes) {
         try {
             MessageDigest sha = MessageDigest.getInstance("SHA-256");
-            return HexFormat.of().formatHex(sha.digest(objText.getBytes(StandardCharsets.UTF_8)));
+            return HexFormat.of().formatHex(sha.digest(bytes));
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("every Java runtime has SHA-256", e);
         }
@@ -97,6 +109,19 @@ public final class MeshCache {
         Entry<MeshData> entry = admit(data.triangleCount(), data);
         if (entry != null) {
             release(parsed.put(digest, entry));
+        }
+    }
+
+    /** A glTF model read before, by its file's digest, or null. */
+    synchronized GltfModel model(String digest) {
+        Entry<GltfModel> entry = models.get(digest);
+        return entry != null ? entry.value() : null;
+    }
+
+    synchronized void keepModel(String digest, GltfModel model) {
+        Entry<GltfModel> entry = admit(model.triangleCount(), model);
+        if (entry != null) {
+            release(models.put(digest, entry));
         }
     }
 
@@ -155,9 +180,9 @@ public final class MeshCache {
         return new Entry<>(value, reservation);
     }
 
-    /** Drops the least recently used entry, built meshes before parsed ones; false if there is none. */
+    /** Drops the least recently used entry, built meshes before parsed ones and models; false if there is none. */
     private boolean evictOldest() {
-        Map<?, ? extends Entry<?>> from = !built.isEmpty() ? built : parsed;
+        Map<?, ? extends Entry<?>> from = !built.isEmpty() ? built : !parsed.isEmpty() ? parsed : models;
         Iterator<? extends Entry<?>> oldest = from.values().iterator();
         if (!oldest.hasNext()) {
             return false;
@@ -170,6 +195,7 @@ public final class MeshCache {
     private void release(Entry<?> entry) {
         if (entry != null) {
             int count = entry.value() instanceof MeshData data ? data.triangleCount()
+                    : entry.value() instanceof GltfModel model ? model.triangleCount()
                     : ((TriangleMesh) entry.value()).triangleCount();
             triangles -= count;
             entry.memory().close();

@@ -27,11 +27,11 @@ final class MeshMapping {
     private final MemoryGate memory;
     private final MappingProblems problems;
     /** Triangles the scene may still have. */
-    private int triangleBudget;
+    private final TriangleBudget budget;
 
-    MeshMapping(int maxTriangles, MeshCache cache, MeshFiles files, MeshAssets assets, MemoryGate memory,
+    MeshMapping(TriangleBudget budget, MeshCache cache, MeshFiles files, MeshAssets assets, MemoryGate memory,
                 MappingProblems problems) {
-        this.triangleBudget = maxTriangles;
+        this.budget = budget;
         this.cache = cache;
         this.files = files;
         this.assets = assets;
@@ -47,7 +47,7 @@ final class MeshMapping {
             return null;
         }
         String digest = source.digest();
-        triangleBudget -= data.triangleCount();
+        budget.spend(data.triangleCount());
         MeshCache.Placement placement = new MeshCache.Placement(digest,
                 vec(or(mesh.position(), SceneDefaults.ORIGIN)), or(mesh.scale(), SceneDefaults.MESH_SCALE),
                 vec(or(mesh.rotation(), SceneDefaults.ORIGIN)));
@@ -105,6 +105,7 @@ final class MeshMapping {
     private MeshData meshData(Source source) {
         String digest = source.digest();
         String field = source.field();
+        int triangleBudget = budget.left();
         MeshData data = cache.parsed(digest);
         if (data == null) {
             try {

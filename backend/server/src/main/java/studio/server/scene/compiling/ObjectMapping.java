@@ -33,18 +33,24 @@ final class ObjectMapping {
 
     private final SceneLimits limits;
     private final MeshMapping meshes;
+    private final GltfMapping models;
     private final MemoryGate memory;
     private final MappingProblems problems;
 
     ObjectMapping(SceneLimits limits, MeshCache cache, MeshFiles files, MeshAssets assets, MemoryGate memory,
                   MappingProblems problems) {
         this.limits = limits;
-        this.meshes = new MeshMapping(limits.maxTriangles(), cache, files, assets, memory, problems);
+        TriangleBudget triangles = new TriangleBudget(limits.maxTriangles());
+        this.meshes = new MeshMapping(triangles, cache, files, assets, memory, problems);
+        this.models = new GltfMapping(triangles, cache, files, assets, memory, problems);
         this.memory = memory;
         this.problems = problems;
     }
 
-    /** The objects that map (a problem for each that does not, and for those beyond the limit). */
+    /**
+     * The objects that map (a problem for each that does not, and for those beyond the limit). A glTF
+     * model is an object for each of its materials, and each counts towards the limit.
+     */
     List<SceneObject> of(List<ObjectDto> dtos) {
         problems.atMost("objects", dtos.size(), limits.maxObjects(), "objects");
         memory.reserve(BYTES_PER_OBJECT * Math.min(dtos.size(), limits.maxObjects()));
@@ -52,6 +58,17 @@ final class ObjectMapping {
         for (int i = 0; i < dtos.size() && i < limits.maxObjects(); i++) {
             ObjectDto o = dtos.get(i);
             String path = "objects[" + i + "]";
+            if (o instanceof ObjectDto.Gltf gltf) {
+                List<SceneObject> parts = models.of(gltf, path);
+                memory.reserve(BYTES_PER_OBJECT * Math.max(0, parts.size() - 1));
+                objects.addAll(parts);
+                if (objects.size() > limits.maxObjects()) {
+                    problems.add(path, "brings the scene to " + objects.size() + " objects (one for each of a "
+                            + "model's materials); this server's limit is " + limits.maxObjects());
+                    break;
+                }
+                continue;
+            }
             Shape shape = o instanceof ObjectDto.Mesh mesh ? meshes.of(mesh, path)
                     : problems.attempt(path, () -> shape(o));
             Material material = problems.attempt(path + ".material", () -> MaterialMapping.of(o.material()));

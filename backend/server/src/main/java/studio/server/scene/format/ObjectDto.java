@@ -21,9 +21,11 @@ import jakarta.validation.constraints.Positive;
         @JsonSubTypes.Type(value = ObjectDto.Sphere.class, name = "sphere"),
         @JsonSubTypes.Type(value = ObjectDto.Box.class, name = "box"),
         @JsonSubTypes.Type(value = ObjectDto.Plane.class, name = "plane"),
-        @JsonSubTypes.Type(value = ObjectDto.Mesh.class, name = "mesh")})
+        @JsonSubTypes.Type(value = ObjectDto.Mesh.class, name = "mesh"),
+        @JsonSubTypes.Type(value = ObjectDto.Gltf.class, name = "gltf")})
 public sealed interface ObjectDto {
 
+    /** The object's material; null for a glTF model, whose materials come from its file. */
     MaterialDto material();
 
     record Sphere(
@@ -66,5 +68,27 @@ public sealed interface ObjectDto {
             @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
             @Valid MaterialDto material,
             @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
+    }
+
+    /**
+     * A glTF 2.0 model (.glb, or .gltf with its buffers and images embedded as data: URIs or named by
+     * asset id): exactly one of a {@code file} name (see {@link GltfFileNames}) or the id of an
+     * {@code asset} uploaded before. Its default scene is drawn with the file's node transforms and
+     * materials, then placed as a mesh is: a uniform scale, then the rotation (degrees, order XYZ as
+     * three.js), then moved to {@code position}.
+     */
+    record Gltf(
+            @Pattern(regexp = GltfFileNames.RULE, message = GltfFileNames.MESSAGE) String file,
+            @Pattern(regexp = AssetIds.RULE, message = AssetIds.MESSAGE) String asset,
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
+            @Positive @Finite Double scale,
+            @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
+            @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
+
+        /** None: a model's materials are its file's. */
+        @Override
+        public MaterialDto material() {
+            return null;
+        }
     }
 }

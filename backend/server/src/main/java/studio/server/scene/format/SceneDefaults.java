@@ -69,7 +69,8 @@ public final class SceneDefaults {
             ObjectDto.Sphere.class, Map.of("center", SPHERE_CENTER, "radius", SPHERE_RADIUS),
             ObjectDto.Box.class, Map.of("center", BOX_CENTER, "size", BOX_SIZE, "rotation", ORIGIN),
             ObjectDto.Plane.class, Map.of("point", ORIGIN, "normal", PLANE_NORMAL),
-            ObjectDto.Mesh.class, Map.of("position", ORIGIN, "scale", MESH_SCALE, "rotation", ORIGIN));
+            ObjectDto.Mesh.class, Map.of("position", ORIGIN, "scale", MESH_SCALE, "rotation", ORIGIN),
+            ObjectDto.Gltf.class, Map.of("position", ORIGIN, "scale", MESH_SCALE, "rotation", ORIGIN));
 
     /**
      * The default of a field of one of the format's records, as the schema publishes it, or null

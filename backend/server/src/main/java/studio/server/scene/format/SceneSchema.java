@@ -95,6 +95,10 @@ public final class SceneSchema {
             schema.put("oneOf", List.of(Map.of("required", List.of("obj")), Map.of("required", List.of("file")),
                     Map.of("required", List.of("asset"))));
         }
+        if (type == ObjectDto.Gltf.class) {
+            // a file name or an asset id: one of them
+            schema.put("oneOf", List.of(Map.of("required", List.of("file")), Map.of("required", List.of("asset"))));
+        }
         if (type == RenderDto.class) {
             // the regular sampler needs a square number of samples, and cannot sample adaptively
             List<Integer> squares = IntStream.rangeClosed(1, (int) Math.sqrt(limits.maxSamples()))

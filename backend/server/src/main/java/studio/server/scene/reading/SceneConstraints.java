@@ -167,7 +167,16 @@ final class SceneConstraints {
             entry("ObjectDto.Mesh.rotation", List.of(new FieldRule.Vector())),
             entry("ObjectDto.Mesh.rotation[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
             entry("ObjectDto.Mesh.material", List.of()),
-            entry("ObjectDto.Mesh.name", List.of(new FieldRule.CodePointLength(0, 200))));
+            entry("ObjectDto.Mesh.name", List.of(new FieldRule.CodePointLength(0, 200))),
+            entry("ObjectDto.Gltf.file", List.of(
+                    new FieldRule.Pattern("(?!.*\\.\\.)(?!.*/\\.)(?!.*//)[A-Za-z0-9_-][A-Za-z0-9._/-]*\\.(glb|gltf)"))),
+            entry("ObjectDto.Gltf.asset", List.of(new FieldRule.Pattern("sha256-[0-9a-f]{64}"))),
+            entry("ObjectDto.Gltf.position", List.of(new FieldRule.Vector())),
+            entry("ObjectDto.Gltf.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Gltf.scale", List.of(new FieldRule.Positive(), new FieldRule.Finite())),
+            entry("ObjectDto.Gltf.rotation", List.of(new FieldRule.Vector())),
+            entry("ObjectDto.Gltf.rotation[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Gltf.name", List.of(new FieldRule.CodePointLength(0, 200))));
 
     static final Map<Class<?>, Subtypes> SUBTYPES = Map.ofEntries(
             entry(LightDto.class, new Subtypes("type", Map.ofEntries(
@@ -176,7 +185,8 @@ final class SceneConstraints {
                     entry("sphere", ObjectDto.Sphere.class),
                     entry("box", ObjectDto.Box.class),
                     entry("plane", ObjectDto.Plane.class),
-                    entry("mesh", ObjectDto.Mesh.class)))),
+                    entry("mesh", ObjectDto.Mesh.class),
+                    entry("gltf", ObjectDto.Gltf.class)))),
             entry(MaterialDto.class, new Subtypes("type", Map.ofEntries(
                     entry("flat", MaterialDto.Flat.class),
                     entry("chalk", MaterialDto.Chalk.class),
@@ -242,6 +252,15 @@ final class SceneConstraints {
                     (List<Double>) v[5],
                     (MaterialDto) v[6],
                     (String) v[7]);
+        }
+        if (type == ObjectDto.Gltf.class) {
+            return new ObjectDto.Gltf(
+                    (String) v[0],
+                    (String) v[1],
+                    (List<Double>) v[2],
+                    (Double) v[3],
+                    (List<Double>) v[4],
+                    (String) v[5]);
         }
         if (type == SceneDto.class) {
             return new SceneDto(

@@ -45,7 +45,8 @@ class SceneSchemaTest {
     void objectsMaterialsAndLightsAreDiscriminatedByType() {
         Map<String, Object> defs = (Map<String, Object>) SceneSchema.of(SceneLimits.DEFAULTS).get("$defs");
         assertEquals(List.of(Map.of("$ref", "#/$defs/SphereObject"), Map.of("$ref", "#/$defs/BoxObject"),
-                Map.of("$ref", "#/$defs/PlaneObject"), Map.of("$ref", "#/$defs/MeshObject")),
+                Map.of("$ref", "#/$defs/PlaneObject"), Map.of("$ref", "#/$defs/MeshObject"),
+                Map.of("$ref", "#/$defs/GltfObject")),
                 ((Map<String, Object>) defs.get("Object")).get("oneOf"));
         assertEquals(6, ((List<?>) ((Map<String, Object>) defs.get("Material")).get("oneOf")).size());
         Map<String, Object> glass = (Map<String, Object>) defs.get("GlassMaterial");
