@@ -1,6 +1,6 @@
 import { Object3D, RectAreaLight, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
-import { areaLightCorners, areaLightFrame } from './areaLight';
+import { areaLightCorners, areaLightFrame, areaLightOutline } from './areaLight';
 import type { Vec3 } from './types';
 import { cross, dot, length, normalize, sub } from './vec';
 
@@ -78,5 +78,32 @@ describe('areaLightCorners', () => {
     const three = [[1, -1], [-1, -1], [-1, 1], [1, 1]].map(([sx, sy]) =>
       new Vector3((sx * light.width) / 2, (sy * light.height) / 2, 0).applyMatrix4(light.matrixWorld).toArray() as Vec3);
     areaLightCorners(position, [3, 0.5], lookAt).forEach((c, i) => expectClose(c, three[i], 9));
+  });
+});
+
+describe('areaLightOutline', () => {
+  it('shows a light facing down as its full rectangle from above and as a line from the side', () => {
+    const top = areaLightOutline('top', [1, 3, 2], [2, 1], [1, 0, 2]);
+    expect(top.centre).toEqual([1, 2]);
+    expect(top.aim).toEqual([1, 2]);
+    const xs = top.corners.map((c) => c[0]);
+    const zs = top.corners.map((c) => c[1]);
+    expect(Math.max(...xs) - Math.min(...xs)).toBeCloseTo(2, 6);
+    expect(Math.max(...zs) - Math.min(...zs)).toBeCloseTo(1, 6);
+    expect(Math.hypot(...top.front)).toBeCloseTo(0, 3); // it faces along the top view's depth
+    const side = areaLightOutline('side', [1, 3, 2], [2, 1], [1, 0, 2]);
+    side.corners.forEach((c) => expect(c[1]).toBeCloseTo(3, 3)); // edge-on: a line at y = 3
+    expect(side.front[0]).toBeCloseTo(0, 3);
+    expect(side.front[1]).toBeCloseTo(-1, 6);
+    expect(side.aim).toEqual([1, 0]);
+  });
+
+  it('shows a light facing along x from above as a line across z, facing +x', () => {
+    const top = areaLightOutline('top', [0, 1, 0], [2, 1], [5, 1, 0]);
+    top.corners.forEach((c) => expect(c[0]).toBeCloseTo(0, 12));
+    const zs = top.corners.map((c) => c[1]);
+    expect(Math.max(...zs) - Math.min(...zs)).toBeCloseTo(2, 12);
+    expect(top.front[0]).toBeCloseTo(1, 12);
+    expect(top.front[1]).toBeCloseTo(0, 12);
   });
 });

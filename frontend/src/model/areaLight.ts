@@ -5,6 +5,7 @@
  * position, `size[0]` wide along `right` and `size[1]` high along `up`; it emits along `front`,
  * towards `lookAt`.
  */
+import { worldToPlane, type Vec2, type ViewKind } from './projection';
 import type { Size2, Vec3 } from './types';
 import { add, cross, normalize, scale, sub } from './vec';
 
@@ -47,4 +48,27 @@ export function areaLightCorners(position: Vec3, size: Size2, lookAt: Vec3): [Ve
   const h = scale(up, size[1] / 2);
   const at = (sw: number, sh: number) => add(position, add(scale(w, sw), scale(h, sh)));
   return [at(1, -1), at(-1, -1), at(-1, 1), at(1, 1)];
+}
+
+/** What a plan view draws of an area light, in the view's plane coordinates (metres). */
+export interface AreaLightOutline {
+  /** The rectangle's corners as the view sees them (a line when it is seen edge-on). */
+  corners: [Vec2, Vec2, Vec2, Vec2];
+  /** The rectangle's centre. */
+  centre: Vec2;
+  /** The front's direction as the view sees it: unit length when it lies in the view's plane, 0 when it points along the view. */
+  front: Vec2;
+  /** The aim (lookAt). */
+  aim: Vec2;
+}
+
+/** An area light seen from above (`top`) or the side: its rectangle, the way it faces and its aim. */
+export function areaLightOutline(kind: ViewKind, position: Vec3, size: Size2, lookAt: Vec3): AreaLightOutline {
+  const corners = areaLightCorners(position, size, lookAt).map((c) => worldToPlane(kind, c)) as AreaLightOutline['corners'];
+  return {
+    corners,
+    centre: worldToPlane(kind, position),
+    front: worldToPlane(kind, areaLightFrame(position, lookAt).front),
+    aim: worldToPlane(kind, lookAt),
+  };
 }
