@@ -128,7 +128,7 @@ describe('the light inspector', () => {
     expect(screen.queryByLabelText(/New name for/)).toBeNull();
     await user.click(screen.getByRole('button', { name: 'Add area light' }));
     expect(store().scene.lights).toHaveLength(3);
-    expect(store().scene.lights![2]).toMatchObject({ type: 'area', position: [2, 3, 0], lookAt: [0, 0, 0] });
+    expect(store().scene.lights![2]).toMatchObject({ type: 'area', position: [2, 3, 1], lookAt: [2, 0, 1] }); // the camera is at +z
     expect(store().selection).toEqual({ kind: 'light', index: 2 });
     expect(within(screen.getByTestId('inspector-light')).getByRole('heading')).toHaveTextContent('Area light 3');
   });

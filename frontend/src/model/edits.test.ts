@@ -46,13 +46,16 @@ describe('edits', () => {
     expect((addMesh(SCENE, 'v 0 0 0\n', 4).objects[3] as { position: number[] }).position[1]).toBe(0); // on the floor
   });
 
-  it('adds an area light above the camera target, aimed at it, each next one further along x', () => {
-    const scene: Scene = { camera: { lookAt: [1, 0.5, -1] }, objects: [] };
+  it('adds an area light above the camera target, a metre towards the camera, facing down onto the floor; each next one further along x', () => {
+    const scene: Scene = { camera: { position: [1, 2, 7], lookAt: [1, 0.5, -1] }, objects: [{ type: 'plane', point: [0, 0.25, 0] }] };
     const one = addAreaLight(scene);
     expect(one.lights).toHaveLength(2); // the default light is written out beside it
-    expect(one.lights![1]).toEqual({ type: 'area', position: [1, 3.5, -1], size: [1, 1], lookAt: [1, 0.5, -1], color: '#ffffff', intensity: 1, falloff: false, twoSided: false });
+    expect(one.lights![1]).toEqual({ type: 'area', position: [1, 3.5, 0], size: [1, 1], lookAt: [1, 0.25, 0], color: '#ffffff', intensity: 1, falloff: false, twoSided: false });
     const two = addAreaLight(addLight(one));
-    expect(two.lights![3]).toMatchObject({ position: [3, 3.5, -1], lookAt: [1, 0.5, -1] });
+    expect(two.lights![3]).toMatchObject({ position: [3, 3.5, 0], lookAt: [3, 0.25, 0] });
+    // its aim is never the camera's target, so both crosshairs can be grabbed in the plan views
+    const above = addAreaLight({ camera: { position: [0, 9, 0], lookAt: [0, 0, 0] }, objects: [] });
+    expect(above.lights![1]).toMatchObject({ position: [0, 3, 1], lookAt: [0, 0, 1] });
   });
 
   it('sets only the fields a light’s kind has', () => {

@@ -6,7 +6,7 @@
 import { newAreaLight, newLight, newMesh, newObject, resolveLight, resolveObject, resolveScene, SAMPLE_MESH_OBJ, sceneLights, SCENE_DEFAULTS } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, parseObj } from './obj';
-import { placeOnFloor } from './placement';
+import { floorHeight, placeOnFloor } from './placement';
 import { roundNumber } from './rounding';
 import { objectAnchor } from './projection';
 import type { DragTarget } from './selection';
@@ -81,18 +81,25 @@ export function addLight(scene: Scene): Scene {
   return { ...scene, lights: [...lights, light] };
 }
 
-/** Height above the camera's target at which a new area light hangs, in metres. */
+/** Height above the camera's target (or the floor, if higher) at which a new area light hangs, in metres. */
 export const AREA_LIGHT_HEIGHT = 3;
 
 /**
- * Adds an area light (its defaults written out) aimed at the camera's target, hanging
- * {@link AREA_LIGHT_HEIGHT} above it, each further area light 2 m further along x.
+ * Adds an area light (its defaults written out) hanging {@link AREA_LIGHT_HEIGHT} above the camera's
+ * target, a metre towards the camera, facing straight down onto the floor there (each further area
+ * light 2 m further along x). Its aim is apart from the camera's target, so that in the plan views
+ * each crosshair can be grabbed.
  */
 export function addAreaLight(scene: Scene): Scene {
   const lights = sceneLights(scene);
-  const target = resolveScene({ camera: scene.camera, objects: [] }).camera.lookAt;
+  const { position: eye, lookAt: target } = resolveScene({ camera: scene.camera, objects: [] }).camera;
+  const towards = normalize([eye[0] - target[0], 0, eye[2] - target[2]]);
+  const step: Vec3 = length(towards) > 0 ? towards : [0, 0, 1];
   const others = lights.filter((l) => l.type === 'area').length;
-  const light = newAreaLight(add(target, [2 * others, AREA_LIGHT_HEIGHT, 0]), target);
+  const floor = floorHeight(scene);
+  const aim = add(target, [step[0] + 2 * others, 0, step[2]]).map(roundNumber) as Vec3;
+  aim[1] = floor;
+  const light = newAreaLight([aim[0], Math.max(target[1], floor) + AREA_LIGHT_HEIGHT, aim[2]], aim);
   return { ...scene, lights: [...lights, light] };
 }
 

@@ -21,7 +21,9 @@ const ARROW = 26;
  * An area light in a plan view: its rectangle as seen from there (a line edge-on) in its own colour,
  * arrows the way it shines (both ways when two-sided), a dashed sight line to its aim, and two
  * handles: the light (`data-testid="light-N"`, drag to move it; it keeps facing its aim) and the
- * aim (`data-testid="light-aim-N"`, drag to turn it), as the camera and its target.
+ * aim (`data-testid="light-aim-N"`, drag to turn it), as the camera and its target. The aim is drawn
+ * on top: seen from above, a light facing down has its aim at its centre, and is grabbed by its
+ * rectangle.
  */
 export function AreaLightGlyph({ kind, t, light, index, label, selected }: AreaLightGlyphProps) {
   const o = areaLightOutline(kind, light.position, light.size, light.lookAt);
@@ -42,22 +44,6 @@ export function AreaLightGlyph({ kind, t, light, index, label, selected }: AreaL
     <g className={`area-light-glyph${selected ? ' is-active' : ''}`}>
       <line x1={cx} y1={cy} x2={ax} y2={ay} className="camera-sight" aria-hidden="true" />
       <g
-        data-testid={`light-aim-${index}`}
-        data-target={`lightAim:${index}`}
-        data-selected={selected === 'aim'}
-        className={`glyph glyph--target${selected === 'aim' ? ' is-selected' : ''}`}
-        role="button"
-        tabIndex={0}
-        aria-label={`${label} aim`}
-        aria-pressed={selected === 'aim'}
-        transform={`translate(${ax} ${ay})`}
-      >
-        <title>{`${label} aim (look at) — drag to turn the light`}</title>
-        <circle r={9} className="glyph-hit" />
-        <circle r={5} className="glyph-body target-ring area-aim-ring" stroke={light.color} />
-        <path d="M -8 0 H -3 M 3 0 H 8 M 0 -8 V -3 M 0 3 V 8" className="target-cross" />
-      </g>
-      <g
         data-testid={`light-${index}`}
         data-target={`light:${index}`}
         data-selected={selected === 'light'}
@@ -73,6 +59,22 @@ export function AreaLightGlyph({ kind, t, light, index, label, selected }: AreaL
         {light.twoSided && arrow(-1)}
         <circle cx={cx} cy={cy} r={10} className="glyph-hit" />
         <circle cx={cx} cy={cy} r={3.5} className="glyph-centre" />
+      </g>
+      <g
+        data-testid={`light-aim-${index}`}
+        data-target={`lightAim:${index}`}
+        data-selected={selected === 'aim'}
+        className={`glyph glyph--target${selected === 'aim' ? ' is-selected' : ''}`}
+        role="button"
+        tabIndex={0}
+        aria-label={`${label} aim`}
+        aria-pressed={selected === 'aim'}
+        transform={`translate(${ax} ${ay})`}
+      >
+        <title>{`${label} aim (look at) — drag to turn the light`}</title>
+        <circle r={9} className="glyph-hit" />
+        <circle r={5} className="glyph-body target-ring" />
+        <path d="M -8 0 H -3 M 3 0 H 8 M 0 -8 V -3 M 0 3 V 8" className="target-cross" />
       </g>
     </g>
   );

@@ -80,7 +80,10 @@ describe('lights in the top and side views', () => {
     resetSceneStore(SCENE);
     render(<TopView />);
     const svg = screen.getByTestId('top-view');
-    drag(within(svg).getByTestId('light-1'), svg, worldToSvg('top', top(), [0, 3, 0]), [40, 0]);
+    // seen from above its aim is at its centre, drawn on top (later): the light is grabbed by its rectangle
+    const [body, aim] = [within(svg).getByTestId('light-1'), within(svg).getByTestId('light-aim-1')];
+    expect(body.compareDocumentPosition(aim) & Node.DOCUMENT_POSITION_FOLLOWING).toBeTruthy();
+    drag(within(svg).getByTestId('light-1'), svg, worldToSvg('top', top(), [0.75, 3, 0.3]), [40, 0]);
     expect(store().scene.lights![1]).toMatchObject({ position: [1, 3, 0], lookAt: [0, 0, 0] });
     expect(store().selection).toEqual({ kind: 'light', index: 1 });
     drag(within(svg).getByTestId('light-aim-1'), svg, worldToSvg('top', top(), [0, 0, 0]), [0, 80]);
