@@ -100,7 +100,7 @@ export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: Toolba
           type="button"
           data-testid="add-area-light"
           aria-label="Add area light"
-          title="Add a white rectangular light 3 m above the camera's target, facing it (soft shadows)"
+          title="Add a white rectangular light 3 m above the camera's target, facing the floor (soft shadows)"
           onClick={s.addAreaLight}
         >
           + Area light
