@@ -1,8 +1,9 @@
 /**
  * The rules the scene schema cannot state, checked in the editor with the server's own messages
  * (`SceneMapper`): the camera's (its target apart from it, `up` not along the view), the render
- * budget, and the sphere and area lights' (issue 46; see {@link lightProblems}). With {@link schemaProblems} they let the editor flag a scene the server would refuse
- * before Render is pressed; the server stays the judge.
+ * budget, and the sphere and area lights' ({@link lightProblems}). With {@link schemaProblems} they
+ * let the editor flag a scene the server would refuse before Render is pressed; the server stays
+ * the judge.
  */
 import { resolveLight, resolveScene, sceneLights } from './defaults';
 import { schemaProblems, type Problem } from './schemaRules';
@@ -40,7 +41,7 @@ export function budgetProblems(scene: Scene, budget = RENDER_BUDGET_SAMPLES): Pr
 }
 
 /**
- * The sphere and area lights' rules (issue 46), with Bean Validation's words as the schema's rules
+ * The sphere and area lights' rules, with Bean Validation's words as the schema's rules
  * have them: a point light's radius finite and at least 0, an area light's width and height greater
  * than 0 and its `lookAt` apart from its position (worded as the camera's). The radius and sizes
  * move to the schema's rules when the server publishes them ({@link sceneProblems} then keeps one
