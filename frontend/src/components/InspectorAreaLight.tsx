@@ -74,7 +74,7 @@ export function InspectorAreaLight({ index, light }: InspectorAreaLightProps) {
         label="Falls off with distance (1/d²)"
         path={`${path}.falloff`}
         checked={r.falloff}
-        hint="Off: the same light at any distance. On: divided by the squared distance, as a point light's."
+        hint="As a point light's: a very small area light lights as a point light with the same setting"
         onCommit={(v) => setField(index, 'falloff', v)}
       />
       <CheckboxField

@@ -98,6 +98,11 @@ describe('the light inspector', () => {
     resetSceneStore(SCENE);
     store().select({ kind: 'lightAim', index: 1 });
     render(<CheckedInspector />);
+    const outline = screen.getByRole('navigation', { name: 'Scene contents' });
+    expect(within(outline).getByRole('button', { name: 'Area light 2' })).toHaveAttribute('aria-pressed', 'true');
+    await user.click(within(outline).getByRole('button', { name: 'Area light 2' })); // picks the light itself
+    expect(store().selection).toEqual({ kind: 'light', index: 1 });
+    store().select({ kind: 'lightAim', index: 1 });
     const width = screen.getByLabelText('Size w');
     await user.clear(width);
     await user.type(width, '0{Enter}');

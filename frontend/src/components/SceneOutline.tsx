@@ -28,7 +28,9 @@ export function SceneOutline() {
     setRenaming(null);
   };
   const item = (key: string, label: string, target: Selection, detail?: string, name?: string, renamable = target?.kind === 'object' || target?.kind === 'light') => {
-    const selected = sameSelection(selection, target) || inItems(selectedItems, target);
+    // an area light is shown selected while its aim is
+    const aimOf = selection?.kind === 'lightAim' && target?.kind === 'light' && selection.index === target.index;
+    const selected = sameSelection(selection, target) || inItems(selectedItems, target) || aimOf;
     if (renaming === key) {
       return (
         <li key={key}>
@@ -57,7 +59,7 @@ export function SceneOutline() {
           title={renamable ? `Select ${label} (Shift or Ctrl to add to the selection; double-click or F2 to rename)` : `Select ${label}`}
           onClick={(e) => {
             if (e.shiftKey || e.ctrlKey || e.metaKey) toggleSelect(target);
-            else select(selected && selectedItems.length <= 1 ? null : target);
+            else select(selected && !aimOf && selectedItems.length <= 1 ? null : target);
           }}
           onDoubleClick={() => renamable && setRenaming(key)}
           onKeyDown={(e) => e.key === 'F2' && renamable && setRenaming(key)}
