@@ -118,7 +118,8 @@ try {
 
   await step('the editor opens with its views, preview and inspector', async () => {
     await page.goto(server.base);
-    await page.getByTestId('top-view').waitFor();
+    // a loaded machine takes a while to first paint a cold page: the first wait is long
+    await page.getByTestId('top-view').waitFor({ timeout: 90_000 });
     await page.getByTestId('side-view').waitFor();
     expect(await page.getByText('3D preview').count() > 0, 'no 3D preview');
   });
@@ -732,6 +733,46 @@ try {
     await page.getByRole('button', { name: /^History/ }).click();
     await strip.getByRole('button', { name: new RegExp(`^Render ${first} `) }).waitFor();
     await page.screenshot({ path: `${out}render-history-reloaded.png` });
+  });
+
+  await step('soft lights: an area light lights the floor in the preview and glows, turns by its aim in the top view; a radius shows', async () => {
+    const soft = {
+      name: 'soft', background: '#101418',
+      camera: { position: [0, 2, 8], lookAt: [0, 0, 0], fov: 50 },
+      lights: [{ type: 'area', position: [0, 3, 0], size: [2, 1], lookAt: [0, 0, 0], color: '#ffffff', intensity: 1, falloff: false, twoSided: false }],
+      objects: [{ type: 'plane', point: [0, 0, 0], normal: [0, 1, 0], material: { type: 'chalk', color: '#cccccc' } }],
+    };
+    await page.getByRole('tab', { name: '3D preview' }).click();
+    await openScene(page, soft);
+    await page.keyboard.press('Escape');
+    await page.waitForTimeout(300);
+    const [under, far, face] = await previewColours(page, [
+      await previewPixel(page, soft, [0, 0, 1.5]), await previewPixel(page, soft, [6, 0, 1.5]), await previewPixel(page, soft, [0, 3, 0]),
+    ]);
+    await page.screenshot({ path: `${out}preview-area-light.png` });
+    expect(brightness(under) > 1.5 * brightness(far) && brightness(under) > 150, `the area light does not light the floor below it: ${under} below, ${far} aside`);
+    expect(brightness(face) > 600, `the area light's face does not glow: ${face}`);
+    const top = page.getByTestId('top-view');
+    expect(await top.getByTestId('light-0').locator('polygon').count() === 1, 'no rectangle for the area light in the top view');
+    const aim = await top.getByTestId('light-aim-0').boundingBox();
+    const x = aim.x + aim.width / 2, y = aim.y + aim.height / 2;
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let i = 1; i <= 6; i++) await page.mouse.move(x + 8 * i, y);
+    await page.mouse.up();
+    await until(async () => Number(await page.getByLabel('Aim (look at) x').inputValue()) > 0, 'dragging the aim did not turn the light');
+    const turned = (await sceneOf(page)).lights[0];
+    expect(turned.position.join(',') === '0,3,0' && turned.lookAt[0] > 0, `the drag moved the wrong thing: ${JSON.stringify(turned)}`);
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await page.getByTestId('add-light').click();
+    await page.getByLabel('Radius').fill('0.5');
+    await page.getByLabel('Radius').press('Enter');
+    await top.getByTestId('light-radius-1').waitFor();
+    await page.getByLabel('Radius').fill('-1');
+    await page.getByLabel('Radius').press('Enter');
+    expect((await page.getByLabel('Radius').getAttribute('aria-invalid')) === 'true', 'a negative radius is not flagged');
+    expect((await sceneOf(page)).lights[1].radius === 0.5, 'a negative radius was taken');
+    await page.keyboard.press('Escape');
   });
 
   await step('axe-core finds no accessibility violations in the main states, at 1024x768 and 1440x900', async () => {

@@ -17,7 +17,7 @@ export function Inspector() {
       <SceneOutline />
       <SelectionSummary />
       {selection?.kind === 'object' && <InspectorObject key={`o${selection.index}`} index={selection.index} />}
-      {selection?.kind === 'light' && <InspectorLight key={`l${selection.index}`} index={selection.index} />}
+      {(selection?.kind === 'light' || selection?.kind === 'lightAim') && <InspectorLight key={`l${selection.index}`} index={selection.index} />}
       {selection === null && <p className="hint">Click an object, light or the camera in a view (or in the list above) to edit it.</p>}
       <InspectorCamera active={selection?.kind === 'camera' || selection?.kind === 'target'} />
       <InspectorScene />

@@ -1,7 +1,9 @@
 import { resolveLight, sceneLights } from '../model/defaults';
+import type { ResolvedLightOf } from '../model/types';
 import * as edits from '../model/edits';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { CheckboxField } from './fields/CheckboxField';
+import { InspectorAreaLight } from './InspectorAreaLight';
 import { ColorField } from './fields/ColorField';
 import { NumberField } from './fields/NumberField';
 import { NameField } from './fields/NameField';
@@ -14,7 +16,7 @@ export interface InspectorLightProps {
   index: number;
 }
 
-/** Fields of one point light. */
+/** Fields of one light: a point light's here, an area light's in {@link InspectorAreaLight}. */
 export function InspectorLight({ index }: InspectorLightProps) {
   const lights = useSceneStore((s) => selectDisplayScene(s).lights);
   const light = sceneLights({ lights, objects: [] })[index];
@@ -22,7 +24,8 @@ export function InspectorLight({ index }: InspectorLightProps) {
   const setPreview = useSceneStore((s) => s.setPreview);
   const cancelPreview = useSceneStore((s) => s.cancelPreview);
   if (!light) return null;
-  const r = resolveLight(light);
+  if (light.type === 'area') return <InspectorAreaLight index={index} light={light} />;
+  const r = resolveLight(light) as ResolvedLightOf<'point'>;
   const path = `lights[${index}]`;
   return (
     <section className="inspector-section" aria-label={`${labelOf(light, index)} properties`} data-testid="inspector-light">
@@ -34,6 +37,15 @@ export function InspectorLight({ index }: InspectorLightProps) {
         value={r.position}
         hint="Where the point light is (metres)"
         onCommit={(v) => setField(index, 'position', v)}
+      />
+      <NumberField
+        label="Radius"
+        path={`${path}.radius`}
+        value={r.radius}
+        min={0}
+        step={0.05}
+        hint="Metres: 0 is a point (hard shadows); above 0 a glowing sphere of that radius (soft shadows, seen in mirrors)"
+        onCommit={(v) => setField(index, 'radius', v)}
       />
       <ColorField
         label="Light color"

@@ -4,12 +4,13 @@ import { idOf } from '../model/identity';
 import { inItems, sameSelection, type Selection } from '../model/selection';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { useMeshLookup } from '../hooks/useMeshes';
-import { labelOf, MATERIAL_LABELS, meshName } from './labels';
+import { labelOf, MATERIAL_LABELS, meshName, nameOf } from './labels';
 
 /**
  * A clickable list of everything in the scene: objects and lights (by name, or kind and stable
  * number), the camera and its target. Shift/Ctrl-click adds an object or light to the selection
- * (or takes it out). Double-click (or F2 on) an object or light to rename it.
+ * (or takes it out). Double-click (or F2 on) an object or point light to rename it (an area light
+ * has no name in the format).
  */
 export function SceneOutline() {
   const scene = useSceneStore(selectDisplayScene);
@@ -26,8 +27,10 @@ export function SceneOutline() {
     if (target?.kind === 'light') s.setLightField(target.index, 'name', value);
     setRenaming(null);
   };
-  const item = (key: string, label: string, target: Selection, detail?: string, name?: string) => {
-    const selected = sameSelection(selection, target) || inItems(selectedItems, target);
+  const item = (key: string, label: string, target: Selection, detail?: string, name?: string, renamable = target?.kind === 'object' || target?.kind === 'light') => {
+    // an area light is shown selected while its aim is
+    const aimOf = selection?.kind === 'lightAim' && target?.kind === 'light' && selection.index === target.index;
+    const selected = sameSelection(selection, target) || inItems(selectedItems, target) || aimOf;
     if (renaming === key) {
       return (
         <li key={key}>
@@ -47,7 +50,6 @@ export function SceneOutline() {
         </li>
       );
     }
-    const renamable = target?.kind === 'object' || target?.kind === 'light';
     return (
       <li key={key}>
         <button
@@ -80,7 +82,7 @@ export function SceneOutline() {
       </ul>
       <h3>Lights</h3>
       <ul>
-        {lights.map((l, i) => item(idOf(l) ?? `l${i}`, labelOf(l, i), { kind: 'light', index: i }, scene.lights ? undefined : 'default', l.name))}
+        {lights.map((l, i) => item(idOf(l) ?? `l${i}`, labelOf(l, i), { kind: 'light', index: i }, scene.lights ? undefined : 'default', nameOf(l), l.type === 'point'))}
         {item('camera', 'Camera', { kind: 'camera' })}
         {item('target', 'Camera target', { kind: 'target' })}
       </ul>

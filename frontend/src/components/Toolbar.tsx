@@ -32,7 +32,7 @@ export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: Toolba
   const s = useSceneStore.getState();
   const canUndo = useSceneStore((st) => st.past.length > 0);
   const canRedo = useSceneStore((st) => st.future.length > 0);
-  const editable = useSceneStore((st) => st.selection?.kind === 'object' || st.selection?.kind === 'light');
+  const editable = useSceneStore((st) => st.selection?.kind === 'object' || st.selection?.kind === 'light' || st.selection?.kind === 'lightAim');
   const snap = useSceneStore((st) => st.snap);
   const gridSize = useSceneStore((st) => st.gridSize);
   const showApiError = useCallback(
@@ -93,8 +93,17 @@ export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: Toolba
           </button>
         ))}
         <AddMeshButton onMessage={onMessage} />
-        <button type="button" data-testid="add-light" aria-label="Add light" title="Add a white point light" onClick={s.addLight}>
+        <button type="button" data-testid="add-light" aria-label="Add light" title="Add a white point light (give it a radius for soft shadows)" onClick={s.addLight}>
           + Light
+        </button>
+        <button
+          type="button"
+          data-testid="add-area-light"
+          aria-label="Add area light"
+          title="Add a white rectangular light 3 m above the camera's target, facing the floor (soft shadows)"
+          onClick={s.addAreaLight}
+        >
+          + Area light
         </button>
       </div>
       {panels && onPanels && (

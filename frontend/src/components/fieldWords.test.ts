@@ -16,6 +16,11 @@ describe('describeField', () => {
     expect(describeField(SCENE, 'image.width')).toBe('Image › Width');
     expect(describeField(SCENE, 'render.samples')).toBe('Render › Samples per pixel');
     expect(describeField(SCENE, 'background')).toBe('Scene › Background');
+    const lit: Scene = { objects: [], lights: [{ type: 'point', radius: -1 }, { type: 'area', size: [0, 1] }] };
+    expect(describeField(lit, 'lights[0].radius')).toBe('Light 1 › Radius');
+    expect(describeField(lit, 'lights[1].size[0]')).toBe('Area light 2 › Size w');
+    expect(describeField(lit, 'lights[1].lookAt[2]')).toBe('Area light 2 › Aim z');
+    expect(describeField(lit, 'lights[1].twoSided')).toBe('Area light 2 › Two-sided');
   });
 });
 
@@ -26,6 +31,7 @@ describe('plainMessage', () => {
     expect(plain).not.toContain('studio.');
     expect(plain).toContain('render budget of 268,435,456 samples per render; lower Render › Samples per pixel or the image size');
     expect(plainMessage(SCENE, 'must differ from camera.position')).toBe('must differ from Camera › Position');
+    expect(plainMessage({ objects: [], lights: [{ type: 'area' }] }, 'must differ from lights[0].position')).toBe('must differ from Area light 1 › Position');
     expect(plainMessage(SCENE, 'set studio.limits.max-width higher')).toBe('set a server setting higher');
   });
 });

@@ -10,6 +10,7 @@ import { lightLabel, objectLabel } from './labels';
 import { OVERRIDE_FIELDS } from './labels';
 
 const AXES = ['x', 'y', 'z'];
+const SIZE_AXES = ['w', 'h'];
 
 /** The inspector's label of a field of each part of the scene. */
 const FIELD_WORDS: Record<string, Record<string, string>> = {
@@ -18,7 +19,10 @@ const FIELD_WORDS: Record<string, Record<string, string>> = {
     position: 'Position', scale: 'Scale', obj: 'OBJ', file: 'File', name: 'Name', type: 'Type', material: 'Material',
   },
   material: { type: 'Material type', color: 'Color', ...Object.fromEntries(Object.entries(OVERRIDE_FIELDS).map(([k, v]) => [k, v.label])) },
-  light: { position: 'Position', color: 'Color', intensity: 'Intensity', falloff: 'Falls off with distance', name: 'Name' },
+  light: {
+    position: 'Position', color: 'Color', intensity: 'Intensity', falloff: 'Falls off with distance', name: 'Name', radius: 'Radius',
+    size: 'Size', lookAt: 'Aim', twoSided: 'Two-sided',
+  },
   camera: { position: 'Position', lookAt: 'Look at', up: 'Up', fov: 'Field of view' },
   image: { width: 'Width', height: 'Height', format: 'Format', quality: 'JPEG quality' },
   render: { sampler: 'Sampler', samples: 'Samples per pixel', maxDepth: 'Max depth', seed: 'Seed', adaptive: 'Adaptive threshold' },
@@ -29,11 +33,14 @@ const FIELD_WORDS: Record<string, Record<string, string>> = {
 function stepWords(part: string, steps: (string | number)[]): string[] {
   const words: string[] = [];
   let table = FIELD_WORDS[part];
+  let axes = AXES;
   for (const step of steps) {
     if (typeof step === 'number') {
-      if (words.length > 0) words[words.length - 1] += ` ${AXES[step] ?? step + 1}`;
+      if (words.length > 0) words[words.length - 1] += ` ${axes[step] ?? step + 1}`;
       continue;
     }
+    // an area light's size is [width, height], as its inspector tags them
+    axes = part === 'light' && step === 'size' ? SIZE_AXES : AXES;
     words.push(table?.[step] ?? step);
     table = step === 'material' ? FIELD_WORDS.material : {};
   }
@@ -67,6 +74,6 @@ export function plainMessage(scene: Scene, message: string): string {
   return message
     .replace(/\s*\((?:studio|spring|server)\.[\w.-]+\)/g, '')
     .replace(/\b(?:studio|spring)\.[a-z][\w-]*(?:\.[\w-]+)+/g, 'a server setting')
-    .replace(/\b(camera|image|render)\.[a-zA-Z]+\b/g, (p) => describeField(scene, p))
+    .replace(/\b(?:(?:camera|image|render)|(?:lights|objects)\[\d+\])\.[a-zA-Z]+\b/g, (p) => describeField(scene, p))
     .replace(/\(lookAt - position\)/g, '(Look at − Position)');
 }

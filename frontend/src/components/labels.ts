@@ -1,7 +1,7 @@
 /** Display names and tooltips shared by the inspector, the outline, the toolbar and the views. */
 import type { MeshState } from '../model/meshCache';
 import { idNumber, idOf } from '../model/identity';
-import type { Light, MaterialType, ObjectType, Scene, SceneObject } from '../model/types';
+import type { Light, LightType, MaterialType, ObjectType, Scene, SceneObject } from '../model/types';
 
 export const OBJECT_LABELS: Record<ObjectType, string> = { sphere: 'Sphere', box: 'Box', plane: 'Plane', mesh: 'Mesh' };
 
@@ -53,10 +53,19 @@ export function objectLabel(scene: Scene, index: number): string {
   return object ? labelOf(object, index) : `Object ${index + 1}`;
 }
 
+/** What each kind of light is called. */
+export const LIGHT_LABELS: Record<LightType, string> = { point: 'Light', area: 'Area light' };
+
+/** The user's name of an object or light, if it has one (an area light has no name field). */
+export function nameOf(item: SceneObject | Light): string | undefined {
+  return 'name' in item ? item.name : undefined;
+}
+
 /** An object's or light's label: its name in quotes after its kind, or its kind and id number. */
 export function labelOf(item: SceneObject | Light, index: number): string {
-  const kind = item.type === 'point' ? 'Light' : OBJECT_LABELS[item.type];
-  if (item.name) return `${kind} "${item.name}"`;
+  const kind = item.type === 'point' || item.type === 'area' ? LIGHT_LABELS[item.type] : OBJECT_LABELS[item.type];
+  const name = nameOf(item);
+  if (name) return `${kind} "${name}"`;
   return `${kind} ${idNumber(idOf(item)) ?? index + 1}`;
 }
 

@@ -1,4 +1,5 @@
 /** What a plan view should show to see the whole scene, and the zoom that fits it. */
+import { areaLightCorners } from './areaLight';
 import { resolveScene } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds } from './obj';
@@ -8,11 +9,13 @@ import type { Scene, Vec3 } from './types';
 
 /**
  * Points that outline the scene: sphere and box extremes, plane points, the corners of meshes'
- * bounds (or their positions while their triangles are not known), lights, camera and target.
+ * bounds (or their positions while their triangles are not known), lights (an area light's corners
+ * and aim), camera and target.
  */
 export function scenePoints(scene: Scene, meshes: MeshLookup = NO_MESHES): Vec3[] {
   const r = resolveScene(scene);
-  const points: Vec3[] = [r.camera.position, r.camera.lookAt, ...r.lights.map((l) => l.position)];
+  const points: Vec3[] = [r.camera.position, r.camera.lookAt];
+  for (const l of r.lights) points.push(...(l.type === 'area' ? [...areaLightCorners(l.position, l.size, l.lookAt), l.lookAt] : [l.position]));
   for (const o of r.objects) {
     if (o.type === 'plane') points.push(o.point);
     else if (o.type === 'mesh') {

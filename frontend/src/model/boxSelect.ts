@@ -3,7 +3,7 @@
  * mesh's position, a light's position) the view draws inside a rectangle dragged on screen. Planes
  * have no place to hold on to and are picked by clicking. Pure.
  */
-import { resolveObject, sceneLights, newLight } from './defaults';
+import { resolveLight, resolveObject, sceneLights } from './defaults';
 import { objectAnchor, worldToSvg, type Vec2, type ViewKind, type ViewTransform } from './projection';
 import type { SceneItem } from './selection';
 import type { Scene } from './types';
@@ -19,7 +19,7 @@ export function itemsInRect(scene: Scene, kind: ViewKind, t: ViewTransform, a: V
     if (inside(worldToSvg(kind, t, objectAnchor(resolveObject(object))))) found.push({ kind: 'object', index });
   });
   sceneLights(scene).forEach((light, index) => {
-    if (inside(worldToSvg(kind, t, light.position ?? newLight().position!))) found.push({ kind: 'light', index });
+    if (inside(worldToSvg(kind, t, resolveLight(light).position))) found.push({ kind: 'light', index });
   });
   return found;
 }

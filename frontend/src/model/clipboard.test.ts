@@ -54,4 +54,13 @@ describe('copy and paste as scene JSON', () => {
     expect(pasteText(SCENE, '{"objects": 3}')).toBeNull();
     expect(pasteText(SCENE, '{"objects": []}')).toBeNull();
   });
+
+  it('copies an area light with its aim selected, and pastes it beside itself facing the same way', () => {
+    const scene: Scene = { objects: [], lights: [{ type: 'area', position: [0, 3, 0], lookAt: [0, 0, 0], size: [2, 1] }] };
+    const text = copyText(scene, { kind: 'lightAim', index: 0 })!;
+    expect(JSON.parse(text).lights).toEqual(scene.lights);
+    const pasted = pasteText(scene, text)!;
+    expect(pasted.scene.lights![1]).toEqual({ type: 'area', position: [0.5, 3, 0.5], lookAt: [0.5, 0, 0.5], size: [2, 1] });
+    expect(pasted.selection).toEqual({ kind: 'light', index: 1 });
+  });
 });

@@ -4,10 +4,10 @@
  * scene file pastes too); pasting adds every object and light of such a scene. Pure.
  */
 import { FORMAT_VERSION, resolveObject, sceneLights } from './defaults';
-import { anchorField, DUPLICATE_OFFSET } from './edits';
+import { anchorField, DUPLICATE_OFFSET, lightAside } from './edits';
 import { objectAnchor } from './projection';
 import type { SceneItem, Selection } from './selection';
-import type { Scene, SceneObject, Vec3 } from './types';
+import type { Light, Scene, SceneObject, Vec3 } from './types';
 import { parseScene } from './validate';
 import { add, vecEquals } from './vec';
 
@@ -27,7 +27,7 @@ export function copyText(scene: Scene, selection: Selection, items: readonly Sce
   if (selection?.kind === 'object' && scene.objects[selection.index]) {
     return JSON.stringify({ version: FORMAT_VERSION, objects: [scene.objects[selection.index]] }, null, 2);
   }
-  const light = selection?.kind === 'light' ? sceneLights(scene)[selection.index] : undefined;
+  const light = selection?.kind === 'light' || selection?.kind === 'lightAim' ? sceneLights(scene)[selection.index] : undefined;
   if (light) return JSON.stringify({ version: FORMAT_VERSION, lights: [light], objects: [] }, null, 2);
   return null;
 }
@@ -55,7 +55,9 @@ export function pasteText(scene: Scene, text: string): Pasted | null {
   const objects = parsed.scene.objects.map((o) => aside(o, taken));
   const lights = sceneLights(scene);
   const next: Scene = { ...scene, objects: [...scene.objects, ...objects] };
-  if (lightsIn.length > 0) next.lights = [...lights, ...lightsIn.map((l) => ({ ...l, position: l.position && lights.some((m) => m.position && vecEquals(m.position, l.position!)) ? add(l.position, DUPLICATE_OFFSET) : l.position }))];
+  // a light pasted onto one already there moves aside as a duplicate does (an area light with its aim)
+  const onAnother = (l: Light) => l.position !== undefined && lights.some((m) => m.position && vecEquals(m.position, l.position!));
+  if (lightsIn.length > 0) next.lights = [...lights, ...lightsIn.map((l) => (onAnother(l) ? lightAside(l) : l))];
   const selection: Selection = objects.length > 0 ? { kind: 'object', index: scene.objects.length } : { kind: 'light', index: lights.length };
   const items: SceneItem[] = [
     ...objects.map((_, k) => ({ kind: 'object' as const, index: scene.objects.length + k })),

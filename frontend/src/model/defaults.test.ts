@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { exampleScenes } from '../test/scenes';
-import { blankScene, imageAspect, MATERIAL_DEFAULTS, newMesh, newObject, resolveMaterial, resolveScene, SAMPLE_MESH_OBJ } from './defaults';
+import { blankScene, imageAspect, MATERIAL_DEFAULTS, newAreaLight, newLight, newMesh, newObject, resolveLight, resolveMaterial, resolveScene, SAMPLE_MESH_OBJ } from './defaults';
 import { parseObj } from './obj';
 import { STARTER_SCENE } from './starterScene';
 import type { Scene } from './types';
@@ -14,7 +14,7 @@ describe('resolveScene', () => {
     expect(r.background).toBe('#20232a');
     expect(r.ambient).toBe(0.08);
     expect(r.render).toEqual({ sampler: 'sobol', samples: 16, maxDepth: 6, seed: 0, adaptive: 0.05 });
-    expect(r.lights).toEqual([{ type: 'point', position: [5, 8, 5], color: '#ffffff', intensity: 1, falloff: false }]);
+    expect(r.lights).toEqual([{ type: 'point', position: [5, 8, 5], color: '#ffffff', intensity: 1, falloff: false, radius: 0 }]);
     expect(r.objects[0]).toEqual({ type: 'sphere', center: [0, 1, 0], radius: 1, material: { type: 'chalk', color: '#cccccc', diffuse: 0.9 } });
     expect(r.objects[1]).toMatchObject({ type: 'plane', point: [0, 0, 0], normal: [0, 1, 0] });
   });
@@ -66,5 +66,24 @@ describe('resolveScene', () => {
     expect(newObject('mesh')).toMatchObject({ type: 'mesh', obj: SAMPLE_MESH_OBJ, position: [0, 0, 0], scale: 1, rotation: [0, 0, 0] });
     expect(parseObj(SAMPLE_MESH_OBJ).triangleCount).toBe(8);
     expect(newMesh('v 0 0 0\n', 2.5)).toEqual({ type: 'mesh', obj: 'v 0 0 0\n', position: [0, 0, 0], scale: 2.5, rotation: [0, 0, 0], material: { type: 'plastic', color: '#4f8fd6' } });
+  });
+
+  it('resolves each kind of light with its own defaults', () => {
+    expect(resolveLight({ type: 'point', radius: 0.25 })).toEqual({ type: 'point', position: [5, 8, 5], color: '#ffffff', intensity: 1, falloff: false, radius: 0.25 });
+    expect(resolveLight({ type: 'area', size: [2, 0.5] })).toEqual({
+      type: 'area', position: [0, 3, 0], size: [2, 0.5], lookAt: [0, 0, 0], color: '#ffffff', intensity: 1, falloff: false, twoSided: false,
+    });
+    const a = resolveLight({ type: 'area' });
+    if (a.type === 'area') a.size[0] = 99;
+    expect(resolveLight({ type: 'area' })).toMatchObject({ size: [1, 1] });
+  });
+
+  it('writes a new point light without a radius, and a new area light in full', () => {
+    expect(newLight()).toEqual({ type: 'point', position: [5, 8, 5], color: '#ffffff', intensity: 1, falloff: false });
+    expect(resolveScene({ objects: [] }).lights).toEqual([resolveLight(newLight())]);
+    const area = newAreaLight([1, 2, 3], [0, 0, 0]);
+    expect(area).toEqual({ type: 'area', position: [1, 2, 3], size: [1, 1], lookAt: [0, 0, 0], color: '#ffffff', intensity: 1, falloff: false, twoSided: false });
+    area.size![0] = 5;
+    expect(newAreaLight([1, 2, 3], [0, 0, 0]).size).toEqual([1, 1]);
   });
 });

@@ -10,9 +10,12 @@ import type {
   MeshSourceField,
   MaterialType,
   ObjectOf,
+  AreaLight,
+  Light,
   ObjectType,
   PointLight,
   ResolvedLight,
+  ResolvedLightOf,
   ResolvedMaterial,
   ResolvedObject,
   ResolvedScene,
@@ -34,13 +37,29 @@ export const SCENE_DEFAULTS: Omit<ResolvedScene, 'lights' | 'objects'> = {
   render: { sampler: 'sobol', samples: 16, maxDepth: 6, seed: 0, adaptive: 0.05 },
 };
 
-/** A light's defaults; also the one light a scene without a `lights` field has. */
-export const LIGHT_DEFAULTS: ResolvedLight = {
+/**
+ * A point light's defaults; without its radius (0: a point) also the one light a scene without a
+ * `lights` field has.
+ */
+export const LIGHT_DEFAULTS: ResolvedLightOf<'point'> = {
   type: 'point',
   position: [5, 8, 5],
   color: '#ffffff',
   intensity: 1,
   falloff: false,
+  radius: 0,
+};
+
+/** An area light's defaults: a metre square 3 m above the origin, facing down onto it. */
+export const AREA_LIGHT_DEFAULTS: ResolvedLightOf<'area'> = {
+  type: 'area',
+  position: [0, 3, 0],
+  size: [1, 1],
+  lookAt: [0, 0, 0],
+  color: '#ffffff',
+  intensity: 1,
+  falloff: false,
+  twoSided: false,
 };
 
 /** The geometry defaults of each object kind (a mesh's `obj` or `file` has none: one is required). */
@@ -90,13 +109,15 @@ export function resolveObject(object: SceneObject): ResolvedObject {
   return { ...geometry, material: resolveMaterial(object.material) } as ResolvedObject;
 }
 
-export function resolveLight(light: PointLight): ResolvedLight {
-  return cloneVectors({ ...LIGHT_DEFAULTS, ...definedOnly(light) });
+/** A light with the defaults of its kind filled in. */
+export function resolveLight(light: Light): ResolvedLight {
+  const defaults: ResolvedLight = light.type === 'area' ? AREA_LIGHT_DEFAULTS : LIGHT_DEFAULTS;
+  return cloneVectors({ ...defaults, ...definedOnly(light) } as ResolvedLight);
 }
 
 /** The lights a scene really has: its own, or the default light when the field is left out. */
-export function sceneLights(scene: Scene): PointLight[] {
-  return scene.lights ?? [{ ...LIGHT_DEFAULTS, position: copy(LIGHT_DEFAULTS.position) }];
+export function sceneLights(scene: Scene): Light[] {
+  return scene.lights ?? [newLight()];
 }
 
 /** The scene with every default filled in; the input is not changed. */
@@ -135,9 +156,18 @@ export function newMesh(obj: string, scale: number): MeshObject {
   return { type: 'mesh', obj, position: copy(position), scale, rotation: copy(rotation), material: { type: 'plastic', color: '#4f8fd6' } };
 }
 
-/** A new light, written out in full. */
+/**
+ * A new point light, written out in full but for its radius: a radius of 0 is left out, so the file
+ * stays what a point light always was.
+ */
 export function newLight(): PointLight {
-  return { ...LIGHT_DEFAULTS, position: copy(LIGHT_DEFAULTS.position) };
+  const { radius: _radius, ...light } = LIGHT_DEFAULTS;
+  return { ...light, position: copy(light.position) };
+}
+
+/** A new area light aimed at `lookAt` from `position`, written out in full. */
+export function newAreaLight(position: Vec3, lookAt: Vec3): AreaLight {
+  return { ...AREA_LIGHT_DEFAULTS, position: copy(position), lookAt: copy(lookAt), size: [...AREA_LIGHT_DEFAULTS.size] };
 }
 
 /** A blank scene for "New": no objects, the default light written out. */

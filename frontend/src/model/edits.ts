@@ -3,22 +3,26 @@
  * The store wraps each in a named action that pushes one history entry; drags use the same
  * functions for their transient preview.
  */
-import { newLight, newMesh, newObject, resolveObject, SAMPLE_MESH_OBJ, sceneLights, SCENE_DEFAULTS } from './defaults';
+import { newAreaLight, newLight, newMesh, newObject, resolveLight, resolveObject, resolveScene, SAMPLE_MESH_OBJ, sceneLights, SCENE_DEFAULTS } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, parseObj } from './obj';
-import { placeOnFloor } from './placement';
+import { floorHeight, placeOnFloor } from './placement';
 import { roundNumber } from './rounding';
 import { objectAnchor } from './projection';
 import type { DragTarget } from './selection';
 import {
+  LIGHT_FIELDS,
   MATERIAL_FIELDS,
   type CameraSettings,
   type ImageSettings,
   type Material,
   type MaterialType,
+  type Light,
+  type LightOf,
+  type LightType,
   type ObjectType,
-  type PointLight,
   type RenderSettings,
+  type ResolvedLightOf,
   type Scene,
   type SceneObject,
   type Vec3,
@@ -77,6 +81,28 @@ export function addLight(scene: Scene): Scene {
   return { ...scene, lights: [...lights, light] };
 }
 
+/** Height above the camera's target (or the floor, if higher) at which a new area light hangs, in metres. */
+export const AREA_LIGHT_HEIGHT = 3;
+
+/**
+ * Adds an area light (its defaults written out) hanging {@link AREA_LIGHT_HEIGHT} above the camera's
+ * target, a metre towards the camera, facing straight down onto the floor there (each further area
+ * light 2 m further along x). Its aim is apart from the camera's target, so that in the plan views
+ * each crosshair can be grabbed.
+ */
+export function addAreaLight(scene: Scene): Scene {
+  const lights = sceneLights(scene);
+  const { position: eye, lookAt: target } = resolveScene({ camera: scene.camera, objects: [] }).camera;
+  const towards = normalize([eye[0] - target[0], 0, eye[2] - target[2]]);
+  const step: Vec3 = length(towards) > 0 ? towards : [0, 0, 1];
+  const others = lights.filter((l) => l.type === 'area').length;
+  const floor = floorHeight(scene);
+  const aim = add(target, [step[0] + 2 * others, 0, step[2]]).map(roundNumber) as Vec3;
+  aim[1] = floor;
+  const light = newAreaLight([aim[0], Math.max(target[1], floor) + AREA_LIGHT_HEIGHT, aim[2]], aim);
+  return { ...scene, lights: [...lights, light] };
+}
+
 export function removeObject(scene: Scene, index: number): Scene {
   return { ...scene, objects: scene.objects.filter((_, i) => i !== index) };
 }
@@ -114,10 +140,12 @@ export function duplicateLight(scene: Scene, index: number): Scene {
   return { ...scene, lights: next };
 }
 
-/** A copy of a light moved aside. */
-export function lightAside(original: PointLight): PointLight {
+/** A copy of a light moved aside (an area light with its aim, so it faces the same way). */
+export function lightAside(original: Light): Light {
   const copy = structuredClone(original);
-  copy.position = add(original.position ?? newLight().position!, DUPLICATE_OFFSET);
+  const r = resolveLight(original);
+  copy.position = add(r.position, DUPLICATE_OFFSET);
+  if (copy.type === 'area' && r.type === 'area') copy.lookAt = add(r.lookAt, DUPLICATE_OFFSET);
   return copy;
 }
 
@@ -167,14 +195,26 @@ export function changeMaterialType(material: Material | undefined, type: Materia
   return next;
 }
 
-export function setLightField<K extends keyof PointLight>(scene: Scene, index: number, field: K, value: PointLight[K]): Scene {
+/** A field of some kind of light: `radius` (point), `size` (area), `color` (both). */
+export type LightField = { [T in LightType]: keyof LightOf<T> }[LightType];
+/** The value a light field takes, on the kinds that have it. */
+export type LightFieldValue<K extends LightField> = { [T in LightType]: K extends keyof LightOf<T> ? LightOf<T>[K] : never }[LightType];
+
+/** Sets one field of a light; a field its kind does not have (a point light's `size`) changes nothing. */
+export function setLightField<K extends LightField>(scene: Scene, index: number, field: K, value: LightFieldValue<K>): Scene {
   const lights = sceneLights(scene);
-  if (!lights[index]) return scene;
-  return { ...scene, lights: lights.map((l, i) => (i === index ? { ...l, [field]: value } : l)) };
+  const light = lights[index];
+  if (!light || !(LIGHT_FIELDS[light.type] as readonly string[]).includes(field)) return scene;
+  return { ...scene, lights: lights.map((l, i) => (i === index ? ({ ...l, [field]: value } as Light) : l)) };
 }
 
 export function moveLight(scene: Scene, index: number, to: Vec3): Scene {
   return setLightField(scene, index, 'position', [...to] as Vec3);
+}
+
+/** Aims an area light at a point (its `lookAt`); a point light has no aim and stays as it is. */
+export function aimLight(scene: Scene, index: number, at: Vec3): Scene {
+  return setLightField(scene, index, 'lookAt', [...at] as Vec3);
 }
 
 export function setCamera(scene: Scene, patch: Partial<CameraSettings>): Scene {
@@ -199,7 +239,11 @@ export function positionOf(scene: Scene, target: DragTarget): Vec3 | null {
     }
     case 'light': {
       const light = sceneLights(scene)[target.index];
-      return light ? (light.position ?? newLight().position!) : null;
+      return light ? resolveLight(light).position : null;
+    }
+    case 'lightAim': {
+      const light = sceneLights(scene)[target.index];
+      return light?.type === 'area' ? (resolveLight(light) as ResolvedLightOf<'area'>).lookAt : null;
     }
     case 'camera':
       return scene.camera?.position ?? SCENE_DEFAULTS.camera.position;
@@ -215,6 +259,8 @@ export function moveTarget(scene: Scene, target: DragTarget, to: Vec3): Scene {
       return moveObject(scene, target.index, to);
     case 'light':
       return moveLight(scene, target.index, to);
+    case 'lightAim':
+      return aimLight(scene, target.index, to);
     case 'camera':
       return setCamera(scene, { position: [...to] as Vec3 });
     case 'target':

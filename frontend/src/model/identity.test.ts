@@ -28,4 +28,12 @@ describe('carryIds', () => {
     const s = carryIds(null, scene());
     expect(JSON.parse(JSON.stringify(s))).toEqual(scene());
   });
+
+  it('numbers area lights among the lights', () => {
+    const s = carryIds(null, { objects: [{ type: 'box' }], lights: [{ type: 'point' }, { type: 'area' }] });
+    expect(idOf(s.lights![1])).toBe('light-2');
+    const added = carryIds(s, edits.addAreaLight(s));
+    expect(added.lights!.map(idOf)).toEqual(['light-1', 'light-2', 'light-3']);
+    expect(idOf(added.objects[0])).toBe('object-1');
+  });
 });

@@ -7,7 +7,7 @@
  * the very objects, with their ids. Labels are made from ids, so deleting Box 1 leaves Sphere 2
  * named Sphere 2.
  */
-import type { Light, Scene, SceneObject } from './types';
+import { LIGHT_TYPES, type Light, type Scene, type SceneObject } from './types';
 
 type Item = SceneObject | Light;
 const ids = new WeakMap<object, string>();
@@ -24,7 +24,7 @@ export function idNumber(id: string | undefined): number | undefined {
 }
 
 /** Objects are numbered together (a scene opens with the labels of its order: Box 1, Sphere 2), lights apart. */
-const kindOf = (item: Item) => (item.type === 'point' ? 'light' : 'object');
+const kindOf = (item: Item) => ((LIGHT_TYPES as readonly string[]).includes(item.type) ? 'light' : 'object');
 
 function carry(previous: Item[], next: Item[]): void {
   const kept = new Set<Item>(next);

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { budgetProblems, cameraProblems, sceneProblems } from './sceneRules';
+import { budgetProblems, cameraProblems, lightProblems, sceneProblems } from './sceneRules';
 import { schemaProblems } from './schemaRules';
 import type { Scene } from './types';
 
@@ -64,5 +64,42 @@ describe('sceneProblems', () => {
   it('gives one list, the schema’s rule first when both name a field', () => {
     const problems = sceneProblems({ camera: { position: [0, 0, 0], lookAt: [0, 0, 0], up: [0, 0, 0] }, objects: [] });
     expect(problems.map((p) => p.path)).toEqual(['camera.up', 'camera.lookAt']);
+  });
+
+  it('names a bad light field once, with the lights’ rules', () => {
+    const problems = sceneProblems({ lights: [{ type: 'point', intensity: -1, radius: -1 }], objects: [] });
+    expect(problems).toEqual([
+      { path: 'lights[0].intensity', message: 'must be greater than or equal to 0' },
+      { path: 'lights[0].radius', message: 'must be greater than or equal to 0' },
+    ]);
+  });
+});
+
+describe('lightProblems', () => {
+  it('refuses a negative or non-finite radius, and takes 0 and any positive radius', () => {
+    const lights = [-0.1, Number.NaN, Infinity, 0, 1e-6, 100].map((radius) => ({ type: 'point' as const, radius }));
+    expect(lightProblems({ lights, objects: [] })).toEqual([
+      { path: 'lights[0].radius', message: 'must be greater than or equal to 0' },
+      { path: 'lights[1].radius', message: 'must be a finite number' },
+      { path: 'lights[2].radius', message: 'must be a finite number' },
+    ]);
+    expect(lightProblems({ objects: [] })).toEqual([]); // the default light
+  });
+
+  it('refuses an area light’s width or height of 0 or less, and an aim on its own position', () => {
+    expect(lightProblems({
+      objects: [],
+      lights: [
+        { type: 'area', size: [0, 1] },
+        { type: 'area', size: [2, -1], position: [1, 2, 3], lookAt: [1, 2, 3] },
+        { type: 'area', position: [0, 0, 0] }, // the default aim is the origin
+        { type: 'area', size: [1e-6, 1e3], position: [0, 0, 0], lookAt: [0, 0, 1e-9] },
+      ],
+    })).toEqual([
+      { path: 'lights[0].size[0]', message: 'must be greater than 0' },
+      { path: 'lights[1].size[1]', message: 'must be greater than 0' },
+      { path: 'lights[1].lookAt', message: 'must differ from lights[1].position' },
+      { path: 'lights[2].lookAt', message: 'must differ from lights[2].position' },
+    ]);
   });
 });

@@ -1,12 +1,13 @@
 /**
  * The rules the scene schema cannot state, checked in the editor with the server's own messages
- * (`SceneMapper`): the camera's (its target apart from it, `up` not along the view) and the render
- * budget. With {@link schemaProblems} they let the editor flag a scene the server would refuse
- * before Render is pressed; the server stays the judge.
+ * (`SceneMapper`): the camera's (its target apart from it, `up` not along the view), the render
+ * budget, and the sphere and area lights' ({@link lightProblems}). With {@link schemaProblems} they
+ * let the editor flag a scene the server would refuse before Render is pressed; the server stays
+ * the judge.
  */
-import { resolveScene } from './defaults';
+import { resolveLight, resolveScene, sceneLights } from './defaults';
 import { schemaProblems, type Problem } from './schemaRules';
-import type { Scene } from './types';
+import type { ResolvedLightOf, Scene } from './types';
 import { cross, length, normalize, sub } from './vec';
 
 /**
@@ -39,10 +40,37 @@ export function budgetProblems(scene: Scene, budget = RENDER_BUDGET_SAMPLES): Pr
   }];
 }
 
-/** Every problem the editor can see in a scene: the schema's value rules, then the camera's and the budget. */
+/**
+ * The sphere and area lights' rules, with Bean Validation's words as the schema's rules
+ * have them: a point light's radius finite and at least 0, an area light's width and height greater
+ * than 0 and its `lookAt` apart from its position (worded as the camera's). The radius and sizes
+ * move to the schema's rules when the server publishes them ({@link sceneProblems} then keeps one
+ * message per field).
+ */
+export function lightProblems(scene: Scene): Problem[] {
+  const out: Problem[] = [];
+  const finite = (v: unknown): v is number => typeof v === 'number' && Number.isFinite(v);
+  sceneLights(scene).forEach((light, i) => {
+    const path = `lights[${i}]`;
+    if (light.type === 'point' && light.radius !== undefined) {
+      if (!finite(light.radius)) out.push({ path: `${path}.radius`, message: 'must be a finite number' });
+      else if (light.radius < 0) out.push({ path: `${path}.radius`, message: 'must be greater than or equal to 0' });
+    }
+    if (light.type !== 'area') return;
+    light.size?.forEach((s, k) => {
+      if (!finite(s)) out.push({ path: `${path}.size[${k}]`, message: 'must be a finite number' });
+      else if (s <= 0) out.push({ path: `${path}.size[${k}]`, message: 'must be greater than 0' });
+    });
+    const { position, lookAt } = resolveLight(light) as ResolvedLightOf<'area'>;
+    if (position.every((p, k) => p === lookAt[k])) out.push({ path: `${path}.lookAt`, message: `must differ from ${path}.position` });
+  });
+  return out;
+}
+
+/** Every problem the editor can see in a scene: the schema's value rules, then the camera's, the budget and the lights'. */
 export function sceneProblems(scene: Scene): Problem[] {
   const problems = schemaProblems(scene);
   const named = new Set(problems.map((p) => p.path));
-  const more = [...cameraProblems(scene), ...budgetProblems(scene)].filter((p) => !named.has(p.path));
+  const more = [...cameraProblems(scene), ...budgetProblems(scene), ...lightProblems(scene)].filter((p) => !named.has(p.path));
   return [...problems, ...more];
 }

@@ -2,6 +2,8 @@
 export type Selection =
   | { kind: 'object'; index: number }
   | { kind: 'light'; index: number }
+  /** An area light's aim (its `lookAt`), moved in the plan views as the camera's target is. */
+  | { kind: 'lightAim'; index: number }
   | { kind: 'camera' }
   | { kind: 'target' }
   | null;
@@ -58,7 +60,7 @@ export function selectFound(items: readonly SceneItem[], primary: Selection, fou
   return { primary: add && found.length === 0 ? primary : newest, items: base };
 }
 
-/** A short human name: "Object 3", "Light 1", "Camera", "Camera target". */
+/** A short human name: "Object 3", "Light 1", "Light 1 aim", "Camera", "Camera target". */
 export function selectionLabel(selection: Selection): string {
   if (selection === null) return 'Nothing';
   switch (selection.kind) {
@@ -66,6 +68,8 @@ export function selectionLabel(selection: Selection): string {
       return `Object ${selection.index + 1}`;
     case 'light':
       return `Light ${selection.index + 1}`;
+    case 'lightAim':
+      return `Light ${selection.index + 1} aim`;
     case 'camera':
       return 'Camera';
     case 'target':

@@ -40,4 +40,11 @@ describe('mergeErrors', () => {
   it('puts the editor’s own problems first, one message a field', () => {
     expect(mergeErrors([{ path: 'a', message: 'mine' }, { path: 'a', message: 'second' }], { a: 'server', b: 'server b' })).toEqual({ a: 'mine', b: 'server b' });
   });
+
+  it('lets a server refusal of an area light’s aim go when its position moves, as the camera target’s', () => {
+    const judged: Scene = { objects: [], lights: [{ type: 'area', position: [0, 1, 0], lookAt: [0, 1, 0] }] };
+    const errors = { 'lights[0].lookAt': 'must differ from lights[0].position' };
+    expect(standingErrors(errors, judged, structuredClone(judged))).toEqual(errors);
+    expect(standingErrors(errors, judged, { objects: [], lights: [{ type: 'area', position: [0, 2, 0], lookAt: [0, 1, 0] }] })).toEqual({});
+  });
 });

@@ -18,6 +18,12 @@ const READS: Record<string, string[]> = {
   image: ['image', 'render.samples'],
 };
 
+/** What a rule on `path` reads: {@link READS}, an area light's aim with its position, else the field alone. */
+function readsOf(path: string): string[] {
+  const aim = /^(lights\[\d+\])\.lookAt$/.exec(path);
+  return READS[path] ?? (aim ? [`${aim[1]}.position`, path] : [path]);
+}
+
 /** The steps of a JSON path: `objects[2].center[0]` → ['objects', 2, 'center', 0]. */
 export function pathSteps(path: string): (string | number)[] {
   const steps: (string | number)[] = [];
@@ -39,7 +45,7 @@ export function valueAt(value: unknown, path: string): unknown {
 export function standingErrors(errors: FieldErrors, judged: Scene, scene: Scene): FieldErrors {
   const out: FieldErrors = {};
   for (const [path, message] of Object.entries(errors)) {
-    const reads = READS[path] ?? [path];
+    const reads = readsOf(path);
     if (reads.every((p) => sameJson(valueAt(judged, p), valueAt(scene, p)))) out[path] = message;
   }
   return out;

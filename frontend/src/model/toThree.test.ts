@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import * as edits from './edits';
 import { carryIds, idOf } from './identity';
 import { cameraFrame } from './projection';
-import { letterbox, LIGHT_SCALE, makeRenderCamera, meshGeometry, planeSize, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
+import { areaLuminance, letterbox, LIGHT_SCALE, makeRenderCamera, meshGeometry, planeSize, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
 import { MeshCache, type MeshLookup } from './meshCache';
 import { parseObj } from './obj';
 import { TETRAHEDRON_OBJ } from '../test/meshes';
@@ -128,11 +128,44 @@ describe('sceneToThree', () => {
     expect(d.meshes[4].material).toEqual({ kind: 'standard', color: '#ffffff', metalness: 1, roughness: 0, reflects: true });
     expect(d.meshes[5].material).toMatchObject({ kind: 'lambert', diffuse: 0.9 });
     expect(d.lights).toEqual([
-      { id: 'light@0', index: 0, position: [1, 2, 3], color: '#ff0000', intensity: 0.5 * LIGHT_SCALE, decay: 2, selected: false },
-      { id: 'light@1', index: 1, position: [5, 8, 5], color: '#ffffff', intensity: LIGHT_SCALE, decay: 0, selected: false },
+      { kind: 'point', id: 'light@0', index: 0, position: [1, 2, 3], color: '#ff0000', intensity: 0.5 * LIGHT_SCALE, decay: 2, selected: false, radius: 0 },
+      { kind: 'point', id: 'light@1', index: 1, position: [5, 8, 5], color: '#ffffff', intensity: LIGHT_SCALE, decay: 0, selected: false, radius: 0 },
     ]);
     expect(d.camera).toMatchObject({ fov: 50, aspect: 800 / 600, position: [0, 2, 8] });
     expect(d.camera.far).toBeGreaterThan(d.extent);
+  });
+
+  it('maps a sphere light with its radius and an area light as a RectAreaLight aimed at its lookAt', () => {
+    const d = sceneToThree({
+      objects: [],
+      lights: [
+        { type: 'point', radius: 0.25 },
+        { type: 'area', position: [0, 3, 0], size: [2, 0.5], lookAt: [0, 1, 0], color: '#ffeedd', intensity: 2, falloff: true, twoSided: true },
+        { type: 'area', position: [0, 3, 0], size: [2, 0.5], lookAt: [0, 1, 0], intensity: 2 },
+      ],
+    }, { kind: 'lightAim', index: 1 });
+    expect(d.lights[0]).toMatchObject({ kind: 'point', radius: 0.25, selected: false });
+    expect(d.lights[1]).toEqual({
+      kind: 'area', id: 'light@1', index: 1, position: [0, 3, 0], color: '#ffeedd', intensity: 2 * LIGHT_SCALE, decay: 2, selected: true,
+      width: 2, height: 0.5, lookAt: [0, 1, 0], luminance: (2 * LIGHT_SCALE) / 1, twoSided: true,
+    });
+    // without fall-off it is matched at its aim, 2 m away
+    expect(d.lights[2]).toMatchObject({ decay: 0, luminance: ((2 * LIGHT_SCALE) / 1) * 4, twoSided: false });
+  });
+
+  it('leaves out an area light it cannot draw (no size, or its aim on it); the inspector says why', () => {
+    const d = sceneToThree({
+      objects: [],
+      lights: [{ type: 'area', size: [0, 1] }, { type: 'area', position: [1, 1, 1], lookAt: [1, 1, 1] }, { type: 'point', radius: -1 }],
+    });
+    expect(d.lights).toEqual([expect.objectContaining({ kind: 'point', index: 2, radius: 0 })]);
+  });
+
+  it('gives an area light the luminance whose light on its axis is a point light’s of its intensity', () => {
+    // E = L·A/d² for a small rectangle; a point light of three intensity I gives I/d² with fall-off
+    const luminance = areaLuminance(1.5, 0.01, 0.02, true, 3);
+    expect(luminance * 0.01 * 0.02).toBeCloseTo(1.5 * LIGHT_SCALE, 12);
+    expect(areaLuminance(1.5, 0.01, 0.02, false, 3) * 0.01 * 0.02 / 9).toBeCloseTo(1.5 * LIGHT_SCALE, 12);
   });
 
   it('carries each object’s and light’s editor id, so the preview keeps its mesh through moves and deletions', () => {

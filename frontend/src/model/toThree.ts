@@ -9,7 +9,7 @@ import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, type ParsedObj } from './obj';
 import { inItems, type SceneItem, type Selection } from './selection';
 import { idOf } from './identity';
-import type { Light, ResolvedMaterial, ResolvedObject, Scene, SceneObject, Vec3 } from './types';
+import type { Light, ResolvedLight, ResolvedMaterial, ResolvedObject, Scene, SceneObject, Vec3 } from './types';
 import { cross, dot, length, normalize, sub } from './vec';
 
 /**
@@ -58,18 +58,41 @@ export interface MeshDescriptor {
   selected: boolean;
 }
 
-export interface LightDescriptor {
+interface LightCommon {
   /** The light's stable id in the editor (see {@link previewId}): the preview keeps its light by it. */
   id: string;
   index: number;
   position: Vec3;
   color: string;
-  /** three.js intensity (scene intensity times {@link LIGHT_SCALE}). */
+  /** three.js intensity of a point (or spot) light: scene intensity times {@link LIGHT_SCALE}. */
   intensity: number;
   /** three.js decay: 0 without fall-off, 2 (inverse square) with. */
   decay: number;
   selected: boolean;
 }
+
+/** A point light; with a radius above 0 the preview shows its glowing sphere. */
+export interface PointLightDescriptor extends LightCommon {
+  kind: 'point';
+  /** Metres; 0 for a point. */
+  radius: number;
+}
+
+/**
+ * An area light: a three.js RectAreaLight of `width` x `height` at `position` that looks at
+ * `lookAt` (three.js's own frame, as `areaLightFrame`), of luminance `luminance`.
+ */
+export interface AreaLightDescriptor extends LightCommon {
+  kind: 'area';
+  width: number;
+  height: number;
+  lookAt: Vec3;
+  /** RectAreaLight intensity (luminance); see {@link areaLuminance}. */
+  luminance: number;
+  twoSided: boolean;
+}
+
+export type LightDescriptor = PointLightDescriptor | AreaLightDescriptor;
 
 export interface CameraDescriptor {
   position: Vec3;
@@ -249,21 +272,30 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
       far: extent * 4,
     },
     meshes: r.objects.flatMap((o, i) => (shown(o) ? (meshOf(o, previewId(scene.objects[i], 'object', i), i, isSelected('object', i), cam.position, planeSize(extent * 4, cam.fov, r.image.width / r.image.height), meshes) ?? []) : [])),
-    lights: r.lights.flatMap((l, i) =>
-      near(l.position)
-        ? [{
-            id: previewId(scene.lights?.[i], 'light', i),
-            index: i,
-            position: l.position,
-            color: l.color,
-            intensity: l.intensity * LIGHT_SCALE,
-            decay: l.falloff ? 2 : 0,
-            selected: isSelected('light', i),
-          }]
-        : [],
-    ),
+    lights: r.lights.flatMap((l, i) => (near(l.position) ? lightOf(l, previewId(scene.lights?.[i], 'light', i), i, isSelected('light', i) || (selection?.kind === 'lightAim' && selection.index === i)) : [])),
     extent,
   };
+}
+
+/**
+ * The RectAreaLight luminance that lights a surface facing it as the scene's light does. A small
+ * rectangle of area A and luminance L gives E = L·A/d² at distance d on its axis, a point light of
+ * three.js intensity I gives I/d² with fall-off (so L = I/A), and I everywhere without; a
+ * RectAreaLight always falls off, so without fall-off it is matched at the distance of its aim.
+ */
+export function areaLuminance(intensity: number, width: number, height: number, falloff: boolean, aimDistance: number): number {
+  const area = width * height;
+  return ((intensity * LIGHT_SCALE) / area) * (falloff ? 1 : aimDistance * aimDistance);
+}
+
+/** The descriptor of a light, or none when the preview cannot draw it (an area light of no size or no aim). */
+function lightOf(l: ResolvedLight, id: string, index: number, selected: boolean): LightDescriptor[] {
+  const common = { id, index, position: l.position, color: l.color, intensity: l.intensity * LIGHT_SCALE, decay: l.falloff ? 2 : 0, selected };
+  if (l.type === 'point') return [{ ...common, kind: 'point', radius: Number.isFinite(l.radius) && l.radius > 0 ? l.radius : 0 }];
+  const [width, height] = l.size;
+  const aimDistance = length(sub(l.lookAt, l.position));
+  if (!(width > 0 && height > 0 && Number.isFinite(width * height) && aimDistance > 0)) return [];
+  return [{ ...common, kind: 'area', width, height, lookAt: l.lookAt, luminance: areaLuminance(l.intensity, width, height, l.falloff, aimDistance), twoSided: l.twoSided }];
 }
 
 /** Puts a three.js PerspectiveCamera where the render camera is (position, up, lookAt, fov, aspect). */

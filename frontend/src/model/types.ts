@@ -127,7 +127,13 @@ export type SceneObject = Sphere | Box | Plane | MeshObject;
 export type ObjectType = SceneObject['type'];
 export type ObjectOf<T extends ObjectType> = Extract<SceneObject, { type: T }>;
 
-/** A point light; without `falloff` its irradiance does not depend on distance. */
+/** A width and a height `[w, h]` in metres. */
+export type Size2 = [number, number];
+
+/**
+ * A point light; without `falloff` its irradiance does not depend on distance. With a `radius`
+ * above 0 it is a sphere of that radius (metres): soft shadows, and seen by camera and mirrors.
+ */
 export interface PointLight {
   type: 'point';
   /** The user's name for it (the engine ignores it). */
@@ -136,10 +142,31 @@ export interface PointLight {
   color?: Color;
   intensity?: number;
   falloff?: boolean;
+  /** Metres, finite and at least 0; 0 (the default) is a point. */
+  radius?: number;
 }
 
-export type Light = PointLight;
+/**
+ * A rectangular light, as three.js's RectAreaLight: centred at `position`, its front facing
+ * `lookAt` (which must differ from `position`), `size` = [width, height] in metres (each greater
+ * than 0) along its own x and y axes (see `areaLightFrame`). It emits from its front only, unless
+ * `twoSided`.
+ */
+export interface AreaLight {
+  type: 'area';
+  position?: Vec3;
+  size?: Size2;
+  lookAt?: Vec3;
+  color?: Color;
+  intensity?: number;
+  falloff?: boolean;
+  twoSided?: boolean;
+}
+
+export type Light = PointLight | AreaLight;
 export type LightType = Light['type'];
+/** The light of one kind, e.g. `LightOf<'area'>` is {@link AreaLight}. */
+export type LightOf<T extends LightType> = Extract<Light, { type: T }>;
 
 export type ImageFormat = 'png' | 'jpg';
 /** Where a pixel's samples go (the server's Sampler.names(), simplest first). */
@@ -200,7 +227,11 @@ export type ResolvedObject = {
 }[ObjectType];
 /** A resolved object of one kind, e.g. `ResolvedObjectOf<'mesh'>`. */
 export type ResolvedObjectOf<T extends ObjectType> = Extract<ResolvedObject, { type: T }>;
-export type ResolvedLight = Complete<Omit<PointLight, 'name'>> & Pick<PointLight, 'name'>;
+export type ResolvedLight = {
+  [T in LightType]: Complete<Omit<LightOf<T>, 'name'>> & Pick<LightOf<T>, Extract<keyof LightOf<T>, 'name'>>;
+}[LightType];
+/** A resolved light of one kind, e.g. `ResolvedLightOf<'area'>`. */
+export type ResolvedLightOf<T extends LightType> = Extract<ResolvedLight, { type: T }>;
 
 /** A scene with every default filled in (for display; files keep what the user wrote). */
 export interface ResolvedScene {
@@ -242,8 +273,20 @@ export const MATERIAL_FIELDS = {
 } as const;
 
 export const LIGHT_FIELDS = {
-  point: fieldsOf<PointLight>()(['type', 'name', 'position', 'color', 'intensity', 'falloff']),
+  point: fieldsOf<PointLight>()(['type', 'name', 'position', 'color', 'intensity', 'falloff', 'radius']),
+  area: fieldsOf<AreaLight>()(['type', 'position', 'size', 'lookAt', 'color', 'intensity', 'falloff', 'twoSided']),
 } as const;
+
+/**
+ * The light fields of issue 46 (sphere and area lights) that the editor reads and writes before the
+ * server's published schema (`scene.schema.json`) and API types (`api/openapi.gen.ts`) have them.
+ * The schema tests leave these out of their comparison, and fail as soon as the schema publishes
+ * one of them: then delete it here (and this whole constant once it is empty).
+ */
+export const AWAITING_SCHEMA: { readonly [T in LightType]?: readonly (keyof LightOf<T>)[] } = {
+  point: ['radius'],
+  area: LIGHT_FIELDS.area,
+};
 
 export const SCENE_FIELDS = fieldsOf<Scene>()([
   'version', 'name', 'image', 'camera', 'background', 'ambient', 'render', 'lights', 'objects',

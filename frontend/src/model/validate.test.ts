@@ -66,4 +66,32 @@ describe('validateScene', () => {
       { path: 'objects[5].obj', message: 'must be a string' },
     ]);
   });
+
+  it('reads sphere and area lights: a radius, a size of two numbers, an aim, two-sided', () => {
+    const ok = validateScene({
+      objects: [],
+      lights: [
+        { type: 'point', radius: 0.5 },
+        { type: 'area', position: [0, 3, 0], size: [2, 1], lookAt: [0, 0, 0], color: '#ffeedd', intensity: 2, falloff: true, twoSided: false },
+      ],
+    });
+    expect(ok.ok).toBe(true);
+    const result = validateScene({
+      objects: [],
+      lights: [
+        { type: 'point', radius: 'big', size: [1, 1] },
+        { type: 'area', size: [1, 1, 1], lookAt: [0, 0], twoSided: 'no', name: 'key' },
+        { type: 'area', size: [1, 'x'] },
+      ],
+    });
+    expect(result.ok ? [] : result.errors).toEqual([
+      { path: 'lights[0].radius', message: 'must be a finite number' },
+      { path: 'lights[0].size', message: expect.stringMatching(/^is not a known field/) },
+      { path: 'lights[1].size', message: 'must be a list of two numbers [width, height]' },
+      { path: 'lights[1].lookAt', message: 'must be a list of three numbers [x, y, z]' },
+      { path: 'lights[1].twoSided', message: 'must be true or false' },
+      { path: 'lights[1].name', message: expect.stringMatching(/^is not a known field/) },
+      { path: 'lights[2].size[1]', message: 'must be a finite number' },
+    ]);
+  });
 });

@@ -53,6 +53,13 @@ const vector: Check = (v, path, errors) => {
   }
   v.forEach((c, i) => number(c, `${path}[${i}]`, errors));
 };
+const size2: Check = (v, path, errors) => {
+  if (!Array.isArray(v) || v.length !== 2) {
+    errors.push({ path, message: 'must be a list of two numbers [width, height]' });
+    return;
+  }
+  v.forEach((c, i) => number(c, `${path}[${i}]`, errors));
+};
 const oneOf =
   (...allowed: string[]): Check =>
   (v, path, errors) => {
@@ -132,7 +139,8 @@ const object = byType({
   ...Object.fromEntries(Object.entries(OBJECT_FIELDS).map(([k, f]) => [k, record(f, objectChecks)])),
   mesh: all(record(OBJECT_FIELDS.mesh, objectChecks), meshSource),
 });
-const light = byType({ point: record(LIGHT_FIELDS.point, { type, name: string, position: vector, color, intensity: number, falloff: boolean }) });
+const lightChecks = { type, name: string, position: vector, color, intensity: number, falloff: boolean, radius: number, size: size2, lookAt: vector, twoSided: boolean };
+const light = byType(Object.fromEntries(Object.entries(LIGHT_FIELDS).map(([k, f]) => [k, record(f, lightChecks)])));
 
 const scene = record(SCENE_FIELDS, {
   version: integer,

@@ -27,6 +27,7 @@ const ACTIONS: [string, (s: SceneState) => void, SceneState['selection']?][] = [
   ['addObject(mesh)', (s) => s.addObject('mesh')],
   ['addMesh', (s) => s.addMesh(TETRAHEDRON_OBJ, 2)],
   ['addLight', (s) => s.addLight()],
+  ['addAreaLight', (s) => s.addAreaLight()],
   ['duplicateSelected (object)', (s) => s.duplicateSelected(), { kind: 'object', index: 1 }],
   ['duplicateSelected (light)', (s) => s.duplicateSelected(), { kind: 'light', index: 0 }],
   ['deleteSelected (object)', (s) => s.deleteSelected(), { kind: 'object', index: 2 }],
@@ -37,6 +38,7 @@ const ACTIONS: [string, (s: SceneState) => void, SceneState['selection']?][] = [
   ['setMaterialType', (s) => s.setMaterialType(0, 'metal')],
   ['moveLight', (s) => s.moveLight(0, [1, 2, 3])],
   ['setLightField', (s) => s.setLightField(0, 'falloff', true)],
+  ['setLightField (radius)', (s) => s.setLightField(0, 'radius', 0.5)],
   ['moveTarget (camera)', (s) => s.moveTarget({ kind: 'camera' }, [1, 1, 9])],
   ['moveTarget (target)', (s) => s.moveTarget({ kind: 'target' }, [0, 0, 0])],
 ];
@@ -304,5 +306,22 @@ describe('sceneStore', () => {
     store().loadScene({ objects: [] });
     expect(store().serverErrors.render).toBeNull();
     expect(store().documentId).toBe(document + 2);
+  });
+
+  it('adds an area light selected; its aim is a selection only while it is an area light', () => {
+    store().addAreaLight();
+    const index = store().scene.lights!.length - 1;
+    expect(store().selection).toEqual({ kind: 'light', index });
+    expect(store().scene.lights![index]).toMatchObject({ type: 'area' });
+    store().select({ kind: 'lightAim', index });
+    expect(store().selection).toEqual({ kind: 'lightAim', index });
+    expect(store().selectedItems).toEqual([]);
+    store().moveTarget({ kind: 'lightAim', index }, [1, 0, 1]);
+    expect(store().scene.lights![index]).toMatchObject({ lookAt: [1, 0, 1] });
+    expect(store().past).toHaveLength(2);
+    store().deleteSelected();
+    expect(store().scene.lights).toHaveLength(index);
+    store().select({ kind: 'lightAim', index: 0 }); // a point light has no aim
+    expect(store().selection).toBeNull();
   });
 });

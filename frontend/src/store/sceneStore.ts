@@ -21,7 +21,6 @@ import type {
   Material,
   MaterialType,
   ObjectType,
-  PointLight,
   RenderSettings,
   Scene,
   SceneObject,
@@ -96,6 +95,8 @@ export interface SceneState {
   /** Replaces a mesh's triangles by inline OBJ text (its `file`, if any, goes). */
   setMeshObj(index: number, obj: string): void;
   addLight(): void;
+  /** Adds an area light hanging above the camera's target, aimed at it, selected (one history entry). */
+  addAreaLight(): void;
   duplicateSelected(): void;
   deleteSelected(): void;
   moveObject(index: number, to: Vec3): void;
@@ -103,7 +104,7 @@ export interface SceneState {
   setMaterial(index: number, material: Material): void;
   setMaterialType(index: number, type: MaterialType): void;
   moveLight(index: number, to: Vec3): void;
-  setLightField<K extends keyof PointLight>(index: number, field: K, value: PointLight[K]): void;
+  setLightField<K extends edits.LightField>(index: number, field: K, value: edits.LightFieldValue<K>): void;
   /** Moves an object, light, the camera or its target (one history entry). */
   moveTarget(target: DragTarget, to: Vec3): void;
   /** Selects this alone (a plain click). */
@@ -165,6 +166,7 @@ function initialData(scene: Scene): Data {
 function keepValid(scene: Scene, selection: Selection): Selection {
   if (selection?.kind === 'object' && !scene.objects[selection.index]) return null;
   if (selection?.kind === 'light' && !sceneLights(scene)[selection.index]) return null;
+  if (selection?.kind === 'lightAim' && sceneLights(scene)[selection.index]?.type !== 'area') return null;
   return selection;
 }
 
@@ -228,6 +230,7 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     addMesh: (obj, scale) => commit((s) => edits.addMesh(s, obj, scale), (n) => ({ kind: 'object', index: n.objects.length - 1 })),
     setMeshObj: (index, obj) => commit((s) => edits.setMeshObj(s, index, obj)),
     addLight: () => commit((s) => edits.addLight(s), (n) => ({ kind: 'light', index: sceneLights(n).length - 1 })),
+    addAreaLight: () => commit((s) => edits.addAreaLight(s), (n) => ({ kind: 'light', index: sceneLights(n).length - 1 })),
     duplicateSelected: () => {
       const { selection: sel, selectedItems } = get();
       if (selectedItems.length > 1) {
@@ -236,7 +239,7 @@ export const useSceneStore = create<SceneState>()((set, get) => {
         return;
       }
       if (sel?.kind === 'object') commit((s) => edits.duplicateObject(s, sel.index), () => ({ kind: 'object', index: sel.index + 1 }));
-      if (sel?.kind === 'light') commit((s) => edits.duplicateLight(s, sel.index), () => ({ kind: 'light', index: sel.index + 1 }));
+      if (sel?.kind === 'light' || sel?.kind === 'lightAim') commit((s) => edits.duplicateLight(s, sel.index), () => ({ kind: 'light', index: sel.index + 1 }));
     },
     deleteSelected: () => {
       const { selection: sel, selectedItems } = get();
@@ -245,7 +248,7 @@ export const useSceneStore = create<SceneState>()((set, get) => {
         return;
       }
       if (sel?.kind === 'object') commit((s) => edits.removeObject(s, sel.index), () => null);
-      if (sel?.kind === 'light') commit((s) => edits.removeLight(s, sel.index), () => null);
+      if (sel?.kind === 'light' || sel?.kind === 'lightAim') commit((s) => edits.removeLight(s, sel.index), () => null);
     },
     moveObject: (index, to) => commit((s) => edits.moveObject(s, index, to)),
     setObjectField: (index, field, value) => commit((s) => edits.setObjectField(s, index, field, value)),

@@ -8,14 +8,16 @@ export interface LightGlyphProps {
   position: Vec3;
   color: string;
   intensity: number;
+  /** A sphere light's radius in metres (0: a point), drawn to scale around it. */
+  radius?: number;
   index: number;
   selected: boolean;
 }
 
 const RAYS = Array.from({ length: 8 }, (_, i) => (i * Math.PI) / 4);
 
-/** A point light as a small sun in its own colour (`data-testid="light-N"`). */
-export function LightGlyph({ kind, t, position, color, intensity, index, selected }: LightGlyphProps) {
+/** A point light as a small sun in its own colour (`data-testid="light-N"`), and its sphere to scale when it has a radius. */
+export function LightGlyph({ kind, t, position, color, intensity, radius = 0, index, selected }: LightGlyphProps) {
   const [x, y] = worldToSvg(kind, t, position);
   return (
     <g
@@ -29,7 +31,8 @@ export function LightGlyph({ kind, t, position, color, intensity, index, selecte
       aria-pressed={selected}
       transform={`translate(${x} ${y})`}
     >
-      <title>{`Light ${index + 1} (${color}, intensity ${intensity}) — drag to move`}</title>
+      <title>{`Light ${index + 1} (${color}, intensity ${intensity}${radius > 0 ? `, radius ${radius} m` : ''}) — drag to move`}</title>
+      {radius > 0 && <circle r={radius * t.zoom} stroke={color} className="light-radius" data-testid={`light-radius-${index}`} />}
       <circle r={13} className="glyph-hit" />
       {RAYS.map((a) => (
         <g key={a}>

@@ -5,6 +5,8 @@ import { inItems } from '../model/selection';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { useElementSize } from '../hooks/useElementSize';
 import { useMeshLookup } from '../hooks/useMeshes';
+import { labelOf } from '../components/labels';
+import { AreaLightGlyph } from './AreaLightGlyph';
 import { CameraGlyph } from './CameraGlyph';
 import { LightGlyph } from './LightGlyph';
 import { ObjectGlyph } from './ObjectGlyph';
@@ -92,7 +94,12 @@ export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
           <CameraGlyph kind={kind} t={t} camera={camera} aspect={imageAspect(scene)} selected={cameraSelected} />
           {sceneLights(scene).map((light, index) => {
             const r = resolveLight(light);
-            return <LightGlyph key={index} kind={kind} t={t} index={index} position={r.position} color={r.color} intensity={r.intensity} selected={(selection?.kind === 'light' && selection.index === index) || inItems(selectedItems, { kind: 'light', index })} />;
+            const selected = (selection?.kind === 'light' && selection.index === index) || inItems(selectedItems, { kind: 'light', index });
+            if (r.type === 'area') {
+              const aimed = selection?.kind === 'lightAim' && selection.index === index;
+              return <AreaLightGlyph key={index} kind={kind} t={t} index={index} light={r} label={labelOf(light, index)} selected={selected ? 'light' : aimed ? 'aim' : null} />;
+            }
+            return <LightGlyph key={index} kind={kind} t={t} index={index} position={r.position} color={r.color} intensity={r.intensity} radius={r.radius} selected={selected} />;
           })}
           {marquee && <rect className="marquee" data-testid="marquee" x={marquee.x} y={marquee.y} width={marquee.width} height={marquee.height} />}
         </svg>

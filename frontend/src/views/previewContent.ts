@@ -1,9 +1,9 @@
 /**
- * What the 3D preview draws of a scene (no renderer, no React): the meshes, lights and their
- * markers, the selection's boxes and the render camera's frustum, with the shared geometries and
- * materials, the reflection probes and what a click can pick. Each mesh and light is kept by its
- * object's stable id and changed in place; an update creates only what is new and disposes only
- * what is gone ({@link planMeshes}, {@link planLights}), so a drag step builds nothing.
+ * What the 3D preview draws of a scene (no renderer, no React): the meshes, the lights
+ * ({@link PreviewLights}), the selection's boxes and the render camera's frustum, with the shared
+ * geometries and materials, the reflection probes and what a click can pick. Each mesh and light is
+ * kept by its object's stable id and changed in place; an update creates only what is new and
+ * disposes only what is gone ({@link planMeshes}, `planLights`), so a drag step builds nothing.
  */
 import {
   AmbientLight,
@@ -12,10 +12,8 @@ import {
   CameraHelper,
   Group,
   Mesh,
-  MeshBasicMaterial,
   PerspectiveCamera,
   PlaneGeometry,
-  PointLight,
   SphereGeometry,
   type BufferGeometry,
   type Material,
@@ -24,10 +22,11 @@ import {
   type WebGLRenderer,
 } from 'three';
 import type { DragTarget } from '../model/selection';
-import { applyRenderCamera, type LightDescriptor, type MeshDescriptor, type ThreeSceneDescriptor } from '../model/toThree';
+import { applyRenderCamera, type MeshDescriptor, type ThreeSceneDescriptor } from '../model/toThree';
 import { MeshGeometryCache } from './previewGeometries';
+import { PreviewLights } from './previewLights';
 import { MaterialCache } from './previewMaterials';
-import { castsShadow, meshBuild, planLights, planMeshes, type LightBuild, type MeshBuild } from './previewReconcile';
+import { meshBuild, planMeshes, type MeshBuild } from './previewReconcile';
 import { ReflectionProbes } from './reflectionProbes';
 
 const SELECTED = 0x4ea1ff;
@@ -39,13 +38,6 @@ interface MeshEntry {
   box: BoxHelper | null;
 }
 
-interface LightEntry {
-  readonly build: LightBuild;
-  readonly light: PointLight;
-  /** The small sphere that shows where the light is, and is picked. */
-  readonly marker: Mesh<SphereGeometry, MeshBasicMaterial>;
-}
-
 export class PreviewContent {
   /** Everything drawn; the engine adds it to its scene. */
   readonly root = new Group();
@@ -55,11 +47,13 @@ export class PreviewContent {
   readonly helpers: Object3D[] = [];
   private readonly materials = new MaterialCache();
   private readonly meshGeometries = new MeshGeometryCache();
-  private readonly geometries = { sphere: new SphereGeometry(1, 48, 32), box: new BoxGeometry(1, 1, 1), plane: new PlaneGeometry(1, 1, 64, 64), marker: new SphereGeometry(1, 16, 12) };
+  private readonly geometries = {
+    sphere: new SphereGeometry(1, 48, 32), box: new BoxGeometry(1, 1, 1), plane: new PlaneGeometry(1, 1, 64, 64), marker: new SphereGeometry(1, 16, 12), panel: new PlaneGeometry(1, 1),
+  };
   private readonly probes = new ReflectionProbes();
   private readonly ambient = new AmbientLight(0xffffff, 0);
   private readonly meshes = new Map<string, MeshEntry>();
-  private readonly lights = new Map<string, LightEntry>();
+  private readonly lights = new PreviewLights(this.root, this.geometries);
   private frustum: CameraHelper | null = null;
 
   constructor() {
@@ -81,12 +75,7 @@ export class PreviewContent {
     this.materials.sweep();
     this.meshGeometries.sweep();
     this.probes.sweep();
-    const lights = planLights(this.lights, d.lights);
-    for (const key of lights.remove) this.removeLight(key);
-    for (const step of lights.steps) {
-      if (step.action === 'create') this.lights.set(step.key, this.createLight(step.next));
-      this.placeLight(this.lights.get(step.key)!, step.next, d);
-    }
+    this.lights.update(d, this.pickables, this.helpers);
     this.showFrustum(frustum ? d : null);
   }
 
@@ -97,7 +86,7 @@ export class PreviewContent {
 
   dispose(): void {
     [...this.meshes.keys()].forEach((key) => this.removeMesh(key));
-    [...this.lights.keys()].forEach((key) => this.removeLight(key));
+    this.lights.dispose();
     this.showFrustum(null);
     this.probes.clear();
     this.materials.dispose();
@@ -151,49 +140,6 @@ export class PreviewContent {
     entry.mesh.removeFromParent();
     if (entry.box) dropHelper(entry.box);
     this.meshes.delete(key);
-  }
-
-  private createLight(l: LightDescriptor): LightEntry {
-    const light = new PointLight();
-    light.castShadow = castsShadow(l);
-    // no bias: with three 0.187 a point light's shadow vanished with a bias of -0.0005 (measured)
-    light.shadow.mapSize.set(1024, 1024);
-    const marker = new Mesh(this.geometries.marker, new MeshBasicMaterial());
-    this.root.add(light, marker);
-    return { build: light.castShadow, light, marker };
-  }
-
-  private placeLight({ light, marker }: LightEntry, l: LightDescriptor, d: ThreeSceneDescriptor): void {
-    light.color.set(l.color);
-    light.intensity = l.intensity;
-    light.decay = l.decay;
-    light.position.set(...l.position);
-    if (light.castShadow) {
-      const near = Math.max(d.camera.near, d.extent * 1e-4);
-      const camera = light.shadow.camera;
-      if (camera.near !== near || camera.far !== d.camera.far) {
-        // three sets the projection once, when it makes the shadow map: a kept light sets its own
-        camera.near = near;
-        camera.far = d.camera.far;
-        camera.updateProjectionMatrix();
-      }
-    }
-    marker.material.color.set(l.selected ? SELECTED : l.color);
-    marker.position.set(...l.position);
-    marker.scale.setScalar(d.extent * (l.selected ? 0.008 : 0.005));
-    marker.userData.target = { kind: 'light', index: l.index } satisfies DragTarget;
-    this.helpers.push(marker);
-    this.pickables.unshift(marker);
-  }
-
-  /** A light's shadow map and its marker's material go with it. */
-  private removeLight(key: string): void {
-    const { light, marker } = this.lights.get(key)!;
-    light.removeFromParent();
-    light.dispose();
-    marker.removeFromParent();
-    marker.material.dispose();
-    this.lights.delete(key);
   }
 
   /** The render camera's frustum as `d` frames it (kept from update to update), or none. */

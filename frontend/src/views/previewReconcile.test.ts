@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { parseObj } from '../model/obj';
-import type { LightDescriptor, MeshDescriptor } from '../model/toThree';
+import type { AreaLightDescriptor, LightDescriptor, MeshDescriptor } from '../model/toThree';
 import { TETRAHEDRON_OBJ } from '../test/meshes';
-import { castsShadow, MAX_SHADOW_LIGHTS, meshBuild, plan, planLights, planMeshes, type MeshBuild } from './previewReconcile';
+import { castsShadow, lightBuild, MAX_SHADOW_LIGHTS, meshBuild, plan, planLights, planMeshes, type MeshBuild } from './previewReconcile';
 
 const mesh = (id: string, index: number, geometry: MeshDescriptor['geometry'] = 'sphere', parsed?: MeshDescriptor['mesh']): MeshDescriptor => ({
   id,
@@ -17,7 +17,10 @@ const mesh = (id: string, index: number, geometry: MeshDescriptor['geometry'] = 
   selected: false,
 });
 
-const light = (id: string, index: number): LightDescriptor => ({ id, index, position: [0, 5, 0], color: '#ffffff', intensity: 1, decay: 0, selected: false });
+const light = (id: string, index: number): LightDescriptor => ({ kind: 'point', radius: 0, id, index, position: [0, 5, 0], color: '#ffffff', intensity: 1, decay: 0, selected: false });
+const area = (id: string, index: number, twoSided = false): AreaLightDescriptor => ({
+  ...light(id, index), kind: 'area', width: 1, height: 1, lookAt: [0, 0, 0], luminance: 1, twoSided,
+});
 
 /** What is shown after applying `next` as the plan says (keys to builds), as the preview keeps it. */
 const shownAfter = (next: MeshDescriptor[]) => new Map(planMeshes(new Map(), next).steps.map((s) => [s.key, { build: meshBuild(s.next) }]));
@@ -81,11 +84,18 @@ describe('planLights', () => {
   it('replaces a light that starts or stops casting a shadow, and only that one', () => {
     const five = Array.from({ length: MAX_SHADOW_LIGHTS + 1 }, (_, i) => light(`light-${i + 1}`, i));
     expect(five.map(castsShadow)).toEqual([true, true, true, true, false]);
-    const shown = new Map(five.map((l) => [l.id, { build: castsShadow(l) }]));
+    const shown = new Map(five.map((l) => [l.id, { build: lightBuild(l) }]));
     // the first light deleted: the last one moves up among those that cast shadows
     const p = planLights(shown, five.slice(1).map((l, i) => ({ ...l, index: i })));
     expect(p.remove).toEqual(['light-5', 'light-1']);
     expect(actions(p)).toEqual([['light-2', 'update'], ['light-3', 'update'], ['light-4', 'update'], ['light-5', 'create']]);
+  });
+
+  it('replaces a light whose kind changes or an area light that becomes two-sided, keeps one that only moves', () => {
+    const shown = new Map([light('light-1', 0), area('light-2', 1)].map((l) => [l.id, { build: lightBuild(l) }]));
+    expect(actions(planLights(shown, [{ ...light('light-1', 0), position: [1, 1, 1] }, { ...area('light-2', 1), width: 3 }]))).toEqual([['light-1', 'update'], ['light-2', 'update']]);
+    expect(actions(planLights(shown, [area('light-1', 0), area('light-2', 1, true)]))).toEqual([['light-1', 'create'], ['light-2', 'create']]);
+    expect([lightBuild(area('a', 0, true)), lightBuild(area('a', 9)), lightBuild(light('a', 0))]).toEqual(['area2+shadow', 'area', 'point+shadow']);
   });
 });
 

@@ -3,7 +3,8 @@
  * three.js). Each entry is known by its object's or light's stable id, so a drag step, a recolour
  * or a deletion elsewhere in the list changes the entries it concerns in place and rebuilds none.
  * An entry is replaced (removed, then created under the same key) when what it was built from
- * changes: a mesh's geometry kind or its triangles, or whether a light casts a shadow.
+ * changes: a mesh's geometry kind or its triangles; a light's kind, whether it casts a shadow, or
+ * whether an area light is two-sided.
  */
 import type { LightDescriptor, MeshDescriptor } from '../model/toThree';
 import type { ParsedObj } from '../model/obj';
@@ -14,16 +15,21 @@ export const MAX_SHADOW_LIGHTS = 4;
 /** What a mesh entry is built from: a shared unit geometry, or the parse of a mesh's OBJ. */
 export type MeshBuild = 'sphere' | 'box' | 'plane' | ParsedObj;
 
-/** What a light entry is built from: whether it casts a shadow. */
-export type LightBuild = boolean;
+/** What a light entry is built from: its kind, whether it casts a shadow, and an area light's sides (`area2+shadow`). */
+export type LightBuild = string;
 
 export function meshBuild(m: MeshDescriptor): MeshBuild {
   return m.geometry === 'mesh' ? m.mesh! : m.geometry;
 }
 
 /** The first {@link MAX_SHADOW_LIGHTS} lights of the scene cast shadows. */
-export function castsShadow(l: LightDescriptor): LightBuild {
+export function castsShadow(l: LightDescriptor): boolean {
   return l.index < MAX_SHADOW_LIGHTS;
+}
+
+export function lightBuild(l: LightDescriptor): LightBuild {
+  const kind = l.kind === 'area' && l.twoSided ? 'area2' : l.kind;
+  return castsShadow(l) ? `${kind}+shadow` : kind;
 }
 
 /** One entry of the next picture, in the descriptor's order. */
@@ -75,4 +81,4 @@ export function plan<D, B>(shown: ReadonlyMap<string, Shown<B>>, next: readonly 
 
 export const planMeshes = (shown: ReadonlyMap<string, Shown<MeshBuild>>, next: readonly MeshDescriptor[]) => plan(shown, next, (m) => m.id, meshBuild);
 
-export const planLights = (shown: ReadonlyMap<string, Shown<LightBuild>>, next: readonly LightDescriptor[]) => plan(shown, next, (l) => l.id, castsShadow);
+export const planLights = (shown: ReadonlyMap<string, Shown<LightBuild>>, next: readonly LightDescriptor[]) => plan(shown, next, (l) => l.id, lightBuild);

@@ -54,4 +54,25 @@ describe('3D preview selection and handles', () => {
     const all = selectionBall(STARTER_SCENE, null, NO_MESHES);
     expect(all.radius).toBeGreaterThan(1);
   });
+
+  it('moves an area light by its centre and turns it by its aim with the 3D handles, one undo step each', () => {
+    store().addAreaLight();
+    const index = store().scene.lights!.length - 1;
+    const light = store().scene.lights![index];
+    const past = store().past.length;
+    const moved = handlesFor(store().scene, { kind: 'light', index })!;
+    expect(moved.pose.position).toEqual(light.position);
+    store().select({ kind: 'light', index });
+    handleCallbacks.onPose({ ...moved.pose, position: [1, 4, 1] });
+    handleCallbacks.onRelease();
+    store().select({ kind: 'lightAim', index });
+    const aimed = handlesFor(store().scene, store().selection)!;
+    expect(aimed).toEqual({ pose: { position: (light as { lookAt: number[] }).lookAt, rotation: [0, 0, 0], scale: [1, 1, 1] }, modes: ['translate'] });
+    handleCallbacks.onPose({ ...aimed.pose, position: [2, 0, 2] });
+    handleCallbacks.onRelease();
+    expect(store().scene.lights![index]).toMatchObject({ position: [1, 4, 1], lookAt: [2, 0, 2] });
+    expect(store().past).toHaveLength(past + 2);
+    expect(selectionBall(store().scene, { kind: 'lightAim', index }, NO_MESHES).center).toEqual([2, 0, 2]);
+    expect(handlesFor(store().scene, { kind: 'lightAim', index: 0 })).toBeNull(); // a point light has no aim
+  });
 });

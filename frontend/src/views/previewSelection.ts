@@ -3,12 +3,12 @@
  * a handle movement does to the scene (a transient preview) and its release (one history entry),
  * and the ball F frames.
  */
-import { resolveLight, resolveScene, sceneLights } from '../model/defaults';
+import { resolveScene } from '../model/defaults';
 import { applyGizmo, gizmoModes, gizmoPose, objectBall, roundVec, type GizmoMode, type GizmoPose } from '../model/gizmo';
 import type { MeshLookup } from '../model/meshCache';
 import type { Selection } from '../model/selection';
 import type { Scene, Vec3 } from '../model/types';
-import { moveLight, replaceObject } from '../model/edits';
+import { aimLight, moveLight, positionOf, replaceObject } from '../model/edits';
 import { useSceneStore } from '../store/sceneStore';
 import type { HandleCallbacks } from './previewHandles';
 
@@ -18,9 +18,10 @@ export function handlesFor(scene: Scene, selection: Selection): { pose: GizmoPos
     const object = scene.objects[selection.index];
     return object ? { pose: gizmoPose(object), modes: gizmoModes(object) } : null;
   }
-  if (selection?.kind === 'light') {
-    const light = sceneLights(scene)[selection.index];
-    return light ? { pose: { position: resolveLight(light).position, rotation: [0, 0, 0], scale: [1, 1, 1] }, modes: ['translate'] } : null;
+  if (selection?.kind === 'light' || selection?.kind === 'lightAim') {
+    // an area light moves by its centre (it keeps facing its aim), and turns by its aim
+    const position = positionOf(scene, selection);
+    return position ? { pose: { position, rotation: [0, 0, 0], scale: [1, 1, 1] }, modes: ['translate'] } : null;
   }
   return null;
 }
@@ -32,6 +33,7 @@ export function posedScene(scene: Scene, selection: Selection, pose: GizmoPose, 
     return object ? replaceObject(scene, selection.index, applyGizmo(object, pose, step)) : scene;
   }
   if (selection?.kind === 'light') return moveLight(scene, selection.index, roundVec(pose.position, step));
+  if (selection?.kind === 'lightAim') return aimLight(scene, selection.index, roundVec(pose.position, step));
   return scene;
 }
 
@@ -39,7 +41,12 @@ export function posedScene(scene: Scene, selection: Selection, pose: GizmoPose, 
 export function selectionBall(scene: Scene, selection: Selection, meshes: MeshLookup): { center: Vec3; radius: number } {
   if (selection?.kind === 'object' && scene.objects[selection.index]) return objectBall(scene.objects[selection.index], meshes);
   const r = resolveScene(scene);
-  if (selection?.kind === 'light' && r.lights[selection.index]) return { center: r.lights[selection.index].position, radius: 0.5 };
+  if ((selection?.kind === 'light' || selection?.kind === 'lightAim') && r.lights[selection.index]) {
+    const light = r.lights[selection.index];
+    const center = selection.kind === 'lightAim' && light.type === 'area' ? light.lookAt : light.position;
+    const radius = light.type === 'area' && selection.kind === 'light' ? Math.max(0.5, Math.hypot(...light.size) / 2) : light.type === 'point' ? Math.max(0.5, light.radius) : 0.5;
+    return { center, radius };
+  }
   if (selection?.kind === 'camera') return { center: r.camera.position, radius: 0.5 };
   if (selection?.kind === 'target') return { center: r.camera.lookAt, radius: 0.5 };
   const balls = scene.objects.filter((o) => o.type !== 'plane').map((o) => objectBall(o, meshes));

@@ -25,11 +25,11 @@ export interface Marquee {
 /** Shift, Ctrl or Cmd: a click adds to the selection or takes out, a drag on empty space box-selects. */
 const adding = (event: { shiftKey: boolean; ctrlKey: boolean; metaKey: boolean }) => event.shiftKey || event.ctrlKey || event.metaKey;
 
-/** Reads `data-target` ("object:2", "light:0", "camera", "target") of the pressed glyph. */
+/** Reads `data-target` ("object:2", "light:0", "lightAim:1", "camera", "target") of the pressed glyph. */
 export function parseTarget(value: string | undefined): DragTarget | null {
   if (!value) return null;
   const [kind, index] = value.split(':');
-  if (kind === 'object' || kind === 'light') return { kind, index: Number(index) };
+  if (kind === 'object' || kind === 'light' || kind === 'lightAim') return { kind, index: Number(index) };
   if (kind === 'camera' || kind === 'target') return { kind };
   return null;
 }
