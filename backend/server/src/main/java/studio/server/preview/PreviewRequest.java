@@ -129,6 +129,29 @@ record PreviewRequest(long revision, byte[] scene, int[] objects, long base, Jso
         return null;
     }
 
+    /**
+     * Whether a message holds a whole scene (a {@code scene} member before any {@code patch}), read
+     * only as far as that member's name: a whole scene makes every message before it moot.
+     */
+    static boolean isWholeScene(byte[] message) {
+        try (JsonParser parser = JSON.createParser(ObjectReadContext.empty(), message)) {
+            if (parser.nextToken() != JsonToken.START_OBJECT) {
+                return false;
+            }
+            while (parser.nextToken() == JsonToken.PROPERTY_NAME) {
+                String name = parser.currentName();
+                if (name.equals("scene") || name.equals("patch")) {
+                    return name.equals("scene");
+                }
+                parser.nextToken();
+                parser.skipChildren();
+            }
+        } catch (JacksonException e) {
+            // as far as it could be read
+        }
+        return false;
+    }
+
     /** The revision number of a message that cannot be read as a whole, if it can be found; else null. */
     static Long revisionOf(byte[] message) {
         try (JsonParser parser = JSON.createParser(ObjectReadContext.empty(), message)) {

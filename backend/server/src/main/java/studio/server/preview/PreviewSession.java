@@ -51,7 +51,11 @@ final class PreviewSession {
 
     /** The messages not yet read, oldest first. */
     private record Pending(List<Message> messages) {
-        Pending with(Message next) {
+        /** With the next message: after the others, or instead of them if it is a whole scene. */
+        Pending with(Message next, boolean whole) {
+            if (whole) {
+                return new Pending(List.of(next));
+            }
             List<Message> all = new ArrayList<>(messages.size() + 1);
             all.addAll(messages.size() < MAX_PENDING ? messages : messages.subList(1, messages.size()));
             all.add(next);
@@ -61,8 +65,8 @@ final class PreviewSession {
 
     /**
      * Messages that wait to be read, at most: an older one is dropped for a newer (a patch against
-     * it is then refused and the client sends the whole scene). The worker reads them all before a
-     * revision's passes, so only those of one read wait.
+     * it is then refused and the client sends the whole scene), and a whole scene drops every one
+     * before it. The worker reads them all before a revision's passes, so only those of one read wait.
      */
     static final int MAX_PENDING = 32;
 
@@ -116,10 +120,14 @@ final class PreviewSession {
     /** A message from the client: it joins those not yet read, and stops the revision being shown. */
     void receive(byte[] message, IntakeMemory memory) {
         Message next = new Message(message, memory, System.nanoTime());
-        Pending before = pending.getAndUpdate(p -> p == null ? new Pending(List.of(next)) : p.with(next));
+        boolean whole = PreviewRequest.isWholeScene(message);
+        Pending before = pending.getAndUpdate(p -> p == null ? new Pending(List.of(next)) : p.with(next, whole));
         arriving = false;
-        if (before != null && before.messages().size() == MAX_PENDING) {
-            before.messages().get(0).memory().close(); // dropped for the newer
+        if (before != null) {
+            // what the update dropped for the newer gives its memory back: all before a whole scene, else the oldest of a full list
+            List<Message> dropped = whole ? before.messages()
+                    : before.messages().size() == MAX_PENDING ? before.messages().subList(0, 1) : List.of();
+            dropped.forEach(m -> m.memory().close());
         }
         wake();
     }

@@ -49,4 +49,13 @@ class PreviewRequestPatchTest {
         refused("{'revision': 4, 'base': 3, 'patch': [{'op': 'add', 'path': '/a/~x', 'value': 1}]}", "patch[0].path");
         refused("{'revision': 4}", "scene");
     }
+
+    @Test
+    void tellsAWholeSceneFromAPatchByTheFirstOfTheirMembers() {
+        assertThat(PreviewRequest.isWholeScene("{'revision': 1, 'scene': {}}".replace('\'', '"').getBytes(StandardCharsets.UTF_8))).isTrue();
+        assertThat(PreviewRequest.isWholeScene("{'revision': 2, 'width': [1, {'scene': 1}], 'base': 1, 'patch': [], 'scene': {}}"
+                .replace('\'', '"').getBytes(StandardCharsets.UTF_8))).isFalse();
+        assertThat(PreviewRequest.isWholeScene("[1]".getBytes(StandardCharsets.UTF_8))).isFalse();
+        assertThat(PreviewRequest.isWholeScene("{\"revision\": ".getBytes(StandardCharsets.UTF_8))).isFalse();
+    }
 }
