@@ -101,10 +101,12 @@ final class SceneReuse implements AutoCloseable {
                             MemoryGate memory, Function<byte[], CompiledScene> read) {
         Kept last = kept.get();
         int[] origins = changes != null && before != null ? changes.origins() : null;
-        CompiledScene assembled = last != null && origins != null && request.width() == last.width()
+        boolean reusable = last != null && origins != null && request.width() == last.width()
                 && request.height() == last.height() && changes.changed() <= MAX_CHANGED
-                && origins.length == last.compiled().scene().objectCount()
-                ? fromTree(last.compiled(), before, after, origins, changes.frameChanged(), memory, read) : null;
+                && origins.length == last.compiled().scene().objectCount();
+        CompiledScene assembled = !reusable ? null
+                : changes.changed() == 0 && !changes.frameChanged() ? last.compiled() // a patch of tests alone, or none
+                : fromTree(last.compiled(), before, after, origins, changes.frameChanged(), memory, read);
         CompiledScene scene = assembled != null ? assembled : read.apply(TreeObjects.bytes(after));
         if (assembled != null) {
             reused++;

@@ -131,6 +131,15 @@ class ScenePatchReuseTest {
     }
 
     @Test
+    void aPatchThatChangesNothingIsTheLastScene() {
+        try (View view = new View()) {
+            SceneReuse.Revision same = view.patch("[{\"op\": \"test\", \"path\": \"/objects/1/scale\", \"value\": 0.4}]");
+            assertThat(same.compiled()).isSameAs(view.first);
+            assertThat(view.patch("[]").compiled()).isSameAs(view.first);
+        }
+    }
+
+    @Test
     void aMovedMeshKeepsItsTree() {
         try (View view = new View()) {
             SceneReuse.Revision moved = view.patch("[{\"op\": \"replace\", \"path\": \"/objects/1/position\", \"value\": [0.3, 0.8, 0]},"
