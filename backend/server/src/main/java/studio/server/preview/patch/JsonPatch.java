@@ -23,8 +23,10 @@ import tools.jackson.databind.node.ObjectNode;
  *
  * <p>Bounded against a hostile peer: at most {@value #MAX_OPERATIONS} operations, pointers of at
  * most {@value PatchOperation#MAX_TOKENS} tokens, no value placed deeper than {@value #MAX_DEPTH}
- * levels, and {@code copy} operations that together copy at most a given weight (members, elements
- * and characters), so that a few copies of copies cannot make a document exponentially large.
+ * levels, and {@code copy} operations (and {@code move}s to a deeper place, whose depth must be
+ * looked at) that together go through at most a given weight (members, elements and characters), so
+ * that a few copies of copies cannot make a document exponentially large, nor a patch of moves
+ * take long.
  */
 public final class JsonPatch {
 
@@ -90,14 +92,14 @@ public final class JsonPatch {
         void apply(PatchOperation operation, String field) {
             List<String> path = operation.path();
             switch (operation.op()) {
-                case ADD -> add(path, operation.value(), field);
+                case ADD -> add(path, operation.value(), field, true);
                 case REMOVE -> remove(path, field);
                 case REPLACE -> {
                     at(path, field + ".path");
                     if (!path.isEmpty()) {
                         remove(path, field);
                     }
-                    add(path, operation.value(), field);
+                    add(path, operation.value(), field, true);
                 }
                 case MOVE -> {
                     List<String> from = operation.from();
@@ -106,11 +108,14 @@ public final class JsonPatch {
                     }
                     JsonNode value = at(from, field + ".from");
                     if (!from.equals(path)) {
+                        if (path.size() > from.size()) {
+                            charge(value, field); // deeper: its depth is looked at, and that work is bounded as copies are
+                        }
                         remove(from, field);
-                        add(path, value, field);
+                        add(path, value, field, path.size() > from.size());
                     }
                 }
-                case COPY -> add(path, copy(at(operation.from(), field + ".from"), field), field);
+                case COPY -> add(path, copy(at(operation.from(), field + ".from"), field), field, true);
                 case TEST -> {
                     if (!JsonValues.same(at(path, field + ".path"), operation.value())) {
                         throw new PatchException(field + ".value", "test failed: the value at "
@@ -132,8 +137,9 @@ public final class JsonPatch {
             return node;
         }
 
-        private void add(List<String> path, JsonNode value, String field) {
-            if (path.size() + JsonValues.depth(value, MAX_DEPTH + 1) > MAX_DEPTH) {
+        /** Places a value; {@code deepens}: it may lie deeper than anything in the document yet, so its depth is checked. */
+        private void add(List<String> path, JsonNode value, String field, boolean deepens) {
+            if (deepens && path.size() + JsonValues.depth(value, MAX_DEPTH + 1) > MAX_DEPTH) {
                 throw new PatchException(field + ".path", "the value would lie deeper than " + MAX_DEPTH + " levels");
             }
             if (path.isEmpty()) {
@@ -208,13 +214,18 @@ public final class JsonPatch {
         }
 
         private JsonNode copy(JsonNode value, String field) {
+            charge(value, field);
+            return value.deepCopy();
+        }
+
+        /** Counts a value's weight against what copies (and moves to deeper places) may go through in all. */
+        private void charge(JsonNode value, String field) {
             long weight = JsonValues.weight(value, maxCopied - copied);
             if (weight < 0) {
-                throw new PatchException(field + ".from", "copies would copy more than " + maxCopied
-                        + " members, elements and characters in all");
+                throw new PatchException(field + ".from", "copies and moves deeper would go through more than "
+                        + maxCopied + " members, elements and characters in all");
             }
             copied += weight;
-            return value.deepCopy();
         }
 
         private static void replaceChild(JsonNode parent, String token, JsonNode child) {

@@ -143,5 +143,19 @@ class JsonPatchTest {
         }
         PatchException copies = refused("{'a':['0123456789']}", doubling + "]");
         assertTrue(copies.getMessage().contains("copies"), copies.getMessage());
+
+        // a wide value moved deeper and back, again and again: each deeper move's look at it is counted
+        StringBuilder wide = new StringBuilder("{'b':{},'a':[0");
+        for (int i = 1; i < 1000; i++) {
+            wide.append(',').append(i);
+        }
+        StringBuilder moves = new StringBuilder("[");
+        for (int i = 0; i < 400; i++) {
+            moves.append(i > 0 ? "," : "").append("{'op':'move','from':'/a','path':'/b/a'},{'op':'move','from':'/b/a','path':'/a'}");
+        }
+        JsonPatch back = JsonPatch.of(json(moves + "]"));
+        JsonNode document = json(wide + "]}");
+        assertEquals(document, back.applyTo(document, 1_000_000), "within the bound: moved there and back");
+        assertThrows(PatchException.class, () -> back.applyTo(document, 100_000));
     }
 }
