@@ -4,7 +4,8 @@
  */
 import type { DecodedImage, ImageDecoder } from './framePainter';
 import type { SocketFactory, SocketLike } from './liveSession';
-import type { FrameHeader, RevisionMessage } from './protocol';
+import { applyPatch } from '../test/applyPatch';
+import type { FrameHeader, PatchMessage, RevisionMessage } from './protocol';
 
 /** A frame header with plausible values for what a test does not set. */
 export function frameHeader(overrides: Partial<FrameHeader> = {}): FrameHeader {
@@ -70,9 +71,20 @@ export class FakeSocket implements SocketLike {
     this.onclose?.({ code, reason, wasClean: code !== 1006 } as CloseEvent);
   }
 
-  /** The revisions the view sent, parsed. */
-  messages(): RevisionMessage[] {
-    return this.sent.map((text) => JSON.parse(text) as RevisionMessage);
+  /** The messages the view sent, parsed: whole scenes and patches. */
+  messages(): (RevisionMessage | PatchMessage)[] {
+    return this.sent.map((text) => JSON.parse(text) as RevisionMessage | PatchMessage);
+  }
+
+  /** The revisions the view sent, each patch applied to the scene before it, as the server reads them. */
+  revisions(): RevisionMessage[] {
+    const scenes = new Map<number, unknown>();
+    return this.messages().map((message) => {
+      const { revision, width, height } = message;
+      const scene = 'patch' in message ? applyPatch(scenes.get(message.base), message.patch) : message.scene;
+      scenes.set(revision, scene);
+      return { revision, scene, width, height };
+    });
   }
 }
 

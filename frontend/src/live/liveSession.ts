@@ -1,11 +1,12 @@
 /**
  * One live ray-traced view's connection, without React: sends the newest scene at most once per
- * animation frame, draws the frames that come back (never one older than a frame already
+ * animation frame (after the first on a socket, as a patch to the one sent before, see
+ * {@link encodeNext}), draws the frames that come back (never one older than a frame already
  * drawn), reports problems, and reconnects after a dropped connection.
  */
 import { sameJson } from '../model/sameJson';
 import { drawFrame, type ImageDecoder } from './framePainter';
-import { decodeFrame, decodeProblem, encodeRevision, isSameOrNewer, type Frame, type FrameHeader, type RevisionProblem } from './protocol';
+import { decodeFrame, decodeProblem, encodeNext, isSameOrNewer, type Frame, type FrameHeader, type RevisionProblem } from './protocol';
 
 /** The few members of `WebSocket` the view uses; tests pass a fake. */
 export interface SocketLike {
@@ -83,6 +84,12 @@ export class LiveSession {
   private lastSent: View | null = null;
   private sentOnSocket: View | null = null;
   private revision = 0;
+  /** The scene the server holds for this socket, which the next patch applies to (null: send the whole scene). */
+  private base: { revision: number; scene: unknown } | null = null;
+  /** The revision last sent whole: a problem of a later one was a patch's, and the whole scene follows it. */
+  private wholeRevision = 0;
+  /** A patch was refused: send the whole scene even though the view has not changed. */
+  private resendWhole = false;
   /** The newest revision answered in full (a final frame or a problem). */
   private settled = 0;
   private drawn: FrameHeader | null = null;
@@ -139,6 +146,7 @@ export class LiveSession {
     }
     this.socket = socket;
     this.sentOnSocket = null;
+    this.base = null;
     socket.binaryType = 'arraybuffer';
     socket.onopen = () => {
       this.setConnection({ state: 'open' });
@@ -175,11 +183,16 @@ export class LiveSession {
     this.frameRequest = 0;
     const { socket, wanted } = this;
     if (!socket || socket.readyState !== OPEN || !wanted) return;
-    if (this.sentOnSocket && sameView(this.sentOnSocket, wanted)) return;
+    if (this.sentOnSocket && sameView(this.sentOnSocket, wanted) && !this.resendWhole) return;
     // A slow link still sending the last revision: wait, so only the newest one queues.
     if (socket.bufferedAmount > 0) return this.requestFlush();
     this.revision += 1;
-    socket.send(encodeRevision({ revision: this.revision, ...wanted }));
+    const { scene, width, height } = wanted;
+    const { text, patched } = encodeNext(this.revision, scene, { width, height }, this.resendWhole ? null : this.base);
+    socket.send(text);
+    if (!patched) this.wholeRevision = this.revision;
+    this.base = { revision: this.revision, scene };
+    this.resendWhole = false;
     this.lastSent = this.sentOnSocket = wanted;
     this.options.onSent(this.revision);
   };
@@ -206,6 +219,13 @@ export class LiveSession {
     // A message the server could not read whole names no revision: it can only be the newest sent.
     const revision = problem.revision ?? this.revision;
     this.settled = Math.max(this.settled, revision);
+    if (revision >= this.wholeRevision) this.base = null; // the server applies no patch until the next whole scene
+    if (revision > this.wholeRevision) {
+      // a patch's: the whole scene follows; a problem with the patch itself is not the user's to see
+      this.resendWhole = true;
+      this.requestFlush();
+      if (isPatchProblem(problem)) return;
+    }
     if ((this.drawn && revision < this.drawn.revision) || revision < this.problemRevision) return;
     this.problemRevision = revision;
     this.options.onProblem({ ...problem, revision });
@@ -238,6 +258,11 @@ export class LiveSession {
     this.connection = connection;
     if (!this.disposed) this.options.onConnection(connection);
   }
+}
+
+/** A problem only with a patch (its base or its operations), which sending the whole scene solves. */
+function isPatchProblem({ error }: RevisionProblem): boolean {
+  return error.errors.length > 0 && error.errors.every(({ field }) => field === 'base' || field === 'patch' || field.startsWith('patch['));
 }
 
 /** A close in the user's words: the server's reason when it gave one. */

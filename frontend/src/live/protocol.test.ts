@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { encodeFrame, frameHeader } from './fakes';
-import { decodeFrame, decodeProblem, encodeRevision, FrameError, isSameOrNewer, previewUrl } from './protocol';
+import { decodeFrame, decodeProblem, encodeNext, encodeRevision, FrameError, isSameOrNewer, previewUrl } from './protocol';
 
 /** A message of raw bytes. */
 const bytes = (...values: number[]) => new Uint8Array(values).buffer;
@@ -139,5 +139,37 @@ describe('isSameOrNewer', () => {
     expect(isSameOrNewer({ revision: 2, pass: 3 }, { revision: 2, pass: 3 })).toBe(true);
     expect(isSameOrNewer({ revision: 2, pass: 2 }, { revision: 2, pass: 3 })).toBe(false);
     expect(isSameOrNewer({ revision: 1, pass: 9 }, { revision: 2, pass: 1 })).toBe(false);
+  });
+});
+
+describe('encodeNext', () => {
+  const size = { width: 64, height: 48 };
+  const base = { revision: 4, scene: { name: 'a', objects: [{ type: 'sphere', center: [0, 1, 0] }] } };
+
+  it('sends the whole scene when the server holds no base', () => {
+    expect(JSON.parse(encodeNext(5, base.scene, size, null).text)).toEqual({ revision: 5, scene: base.scene, ...size });
+  });
+
+  it('sends a patch to the base when it is short', () => {
+    const scene = { ...base.scene, objects: [{ type: 'sphere', center: [2, 1, 0] }] };
+    const { text, patched } = encodeNext(5, scene, size, base);
+    expect(patched).toBe(true);
+    expect(JSON.parse(text)).toEqual({ revision: 5, base: 4, ...size, patch: [{ op: 'replace', path: '/objects/0/center', value: [2, 1, 0] }] });
+  });
+
+  it('sends the whole scene when the patch would be longer, or past the server bound on operations', () => {
+    const many = (value: number, count: number) => ({ objects: Array.from({ length: count }, () => ({ a: value })) });
+    const longer = encodeNext(5, many(1, 900), size, { revision: 4, scene: many(0, 900) });
+    expect(longer.patched).toBe(false);
+    expect(JSON.parse(longer.text).scene).toEqual(many(1, 900));
+    const tooMany = encodeNext(5, { objects: Array.from({ length: 1001 }, (_, i) => ({ a: i, long: 'x'.repeat(100) })) }, size, {
+      revision: 4,
+      scene: { objects: Array.from({ length: 1001 }, () => ({ a: -1, long: 'x'.repeat(100) })) },
+    });
+    expect(tooMany.patched).toBe(false);
+    // a patch longer than the weighing threshold but shorter than the scene still goes as a patch
+    const big = { objects: [{ name: 'y'.repeat(20_000) }, { name: 'z'.repeat(30_000) }] };
+    const renamed = encodeNext(5, { objects: [{ name: 'w'.repeat(20_000) }, big.objects[1]] }, size, { revision: 4, scene: big });
+    expect(renamed.patched).toBe(true);
   });
 });

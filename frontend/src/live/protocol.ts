@@ -2,15 +2,19 @@
  * The wire format of the live ray-traced view, the WebSocket at `/api/preview`. Pure functions,
  * no React, no socket.
  *
- * The client sends text messages, each replacing the one before:
+ * The client sends text messages, each a new revision: the whole scene,
  * `{"revision": n, "scene": {...}, "width": w, "height": h}` (revisions strictly increasing;
- * the size is the view's in device pixels). The server answers each revision with binary
+ * the size is the view's in device pixels), or after it a JSON Patch (RFC 6902) to the scene of
+ * the revision sent last, `{"revision": n, "base": m, "patch": [...], "width": w, "height": h}`.
+ * A patch the server cannot apply gets a problem, and the client sends the whole scene. The
+ * server answers each revision with binary
  * frames, coarse to fine: a 4-byte big-endian header length, that many bytes of UTF-8 JSON
  * header, then the encoded image. An invalid scene gets a text message
  * `{"revision": n, "problem": {...}}` holding the REST API's RFC 9457 problem.
  */
 import { problemToError, type ApiError } from '../api/client';
 import { isRecord } from '../util/json';
+import { diffJson, MAX_PATCH_OPERATIONS, type PatchOperation } from './scenePatch';
 
 /** One revision as the client sends it. */
 export interface RevisionMessage {
@@ -19,6 +23,15 @@ export interface RevisionMessage {
   /** The scene, in the same format as `POST /api/render` takes. */
   scene: unknown;
   /** The view's size in device pixels; the server uses the scene's image size when absent. */
+  width?: number;
+  height?: number;
+}
+
+/** One revision as a patch to the scene of revision `base`, the one sent before it. */
+export interface PatchMessage {
+  revision: number;
+  base: number;
+  patch: PatchOperation[];
   width?: number;
   height?: number;
 }
@@ -72,6 +85,35 @@ const UTF8 = new TextDecoder('utf-8', { fatal: true });
 /** The text message for one revision; width and height are left out when not given. */
 export function encodeRevision({ revision, scene, width, height }: RevisionMessage): string {
   return JSON.stringify({ revision, scene, width, height });
+}
+
+/** The text message for a patched revision. */
+export function encodePatch({ revision, base, patch, width, height }: PatchMessage): string {
+  return JSON.stringify({ revision, base, width, height, patch });
+}
+
+/** A patch this long or longer is weighed against the whole scene before it is sent. */
+const WEIGH_PATCH_CHARS = 16 * 1024;
+
+/**
+ * The message for revision `revision` of `scene`: a patch to `base` (the scene of the revision
+ * sent before, which the server holds) when there is one and the patch is within the server's
+ * bounds and shorter than the whole scene, else the whole scene.
+ */
+export function encodeNext(
+  revision: number,
+  scene: unknown,
+  size: { width?: number; height?: number },
+  base: { revision: number; scene: unknown } | null,
+): { text: string; patched: boolean } {
+  const whole = () => encodeRevision({ revision, scene, ...size });
+  if (!base) return { text: whole(), patched: false };
+  const patch = diffJson(base.scene, scene);
+  if (patch.length > MAX_PATCH_OPERATIONS) return { text: whole(), patched: false };
+  const text = encodePatch({ revision, base: base.revision, patch, ...size });
+  if (text.length < WEIGH_PATCH_CHARS) return { text, patched: true };
+  const wholeText = whole();
+  return text.length < wholeText.length ? { text, patched: true } : { text: wholeText, patched: false };
 }
 
 /** Splits a binary message into header and image; throws a {@link FrameError} if it is not a frame. */

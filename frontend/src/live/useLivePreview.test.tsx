@@ -69,7 +69,7 @@ describe('useLivePreview', () => {
     await nextFrame();
     hook.rerender({ scene: moved(4) });
     await nextFrame();
-    expect(sockets.last().messages().map((m) => [m.revision, (m.scene as typeof SCENE).objects[0].center[0]])).toEqual([
+    expect(sockets.last().revisions().map((m) => [m.revision, (m.scene as typeof SCENE).objects[0].center[0]])).toEqual([
       [1, 0],
       [2, 3],
       [3, 4],
@@ -88,7 +88,7 @@ describe('useLivePreview', () => {
     expect(sockets.last().sent).toHaveLength(1);
     hook.rerender({ scene: structuredClone(SCENE), width: 128, height: 96 });
     await nextFrame();
-    expect(sockets.last().messages()[1]).toEqual({ revision: 2, scene: SCENE, width: 128, height: 96 });
+    expect(sockets.last().revisions()[1]).toEqual({ revision: 2, scene: SCENE, width: 128, height: 96 });
   });
 
   it('holds revisions while the socket is still sending one, then sends only the newest', async () => {
@@ -105,7 +105,7 @@ describe('useLivePreview', () => {
     socket.bufferedAmount = 0;
     await nextFrame();
     expect(socket.messages().map((m) => m.revision)).toEqual([1, 2]);
-    expect(socket.messages()[1].scene).toEqual(moved(2));
+    expect(socket.revisions()[1].scene).toEqual(moved(2));
   });
 
   it('draws each frame scaled to the view and reports its header', async () => {
@@ -188,7 +188,10 @@ describe('useLivePreview', () => {
 
     act(() => socket.receive({ revision: 1, problem })); // older than the frame drawn
     expect(hook.result.current.problem).toBeNull();
+    hook.rerender({ scene: moved(2) });
+    await nextFrame();
     act(() => socket.receive({ revision: 3, problem }));
+    expect(onFieldErrors).toHaveBeenLastCalledWith({ 'objects[0].radius': 'must be greater than 0' });
     const calls = onFieldErrors.mock.calls.length;
     hook.unmount();
     expect(onFieldErrors).toHaveBeenCalledTimes(calls + 1);

@@ -86,14 +86,14 @@ describe('Preview3D', () => {
     const socket = sockets.last();
     act(() => socket.open());
     await nextFrame();
-    const first = socket.messages()[0];
+    const first = socket.revisions()[0];
     expect(first.scene).toEqual(store().scene);
     // letterboxed to the still life's 800x600 in the panel (480x320 until laid out)
     expect([first.width, first.height]).toEqual([427, 320]);
 
     act(() => store().dragTo({ kind: 'object', index: 0 }, [2, 0.5, 1]));
     await nextFrame();
-    const dragged = socket.messages()[1];
+    const dragged = socket.revisions()[1];
     expect(dragged.revision).toBe(2);
     expect((dragged.scene as Scene).objects[0]).toMatchObject({ center: [2, 0.5, 1] });
     expect(store().scene.objects[0]).not.toMatchObject({ center: [2, 0.5, 1] }); // not committed

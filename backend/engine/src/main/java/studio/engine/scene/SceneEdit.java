@@ -8,33 +8,42 @@ import studio.engine.geometry.Shape;
 
 /**
  * Where an edit from one scene to the next can change a render: nowhere, in the boxes of the
- * objects that differ (each before and after), or anywhere. Objects are matched by their place in
- * the list; an object is the same if its shape and material are equal (shapes and materials are
- * values, a mesh is the same instance). A different camera, light, background, ambient term or
- * number of objects, or a changed unbounded object (a plane), may reach every pixel.
+ * objects the edit changed (each before and after), or anywhere. Which objects changed is told by
+ * whoever made the edit (the live view knows it from the edit's paths), not worked out again here.
+ * A different camera, light, background, ambient term or number of objects, a changed unbounded
+ * object (a plane), or more than {@value #MAX_CHANGED} changed objects, may reach every pixel.
  */
 public final class SceneEdit {
+
+    /** More changed objects than this count as a change anywhere: forgetting pixel by pixel would cost more than rendering. */
+    public static final int MAX_CHANGED = 64;
 
     private SceneEdit() {
     }
 
     /**
-     * The boxes of the objects that differ between the scenes, each object's box in {@code before}
-     * and in {@code after} (empty if nothing differs); null if the edit may change any pixel.
+     * The boxes of the objects the edit changed, each object's box in {@code before} and in
+     * {@code after} (empty if nothing changed); null if the edit may change any pixel.
+     *
+     * @param origins for each object of {@code after}, the index of the object of {@code before} it
+     *                is unchanged from (shape and material), or -1; null when that is not known
      */
-    public static List<Aabb> changedBoxes(Scene before, Scene after) {
-        if (!before.camera().equals(after.camera()) || !before.lights().equals(after.lights())
-                || !before.background().equals(after.background())
+    public static List<Aabb> changedBoxes(Scene before, Scene after, int[] origins) {
+        if (origins == null || origins.length != after.objectCount() || !before.camera().equals(after.camera())
+                || !before.lights().equals(after.lights()) || !before.background().equals(after.background())
                 || Double.compare(before.ambient(), after.ambient()) != 0
                 || before.objectCount() != after.objectCount()) {
             return null;
         }
         List<Aabb> boxes = new ArrayList<>();
-        for (int i = 0; i < before.objectCount(); i++) {
-            Shape was = before.shape(i), is = after.shape(i);
-            if ((was == is || was.equals(is)) && before.material(i).equals(after.material(i))) {
+        for (int i = 0; i < after.objectCount(); i++) {
+            if (origins[i] == i) {
                 continue;
             }
+            if (boxes.size() == 2 * MAX_CHANGED) {
+                return null;
+            }
+            Shape was = before.shape(i), is = after.shape(i);
             Aabb wasBox = was.bounds(), isBox = is.bounds();
             if (!wasBox.isBounded() || !isBox.isBounded()) {
                 return null;

@@ -87,7 +87,7 @@ class PixelPathsTest {
         Film film = new Film(WIDTH, HEIGHT);
         PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
         render(before, film, paths);
-        List<Aabb> boxes = SceneEdit.changedBoxes(before, after);
+        List<Aabb> boxes = changedBoxes(before, after);
         paths.forget(boxes, after.camera().position(), after.lights());
         int kept = paths.knownCount();
         RenderResult again = render(after, film, paths);
@@ -190,19 +190,19 @@ class PixelPathsTest {
     void editsThatReachEveryPixel() {
         Scene scene = OpaqueShadowsUnchangedTest.scene();
         Camera turned = new Camera(new Vec3(0.1, 2.5, 5), new Vec3(0, 0.8, -0.5), new Vec3(0, 1, 0), 50);
-        assertNull(SceneEdit.changedBoxes(scene,
+        assertNull(changedBoxes(scene,
                 new Scene(turned, objects(scene), scene.lights(), scene.background(), scene.ambient())));
         List<PointLight> lights = new ArrayList<>(scene.lights());
         lights.set(0, new PointLight(new Vec3(3, 6, 2.5), Rgb.WHITE, 1, false));
-        assertNull(SceneEdit.changedBoxes(scene,
+        assertNull(changedBoxes(scene,
                 new Scene(scene.camera(), objects(scene), lights, scene.background(), scene.ambient())));
-        assertNull(SceneEdit.changedBoxes(scene,
+        assertNull(changedBoxes(scene,
                 new Scene(scene.camera(), objects(scene), scene.lights(), Rgb.WHITE, scene.ambient())));
-        assertNull(SceneEdit.changedBoxes(scene,
+        assertNull(changedBoxes(scene,
                 new Scene(scene.camera(), objects(scene), scene.lights(), scene.background(), 0.2)));
-        assertNull(SceneEdit.changedBoxes(scene, new Scene(scene.camera(), objects(scene).subList(0, 30),
+        assertNull(changedBoxes(scene, new Scene(scene.camera(), objects(scene).subList(0, 30),
                 scene.lights(), scene.background(), scene.ambient())), "an object fewer");
-        assertNull(SceneEdit.changedBoxes(scene, edited(scene, 0, o -> new SceneObject(o.shape(),
+        assertNull(changedBoxes(scene, edited(scene, 0, o -> new SceneObject(o.shape(),
                 MaterialDefaults.of(MaterialKind.CHALK, Rgb.WHITE)))), "the floor plane changed");
 
         PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
@@ -214,15 +214,51 @@ class PixelPathsTest {
     void theSameSceneReadAgainIsNoEdit() {
         Scene scene = OpaqueShadowsUnchangedTest.scene();
         Scene again = OpaqueShadowsUnchangedTest.scene(); // new instances of equal values
-        assertEquals(List.of(), SceneEdit.changedBoxes(scene, again));
+        assertEquals(List.of(), changedBoxes(scene, again));
         assertTrue(keptAfterEdit(scene, again) > 0.95);
         Scene moved = edited(scene, 5, o -> moved(o, new Vec3(0, 0, 0.01)));
-        assertEquals(2, SceneEdit.changedBoxes(scene, moved).size(), "the object's box before and after");
-        assertFalse(SceneEdit.changedBoxes(scene, moved).get(0).equals(SceneEdit.changedBoxes(scene, moved).get(1)));
+        assertEquals(2, changedBoxes(scene, moved).size(), "the object's box before and after");
+        assertFalse(changedBoxes(scene, moved).get(0).equals(changedBoxes(scene, moved).get(1)));
+    }
+
+    /** The edit's boxes, its changed objects told as an editor that compares values would tell them. */
+    private static List<Aabb> changedBoxes(Scene before, Scene after) {
+        int[] origins = new int[after.objectCount()];
+        for (int i = 0; i < origins.length; i++) {
+            boolean same = i < before.objectCount() && before.shape(i).equals(after.shape(i))
+                    && before.material(i).equals(after.material(i));
+            origins[i] = same ? i : -1;
+        }
+        return SceneEdit.changedBoxes(before, after, origins);
+    }
+
+    @Test
+    void anEditIsWhatItsMakerTellsNotWorkedOutAgain() {
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        int[] unchanged = new int[scene.objectCount()];
+        for (int i = 0; i < unchanged.length; i++) {
+            unchanged[i] = i;
+        }
+        assertNull(SceneEdit.changedBoxes(scene, scene, null), "not told: anything may have changed");
+        assertEquals(List.of(), SceneEdit.changedBoxes(scene, scene, unchanged));
+        int[] toldChanged = unchanged.clone();
+        toldChanged[5] = -1;
+        assertEquals(2, SceneEdit.changedBoxes(scene, scene, toldChanged).size(), "told changed, though equal");
+        List<SceneObject> doubled = new ArrayList<>(objects(scene));
+        doubled.addAll(objects(scene).subList(1, scene.objectCount()));
+        Scene large = new Scene(scene.camera(), doubled, scene.lights(), scene.background(), scene.ambient());
+        int[] many = new int[large.objectCount()];
+        for (int i = 0; i < many.length; i++) {
+            many[i] = i > SceneEdit.MAX_CHANGED + 1 ? i : -1;
+        }
+        many[0] = 0; // the plane unchanged
+        assertNull(SceneEdit.changedBoxes(large, large, many), "too many to forget pixel by pixel");
+        many[SceneEdit.MAX_CHANGED + 1] = SceneEdit.MAX_CHANGED + 1;
+        assertEquals(2 * SceneEdit.MAX_CHANGED, SceneEdit.changedBoxes(large, large, many).size());
     }
 
     private static void forget(PixelPaths paths, Scene before, Scene after) {
-        paths.forget(SceneEdit.changedBoxes(before, after), after.camera().position(), after.lights());
+        paths.forget(changedBoxes(before, after), after.camera().position(), after.lights());
     }
 
     private static void assertSameFilm(Film expected, Film actual) {
@@ -319,7 +355,7 @@ class PixelPathsTest {
             } else {
                 next = scene; // the same scene again
             }
-            List<Aabb> boxes = SceneEdit.changedBoxes(scene, next);
+            List<Aabb> boxes = changedBoxes(scene, next);
             if (boxes == null) {
                 paths.forgetAll();
             } else {

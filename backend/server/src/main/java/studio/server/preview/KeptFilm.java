@@ -16,8 +16,10 @@ import studio.server.system.MemoryBudget;
  * A live view's one-sample film, kept from one revision to the next with where each pixel's rays
  * went ({@link PixelPaths}), so that an edit renders again only the pixels it can reach: a moved
  * object, its shadows and what reflects it. The next revision's one-sample passes render into it,
- * leaving out the pixels still known; the edit is worked out from the last scene and the new one
- * ({@link SceneEdit}): another camera, light, view size or object count forgets every pixel.
+ * leaving out the pixels still known. Which objects the edit changed is told by the revision's
+ * reading ({@link SceneReuse}: from a patch's paths, or the elements of a whole scene that differ),
+ * not worked out again ({@link SceneEdit}); another camera, light, view size or object count, or
+ * an edit not told, forgets every pixel.
  *
  * <p>Holds the film, the paths and the last scene in the render memory while the view is open
  * (24 + {@value PixelPaths#BYTES_PER_PIXEL} bytes a pixel, and the scene's objects), as a
@@ -47,15 +49,18 @@ final class KeptFilm implements AutoCloseable {
      * The film and paths for a revision's one-sample passes of {@code scene} at {@code oneSample}:
      * the kept ones with every pixel the edit since the last revision can reach forgotten, or new
      * ones; null if the memory cannot hold them (the passes then need a film of their own).
+     *
+     * @param origins for each object of {@code scene}, the index of the last revision's object it is
+     *                unchanged from, or -1; null if not known (every pixel is forgotten)
      */
-    Kept prepare(Scene scene, RenderSettings oneSample) {
+    Kept prepare(Scene scene, RenderSettings oneSample, int[] origins) {
         Kept last = kept.getAndSet(null);
         Kept next;
         if (last != null && last.settings().equals(oneSample)) {
             last.memory().close();
             next = hold(oneSample, last.film(), last.paths(), scene);
             if (next != null) {
-                List<Aabb> boxes = SceneEdit.changedBoxes(last.scene(), scene);
+                List<Aabb> boxes = SceneEdit.changedBoxes(last.scene(), scene, origins);
                 if (boxes == null) {
                     next.paths().forgetAll();
                 } else {

@@ -105,7 +105,7 @@ final class PreviewHandler extends AbstractWebSocketHandler implements AutoClose
                     // gone already
                 }
             }
-        }));
+        }, maxMessageBytes));
     }
 
     @Override

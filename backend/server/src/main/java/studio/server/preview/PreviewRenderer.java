@@ -24,6 +24,7 @@ import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
+import tools.jackson.databind.JsonNode;
 import tools.jackson.databind.json.JsonMapper;
 
 /**
@@ -59,15 +60,25 @@ final class PreviewRenderer {
     }
 
     /**
-     * The scene of a revision at the view's size, its building drawn on {@code memory}, which holds
-     * the message's reading already (as a request body's intake does); assembled from the view's
-     * last scene where only some objects changed ({@link SceneReuse}).
+     * The scene of a whole revision at the view's size, its building drawn on {@code memory}, which
+     * holds the message's reading already (as a request body's intake does); assembled from the
+     * view's last scene where only some objects changed ({@link SceneReuse}).
      *
      * @throws InvalidSceneException as {@code POST /api/render} would refuse it
      * @throws org.springframework.web.ErrorResponseException 503 while the memory is taken, 413 if it could never fit
      */
-    CompiledScene compile(PreviewRequest request, IntakeMemory memory, SceneReuse reuse) {
+    SceneReuse.Revision compile(PreviewRequest request, IntakeMemory memory, SceneReuse reuse) {
         return reuse.compile(request, memory, json -> compile(json, request, memory));
+    }
+
+    /**
+     * As {@link #compile(PreviewRequest, IntakeMemory, SceneReuse)}, for a patched revision: the
+     * scene {@code after}, patched from {@code before} (the last revision compiled) with the
+     * changes {@code changes} tells (null: not known, read in full).
+     */
+    SceneReuse.Revision compilePatched(PreviewRequest request, JsonNode before, JsonNode after, ObjectOrigins changes,
+                                       IntakeMemory memory, SceneReuse reuse) {
+        return reuse.compilePatched(before, after, changes, request, memory, json -> compile(json, request, memory));
     }
 
     /** Scene JSON read at the request's view size, as {@code POST /api/render} reads it. */

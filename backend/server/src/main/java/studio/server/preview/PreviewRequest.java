@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
+import studio.server.preview.patch.JsonPatch;
+import studio.server.preview.patch.PatchException;
 import studio.server.scene.format.FieldProblem;
 import studio.server.scene.format.InvalidSceneException;
 import tools.jackson.core.JacksonException;
@@ -13,30 +15,39 @@ import tools.jackson.core.ObjectReadContext;
 import tools.jackson.core.json.JsonFactory;
 
 /**
- * One message of the live view: {@code {"revision": n, "scene": {...}, "width": w, "height": h}}.
- * The scene is kept as the bytes the client sent, for the same reading as {@code POST /api/render}
- * (a streaming pass finds where it starts and ends, so a large inline mesh is not copied through a tree).
+ * One message of the live view: a whole scene, {@code {"revision": n, "scene": {...}, "width": w,
+ * "height": h}}, or a patch to the scene of revision m, {@code {"revision": n, "base": m, "patch":
+ * [RFC 6902 operations], "width": w, "height": h}}. A scene is kept as the bytes the client sent,
+ * for the same reading as {@code POST /api/render} (a streaming pass finds where it starts and ends,
+ * so a large inline mesh is not copied through a tree); a patch is read as a Jackson tree
+ * ({@link JsonPatch}, bounded).
  *
  * @param revision the client's revision number, increasing within a session
  * @param scene    the scene's JSON
  * @param objects  where the elements of the scene's objects array lie in {@code scene}, found in the same
  *                 pass ({@link SceneObjectsInJson}), or null
+ * @param base     the revision a patch applies to; -1 for a whole scene
+ * @param patch    the patch, or null for a whole scene (then {@code scene} is not null)
  * @param width    the view's width in pixels, or 0 for the scene's own
  * @param height   the view's height in pixels, or 0 for the scene's own
  */
-record PreviewRequest(long revision, byte[] scene, int[] objects, int width, int height) {
+record PreviewRequest(long revision, byte[] scene, int[] objects, long base, JsonPatch patch, int width, int height) {
 
     private static final JsonFactory JSON = new JsonFactory();
 
     /**
      * Reads a message.
      *
-     * @throws InvalidSceneException naming {@code revision}, {@code scene}, {@code width} or {@code height}
+     * @throws InvalidSceneException naming {@code revision}, {@code scene}, {@code base}, {@code patch} (or
+     *                               its operation's member), {@code width} or {@code height}
      */
     static PreviewRequest parse(byte[] message, int maxWidth, int maxHeight) {
         Long revision = null;
         byte[] scene = null;
         int[] objects = null;
+        Long base = null;
+        JsonPatch patch = null;
+        boolean patchGiven = false;
         Integer width = null, height = null;
         List<FieldProblem> problems = new ArrayList<>();
         try (JsonParser parser = JSON.createParser(ObjectReadContext.empty(), message)) {
@@ -48,6 +59,14 @@ record PreviewRequest(long revision, byte[] scene, int[] objects, int width, int
                 JsonToken value = parser.nextToken();
                 switch (name) {
                     case "revision" -> revision = wholeNumber(parser, value, "revision", 0, Long.MAX_VALUE, problems);
+                    case "base" -> base = wholeNumber(parser, value, "base", 0, Long.MAX_VALUE, problems);
+                    case "patch" -> {
+                        patchGiven = true;
+                        int start = (int) parser.currentTokenLocation().getByteOffset();
+                        parser.skipChildren();
+                        int end = (int) parser.currentLocation().getByteOffset();
+                        patch = patch(Arrays.copyOfRange(message, start, end), problems);
+                    }
                     case "width" -> width = size(parser, value, "width", maxWidth, problems);
                     case "height" -> height = size(parser, value, "height", maxHeight, problems);
                     case "scene" -> {
@@ -63,7 +82,7 @@ record PreviewRequest(long revision, byte[] scene, int[] objects, int width, int
                     }
                     default -> {
                         problems.add(new FieldProblem(name, "unknown field; a live-view message has revision, "
-                                + "scene, width and height"));
+                                + "scene or base and patch, width and height"));
                         parser.skipChildren();
                     }
                 }
@@ -79,13 +98,58 @@ record PreviewRequest(long revision, byte[] scene, int[] objects, int width, int
         if (revision == null && problems.stream().noneMatch(p -> p.field().equals("revision"))) {
             problems.add(new FieldProblem("revision", "is required: a whole number that grows with every message"));
         }
-        if (scene == null && problems.stream().noneMatch(p -> p.field().equals("scene"))) {
-            problems.add(new FieldProblem("scene", "is required"));
+        boolean sceneGiven = scene != null || problems.stream().anyMatch(p -> p.field().equals("scene"));
+        if (sceneGiven && patchGiven) {
+            problems.add(new FieldProblem("patch", "a message has a scene or a patch, not both"));
+        } else if (!sceneGiven && !patchGiven) {
+            problems.add(new FieldProblem("scene", "is required (or base and patch, after a first scene)"));
+        }
+        if (patchGiven && base == null && problems.stream().noneMatch(p -> p.field().equals("base"))) {
+            problems.add(new FieldProblem("base", "is required with a patch: the revision it applies to"));
+        }
+        if (!patchGiven && base != null) {
+            problems.add(new FieldProblem("base", "is only for a patch"));
         }
         if (!problems.isEmpty()) {
             throw new InvalidSceneException(problems);
         }
-        return new PreviewRequest(revision, scene, objects, width != null ? width : 0, height != null ? height : 0);
+        return new PreviewRequest(revision, scene, objects, base != null ? base : -1, patch,
+                width != null ? width : 0, height != null ? height : 0);
+    }
+
+    /** A patch's operations, read from its JSON (duplicate members refused); null with a problem if they do not read. */
+    private static JsonPatch patch(byte[] json, List<FieldProblem> problems) {
+        try {
+            return JsonPatch.of(PatchBase.TREES.readTree(json));
+        } catch (PatchException e) {
+            problems.add(new FieldProblem(e.field(), e.getMessage()));
+        } catch (JacksonException e) {
+            problems.add(new FieldProblem("patch", "is not well-formed: " + e.getOriginalMessage()));
+        }
+        return null;
+    }
+
+    /**
+     * Whether a message holds a whole scene (a {@code scene} member before any {@code patch}), read
+     * only as far as that member's name: a whole scene makes every message before it moot.
+     */
+    static boolean isWholeScene(byte[] message) {
+        try (JsonParser parser = JSON.createParser(ObjectReadContext.empty(), message)) {
+            if (parser.nextToken() != JsonToken.START_OBJECT) {
+                return false;
+            }
+            while (parser.nextToken() == JsonToken.PROPERTY_NAME) {
+                String name = parser.currentName();
+                if (name.equals("scene") || name.equals("patch")) {
+                    return name.equals("scene");
+                }
+                parser.nextToken();
+                parser.skipChildren();
+            }
+        } catch (JacksonException e) {
+            // as far as it could be read
+        }
+        return false;
     }
 
     /** The revision number of a message that cannot be read as a whole, if it can be found; else null. */

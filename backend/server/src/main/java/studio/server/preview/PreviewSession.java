@@ -1,6 +1,7 @@
 package studio.server.preview;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
@@ -18,12 +19,14 @@ import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
+import tools.jackson.databind.JsonNode;
 
 /**
- * One live view: the newest revision a client sent and the work of showing it. Messages only
- * replace the pending revision and wake the view's worker (one task at a time on the shared
- * worker pool), which reads the scene, then renders its passes coarse to fine and sends a frame
- * after each. Before each pass, and within each render (before every sample, as every render is
+ * One live view: the revisions a client sent and the work of showing the newest. Messages only
+ * join the pending ones and wake the view's worker (one task at a time on the shared worker pool),
+ * which reads them in order (a patch applies to the revision before it, shown or not; a message
+ * that gets a problem is answered), compiles the newest, then renders its passes coarse to fine
+ * and sends a frame after each. Before each pass, and within each render (before every sample, as every render is
  * cancelled), the worker checks for a newer revision or a closed session and drops the old one's
  * work, except that the first, coarsest pass of a revision it has read is always shown. So
  * revisions that arrive faster than frames are skipped but the newest, a drag over a large scene
@@ -43,8 +46,29 @@ final class PreviewSession {
     }
 
     /** A message as it arrived, with the memory its reading holds. */
-    private record Pending(byte[] message, IntakeMemory memory, long receivedNanos) {
+    private record Message(byte[] message, IntakeMemory memory, long receivedNanos) {
     }
+
+    /** The messages not yet read, oldest first. */
+    private record Pending(List<Message> messages) {
+        /** With the next message: after the others, or instead of them if it is a whole scene. */
+        Pending with(Message next, boolean whole) {
+            if (whole) {
+                return new Pending(List.of(next));
+            }
+            List<Message> all = new ArrayList<>(messages.size() + 1);
+            all.addAll(messages.size() < MAX_PENDING ? messages : messages.subList(1, messages.size()));
+            all.add(next);
+            return new Pending(List.copyOf(all));
+        }
+    }
+
+    /**
+     * Messages that wait to be read, at most: an older one is dropped for a newer (a patch against
+     * it is then refused and the client sends the whole scene), and a whole scene drops every one
+     * before it. The worker reads them all before a revision's passes, so only those of one read wait.
+     */
+    static final int MAX_PENDING = 32;
 
     private static final String BUSY = "the server is reading or rendering as much as its memory allows right now; the "
             + "view renders again with your next change";
@@ -65,14 +89,18 @@ final class PreviewSession {
     private long lastRevision = -1;
     /** The last scene read, to read the next revision from where only some objects changed. */
     private final SceneReuse reuse;
+    /** The scene the next patch applies to. */
+    private final PatchBase patchBase;
     /** The one-sample film, kept to render only what the next edit can reach. */
     private final KeptFilm keptFilm;
 
-    PreviewSession(PreviewRenderer renderer, Executor worker, Output output) {
+    /** @param maxCopied what one patch's {@code copy} operations may copy in all (as a message's bytes are bounded) */
+    PreviewSession(PreviewRenderer renderer, Executor worker, Output output, long maxCopied) {
         this.renderer = renderer;
         this.worker = worker;
         this.output = output;
         this.reuse = new SceneReuse(renderer.memory());
+        this.patchBase = new PatchBase(renderer.memory(), maxCopied);
         this.keptFilm = new KeptFilm(renderer.memory());
     }
 
@@ -89,12 +117,17 @@ final class PreviewSession {
         arriving = false;
     }
 
-    /** A message from the client: it replaces any revision not yet started, and stops the one being shown. */
+    /** A message from the client: it joins those not yet read, and stops the revision being shown. */
     void receive(byte[] message, IntakeMemory memory) {
-        Pending replaced = pending.getAndSet(new Pending(message, memory, System.nanoTime()));
+        Message next = new Message(message, memory, System.nanoTime());
+        boolean whole = PreviewRequest.isWholeScene(message);
+        Pending before = pending.getAndUpdate(p -> p == null ? new Pending(List.of(next)) : p.with(next, whole));
         arriving = false;
-        if (replaced != null) {
-            replaced.memory().close();
+        if (before != null) {
+            // what the update dropped for the newer gives its memory back: all before a whole scene, else the oldest of a full list
+            List<Message> dropped = whole ? before.messages()
+                    : before.messages().size() == MAX_PENDING ? before.messages().subList(0, 1) : List.of();
+            dropped.forEach(m -> m.memory().close());
         }
         wake();
     }
@@ -103,10 +136,11 @@ final class PreviewSession {
     void close() {
         closed = true;
         reuse.close();
+        patchBase.close();
         keptFilm.close();
         Pending dropped = pending.getAndSet(null);
         if (dropped != null) {
-            dropped.memory().close();
+            dropped.messages().forEach(m -> m.memory().close());
         }
     }
 
@@ -136,12 +170,14 @@ final class PreviewSession {
                 }
                 continue;
             }
-            try (IntakeMemory memory = next.memory()) {
-                show(next);
+            try {
+                show(next.messages());
             } catch (IOException | RuntimeException e) {
                 closed = true;
                 output.close();
                 return;
+            } finally {
+                next.messages().forEach(m -> m.memory().close());
             }
         }
     }
@@ -156,35 +192,74 @@ final class PreviewSession {
      * last revision reaches; null (they render into a film of their own) when the last of them is
      * the final frame, which is always rendered afresh, or when the memory cannot hold it.
      */
-    private KeptFilm.Kept keptFilmFor(CompiledScene scene, List<PreviewPass> passes) {
+    private KeptFilm.Kept keptFilmFor(SceneReuse.Revision revision, List<PreviewPass> passes) {
         RenderSettings oneSample = passes.get(0).settings();
         if (passes.get(passes.size() - 1).settings().equals(oneSample)) {
             keptFilm.drop();
             return null;
         }
-        return keptFilm.prepare(scene.scene(), oneSample);
+        return keptFilm.prepare(revision.compiled().scene(), oneSample, revision.origins());
     }
 
-    private void show(Pending next) throws IOException {
-        PreviewRequest request;
-        CompiledScene scene;
-        try {
-            request = PreviewRequest.parse(next.message(), renderer.limits().maxWidth(), renderer.limits().maxHeight());
-            if (request.revision() <= lastRevision) {
-                throw new InvalidSceneException("revision", "must be greater than the last revision, " + lastRevision);
+    /**
+     * Reads the messages in order, answering each that gets a problem, and compiles the newest
+     * revision that reads; null if none does.
+     */
+    private Read read(List<Message> messages) throws IOException {
+        Read newest = null;
+        for (Message message : messages) {
+            try {
+                PreviewRequest request = PreviewRequest.parse(message.message(), renderer.limits().maxWidth(),
+                        renderer.limits().maxHeight());
+                if (request.revision() <= lastRevision) {
+                    throw new InvalidSceneException("revision", "must be greater than the last revision, " + lastRevision);
+                }
+                lastRevision = request.revision();
+                if (request.patch() == null) {
+                    patchBase.whole(request.revision(), request.scene());
+                    newest = new Read(request, message, null);
+                } else {
+                    newest = new Read(request, message, patchBase.patch(request.revision(), request.base(), request.patch()));
+                }
+            } catch (ErrorResponseException e) {
+                // an invalid message or patch: no patch applies until the next whole scene
+                patchBase.forget();
+                newest = null;
+                output.text(renderer.problem(PreviewRequest.revisionOf(message.message()), e));
             }
-            lastRevision = request.revision();
-            scene = renderer.compile(request, next.memory(), reuse);
+        }
+        return newest;
+    }
+
+    /** A revision read: its message, and its scene's tree if it was patched. */
+    private record Read(PreviewRequest request, Message message, JsonNode patched) {
+    }
+
+    private void show(List<Message> messages) throws IOException {
+        Read read = read(messages);
+        if (read == null) {
+            return;
+        }
+        PreviewRequest request = read.request();
+        Message next = read.message();
+        SceneReuse.Revision revision;
+        try {
+            revision = read.patched() == null ? renderer.compile(request, next.memory(), reuse)
+                    : renderer.compilePatched(request, patchBase.compiledTree(), read.patched(), patchBase.origins(),
+                    next.memory(), reuse);
+            patchBase.compiled();
         } catch (ErrorResponseException e) {
-            // an invalid message or scene (400), the memory to build it is taken right now (503), or it
-            // could never fit (413)
-            output.text(renderer.problem(PreviewRequest.revisionOf(next.message()), e));
+            // an invalid scene (400), the memory to build it is taken right now (503), or it could never
+            // fit (413): no patch applies until the next whole scene
+            patchBase.forget();
+            output.text(renderer.problem(request.revision(), e));
             return;
         } finally {
             next.memory().close(); // the passes reserve their own render memory, which counts the scene
         }
+        CompiledScene scene = revision.compiled();
         List<PreviewPass> passes = PreviewPass.plan(scene.settings());
-        KeptFilm.Kept kept = keptFilmFor(scene, passes);
+        KeptFilm.Kept kept = keptFilmFor(revision, passes);
         Film film = null;
         MemoryBudget.Reservation passMemory = null;
         try {

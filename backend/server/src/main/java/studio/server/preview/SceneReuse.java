@@ -15,39 +15,52 @@ import studio.engine.scene.SceneObject;
 import studio.server.render.RenderMemory;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.system.MemoryBudget;
+import tools.jackson.databind.JsonNode;
 
 /**
- * A live view's last compiled scene, kept to compile the next revision from. A drag sends the
- * whole scene at every step, yet changes one object; when a revision's JSON differs from the kept
- * one's only inside a few elements of its {@code objects} array, only those elements are read
- * (each in a scene of its own: the revision's bytes around the array with that one element) and
- * the scene is assembled from the kept objects and the new ones. That is the scene reading the
- * whole revision gives, to the bit: the rest of the JSON is byte for byte the kept one's, each
+ * A live view's last compiled scene, kept to compile the next revision from: a drag changes one
+ * object, and reading the other 9,999 again would be most of a revision's time. The next revision
+ * is assembled from the kept objects and the changed ones, each changed one read in a scene of its
+ * own ({@link ObjectReading}); that is the scene reading the whole revision gives, to the bit: each
  * object maps on its own (its shape and material depend on its element alone), and the engine's
- * objects are immutable. Anything else (another object count, a light, the camera, the view's
- * size, a mesh among the changed, more than {@value #MAX_CHANGED} changed, a changed element that
- * does not read) is read in full, as {@code POST /api/render} reads it, and so are its problems.
+ * objects are immutable. Which objects changed is told, never worked out from the scenes:
+ * <ul>
+ * <li>for a patch ({@link #compilePatched}), by its paths ({@link ObjectOrigins}): objects moved,
+ *     added or changed, and whether anything outside the objects changed (the rest of the scene
+ *     is then read with a stand-in object);
+ * <li>for a whole scene ({@link #compile}), by the elements of its {@code objects} array whose
+ *     bytes differ from the kept revision's, when the JSON around them is byte for byte the same.
+ * </ul>
+ * The same tally goes on to the kept film ({@link Revision#origins}). Anything else (another object
+ * count, the view's size, a mesh scaled, turned or with another source, more than a few changed, a
+ * changed element that does not read) is read in full, as {@code POST /api/render} reads it, and
+ * so are its problems.
  *
- * <p>Kept only for scenes of at least {@value #MIN_OBJECTS} objects, where reading pays (10,000
- * spheres: 20-40 ms), and only while the render memory can hold the kept bytes and objects; the
- * memory is given back when the view closes, or when other work finds the memory short (a
- * yielding reservation: the next revision is then read in full). {@link #compile} is called by the view's worker, one
- * revision at a time; {@link #close} by any thread, at once.
+ * <p>Every revision compiled is kept (so that what the next one changed can be told, for the kept
+ * film too), while the render memory can hold the kept bytes and objects; the memory is given back
+ * when the view closes, or when other work finds the memory short (a yielding reservation: the next
+ * revision is then read in full). {@link #compile} and {@link #compilePatched} are called by the
+ * view's worker, one revision at a time; {@link #close} by any thread, at once.
  */
 final class SceneReuse implements AutoCloseable {
 
-    /** Fewer objects than this are read in full: it costs little. */
-    static final int MIN_OBJECTS = 256;
     /** More changed objects than this are read in full. */
     static final int MAX_CHANGED = 8;
-    /** Smaller scenes (unless of many objects) are read in full: it costs little. */
-    static final int MIN_BYTES = 64 << 10;
     /** Ints an object takes in a request's {@code objects}. */
     private static final int PER = SceneObjectsInJson.PER_OBJECT;
     /** A three-vertex OBJ text, as a JSON string, that stands in for an unchanged mesh's while its other fields are read. */
     private static final byte[] STAND_IN = "\"v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\n\"".getBytes(StandardCharsets.US_ASCII);
 
-    /** The kept revision: its scene's bytes, its objects' ranges in them, the view's size and the scene. */
+    /**
+     * A revision's scene, and what changed since the last revision compiled.
+     *
+     * @param origins for each object, the index of the last revision's object it is unchanged from,
+     *                or -1; null when not told (every object may have changed)
+     */
+    record Revision(CompiledScene compiled, int[] origins) {
+    }
+
+    /** The kept revision: its scene's bytes and its objects' ranges in them (null for a patched one), the view's size and the scene. */
     private record Kept(byte[] json, int[] objects, int width, int height, CompiledScene compiled,
                         MemoryBudget.Reservation memory) {
     }
@@ -62,21 +75,44 @@ final class SceneReuse implements AutoCloseable {
     }
 
     /**
-     * The scene of a revision: assembled from the kept one where only some objects changed, else
-     * {@code read} from its whole JSON. {@code read} compiles a scene's JSON at the view's size (and
+     * The scene of a whole revision: assembled from the kept one where only some objects changed,
+     * else {@code read} from its whole JSON. {@code read} compiles a scene's JSON at the view's size (and
      * throws as {@code POST /api/render} would refuse it); it is also how each changed object is read.
      */
-    CompiledScene compile(PreviewRequest request, MemoryGate memory, Function<byte[], CompiledScene> read) {
+    Revision compile(PreviewRequest request, MemoryGate memory, Function<byte[], CompiledScene> read) {
         int[] objects = request.objects();
         Kept before = kept.get();
-        CompiledScene assembled = objects != null && before != null ? fromKept(before, request, objects, memory, read)
-                : null;
-        CompiledScene scene = assembled != null ? assembled : read.apply(request.scene());
+        Revision assembled = objects != null && before != null && before.json() != null
+                ? fromKept(before, request, objects, memory, read) : null;
+        Revision revision = assembled != null ? assembled : new Revision(read.apply(request.scene()), null);
         if (assembled != null) {
             reused++;
         }
-        keep(request, objects, scene);
-        return scene;
+        keep(objects != null ? request.scene() : null, objects, request, revision.compiled());
+        return revision;
+    }
+
+    /**
+     * The scene of a patched revision, {@code after}, patched from {@code before} (the tree of the
+     * last revision compiled) with the changes {@code changes} tells: assembled from the kept scene,
+     * else {@code read} whole; null {@code before} or {@code changes}: the change is not known, read whole.
+     */
+    Revision compilePatched(JsonNode before, JsonNode after, ObjectOrigins changes, PreviewRequest request,
+                            MemoryGate memory, Function<byte[], CompiledScene> read) {
+        Kept last = kept.get();
+        int[] origins = changes != null && before != null ? changes.origins() : null;
+        boolean reusable = last != null && origins != null && request.width() == last.width()
+                && request.height() == last.height() && changes.changed() <= MAX_CHANGED
+                && origins.length == last.compiled().scene().objectCount();
+        CompiledScene assembled = !reusable ? null
+                : changes.changed() == 0 && !changes.frameChanged() ? last.compiled() // a patch of tests alone, or none
+                : fromTree(last.compiled(), before, after, origins, changes.frameChanged(), memory, read);
+        CompiledScene scene = assembled != null ? assembled : read.apply(TreeObjects.bytes(after));
+        if (assembled != null) {
+            reused++;
+        }
+        keep(null, null, request, scene);
+        return new Revision(scene, origins);
     }
 
     /** Revisions assembled from a kept scene so far. */
@@ -91,8 +127,39 @@ final class SceneReuse implements AutoCloseable {
         release();
     }
 
-    private CompiledScene fromKept(Kept last, PreviewRequest request, int[] objects, MemoryGate memory,
-                                   Function<byte[], CompiledScene> read) {
+    private static CompiledScene fromTree(CompiledScene last, JsonNode before, JsonNode after, int[] origins,
+                                          boolean frameChanged, MemoryGate memory, Function<byte[], CompiledScene> read) {
+        CompiledScene frame = last;
+        if (frameChanged) {
+            try {
+                frame = read.apply(TreeObjects.frame(after));
+            } catch (RuntimeException e) {
+                return null; // read in full, for the problems by their whole scene's paths
+            }
+        }
+        Scene scene = last.scene();
+        List<SceneObject> objects = new ArrayList<>(origins.length);
+        for (int i = 0; i < origins.length; i++) {
+            SceneObject object = origins[i] >= 0 ? new SceneObject(scene.shape(origins[i]), scene.material(origins[i]))
+                    : TreeObjects.read(after, i, TreeObjects.element(before, i), scene.shape(i), memory, read);
+            if (object == null) {
+                return null;
+            }
+            objects.add(object);
+        }
+        return assemble(frame, objects, memory);
+    }
+
+    /** The scene of {@code frame} (its camera, lights and settings) with these objects. */
+    private static CompiledScene assemble(CompiledScene frame, List<SceneObject> objects, MemoryGate memory) {
+        Scene scene = frame.scene();
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), frame.settings().cameraSamples(), memory);
+        return new CompiledScene(new Scene(scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
+                frame.settings(), frame.format(), frame.quality(), frame.fileStem());
+    }
+
+    private Revision fromKept(Kept last, PreviewRequest request, int[] objects, MemoryGate memory,
+                              Function<byte[], CompiledScene> read) {
         byte[] json = request.scene(), was = last.json();
         int[] wasObjects = last.objects();
         int n = objects.length / PER, count = last.compiled().scene().objectCount();
@@ -112,58 +179,38 @@ final class SceneReuse implements AutoCloseable {
                 return null;
             }
         }
-        List<Integer> changed = new ArrayList<>();
+        int[] origins = new int[n];
+        int changed = 0;
         for (int i = 0; i < n; i++) {
-            if (!Arrays.equals(json, start(objects, i), end(objects, i), was, start(wasObjects, i), end(wasObjects, i))) {
-                if (changed.size() == MAX_CHANGED) {
-                    return null;
-                }
-                changed.add(i);
+            boolean same = Arrays.equals(json, start(objects, i), end(objects, i), was, start(wasObjects, i),
+                    end(wasObjects, i));
+            origins[i] = same ? i : -1;
+            if (!same && ++changed > MAX_CHANGED) {
+                return null;
             }
         }
-        if (changed.isEmpty()) {
-            return last.compiled();
+        if (changed == 0) {
+            return new Revision(last.compiled(), origins);
         }
         List<SceneObject> assembled = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
-            assembled.add(new SceneObject(scene.shape(i), scene.material(i)));
-        }
-        for (int i : changed) {
-            SceneObject object = scene.shape(i) instanceof TriangleMesh mesh
+            SceneObject object = origins[i] == i ? new SceneObject(scene.shape(i), scene.material(i))
+                    : scene.shape(i) instanceof TriangleMesh mesh
                     ? movedMesh(mesh, json, objects, i, was, wasObjects, memory, read)
-                    : readAlone(alone(json, objects, json, start(objects, i), end(objects, i)), read);
+                    : ObjectReading.alone(alone(json, objects, json, start(objects, i), end(objects, i)), read);
             if (object == null) {
                 return null;
             }
-            assembled.set(i, object);
+            assembled.add(object);
         }
-        CompiledScene before = last.compiled();
-        List<SceneObject> lit = MeshLightBuffers.forRender(assembled, scene.lights(), before.settings().cameraSamples(), memory);
-        return new CompiledScene(new Scene(scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
-                before.settings(), before.format(), before.quality(), before.fileStem());
-    }
-
-    /** Object i read in a scene of its own; null if it does not read or is a mesh (meshes share one triangle limit). */
-    private static SceneObject readAlone(byte[] alone, Function<byte[], CompiledScene> read) {
-        CompiledScene compiled;
-        try {
-            compiled = read.apply(alone);
-        } catch (RuntimeException e) {
-            return null; // read in full, for the problems by their whole scene's paths
-        }
-        Scene one = compiled.scene();
-        if (one.objectCount() != 1 || one.shape(0) instanceof TriangleMesh) {
-            return null;
-        }
-        return new SceneObject(one.shape(0), one.material(0));
+        return new Revision(assemble(last.compiled(), assembled, memory), origins);
     }
 
     /**
      * An inline mesh whose OBJ text is the kept one's, byte for byte, while something else of it
-     * changed: its other fields are read with a three-vertex stand-in for the text (so 3.4 MB of
-     * OBJ are neither decoded nor digested again), and if only its position or material changed,
-     * the kept mesh is moved there ({@link TriangleMesh#movedTo}: the very mesh reading it in full
-     * builds). Null for anything else.
+     * changed: read with a three-vertex stand-in for the text (so 3.4 MB of OBJ are neither decoded
+     * nor digested again), and moved if only its position or material changed
+     * ({@link ObjectReading#movedMesh}). Null for anything else.
      */
     private static SceneObject movedMesh(TriangleMesh kept, byte[] json, int[] objects, int i, byte[] was,
                                          int[] wasObjects, MemoryGate memory, Function<byte[], CompiledScene> read) {
@@ -179,19 +226,7 @@ final class SceneReuse implements AutoCloseable {
         System.arraycopy(STAND_IN, 0, element, at, STAND_IN.length);
         at += STAND_IN.length;
         System.arraycopy(json, objEnd, element, at, end(objects, i) - objEnd);
-        CompiledScene compiled;
-        try {
-            compiled = read.apply(alone(json, objects, element, 0, element.length));
-        } catch (RuntimeException e) {
-            return null;
-        }
-        Scene one = compiled.scene();
-        if (one.objectCount() != 1 || !(one.shape(0) instanceof TriangleMesh placed) || placed.scale() != kept.scale()
-                || !placed.rotationDegrees().equals(kept.rotationDegrees())) {
-            return null;
-        }
-        TriangleMesh moved = placed.position().equals(kept.position()) ? kept : kept.movedTo(placed.position(), memory);
-        return new SceneObject(moved, one.material(0));
+        return ObjectReading.movedMesh(kept, alone(json, objects, element, 0, element.length), memory, read);
     }
 
     /** The scene's JSON with one object, {@code element[from, to)}: the bytes before its first object, that one, those after its last. */
@@ -212,16 +247,16 @@ final class SceneReuse implements AutoCloseable {
         return objects[PER * i + 1];
     }
 
-    private void keep(PreviewRequest request, int[] objects, CompiledScene scene) {
+    /** Keeps a compiled revision ({@code json} and {@code objects}: its bytes and their objects, or null). */
+    private void keep(byte[] json, int[] objects, PreviewRequest request, CompiledScene scene) {
         release();
-        if (objects == null || closed
-                || (objects.length / PER < MIN_OBJECTS && request.scene().length < MIN_BYTES)) {
+        if (closed) {
             return;
         }
         MemoryBudget.Reservation held = memory.tryReserveYielding(
-                request.scene().length + RenderMemory.sceneBytes(scene.scene()), this::release);
+                (json != null ? json.length : 0) + RenderMemory.sceneBytes(scene.scene()), this::release);
         if (held != null) {
-            kept.set(new Kept(request.scene(), objects, request.width(), request.height(), scene, held));
+            kept.set(new Kept(json, objects, request.width(), request.height(), scene, held));
             if (closed) {
                 release(); // closed meanwhile: whichever of the two swaps it out gives the memory back
             }

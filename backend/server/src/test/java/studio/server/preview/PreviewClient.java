@@ -49,6 +49,12 @@ final class PreviewClient implements WebSocket.Listener, AutoCloseable {
                 + "}");
     }
 
+    /** A patch (a JSON array of RFC 6902 operations) to revision {@code base}'s scene, as revision {@code revision}. */
+    void sendPatch(long revision, long base, String patch, int width, int height) throws Exception {
+        send("{\"revision\": " + revision + ", \"base\": " + base + ", \"width\": " + width + ", \"height\": " + height
+                + ", \"patch\": " + patch + "}");
+    }
+
     void send(String message) throws Exception {
         socket.sendText(message, true).get(30, TimeUnit.SECONDS);
     }

@@ -55,15 +55,15 @@ class PreviewMemoryTest {
     void keptFilmsOfIdleViewsGiveWayToARender() throws Exception {
         String opaque = PreviewApiTest.SCENE.replace("\"glass\"", "\"plastic\"");
         try (PreviewClient first = new PreviewClient(port); PreviewClient second = new PreviewClient(port)) {
-            int views = 0;
+            int views = 0, keptPerView = 0;
             for (PreviewClient view : List.of(first, second)) {
                 view.send(1, opaque, 256, 192); // each keeps a film of 256x192: about 3.2 MB
                 Await.until("the final frame", 30_000, () -> view.lastFrame() != null && view.lastFrame().last());
                 int kept = ++views;
                 // the final frame goes out before its pass gives its memory back: wait for that, or
                 // the next view would find the memory short and rightly take this film back
-                Await.until("only the films kept", 5_000,
-                        () -> memory.yieldingCount() == kept && memory.reserved() < kept * 3_300_000L);
+                Await.until("only the films kept", 5_000, () -> memory.reserved() < kept * 3_300_000L);
+                keptPerView = memory.yieldingCount() / kept; // the film, the scene, the next patch's base
             }
             long kept = memory.reserved();
             assertTrue(kept > 6_000_000, "kept " + kept);
@@ -75,7 +75,7 @@ class PreviewMemoryTest {
                             URI.create("http://localhost:" + port + "/api/render")).header("Content-Type", "application/json")
                     .POST(HttpRequest.BodyPublishers.ofString(big)).build(), HttpResponse.BodyHandlers.ofByteArray());
             assertEquals(200, response.statusCode(), new String(response.body()));
-            assertEquals(1, memory.yieldingCount(), "the older kept film was given back, and no more than needed");
+            assertEquals(keptPerView, memory.yieldingCount(), "the older view's kept film was given back, and no more than needed");
 
             first.send(2, opaque.replace("[2, 0.5, 0]", "[2.2, 0.5, 0]"), 256, 192);
             Await.until("the next revision's final frame", 30_000,

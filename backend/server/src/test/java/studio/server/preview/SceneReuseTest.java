@@ -93,10 +93,10 @@ class SceneReuseTest {
     @Test
     void aMovedObjectIsReadAloneAndTheSceneIsTheOneReadingItAllGives() {
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
             String movedJson = scene(300, 7, 0.4, LIGHT);
 
-            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, READ);
+            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, READ).compiled();
 
             assertThat(reuse.reused()).isEqualTo(1);
             assertThat(moved.scene().objectCount()).isEqualTo(302);
@@ -113,28 +113,28 @@ class SceneReuseTest {
     @Test
     void aRevisionLikeTheLastIsTheLastScene() {
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
 
-            assertThat(reuse.compile(request(2, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ)).isSameAs(first);
+            assertThat(reuse.compile(request(2, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled()).isSameAs(first);
         }
     }
 
     @Test
     void changesBesideTheObjectsOrToManyOfThemAreReadInFull() {
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
             String lightMoved = LIGHT.replace("[3, 5, 4]", "[2, 5, 4]");
 
-            CompiledScene relit = reuse.compile(request(2, scene(300, 7, 0, lightMoved)), MemoryGate.UNLIMITED, READ);
+            CompiledScene relit = reuse.compile(request(2, scene(300, 7, 0, lightMoved)), MemoryGate.UNLIMITED, READ).compiled();
             assertThat(relit.scene().shape(3)).isNotSameAs(first.scene().shape(3));
             assertThat(relit.scene().lights().get(0).position().x()).isEqualTo(2);
 
             String many = scene(300, 7, 0, lightMoved).replace("\"radius\": 0.15", "\"radius\": 0.16");
-            CompiledScene grown = reuse.compile(request(3, many), MemoryGate.UNLIMITED, READ);
+            CompiledScene grown = reuse.compile(request(3, many), MemoryGate.UNLIMITED, READ).compiled();
             assertThat(grown.scene().shape(3)).isNotSameAs(relit.scene().shape(3));
 
             CompiledScene otherSize = reuse.compile(request(4, many, 64, 48),
-                    MemoryGate.UNLIMITED, json -> COMPILER.compile(CompileRequest.of(json).overriding(Map.of("image.width", 64, "image.height", 48)).onThreads(1)));
+                    MemoryGate.UNLIMITED, json -> COMPILER.compile(CompileRequest.of(json).overriding(Map.of("image.width", 64, "image.height", 48)).onThreads(1))).compiled();
             assertThat(otherSize.settings().width()).isEqualTo(64);
             assertThat(reuse.reused()).isZero();
         }
@@ -143,32 +143,34 @@ class SceneReuseTest {
     @Test
     void aChangedObjectThatDoesNotReadGetsItsProblemByItsPathInTheWholeScene() {
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
+            reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
             String bad = scene(300, 7, 0, LIGHT).replaceFirst("\"radius\": 0.15", "\"radius\": -1");
 
-            assertThatThrownBy(() -> reuse.compile(request(2, bad), MemoryGate.UNLIMITED, READ)).isInstanceOfSatisfying(
+            assertThatThrownBy(() -> reuse.compile(request(2, bad), MemoryGate.UNLIMITED, READ).compiled()).isInstanceOfSatisfying(
                     InvalidSceneException.class, e -> assertThat(e.problems()).anySatisfy(
                             p -> assertThat(p.field()).isEqualTo("objects[1].radius")));
             // the last scene that read is still kept
-            reuse.compile(request(3, scene(300, 7, 0.2, LIGHT)), MemoryGate.UNLIMITED, READ);
+            reuse.compile(request(3, scene(300, 7, 0.2, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
             assertThat(reuse.reused()).isEqualTo(1);
         }
     }
 
     @Test
-    void smallScenesAreReadInFullAndAKeptSceneHoldsMemoryUntilTheViewCloses() {
+    void smallScenesAreReusedTooAndAKeptSceneHoldsMemoryUntilTheViewCloses() {
         MemoryBudget memory = new MemoryBudget(1L << 30);
         SceneReuse reuse = new SceneReuse(memory);
-        reuse.compile(request(1, scene(10, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
-        reuse.compile(request(2, scene(10, 7, 0.4, LIGHT)), MemoryGate.UNLIMITED, READ);
-        assertThat(reuse.reused()).isZero();
-        assertThat(memory.reserved()).isZero();
+        reuse.compile(request(1, scene(10, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
+        SceneReuse.Revision small = reuse.compile(request(2, scene(10, 7, 0.4, LIGHT)), MemoryGate.UNLIMITED, READ);
+        assertThat(reuse.reused()).isOne();
+        assertThat(small.origins()).as("the moved sphere told, the others kept in place")
+                .containsExactly(0, 1, 2, 3, 4, 5, 6, 7, -1, 9, 10, 11);
+        assertThat(memory.reserved()).isPositive();
 
-        reuse.compile(request(3, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ);
+        reuse.compile(request(3, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
         assertThat(memory.reserved()).isPositive();
         reuse.close();
         assertThat(memory.reserved()).isZero();
-        reuse.compile(request(4, scene(300, 7, 0.4, LIGHT)), MemoryGate.UNLIMITED, READ);
+        reuse.compile(request(4, scene(300, 7, 0.4, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
         assertThat(memory.reserved()).as("nothing kept after close").isZero();
     }
 
@@ -199,10 +201,10 @@ class SceneReuseTest {
     void aMovedInlineMeshKeepsItsTextUnreadAndItsTree() {
         String knot = knot();
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, meshScene(knot, 0, 0.4)), MemoryGate.UNLIMITED, READ);
+            CompiledScene first = reuse.compile(request(1, meshScene(knot, 0, 0.4)), MemoryGate.UNLIMITED, READ).compiled();
             String movedJson = meshScene(knot, 0.25, 0.4);
 
-            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, READ);
+            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, READ).compiled();
 
             assertThat(reuse.reused()).isEqualTo(1);
             TriangleMesh mesh = (TriangleMesh) moved.scene().shape(1);
@@ -215,8 +217,8 @@ class SceneReuseTest {
             assertThat(pixels(moved.scene())).isNotEqualTo(pixels(first.scene()));
 
             // scaled, or another text: read in full
-            reuse.compile(request(3, meshScene(knot, 0.25, 0.5)), MemoryGate.UNLIMITED, READ);
-            reuse.compile(request(4, meshScene(knot + "# another text\\n", 0.25, 0.5)), MemoryGate.UNLIMITED, READ);
+            reuse.compile(request(3, meshScene(knot, 0.25, 0.5)), MemoryGate.UNLIMITED, READ).compiled();
+            reuse.compile(request(4, meshScene(knot + "# another text\\n", 0.25, 0.5)), MemoryGate.UNLIMITED, READ).compiled();
             assertThat(reuse.reused()).isEqualTo(1);
         }
     }
