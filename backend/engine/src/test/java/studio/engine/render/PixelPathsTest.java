@@ -17,6 +17,7 @@ import studio.engine.accel.Aabb;
 import studio.engine.camera.Camera;
 import studio.engine.geometry.Box;
 import studio.engine.geometry.Sphere;
+import studio.engine.light.Light;
 import studio.engine.light.PointLight;
 import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
@@ -194,7 +195,7 @@ class PixelPathsTest {
         Camera turned = new Camera(new Vec3(0.1, 2.5, 5), new Vec3(0, 0.8, -0.5), new Vec3(0, 1, 0), 50);
         assertNull(SceneEdit.changedBoxes(scene,
                 new Scene(turned, objects(scene), scene.lights(), scene.background(), scene.ambient())));
-        List<PointLight> lights = new ArrayList<>(scene.lights());
+        List<Light> lights = new ArrayList<>(scene.lights());
         lights.set(0, new PointLight(new Vec3(3, 6, 2.5), Rgb.WHITE, 1, false));
         assertNull(SceneEdit.changedBoxes(scene,
                 new Scene(scene.camera(), objects(scene), lights, scene.background(), scene.ambient())));
@@ -313,8 +314,8 @@ class PixelPathsTest {
                         ? new SceneObject(new Sphere(s.center(), s.radius() * (0.5 + random.nextDouble())), o.material())
                         : o);
             } else if (what < 9) {
-                List<PointLight> lights = new ArrayList<>(scene.lights());
-                PointLight l = lights.get(0);
+                List<Light> lights = new ArrayList<>(scene.lights());
+                PointLight l = (PointLight) lights.get(0);
                 lights.set(0, new PointLight(l.position().plus(new Vec3(0.1, 0, 0)), l.color(), l.intensity(),
                         l.falloff()));
                 next = new Scene(scene.camera(), objects(scene), lights, scene.background(), scene.ambient());
