@@ -45,6 +45,11 @@ public final class SceneDefaults {
     public static final List<Double> LIGHT_POSITION = List.of(5.0, 8.0, 5.0);
     public static final String LIGHT_COLOR = "#ffffff";
     public static final double LIGHT_INTENSITY = 1.0;
+    /** A point light's radius: 0, a point. */
+    public static final double LIGHT_RADIUS = 0;
+    /** Where an area light faces, and its size in metres. */
+    public static final List<Double> AREA_LIGHT_LOOK_AT = List.of(0.0, 0.0, 0.0);
+    public static final List<Double> AREA_LIGHT_SIZE = List.of(1.0, 1.0);
     public static final List<Double> ORIGIN = List.of(0.0, 0.0, 0.0);
     public static final List<Double> SPHERE_CENTER = List.of(0.0, 1.0, 0.0);
     public static final double SPHERE_RADIUS = 1;
@@ -65,7 +70,9 @@ public final class SceneDefaults {
                     "fov", CAMERA_FOV_DEGREES),
             RenderDto.class, Map.of("sampler", SAMPLER, "samples", SAMPLES, "maxDepth", MAX_DEPTH, "seed", SEED),
             LightDto.Point.class, Map.of("position", LIGHT_POSITION, "color", LIGHT_COLOR, "intensity", LIGHT_INTENSITY,
-                    "falloff", false),
+                    "falloff", false, "radius", LIGHT_RADIUS),
+            LightDto.Area.class, Map.of("position", LIGHT_POSITION, "size", AREA_LIGHT_SIZE, "lookAt", AREA_LIGHT_LOOK_AT,
+                    "color", LIGHT_COLOR, "intensity", LIGHT_INTENSITY, "falloff", false, "twoSided", false),
             ObjectDto.Sphere.class, Map.of("center", SPHERE_CENTER, "radius", SPHERE_RADIUS),
             ObjectDto.Box.class, Map.of("center", BOX_CENTER, "size", BOX_SIZE, "rotation", ORIGIN),
             ObjectDto.Plane.class, Map.of("point", ORIGIN, "normal", PLANE_NORMAL),
