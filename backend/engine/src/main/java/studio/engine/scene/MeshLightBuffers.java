@@ -33,7 +33,8 @@ public final class MeshLightBuffers {
         if (lights.isEmpty() || objects.stream().noneMatch(o -> pays(o, cameraSamples))) {
             return objects;
         }
-        List<Vec3> positions = lights.stream().map(Light::position).toList();
+        // point lights only: a sphere or area light's shadow rays end all over it, never at one buffered point
+        List<Vec3> positions = lights.stream().filter(l -> !l.soft()).map(Light::position).toList();
         return objects.stream()
                 .map(o -> pays(o, cameraSamples) ? new SceneObject(
                         ((TriangleMesh) o.shape()).withLightBuffers(positions, memory), o.material()) : o)

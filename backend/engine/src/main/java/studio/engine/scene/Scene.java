@@ -41,7 +41,8 @@ public final class Scene {
         }
         this.camera = camera;
         this.shapes = objects.stream().map(SceneObject::shape).toArray(Shape[]::new);
-        this.geometry = ShapeSet.of(lights.stream().map(Light::position).toList(), shapes);
+        // light buffers for point lights only (null for a light with a size): see ShapeSet
+        this.geometry = ShapeSet.of(lights.stream().map(l -> l.soft() ? null : l.position()).toList(), shapes);
         this.materials = objects.stream().map(SceneObject::material).toArray(Material[]::new);
         this.lights = List.copyOf(lights);
         this.background = background;

@@ -160,4 +160,34 @@ class PenumbraTest {
         assertTrue(soft.meanSamplesPerPixel() > 1.3 * hard.meanSamplesPerPixel(),
                 "soft " + soft.meanSamplesPerPixel() + ", hard " + hard.meanSamplesPerPixel());
     }
+
+    /**
+     * Among 100 spheres (light buffers, pixel lists) a point light after a sphere light keeps its
+     * own buffer and lists: the point light's part of the image is the same with the sphere light
+     * beside it as alone, to the bit, when the sphere light gives nothing (intensity 0).
+     */
+    @Test
+    void aPointLightBesideASoftLightKeepsItsAccelerators() {
+        java.util.Random random = new java.util.Random(9);
+        List<SceneObject> objects = new java.util.ArrayList<>(List.of(new SceneObject(
+                new Plane(Vec3.ZERO, new Vec3(0, 1, 0)), MaterialDefaults.of(MaterialKind.CHALK, Rgb.WHITE))));
+        for (int i = 0; i < 100; i++) {
+            objects.add(new SceneObject(new studio.engine.geometry.Sphere(new Vec3(random.nextDouble() * 6 - 3,
+                    random.nextDouble() + 0.2, random.nextDouble() * 6 - 3), 0.15), MaterialDefaults.of(MaterialKind.PLASTIC,
+                    new Rgb(0.8, 0.3, 0.2))));
+        }
+        Camera camera = new Camera(new Vec3(0, 4, 7), Vec3.ZERO, new Vec3(0, 1, 0), 45);
+        PointLight point = new PointLight(new Vec3(2, 5, 1), Rgb.WHITE, 0.8, false);
+        RenderSettings settings = new RenderSettings(48, 36, new JitteredSampler(4), 2, 2, 1L, 0);
+        Film alone = Renderer.render(new Scene(camera, objects, List.of(point), Rgb.BLACK, 0.1), settings).film();
+        Film beside = Renderer.render(new Scene(camera, objects, List.of(
+                new SphereLight(new Vec3(-2, 4, 0), 0.5, Rgb.WHITE, 0, false), point), Rgb.BLACK, 0.1), settings).film();
+        for (int y = 0; y < 36; y++) {
+            for (int x = 0; x < 48; x++) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(alone.get(x, y, c), beside.get(x, y, c), "pixel " + x + ", " + y);
+                }
+            }
+        }
+    }
 }
