@@ -19,6 +19,7 @@ import studio.engine.geometry.Box;
 import studio.engine.geometry.Sphere;
 import studio.engine.light.Light;
 import studio.engine.light.PointLight;
+import studio.engine.light.SphereLight;
 import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
@@ -112,6 +113,17 @@ class PixelPathsTest {
         int plastic = firstOf(scene, MaterialKind.PLASTIC);
         double kept = keptAfterEdit(scene, edited(scene, plastic, o -> moved(o, new Vec3(0.15, 0.05, 0))));
         assertTrue(kept > 0.5 && kept < 1, "kept " + kept);
+    }
+
+    /** Under a sphere light a shadow ray may end anywhere on it: an edit forgets every pixel, and the kept film is still a fresh render. */
+    @Test
+    void underALightWithASizeAMovedSphereForgetsEveryPixel() {
+        Scene points = OpaqueShadowsUnchangedTest.scene();
+        List<Light> lights = new ArrayList<>(points.lights());
+        lights.add(new SphereLight(new Vec3(-2, 5, 2), 0.6, Rgb.WHITE, 0.5, false));
+        Scene scene = new Scene(points.camera(), objects(points), lights, points.background(), points.ambient());
+        int plastic = firstOf(scene, MaterialKind.PLASTIC);
+        assertEquals(0, keptAfterEdit(scene, edited(scene, plastic, o -> moved(o, new Vec3(0.15, 0.05, 0)))));
     }
 
     @Test
