@@ -31,7 +31,7 @@ import studio.bench.ResolvedScene;
  * and both ({@code povray-area}, {@code povray-area-adaptive}, {@code povray-area-jitter},
  * {@code povray-area-adaptive-jitter}), every one with the adaptive anti-aliasing {@link #AREA_AA};
  * its reference has a {@value #REFERENCE_AREA_GRID} x {@value #REFERENCE_AREA_GRID} jittered grid
- * under the reference's 1,024 samples a pixel.
+ * under 64 camera rays a pixel ({@link #REFERENCE_SOFT_GRID}).
  */
 final class PovrayAccuracy {
 
@@ -46,7 +46,14 @@ final class PovrayAccuracy {
     static final String GRID_METHOD = "povray-grid", ADAPTIVE_METHOD = "povray-adaptive";
     /** The sub-lights a side of the {@code area_light} settings, and of the reference's. */
     static final int[] AREA_GRID = {2, 4, 8, 16};
-    static final int REFERENCE_AREA_GRID = 2;
+    static final int REFERENCE_AREA_GRID = 8;
+    /**
+     * The reference's anti-aliasing grid a pixel of its 4 x larger image on a soft-lit scene: 2 x 2,
+     * 64 camera rays a pixel, each with the 8 x 8 jittered sub-lights (as many shadow rays as 1,024
+     * camera rays with 2 x 2 sub-lights, which left a bias: on soft-ball at 160x120 POV-Ray's error
+     * against it grew with the grid, 0.0046 at 2 x 2 jittered to 0.0126 at 16 x 16).
+     */
+    static final int REFERENCE_SOFT_GRID = 2;
     /**
      * The anti-aliasing of every {@code area_light} setting: adaptive, threshold 0.02, depth 3 (at 0.1
      * the edges' error left a floor under the curves on {@code soft-ball} at 80x60, 2-4e-3, higher at
@@ -119,10 +126,11 @@ final class PovrayAccuracy {
                 new PovrayScene.AreaSampling(REFERENCE_AREA_GRID, false, true)));
         Path out = dir.resolve("reference.png");
         long start = System.nanoTime();
+        int grid = soft(scene) ? REFERENCE_SOFT_GRID : REFERENCE_GRID;
         ProcessRun.time(command(pov, out, scene.width() * REFERENCE_SCALE, scene.height() * REFERENCE_SCALE,
-                List.of("+A0.0", "+AM1", "+R" + REFERENCE_GRID)), out, dir.resolve("reference.log"));
+                List.of("+A0.0", "+AM1", "+R" + grid)), out, dir.resolve("reference.log"));
         log.printf(Locale.ROOT, "%s: POV-Ray reference, %d samples/pixel, %.0f ms%n", name,
-                REFERENCE_SCALE * REFERENCE_SCALE * REFERENCE_GRID * REFERENCE_GRID, (System.nanoTime() - start) / 1e6);
+                REFERENCE_SCALE * REFERENCE_SCALE * grid * grid, (System.nanoTime() - start) / 1e6);
         return new Scene(name, dir, scene, PovrayImage.linear(out, REFERENCE_SCALE));
     }
 
