@@ -358,7 +358,7 @@ export interface components {
             seed: number;
             adaptive?: number;
         };
-        Light: components["schemas"]["PointLight"];
+        Light: components["schemas"]["PointLight"] | components["schemas"]["AreaLight"];
         PointLight: {
             /** @constant */
             type: "point";
@@ -376,6 +376,44 @@ export interface components {
             intensity: number;
             /** @default false */
             falloff: boolean;
+            /** @default 0 */
+            radius: number;
+            name?: string;
+        };
+        AreaLight: {
+            /** @constant */
+            type: "area";
+            /**
+             * @default [
+             *       5,
+             *       8,
+             *       5
+             *     ]
+             */
+            position: number[];
+            /**
+             * @default [
+             *       1,
+             *       1
+             *     ]
+             */
+            size: number[];
+            /**
+             * @default [
+             *       0,
+             *       0,
+             *       0
+             *     ]
+             */
+            lookAt: number[];
+            /** @default #ffffff */
+            color: string;
+            /** @default 1 */
+            intensity: number;
+            /** @default false */
+            falloff: boolean;
+            /** @default false */
+            twoSided: boolean;
             name?: string;
         };
         Object: components["schemas"]["SphereObject"] | components["schemas"]["BoxObject"] | components["schemas"]["PlaneObject"] | components["schemas"]["MeshObject"] | components["schemas"]["GltfObject"];

@@ -1,6 +1,6 @@
 import { act, renderHook } from '@testing-library/react';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { recordingContext } from '../render/fakes';
+import { recordingContext } from '../test/renderFakes';
 import { fakeSockets, instantDecoder } from './fakes';
 import type { PatchMessage, RevisionMessage } from './protocol';
 import { useLivePreview, type LivePreviewOptions } from './useLivePreview';

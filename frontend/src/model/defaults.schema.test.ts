@@ -8,7 +8,6 @@ import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { AREA_LIGHT_DEFAULTS, LIGHT_DEFAULTS, MATERIAL_DEFAULTS, OBJECT_DEFAULTS, SCENE_DEFAULTS } from './defaults';
-import { AWAITING_SCHEMA, type LightType } from './types';
 
 type Schema = { properties?: Record<string, { default?: unknown }>; $defs?: Record<string, Schema> };
 const schema = JSON.parse(readFileSync(resolve(process.cwd(), 'src/model/scene.schema.json'), 'utf8')) as Schema;
@@ -23,11 +22,9 @@ function published(record: Schema | undefined): Record<string, unknown> {
 const capitalise = (s: string) => s.charAt(0).toUpperCase() + s.slice(1);
 const defs = schema.$defs ?? {};
 
-/** A light kind's defaults but its type and the fields the schema does not publish yet (AWAITING_SCHEMA in types.ts). */
-function lightDefaults(kind: LightType, defaults: object): [Record<string, unknown>] | [] {
-  const awaited: readonly string[] = AWAITING_SCHEMA[kind] ?? [];
-  const kept = Object.entries(defaults).filter(([field]) => field !== 'type' && !awaited.includes(field));
-  return awaited.includes('type') ? [] : [Object.fromEntries(kept)];
+/** A light kind's defaults but its type. */
+function lightDefaults(defaults: object): Record<string, unknown> {
+  return Object.fromEntries(Object.entries(defaults).filter(([field]) => field !== 'type'));
 }
 
 /** Each record of the schema with the editor's defaults for it; fields without a default are left out. */
@@ -36,8 +33,8 @@ const RECORDS: [string, Schema | undefined, Record<string, unknown>][] = [
   ['image', defs.Image, { ...SCENE_DEFAULTS.image }],
   ['camera', defs.Camera, { ...SCENE_DEFAULTS.camera }],
   ['render', defs.Render, Object.fromEntries(Object.entries(SCENE_DEFAULTS.render).filter(([field]) => field !== 'adaptive'))],
-  ...lightDefaults('point', LIGHT_DEFAULTS).map((d): [string, Schema | undefined, Record<string, unknown>] => ['a light', defs.PointLight, d]),
-  ...lightDefaults('area', AREA_LIGHT_DEFAULTS).map((d): [string, Schema | undefined, Record<string, unknown>] => ['an area light', defs.AreaLight, d]),
+  ['a light', defs.PointLight, lightDefaults(LIGHT_DEFAULTS)],
+  ['an area light', defs.AreaLight, lightDefaults(AREA_LIGHT_DEFAULTS)],
   ...Object.entries(OBJECT_DEFAULTS).map(([type, d]): [string, Schema | undefined, Record<string, unknown>] => [
     `a ${type}`, defs[`${capitalise(type)}Object`], Object.fromEntries(Object.entries(d).filter(([field]) => field !== 'type')),
   ]),

@@ -71,7 +71,7 @@ describe('resolveScene', () => {
   it('resolves each kind of light with its own defaults', () => {
     expect(resolveLight({ type: 'point', radius: 0.25 })).toEqual({ type: 'point', position: [5, 8, 5], color: '#ffffff', intensity: 1, falloff: false, radius: 0.25 });
     expect(resolveLight({ type: 'area', size: [2, 0.5] })).toEqual({
-      type: 'area', position: [0, 3, 0], size: [2, 0.5], lookAt: [0, 0, 0], color: '#ffffff', intensity: 1, falloff: false, twoSided: false,
+      type: 'area', position: [5, 8, 5], size: [2, 0.5], lookAt: [0, 0, 0], color: '#ffffff', intensity: 1, falloff: false, twoSided: false,
     });
     const a = resolveLight({ type: 'area' });
     if (a.type === 'area') a.size[0] = 99;

@@ -50,10 +50,10 @@ export const LIGHT_DEFAULTS: ResolvedLightOf<'point'> = {
   radius: 0,
 };
 
-/** An area light's defaults: a metre square 3 m above the origin, facing down onto it. */
+/** An area light's defaults: a metre square where a point light stands by default, facing the origin. */
 export const AREA_LIGHT_DEFAULTS: ResolvedLightOf<'area'> = {
   type: 'area',
-  position: [0, 3, 0],
+  position: [5, 8, 5],
   size: [1, 1],
   lookAt: [0, 0, 0],
   color: '#ffffff',

@@ -11,7 +11,6 @@ import { useSceneStore } from '../store/sceneStore';
 import { exampleScenes } from '../test/scenes';
 import { blankScene, MATERIAL_DEFAULTS, newLight, newObject } from './defaults';
 import {
-  AWAITING_SCHEMA,
   CAMERA_FIELDS,
   IMAGE_FIELDS,
   LIGHT_FIELDS,
@@ -71,20 +70,6 @@ function kindsOf(defName: string): Record<string, string[]> {
   );
 }
 
-/**
- * The editor's light kinds and fields but those the server does not publish yet (AWAITING_SCHEMA):
- * a kind awaited with all its fields (the area light) is left out whole.
- */
-function publishedLightFields(): Record<string, readonly string[]> {
-  return Object.fromEntries(
-    Object.entries(LIGHT_FIELDS).flatMap(([kind, fields]) => {
-      const awaited: readonly string[] = AWAITING_SCHEMA[kind as keyof typeof AWAITING_SCHEMA] ?? [];
-      const kept = fields.filter((f) => !awaited.includes(f));
-      return kept.length === 0 || (kept.length === 1 && kept[0] === 'type') ? [] : [[kind, kept]];
-    }),
-  );
-}
-
 const sorted = (o: Record<string, readonly string[]>) =>
   Object.fromEntries(Object.entries(o).map(([k, v]) => [k, [...v].sort()]));
 
@@ -92,15 +77,7 @@ describe.skipIf(schema === null)('the editor types follow the server JSON Schema
   it('has the same object, material and light kinds, each with the same field names', () => {
     expect(kindsOf('Object')).toEqual(sorted(OBJECT_FIELDS));
     expect(kindsOf('Material')).toEqual(sorted(MATERIAL_FIELDS));
-    expect(kindsOf('Light')).toEqual(sorted(publishedLightFields()));
-  });
-
-  it('does not publish yet the light fields the editor awaits (delete each from AWAITING_SCHEMA in types.ts once it does)', () => {
-    const kinds = kindsOf('Light');
-    for (const [kind, fields] of Object.entries(AWAITING_SCHEMA)) {
-      const published = kinds[kind] ?? [];
-      expect(fields.filter((f) => f !== 'type' && published.includes(f)), `lights of type "${kind}"`).toEqual([]);
-    }
+    expect(kindsOf('Light')).toEqual(sorted(LIGHT_FIELDS));
   });
 
   it('has the same scene, image, camera and render fields, and requires objects', () => {

@@ -277,17 +277,6 @@ export const LIGHT_FIELDS = {
   area: fieldsOf<AreaLight>()(['type', 'position', 'size', 'lookAt', 'color', 'intensity', 'falloff', 'twoSided']),
 } as const;
 
-/**
- * The light fields of issue 46 (sphere and area lights) that the editor reads and writes before the
- * server's published schema (`scene.schema.json`) and API types (`api/openapi.gen.ts`) have them.
- * The schema tests leave these out of their comparison, and fail as soon as the schema publishes
- * one of them: then delete it here (and this whole constant once it is empty).
- */
-export const AWAITING_SCHEMA: { readonly [T in LightType]?: readonly (keyof LightOf<T>)[] } = {
-  point: ['radius'],
-  area: LIGHT_FIELDS.area,
-};
-
 export const SCENE_FIELDS = fieldsOf<Scene>()([
   'version', 'name', 'image', 'camera', 'background', 'ambient', 'render', 'lights', 'objects',
 ]);

@@ -98,7 +98,7 @@ describe('lights in the top and side views', () => {
     expect(points).toContainEqual([10, 0, 7]);
     expect(Math.max(...points.map((p) => p[0]))).toBeCloseTo(12, 9);
     const t: ViewTransform = { zoom: 40, pan: [0, 0], width: 480, height: 320 };
-    const found = itemsInRect({ objects: [], lights: [{ type: 'area' }] }, 'top', t, worldToSvg('top', t, [-0.5, 0, -0.5]), worldToSvg('top', t, [0.5, 0, 0.5]));
-    expect(found).toEqual([{ kind: 'light', index: 0 }]); // the default area light hangs over the origin
+    const found = itemsInRect({ objects: [], lights: [{ type: 'area', position: [0, 3, 0] }] }, 'top', t, worldToSvg('top', t, [-0.5, 0, -0.5]), worldToSvg('top', t, [0.5, 0, 0.5]));
+    expect(found).toEqual([{ kind: 'light', index: 0 }]); // an area light hanging over the origin
   });
 });

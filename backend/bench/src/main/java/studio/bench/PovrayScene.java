@@ -17,6 +17,13 @@ import studio.engine.render.RenderSettings;
  * <li>Point lights: colour times intensity, no fall-off (as ours); with fall-off, POV-Ray's
  *     2 / (1 + (d/f)^2) with f = {@value #FADE_DISTANCE} and the colour scaled by 1 / (2 f^2),
  *     which is 1 / (d^2 + f^2): 1/d^2 to within 1e-6 relative beyond 1 mm.</li>
+ * <li>Sphere and area lights: POV-Ray's {@code area_light}, an n x n grid of point lights sharing
+ *     the colour, sampled as {@link AreaSampling} says (the grid, {@code adaptive 1}: corners first,
+ *     subdividing only where they disagree, {@code jitter}). A sphere is a {@code circular orient}
+ *     disc of its diameter, turned to face each point it lights (its silhouette); a rectangle its two
+ *     edges. Both are seen through a {@code looks_like} object of colour times intensity, as ours.
+ *     POV-Ray's sub-lights shine both ways and have no cosine at the light: a one-sided rectangle
+ *     lights the points behind it there, and its light falls off less to the side than ours.</li>
  * <li>Finishes: {@code ambient} = diffuse x scene ambient (ours: colour x diffuse x ambient),
  *     {@code diffuse} as ours, the Blinn highlight as {@code specular} with {@code roughness} =
  *     1 / shininess (POV-Ray's specular is Blinn's half-vector lobe), {@code metallic} tints a
@@ -38,8 +45,19 @@ public final class PovrayScene {
     private PovrayScene() {
     }
 
-    /** The whole scene as SDL text. */
+    /** How POV-Ray samples a light with a size: an n x n grid, corners first or not, jittered or not. */
+    public record AreaSampling(int grid, boolean adaptive, boolean jitter) {
+        /** The peer benchmark's: 8 x 8, adaptive, jittered (POV-Ray's documentation's advice for speed). */
+        public static final AreaSampling DEFAULT = new AreaSampling(8, true, true);
+    }
+
+    /** The whole scene as SDL text, lights with a size sampled as {@link AreaSampling#DEFAULT}. */
     public static String of(ResolvedScene scene, String title) {
+        return of(scene, title, AreaSampling.DEFAULT);
+    }
+
+    /** The whole scene as SDL text, lights with a size sampled as {@code area} says. */
+    public static String of(ResolvedScene scene, String title, AreaSampling area) {
         StringBuilder sdl = new StringBuilder(256 + 160 * scene.objects().size());
         sdl.append("// ").append(title.replaceAll("[\\r\\n]", " ")).append(", exported by studio-bench\n");
         sdl.append("#version 3.7;\n");
@@ -48,7 +66,7 @@ public final class PovrayScene {
         sdl.append(camera(scene));
         sdl.append("background { color rgb ").append(Sdl.rgb(scene.background())).append(" }\n");
         for (ResolvedScene.Light light : scene.lights()) {
-            sdl.append(light(light));
+            sdl.append(light(light, area));
         }
         for (ResolvedScene.Shape shape : scene.objects()) {
             shape(sdl, shape, scene.ambient());
@@ -66,13 +84,38 @@ public final class PovrayScene {
     }
 
     static String light(ResolvedScene.Light light) {
+        return light(light, AreaSampling.DEFAULT);
+    }
+
+    static String light(ResolvedScene.Light light, AreaSampling area) {
         Rgb power = light.color().times(light.intensity());
+        String size = light.soft() ? areaLight(light, area) : "";
         if (!light.falloff()) {
-            return "light_source { " + Sdl.vec(light.position()) + " color rgb " + Sdl.rgb(power) + " }\n";
+            return "light_source { " + Sdl.vec(light.position()) + " color rgb " + Sdl.rgb(power) + size + " }\n";
         }
         double scale = 1 / (2 * FADE_DISTANCE * FADE_DISTANCE);
         return "light_source { " + Sdl.vec(light.position()) + " color rgb " + Sdl.rgb(power.times(scale))
-                + " fade_distance " + Sdl.num(FADE_DISTANCE) + " fade_power 2 }\n";
+                + " fade_distance " + Sdl.num(FADE_DISTANCE) + " fade_power 2" + size + " }\n";
+    }
+
+    /** A light's {@code area_light} and {@code looks_like} (relative to its position), after its colour. */
+    private static String areaLight(ResolvedScene.Light light, AreaSampling area) {
+        Rgb power = light.color().times(light.intensity());
+        String look = "texture { pigment { rgb " + Sdl.rgb(power) + " } finish { ambient 0 diffuse 0 emission 1 } }";
+        String grid = ", " + area.grid() + ", " + area.grid() + (area.adaptive() ? " adaptive 1" : "")
+                + (area.jitter() ? " jitter" : "");
+        if (light.area() == null) {
+            double d = 2 * light.radius();
+            return "\n  area_light <" + Sdl.num(d) + ", 0, 0>, <0, 0, " + Sdl.num(d) + ">" + grid + " circular orient"
+                    + "\n  looks_like { sphere { <0, 0, 0>, " + Sdl.num(light.radius()) + " " + look + " } }";
+        }
+        ResolvedScene.Area a = light.area();
+        Vec3 w = a.widthAxis().times(a.width()), h = a.heightAxis().times(a.height());
+        Vec3 c00 = w.plus(h).times(-0.5), c10 = w.minus(h).times(0.5), c11 = w.plus(h).times(0.5),
+                c01 = h.minus(w).times(0.5);
+        return "\n  area_light " + Sdl.vec(w) + ", " + Sdl.vec(h) + grid
+                + "\n  looks_like { union { triangle { " + Sdl.vec(c00) + ", " + Sdl.vec(c10) + ", " + Sdl.vec(c11)
+                + " } triangle { " + Sdl.vec(c00) + ", " + Sdl.vec(c11) + ", " + Sdl.vec(c01) + " } " + look + " } }";
     }
 
     static void shape(StringBuilder sdl, ResolvedScene.Shape shape, double ambient) {

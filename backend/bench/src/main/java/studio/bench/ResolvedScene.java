@@ -3,6 +3,7 @@ package studio.bench;
 import java.util.ArrayList;
 import java.util.List;
 
+import studio.engine.light.AreaLight;
 import studio.engine.material.Material;
 import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
@@ -33,8 +34,26 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
     public record Camera(Vec3 position, Vec3 lookAt, Vec3 up, double fovDegrees) {
     }
 
-    /** A point light: colour (linear) times intensity; divided by the squared distance if {@code falloff}. */
-    public record Light(Vec3 position, Rgb color, double intensity, boolean falloff) {
+    /**
+     * A light: colour (linear) times intensity; divided by the squared distance if {@code falloff}.
+     * A point light has {@code radius} 0 and no {@code area}; a sphere light a radius above 0; an
+     * area light its rectangle.
+     */
+    public record Light(Vec3 position, Rgb color, double intensity, boolean falloff, double radius, Area area) {
+
+        /** A point light. */
+        public Light(Vec3 position, Rgb color, double intensity, boolean falloff) {
+            this(position, color, intensity, falloff, 0, null);
+        }
+
+        /** Whether it has a size (and so soft shadows). */
+        public boolean soft() {
+            return radius > 0 || area != null;
+        }
+    }
+
+    /** An area light's rectangle: width along {@code widthAxis}, height along {@code heightAxis} (unit), facing {@code normal}. */
+    public record Area(double width, double height, Vec3 widthAxis, Vec3 heightAxis, Vec3 normal, boolean twoSided) {
     }
 
     /** A scene object with its material. */
@@ -92,10 +111,7 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
                     SceneDefaults.LIGHT_INTENSITY, false));
         } else {
             for (LightDto light : dto.lights()) {
-                LightDto.Point p = (LightDto.Point) light;
-                lights.add(new Light(vec(or(p.position(), SceneDefaults.LIGHT_POSITION)),
-                        Colors.linear(or(p.color(), SceneDefaults.LIGHT_COLOR)),
-                        or(p.intensity(), SceneDefaults.LIGHT_INTENSITY), Boolean.TRUE.equals(p.falloff())));
+                lights.add(light(light));
             }
         }
 
@@ -123,6 +139,24 @@ public record ResolvedScene(int width, int height, Camera camera, Rgb background
         }
         return new ResolvedScene(width, height, camera, Colors.linear(or(dto.background(), SceneDefaults.BACKGROUND)),
                 or(dto.ambient(), SceneDefaults.AMBIENT), or(render.maxDepth(), SceneDefaults.MAX_DEPTH), lights, objects);
+    }
+
+    private static Light light(LightDto light) {
+        if (light instanceof LightDto.Area a) {
+            List<Double> size = or(a.size(), SceneDefaults.AREA_LIGHT_SIZE);
+            AreaLight engine = new AreaLight(vec(or(a.position(), SceneDefaults.LIGHT_POSITION)), size.get(0), size.get(1),
+                    vec(or(a.lookAt(), SceneDefaults.AREA_LIGHT_LOOK_AT)), Rgb.WHITE, 1, false,
+                    Boolean.TRUE.equals(a.twoSided()));
+            return new Light(engine.position(), Colors.linear(or(a.color(), SceneDefaults.LIGHT_COLOR)),
+                    or(a.intensity(), SceneDefaults.LIGHT_INTENSITY), Boolean.TRUE.equals(a.falloff()), 0,
+                    new Area(engine.width(), engine.height(), engine.widthAxis(), engine.heightAxis(), engine.normal(),
+                            engine.twoSided()));
+        }
+        LightDto.Point p = (LightDto.Point) light;
+        return new Light(vec(or(p.position(), SceneDefaults.LIGHT_POSITION)),
+                Colors.linear(or(p.color(), SceneDefaults.LIGHT_COLOR)),
+                or(p.intensity(), SceneDefaults.LIGHT_INTENSITY), Boolean.TRUE.equals(p.falloff()),
+                or(p.radius(), SceneDefaults.LIGHT_RADIUS), null);
     }
 
     /**

@@ -54,6 +54,9 @@ public final class SunflowScene {
         }
         int n = 0;
         for (ResolvedScene.Light light : scene.lights()) {
+            if (light.soft()) {
+                throw new IllegalArgumentException("the Sunflow export has point lights only, not sphere or area lights");
+            }
             double scale = 4 * Math.PI * Math.PI;
             if (!light.falloff()) {
                 double d = light.position().minus(scene.camera().lookAt()).length();

@@ -141,4 +141,26 @@ class PovraySceneTest {
         assertEquals("0.08", Sdl.num(0.8 * 0.1));
         assertEquals("0.333333333333333", Sdl.num(1.0 / 3));
     }
+
+    @Test
+    void softLightsAreAreaLightsSampledAsAskedAndSeenThroughLooksLike() {
+        String json = """
+                { "lights": [ { "type": "point", "position": [0, 4, 0], "radius": 0.5, "intensity": 2 },
+                              { "type": "area", "position": [1, 3, 0], "size": [2, 0.5], "lookAt": [1, 0, 0] } ],
+                  "objects": [] }
+                """;
+        ResolvedScene scene = ResolvedScene.of(TestRenders.read(json), 80, 60);
+        String plain = PovrayScene.of(scene, "t", new PovrayScene.AreaSampling(4, false, false));
+        String both = PovrayScene.of(scene, "t", new PovrayScene.AreaSampling(16, true, true));
+
+        // the sphere: a disc of its diameter, turned to each point it lights
+        assertTrue(plain.contains("light_source { <0, 4, 0> color rgb <2, 2, 2>\n  area_light <1, 0, 0>, <0, 0, 1>, 4, 4"
+                + " circular orient\n  looks_like { sphere { <0, 0, 0>, 0.5 "), plain);
+        // the rectangle facing down: width along x, height along z, its two edges as the axes
+        assertTrue(plain.contains("area_light <2, 0, 0>, <0, 0, -0.5>, 4, 4\n  looks_like { union { triangle"), plain);
+        assertFalse(plain.contains("adaptive") || plain.contains("jitter"), plain);
+        assertTrue(both.contains(", 16, 16 adaptive 1 jitter circular orient"), both);
+        assertTrue(both.contains("emission 1"), both);
+        assertFalse(sdl().contains("area_light"), "point lights stay points");
+    }
 }

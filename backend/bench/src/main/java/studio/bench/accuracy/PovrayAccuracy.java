@@ -25,6 +25,13 @@ import studio.bench.ResolvedScene;
  * Each renderer's error is against its own converged image, so the curves compare how fast each
  * gets to its own answer, not whose answer is right. POV-Ray writes 16-bit sRGB PNGs, clamped to
  * [0, 1]; our films are not clamped, so bright highlights count against ours only.
+ *
+ * <p>A scene with sphere or area lights is measured instead along POV-Ray's {@code area_light}
+ * settings: grids of {@link #AREA_GRID} sub-lights a side, each plain, {@code adaptive}, {@code jitter}ed
+ * and both ({@code povray-area}, {@code povray-area-adaptive}, {@code povray-area-jitter},
+ * {@code povray-area-adaptive-jitter}), every one with the adaptive anti-aliasing {@link #AREA_AA};
+ * its reference has a {@value #REFERENCE_AREA_GRID} x {@value #REFERENCE_AREA_GRID} jittered grid
+ * under 64 camera rays a pixel ({@link #REFERENCE_SOFT_GRID}).
  */
 final class PovrayAccuracy {
 
@@ -37,6 +44,22 @@ final class PovrayAccuracy {
     static final int REFERENCE_SCALE = 4, REFERENCE_GRID = 8;
 
     static final String GRID_METHOD = "povray-grid", ADAPTIVE_METHOD = "povray-adaptive";
+    /** The sub-lights a side of the {@code area_light} settings, and of the reference's. */
+    static final int[] AREA_GRID = {2, 4, 8, 16};
+    static final int REFERENCE_AREA_GRID = 8;
+    /**
+     * The reference's anti-aliasing grid a pixel of its 4 x larger image on a soft-lit scene: 2 x 2,
+     * 64 camera rays a pixel, each with the 8 x 8 jittered sub-lights (as many shadow rays as 1,024
+     * camera rays with 2 x 2 sub-lights, which left a bias: on soft-ball at 160x120 POV-Ray's error
+     * against it grew with the grid, 0.0046 at 2 x 2 jittered to 0.0126 at 16 x 16).
+     */
+    static final int REFERENCE_SOFT_GRID = 2;
+    /**
+     * The anti-aliasing of every {@code area_light} setting: adaptive, threshold 0.02, depth 3 (at 0.1
+     * the edges' error left a floor under the curves on {@code soft-ball} at 80x60, 2-4e-3, higher at
+     * larger grids, whose smoother shadows set off fewer anti-aliasing samples).
+     */
+    static final List<String> AREA_AA = List.of("+A0.02", "+AM2", "+R3");
 
     static final Pattern TRACE_TIME = Pattern.compile("Trace Time:.*\\(([0-9.]+) seconds\\)");
     /**
@@ -47,8 +70,8 @@ final class PovrayAccuracy {
     /** POV-Ray's counts of pixel rays (an extra row and column under anti-aliasing) and anti-aliasing samples. */
     private static final Pattern PIXELS = Pattern.compile("Pixels:\\s*([0-9]+)"), SAMPLES = Pattern.compile("Samples:\\s*([0-9]+)");
 
-    /** One POV-Ray setting. */
-    record Setting(String method, int samples, double threshold, List<String> options) {
+    /** One POV-Ray setting; {@code area} how it samples lights with a size (null: the scene has none). */
+    record Setting(String method, int samples, double threshold, List<String> options, PovrayScene.AreaSampling area) {
     }
 
     private final Path povray;
@@ -68,25 +91,47 @@ final class PovrayAccuracy {
         List<Setting> settings = new ArrayList<>();
         for (int k : GRID) {
             settings.add(new Setting(GRID_METHOD, k * k, Double.NaN,
-                    k == 1 ? List.of("-A") : List.of("+A0.0", "+AM1", "+R" + k)));
+                    k == 1 ? List.of("-A") : List.of("+A0.0", "+AM1", "+R" + k), null));
         }
         for (double t : THRESHOLDS) {
             settings.add(new Setting(ADAPTIVE_METHOD, (1 << ADAPTIVE_DEPTH) * (1 << ADAPTIVE_DEPTH), t,
-                    List.of(String.format(Locale.ROOT, "+A%.3f", t), "+AM2", "+R" + ADAPTIVE_DEPTH)));
+                    List.of(String.format(Locale.ROOT, "+A%.3f", t), "+AM2", "+R" + ADAPTIVE_DEPTH), null));
         }
         return settings;
     }
 
+    /** The settings measured for a scene with sphere or area lights: each area_light variant at each grid. */
+    static List<Setting> areaSettings() {
+        List<Setting> settings = new ArrayList<>();
+        for (boolean adaptive : new boolean[] {false, true}) {
+            for (boolean jitter : new boolean[] {false, true}) {
+                String method = "povray-area" + (adaptive ? "-adaptive" : "") + (jitter ? "-jitter" : "");
+                for (int k : AREA_GRID) {
+                    settings.add(new Setting(method, k * k, Double.NaN, AREA_AA,
+                            new PovrayScene.AreaSampling(k, adaptive, jitter)));
+                }
+            }
+        }
+        return settings;
+    }
+
+    private static boolean soft(ResolvedScene scene) {
+        return scene.lights().stream().anyMatch(ResolvedScene.Light::soft);
+    }
+
     /** A scene written for POV-Ray, with its reference rendered; {@link #round} times its settings. */
     Scene prepare(String name, ResolvedScene scene) throws IOException {
-        Path pov = writeScene(name, scene), dir = pov.getParent();
+        Path dir = Files.createDirectories(work.resolve(name));
+        Path pov = Files.writeString(dir.resolve("reference.pov"), PovrayScene.of(scene, name,
+                new PovrayScene.AreaSampling(REFERENCE_AREA_GRID, false, true)));
         Path out = dir.resolve("reference.png");
         long start = System.nanoTime();
+        int grid = soft(scene) ? REFERENCE_SOFT_GRID : REFERENCE_GRID;
         ProcessRun.time(command(pov, out, scene.width() * REFERENCE_SCALE, scene.height() * REFERENCE_SCALE,
-                List.of("+A0.0", "+AM1", "+R" + REFERENCE_GRID)), out, dir.resolve("reference.log"));
+                List.of("+A0.0", "+AM1", "+R" + grid)), out, dir.resolve("reference.log"));
         log.printf(Locale.ROOT, "%s: POV-Ray reference, %d samples/pixel, %.0f ms%n", name,
-                REFERENCE_SCALE * REFERENCE_SCALE * REFERENCE_GRID * REFERENCE_GRID, (System.nanoTime() - start) / 1e6);
-        return new Scene(name, dir, pov, scene.width(), scene.height(), PovrayImage.linear(out, REFERENCE_SCALE), settings());
+                REFERENCE_SCALE * REFERENCE_SCALE * grid * grid, (System.nanoTime() - start) / 1e6);
+        return new Scene(name, dir, scene, PovrayImage.linear(out, REFERENCE_SCALE));
     }
 
     /**
@@ -94,20 +139,15 @@ final class PovrayAccuracy {
      * ({@code --forks}): its rows have times and no error.
      */
     Scene prepareTimesOnly(String name, ResolvedScene scene) throws IOException {
-        Path pov = writeScene(name, scene);
-        return new Scene(name, pov.getParent(), pov, scene.width(), scene.height(), null, settings());
-    }
-
-    /** The scene in POV-Ray's language, written to {@code scene.pov} in a folder of its own. */
-    private Path writeScene(String name, ResolvedScene scene) throws IOException {
-        Path dir = Files.createDirectories(work.resolve(name));
-        return Files.writeString(dir.resolve("scene.pov"), PovrayScene.of(scene, name));
+        return new Scene(name, Files.createDirectories(work.resolve(name)), scene, null);
     }
 
     /** One scene's POV-Ray settings and what they measured so far. */
     final class Scene {
         private final String name;
-        private final Path dir, pov;
+        private final Path dir;
+        /** Per setting, the scene in POV-Ray's language (one file for all, unless lights with a size are sampled differently). */
+        private final List<Path> povs = new ArrayList<>();
         private final int width, height;
         /** POV-Ray's converged image in linear light; null when only times are measured. */
         private final double[] reference;
@@ -115,14 +155,19 @@ final class PovrayAccuracy {
         private final List<List<Double>> millis = new ArrayList<>(), cpuMillis = new ArrayList<>();
         private final double[] rmse, samplesPerPixel;
 
-        Scene(String name, Path dir, Path pov, int width, int height, double[] reference, List<Setting> settings) {
+        Scene(String name, Path dir, ResolvedScene scene, double[] reference) throws IOException {
             this.name = name;
             this.dir = dir;
-            this.pov = pov;
-            this.width = width;
-            this.height = height;
+            this.width = scene.width();
+            this.height = scene.height();
             this.reference = reference;
-            this.settings = settings;
+            this.settings = soft(scene) ? areaSettings() : settings();
+            Path shared = Files.writeString(dir.resolve("scene.pov"), PovrayScene.of(scene, name));
+            for (int i = 0; i < settings.size(); i++) {
+                PovrayScene.AreaSampling area = settings.get(i).area();
+                povs.add(area == null ? shared
+                        : Files.writeString(dir.resolve("setting-" + i + ".pov"), PovrayScene.of(scene, name, area)));
+            }
             this.rmse = new double[settings.size()];
             this.samplesPerPixel = new double[settings.size()];
             settings.forEach(s -> {
@@ -136,7 +181,7 @@ final class PovrayAccuracy {
             for (int i = 0; i < settings.size(); i++) {
                 Setting s = settings.get(i);
                 Path out = dir.resolve("setting-" + i + ".png"), logFile = dir.resolve("setting-" + i + ".log");
-                ProcessRun.time(command(pov, out, width, height, s.options()), out, logFile);
+                ProcessRun.time(command(povs.get(i), out, width, height, s.options()), out, logFile);
                 String stats = Files.readString(logFile);
                 millis.get(i).add(1000 * number(TRACE_TIME, stats, logFile));
                 cpuMillis.get(i).add(1000 * number(CPU_TIME, stats, logFile));
@@ -159,7 +204,7 @@ final class PovrayAccuracy {
                 Measurement m = new Measurement(name, s.method(), s.samples(), samplesPerPixel[i],
                         SpeedAccuracyBench.median(times), SpeedAccuracyBench.median(cpu), rmse[i],
                         Double.isNaN(rmse[i]) ? Double.NaN : ImageError.psnr(rmse[i]), s.threshold());
-                log.printf(Locale.ROOT, "%s: %-20s %4d spp (mean %6.1f) %9.1f ms  rmse %.5f  psnr %5.2f dB%n", name,
+                log.printf(Locale.ROOT, "%s: %-27s %4d spp (mean %6.1f) %9.1f ms  rmse %.5f  psnr %5.2f dB%n", name,
                         Double.isNaN(s.threshold()) ? s.method() : s.method() + " " + s.threshold(), s.samples(),
                         samplesPerPixel[i], m.medianMillis(), rmse[i], m.psnr());
                 rows.add(m);

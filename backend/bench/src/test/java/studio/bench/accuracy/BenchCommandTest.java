@@ -75,6 +75,23 @@ class BenchCommandTest {
     }
 
     @Test
+    void withPovRayASoftLitSceneHasTheAreaLightCurves(@TempDir Path dir) throws IOException {
+        Path povray = Path.of("/usr/bin/povray");
+        Assumptions.assumeTrue(Files.isExecutable(povray), "POV-Ray is not installed (apt-get install povray)");
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        copyAtSize("soft-ball.json", scenes, 16, 12);
+        int code = run("--out", dir.resolve("out").toString(), "--runs", "1",
+                "--forks", "1", "--reference-samples", "16", "--scenes", scenes.toString(), "--povray", povray.toString());
+
+        assertThat(code).as(err.toString(StandardCharsets.UTF_8)).isEqualTo(BenchCommand.OK);
+        List<String> csv = Files.readAllLines(dir.resolve("out/speed-accuracy.csv"));
+        for (String method : List.of("povray-area", "povray-area-jitter", "povray-area-adaptive", "povray-area-adaptive-jitter")) {
+            assertThat(csv.stream().filter(l -> l.startsWith("soft-ball," + method + ","))).hasSize(PovrayAccuracy.AREA_GRID.length);
+        }
+        assertThat(csv.stream().filter(l -> l.startsWith("soft-ball,povray-grid,"))).isEmpty();
+    }
+
+    @Test
     void withPovRayTheChartHasItsGridAndAdaptiveCurves(@TempDir Path dir) throws IOException {
         Path povray = Path.of("/usr/bin/povray");
         Assumptions.assumeTrue(Files.isExecutable(povray), "POV-Ray is not installed (apt-get install povray)");

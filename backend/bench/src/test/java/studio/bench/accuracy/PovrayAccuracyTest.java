@@ -1,9 +1,12 @@
 package studio.bench.accuracy;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
@@ -29,5 +32,17 @@ class PovrayAccuracyTest {
     void theTraceTimeAndItsCpuSecondsAreReadNotTheParsersBeforeThem() throws IOException {
         assertThat(PovrayAccuracy.number(PovrayAccuracy.TRACE_TIME, STATS, Path.of("stats"))).isEqualTo(1.234);
         assertThat(PovrayAccuracy.number(PovrayAccuracy.CPU_TIME, STATS, Path.of("stats"))).isEqualTo(2.405);
+    }
+
+    @Test
+    void softLightSettingsCoverEachAreaLightVariantAtEachGrid() {
+        List<PovrayAccuracy.Setting> settings = PovrayAccuracy.areaSettings();
+
+        assertEquals(4 * PovrayAccuracy.AREA_GRID.length, settings.size());
+        assertEquals(List.of("povray-area", "povray-area-jitter", "povray-area-adaptive", "povray-area-adaptive-jitter"),
+                settings.stream().map(PovrayAccuracy.Setting::method).distinct().toList());
+        assertEquals(List.of(2, 4, 8, 16), settings.stream().filter(s -> s.method().equals("povray-area-adaptive-jitter"))
+                .map(s -> s.area().grid()).toList());
+        assertTrue(PovrayAccuracy.settings().stream().allMatch(s -> s.area() == null));
     }
 }

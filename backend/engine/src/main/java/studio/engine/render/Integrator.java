@@ -1,21 +1,21 @@
 package studio.engine.render;
 
 import java.util.Arrays;
-import java.util.List;
 
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Rays;
-import studio.engine.light.PointLight;
+import studio.engine.light.Emitters;
+import studio.engine.light.LightSampler;
 import studio.engine.material.Fresnel;
 import studio.engine.material.Material;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
-import studio.engine.math.Vec3;
 import studio.engine.scene.Scene;
 
 /**
- * Whitted-style ray tracing in linear light: direct light from point lights with hard shadows,
+ * Whitted-style ray tracing in linear light: direct light by one shadow ray a light ({@link LightSampler}),
+ * lights with a surface seen by camera and specular rays ({@link Emitters}),
  * an ambient term, mirror reflection and Fresnel-weighted refraction, recursing up to maxDepth and
  * only where a material asks for it and the path's weight can still change the pixel. At glass,
  * a weak branch of the split plays a {@link BranchRoulette}.
@@ -73,6 +73,11 @@ final class Integrator {
      * on the way (a shadow cache, as POV-Ray keeps one per light).
      */
     private final int[] lastOccluder;
+    /** Where this sample's shadow rays go on each light, and what camera and specular rays see of them. */
+    private final LightSampler lightSampler;
+    private final Emitters emitters;
+    /** The current sample's 2D point in [0, 1)^2 for its light samples; set by the caller. */
+    double lightU = 0.5, lightV = 0.5;
     /** The direct light found by {@link #direct}, and the transmittance by {@link #shadowTransmittance}. */
     private double directR, directG, directB, throughR, throughG, throughB;
     long rays;
@@ -103,6 +108,8 @@ final class Integrator {
         this.lastOccluder = new int[scene.lights().size()];
         Arrays.fill(lastOccluder, -1);
         this.candidates = new PixelCandidates(scene);
+        this.lightSampler = new LightSampler(scene.lights());
+        this.emitters = new Emitters(scene.lights());
     }
 
     /** Radiance arriving along a camera ray, as a colour (a convenience that allocates; the render loop uses {@link #trace}). */
@@ -145,6 +152,10 @@ final class Integrator {
                 ? scene.intersectNearFirst(candidates.camera, candidates.cameraNear, candidates.cameraCount, ray,
                         Double.POSITIVE_INFINITY, hit)
                 : scene.intersect(ray, Double.POSITIVE_INFINITY, hit, likely);
+        if (emitters.any() && emitters.nearest(ray, found ? hit.t : Double.POSITIVE_INFINITY)) {
+            radiance[out] = emitters.r; radiance[out + 1] = emitters.g; radiance[out + 2] = emitters.b;
+            return;
+        }
         if (!found) {
             if (paths != null) {
                 paths.record(pathPixel, depth, ray.dx, ray.dy, ray.dz, true);
@@ -221,29 +232,17 @@ final class Integrator {
         double sr = specular.r() * ks, sg = specular.g() * ks, sb = specular.b() * ks;
         double r = ar * scene.ambient(), g = ag * scene.ambient(), b = ab * scene.ambient();
         double aMax = Math.max(ar, Math.max(ag, ab)), sMax = Math.max(sr, Math.max(sg, sb));
-        List<PointLight> lights = scene.lights();
-        for (int i = 0; i < lights.size(); i++) {
-            PointLight light = lights.get(i);
-            Vec3 at = light.position();
-            double lx = at.x() - hit.px, ly = at.y() - hit.py, lz = at.z() - hit.pz;
-            double dist = Math.sqrt(lx * lx + ly * ly + lz * lz);
-            double pLen = Math.abs(hit.px) + Math.abs(hit.py) + Math.abs(hit.pz);
-            if (!(dist > 1e-12 * (1 + pLen))) {
-                continue; // a light on the point itself lights nothing
+        LightSampler light = lightSampler;
+        for (int i = 0; i < lastOccluder.length; i++) {
+            if (!light.sample(i, hit.px, hit.py, hit.pz, lightU, lightV)) {
+                continue;
             }
-            lx /= dist; ly /= dist; lz /= dist;
+            double lx = light.lx, ly = light.ly, lz = light.lz;
             double cos = nx * lx + ny * ly + nz * lz;
             if (cos <= 0) {
                 continue;
             }
-            Rgb lc = light.color();
-            double er = lc.r() * light.intensity(), eg = lc.g() * light.intensity(), eb = lc.b() * light.intensity();
-            if (light.falloff()) {
-                double inverseSquare = 1 / (dist * dist);
-                er *= inverseSquare;
-                eg *= inverseSquare;
-                eb *= inverseSquare;
-            }
+            double er = light.r, eg = light.g, eb = light.b;
             // the light's unshadowed share: the diffuse part mostly settles it; the highlight (a pow)
             // is worked out first only where it decides, else only for a point the light reaches
             double share = weight * Math.max(er, Math.max(eg, eb));
@@ -254,7 +253,7 @@ final class Integrator {
             if (highlightDecides && diffuseShare + share * sMax * highlight < NEGLIGIBLE_LIGHT) {
                 continue;
             }
-            if (!shadowTransmittance(hit, at, i, cameraHit)) {
+            if (!shadowTransmittance(hit, light.tx, light.ty, light.tz, i, cameraHit && light.isPoint(i))) {
                 continue;
             }
             if (!highlightDecides && ks > 0) {
@@ -293,10 +292,10 @@ final class Integrator {
      * less through glass. Returns false when nothing arrives. An any-hit search decides first:
      * nothing on the way, or an opaque object, settles it; only when it meets glass does the walk
      * from surface to surface follow, which finds the same opaque object or multiplies the glass's
-     * transmittance (the same pixels to the bit, and glass-mirrors 4% faster at 16 samples).
+     * transmittance (the same pixels to the bit, and glass-mirrors 4% faster at 16 samples). Only
+     * rays to point lights use the pixel's list ({@code listed}) and the light's buffer.
      */
-    private boolean shadowTransmittance(Hit from, Vec3 light, int lightIndex, boolean cameraHit) {
-        double tx = light.x(), ty = light.y(), tz = light.z();
+    private boolean shadowTransmittance(Hit from, double tx, double ty, double tz, int lightIndex, boolean listed) {
         Ray ray = Rays.spawnTowards(from, tx, ty, tz, shadowRay);
         double dist = distance(ray, tx, ty, tz);
         rays++;
@@ -305,9 +304,10 @@ final class Integrator {
         if (last >= 0 && scene.occludes(last, ray, dist * SHADOW_END)) {
             return false; // an opaque object on the way: nothing arrives, whatever glass is crossed too
         }
-        int among = cameraHit ? candidates.shadowCount(lightIndex) : -1;
+        int among = listed ? candidates.shadowCount(lightIndex) : -1;
         int occluder = among >= 0 ? scene.occluderAmong(candidates.shadow(lightIndex), among, ray, dist * SHADOW_END)
-                : scene.occluderTowards(lightIndex, ray, dist * SHADOW_END);
+                : lightSampler.isPoint(lightIndex) ? scene.occluderTowards(lightIndex, ray, dist * SHADOW_END)
+                : scene.occluder(ray, dist * SHADOW_END);
         if (occluder < 0 || scene.material(occluder).kind() != MaterialKind.GLASS) {
             // nothing on the way, or something opaque: no walk through glass needed
             lastOccluder[lightIndex] = occluder;

@@ -4,7 +4,7 @@ import java.util.Arrays;
 import java.util.List;
 
 import studio.engine.accel.Aabb;
-import studio.engine.light.PointLight;
+import studio.engine.light.Light;
 import studio.engine.math.Vec3;
 
 /**
@@ -147,13 +147,14 @@ public final class PixelPaths {
      *
      * @param boxes  the changed objects' boxes, each object's before and after the edit (bounded)
      * @param camera the camera's position, where every pixel's first ray starts
-     * @param lights the scene's lights (unchanged by the edit)
+     * @param lights the scene's lights (unchanged by the edit); with a sphere or area light among
+     *               them every pixel is forgotten, as its shadow rays end all over the light
      */
-    public void forget(List<Aabb> boxes, Vec3 camera, List<PointLight> lights) {
+    public void forget(List<Aabb> boxes, Vec3 camera, List<? extends Light> lights) {
         if (boxes.isEmpty()) {
             return;
         }
-        if (boxes.size() > MAX_BOXES) {
+        if (boxes.size() > MAX_BOXES || lights.stream().anyMatch(Light::soft)) {
             forgetAll();
             return;
         }

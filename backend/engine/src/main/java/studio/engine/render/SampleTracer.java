@@ -3,13 +3,15 @@ package studio.engine.render;
 import studio.engine.camera.Camera;
 import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Ray;
+import studio.engine.sampler.LightPoints;
 import studio.engine.scene.Scene;
 
 /**
  * Traces a pixel's camera samples, one worker's: a pattern's samples in, their sum and each
  * channel's smallest and largest finite value out. Non-finite samples are dropped and counted.
  * Every sampling strategy traces through one of these; it reads the render's stop signal before
- * every sample.
+ * every sample. In a scene with sphere or area lights each sample also takes a 2D point for its
+ * light samples from the pattern ({@link LightPoints}).
  */
 final class SampleTracer {
 
@@ -29,6 +31,8 @@ final class SampleTracer {
     static final int LIST_RUN = 4;
 
     private final Integrator integrator;
+    /** The light points of a run's samples, or null where every light is a point (which needs none). */
+    private final LightPoints lightPoints;
     private final Camera camera;
     private final StopSignal stop;
     private final Ray cameraRay = new Ray();
@@ -50,6 +54,8 @@ final class SampleTracer {
         integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight(),
                 new BranchRoulette(BranchRoulette.BELOW, settings.seed()));
         camera = scene.camera();
+        lightPoints = scene.lights().stream().anyMatch(l -> l.soft())
+                ? new LightPoints(settings.sampler().samplesPerPixel(), settings.seed()) : null;
         width = settings.width();
         height = settings.height();
         aspect = (double) width / height;
@@ -122,9 +128,17 @@ final class SampleTracer {
             integrator.candidates.none();
             listedRow = -1;
         }
+        if (lightPoints != null) {
+            lightPoints.start(x, y, first, count);
+        }
         double r = 0, g = 0, b = 0;
         for (int s = first; s < first + count; s++) {
             stop.check();
+            if (lightPoints != null) {
+                int j = lightPoints.of(s);
+                integrator.lightU = xs[j];
+                integrator.lightV = ys[j];
+            }
             Ray ray = camera.ray(ndcX(x, xs[s]), ndcY(y, ys[s]), aspect, cameraRay);
             // Each sample starts with throughput 1: culling by the sample's share of the pixel
             // (1/N) would drop every weak reflection at high sample counts, a bias, not noise.

@@ -3,7 +3,7 @@ package studio.engine.scene;
 import java.util.List;
 
 import studio.engine.geometry.TriangleMesh;
-import studio.engine.light.PointLight;
+import studio.engine.light.Light;
 import studio.engine.math.Vec3;
 import studio.engine.memory.MemoryGate;
 
@@ -28,12 +28,13 @@ public final class MeshLightBuffers {
      * {@code cameraSamples} camera samples (width x height x samples a pixel) pays for them; the
      * same list if none is.
      */
-    public static List<SceneObject> forRender(List<SceneObject> objects, List<PointLight> lights, long cameraSamples,
+    public static List<SceneObject> forRender(List<SceneObject> objects, List<? extends Light> lights, long cameraSamples,
                                               MemoryGate memory) {
         if (lights.isEmpty() || objects.stream().noneMatch(o -> pays(o, cameraSamples))) {
             return objects;
         }
-        List<Vec3> positions = lights.stream().map(PointLight::position).toList();
+        // point lights only: a sphere or area light's shadow rays end all over it, never at one buffered point
+        List<Vec3> positions = lights.stream().filter(l -> !l.soft()).map(Light::position).toList();
         return objects.stream()
                 .map(o -> pays(o, cameraSamples) ? new SceneObject(
                         ((TriangleMesh) o.shape()).withLightBuffers(positions, memory), o.material()) : o)

@@ -7,7 +7,7 @@ import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Shape;
-import studio.engine.light.PointLight;
+import studio.engine.light.Light;
 import studio.engine.material.Material;
 import studio.engine.math.Rgb;
 
@@ -24,11 +24,11 @@ public final class Scene {
     private final Shape[] shapes;
     private final ShapeSet geometry;
     private final Material[] materials;
-    private final List<PointLight> lights;
+    private final List<Light> lights;
     private final Rgb background;
     private final double ambient;
 
-    public Scene(Camera camera, List<SceneObject> objects, List<PointLight> lights, Rgb background, double ambient) {
+    public Scene(Camera camera, List<SceneObject> objects, List<? extends Light> lights, Rgb background, double ambient) {
         if (camera == null || objects == null || lights == null || background == null) {
             throw new IllegalArgumentException("camera, objects, lights and background are required");
         }
@@ -41,7 +41,8 @@ public final class Scene {
         }
         this.camera = camera;
         this.shapes = objects.stream().map(SceneObject::shape).toArray(Shape[]::new);
-        this.geometry = ShapeSet.of(lights.stream().map(PointLight::position).toList(), shapes);
+        // light buffers for point lights only (null for a light with a size): see ShapeSet
+        this.geometry = ShapeSet.of(lights.stream().map(l -> l.soft() ? null : l.position()).toList(), shapes);
         this.materials = objects.stream().map(SceneObject::material).toArray(Material[]::new);
         this.lights = List.copyOf(lights);
         this.background = background;
@@ -133,7 +134,7 @@ public final class Scene {
         return materials[index];
     }
 
-    public List<PointLight> lights() {
+    public List<Light> lights() {
         return lights;
     }
 

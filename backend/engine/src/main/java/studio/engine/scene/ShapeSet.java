@@ -184,8 +184,9 @@ public final class ShapeSet {
                     nodeBounds[5]);
             LightBuffer.Primitives slots = (slot, ray, tMax) -> occluded(leafShapes[slot], slot, ray, tMax);
             for (int i = 0; i < buffered; i++) {
-                lightBuffers[i] = LightBuffer.ofBoxes(slotBoxes, boundedCount, root, lights.get(i), slots,
-                        MemoryGate.UNLIMITED);
+                // null: a light with a size, whose shadow rays end all over it, so no one point's buffer serves
+                lightBuffers[i] = lights.get(i) == null ? null : LightBuffer.ofBoxes(slotBoxes, boundedCount, root,
+                        lights.get(i), slots, MemoryGate.UNLIMITED);
             }
         }
     }
@@ -198,7 +199,8 @@ public final class ShapeSet {
     /**
      * The shapes, with a light buffer ({@link LightBuffer}) over the tree for each of the first
      * {@value LightBuffer#MAX_LIGHTS} of these lights that can have one, in scenes of at least
-     * {@value #LIGHT_BUFFER_MIN} bounded shapes: {@link #occluderTowards} then asks it.
+     * {@value #LIGHT_BUFFER_MIN} bounded shapes: {@link #occluderTowards} then asks it. A null
+     * light (one with a size) keeps its index and has no buffer.
      */
     public static ShapeSet of(List<Vec3> lights, Shape... shapes) {
         return new ShapeSet(shapes, shapes.length > LINEAR_MAX, lights);

@@ -17,7 +17,9 @@ import studio.engine.accel.Aabb;
 import studio.engine.camera.Camera;
 import studio.engine.geometry.Box;
 import studio.engine.geometry.Sphere;
+import studio.engine.light.Light;
 import studio.engine.light.PointLight;
+import studio.engine.light.SphereLight;
 import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
@@ -112,6 +114,17 @@ class PixelPathsTest {
         assertTrue(kept > 0.5 && kept < 1, "kept " + kept);
     }
 
+    /** Under a sphere light a shadow ray may end anywhere on it: an edit forgets every pixel, and the kept film is still a fresh render. */
+    @Test
+    void underALightWithASizeAMovedSphereForgetsEveryPixel() {
+        Scene points = OpaqueShadowsUnchangedTest.scene();
+        List<Light> lights = new ArrayList<>(points.lights());
+        lights.add(new SphereLight(new Vec3(-2, 5, 2), 0.6, Rgb.WHITE, 0.5, false));
+        Scene scene = new Scene(points.camera(), objects(points), lights, points.background(), points.ambient());
+        int plastic = firstOf(scene, MaterialKind.PLASTIC);
+        assertEquals(0, keptAfterEdit(scene, edited(scene, plastic, o -> moved(o, new Vec3(0.15, 0.05, 0)))));
+    }
+
     @Test
     void aMovedMirrorChangesWhatItReflectsAndNothingElse() {
         Scene scene = OpaqueShadowsUnchangedTest.scene();
@@ -192,7 +205,7 @@ class PixelPathsTest {
         Camera turned = new Camera(new Vec3(0.1, 2.5, 5), new Vec3(0, 0.8, -0.5), new Vec3(0, 1, 0), 50);
         assertNull(changedBoxes(scene,
                 new Scene(turned, objects(scene), scene.lights(), scene.background(), scene.ambient())));
-        List<PointLight> lights = new ArrayList<>(scene.lights());
+        List<Light> lights = new ArrayList<>(scene.lights());
         lights.set(0, new PointLight(new Vec3(3, 6, 2.5), Rgb.WHITE, 1, false));
         assertNull(changedBoxes(scene,
                 new Scene(scene.camera(), objects(scene), lights, scene.background(), scene.ambient())));
@@ -347,8 +360,8 @@ class PixelPathsTest {
                         ? new SceneObject(new Sphere(s.center(), s.radius() * (0.5 + random.nextDouble())), o.material())
                         : o);
             } else if (what < 9) {
-                List<PointLight> lights = new ArrayList<>(scene.lights());
-                PointLight l = lights.get(0);
+                List<Light> lights = new ArrayList<>(scene.lights());
+                PointLight l = (PointLight) lights.get(0);
                 lights.set(0, new PointLight(l.position().plus(new Vec3(0.1, 0, 0)), l.color(), l.intensity(),
                         l.falloff()));
                 next = new Scene(scene.camera(), objects(scene), lights, scene.background(), scene.ambient());

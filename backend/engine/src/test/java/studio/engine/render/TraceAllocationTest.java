@@ -14,7 +14,10 @@ import studio.engine.geometry.Box;
 import studio.engine.geometry.Plane;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Sphere;
+import studio.engine.light.AreaLight;
+import studio.engine.light.Light;
 import studio.engine.light.PointLight;
+import studio.engine.light.SphereLight;
 import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
@@ -24,7 +27,8 @@ import studio.engine.scene.SceneObject;
 
 /**
  * Allocation guard for the whole hot loop: camera ray, intersection, shading with shadow rays through
- * glass, mirror and glass recursion. 10^5 camera samples after warm-up allocate (almost) nothing:
+ * glass, mirror and glass recursion, under point lights and under sphere and area lights. 10^5
+ * camera samples after warm-up allocate (almost) nothing:
  * rays, hits and radiance live in per-thread, per-depth slots. (Before this guard, each sample
  * allocated a ray per bounce and shadow ray and a colour per shading step.)
  */
@@ -36,6 +40,11 @@ class TraceAllocationTest {
 
     /** Every material, glass and mirror facing each other, two lights (one with fall-off), 40 objects (a BVH). */
     private static Scene scene() {
+        return scene(List.of(new PointLight(new Vec3(3, 6, 2), Rgb.WHITE, 1, false),
+                new PointLight(new Vec3(-4, 3, 4), new Rgb(0.3, 0.4, 1), 30, true)));
+    }
+
+    private static Scene scene(List<Light> lights) {
         Random random = new Random(3);
         List<SceneObject> objects = new ArrayList<>();
         objects.add(new SceneObject(new Plane(Vec3.ZERO, new Vec3(0, 1, 0)),
@@ -49,14 +58,23 @@ class TraceAllocationTest {
                     MaterialDefaults.of(kind, new Rgb(0.9, 0.6, 0.3))));
         }
         return new Scene(new Camera(new Vec3(0, 3, 9), new Vec3(0, 1, 0), new Vec3(0, 1, 0), 50), objects,
-                List.of(new PointLight(new Vec3(3, 6, 2), Rgb.WHITE, 1, false),
-                        new PointLight(new Vec3(-4, 3, 4), new Rgb(0.3, 0.4, 1), 30, true)),
-                new Rgb(0.2, 0.3, 0.5), 0.1);
+                lights, new Rgb(0.2, 0.3, 0.5), 0.1);
     }
 
     @Test
     void tracingCameraSamplesAllocatesNothing() {
-        Scene scene = scene();
+        assertTracingAllocatesNothing(scene());
+    }
+
+    /** Sphere and area lights: sampling them, their shadow rays and the emitters camera and mirror rays see. */
+    @Test
+    void tracingUnderSoftLightsAllocatesNothing() {
+        assertTracingAllocatesNothing(scene(List.of(new SphereLight(new Vec3(3, 6, 2), 0.8, Rgb.WHITE, 1, false),
+                new AreaLight(new Vec3(-4, 3, 4), 2, 1, Vec3.ZERO, new Rgb(0.3, 0.4, 1), 30, true, false),
+                new PointLight(new Vec3(0, 5, -3), Rgb.WHITE, 0.3, false))));
+    }
+
+    private static void assertTracingAllocatesNothing(Scene scene) {
         Integrator integrator = new Integrator(scene, 8, RenderSettings.DEFAULT_MIN_PATH_WEIGHT);
         Ray ray = new Ray();
         double[] sink = new double[1];
@@ -85,6 +103,8 @@ class TraceAllocationTest {
     private static void traceAll(Scene scene, Integrator integrator, Ray ray, double[] xs, double[] ys, double[] sink) {
         double sum = 0;
         for (int i = 0; i < xs.length; i++) {
+            integrator.lightU = (xs[i] + 1) / 2;
+            integrator.lightV = (ys[i] + 1) / 2;
             integrator.trace(scene.camera().ray(xs[i], ys[i], 4.0 / 3, ray), 0, 1.0);
             sum += integrator.r() + integrator.g() + integrator.b();
         }

@@ -219,6 +219,32 @@ class RenderApiTest {
     }
 
     @Test
+    void badSoftLightFieldsGive400NamingTheField() throws Exception {
+        Map<String, Map<String, Object>> bad = Map.of(
+                "lights[0].radius", Map.of("type", "point", "radius", -1),
+                "lights[0].size[0]", Map.of("type", "area", "size", List.of(0, 1)),
+                "lights[0].lookAt", Map.of("type", "area", "position", List.of(0, 2, 0), "lookAt", List.of(0, 2, 0)));
+        for (Map.Entry<String, Map<String, Object>> e : bad.entrySet()) {
+            AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
+                            .content(tinyWith(Map.of("lights", List.of(e.getValue())))))
+                    .andExpect(status().isBadRequest())
+                    .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                    .andExpect(jsonPath("$.status").value(400))
+                    .andExpect(jsonPath("$.errors.length()").value(1))
+                    .andExpect(jsonPath("$.errors[0].field").value(e.getKey()));
+        }
+    }
+
+    @Test
+    void rendersUnderSphereAndAreaLights() throws Exception {
+        AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(tinyWith(Map.of(
+                        "lights", List.of(Map.of("type", "point", "position", List.of(2, 4, 3), "radius", 0.5),
+                                Map.of("type", "area", "position", List.of(0, 3, 0), "size", List.of(2, 1),
+                                        "lookAt", List.of(0, 0, 0), "intensity", 0.5))))))
+                .andExpect(status().isOk());
+    }
+
+    @Test
     void singleProblemIsTheDetail() throws Exception {
         AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON)
                         .content("{\"objects\":[{\"type\":\"cone\"}]}"))

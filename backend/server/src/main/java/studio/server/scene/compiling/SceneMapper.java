@@ -5,7 +5,7 @@ import static studio.server.scene.compiling.FormatValues.or;
 import java.util.List;
 
 import studio.engine.camera.Camera;
-import studio.engine.light.PointLight;
+import studio.engine.light.Light;
 import studio.engine.memory.MemoryGate;
 import studio.engine.render.RenderSettings;
 import studio.engine.scene.MeshLightBuffers;
@@ -68,7 +68,7 @@ public final class SceneMapper {
         MappingProblems problems = new MappingProblems();
         RenderMapping render = RenderMapping.of(dto.image(), dto.render(), limits, problems);
         List<SceneObject> objects = new ObjectMapping(limits, meshes, meshFiles, assets, memory, problems).of(dto.objects());
-        List<PointLight> lights = LightMapping.of(dto.lights(), limits, problems);
+        List<Light> lights = LightMapping.of(dto.lights(), limits, problems);
         Camera camera = CameraMapping.of(dto.camera(), problems);
         problems.throwIfAny();
 

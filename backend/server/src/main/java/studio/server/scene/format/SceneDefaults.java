@@ -45,6 +45,11 @@ public final class SceneDefaults {
     public static final List<Double> LIGHT_POSITION = List.of(5.0, 8.0, 5.0);
     public static final String LIGHT_COLOR = "#ffffff";
     public static final double LIGHT_INTENSITY = 1.0;
+    /** A point light's radius: 0, a point. */
+    public static final double LIGHT_RADIUS = 0;
+    /** Where an area light faces, and its size in metres. */
+    public static final List<Double> AREA_LIGHT_LOOK_AT = List.of(0.0, 0.0, 0.0);
+    public static final List<Double> AREA_LIGHT_SIZE = List.of(1.0, 1.0);
     public static final List<Double> ORIGIN = List.of(0.0, 0.0, 0.0);
     public static final List<Double> SPHERE_CENTER = List.of(0.0, 1.0, 0.0);
     public static final double SPHERE_RADIUS = 1;
@@ -57,20 +62,22 @@ public final class SceneDefaults {
     }
 
     /** The default of each field with one, by record. render.adaptive has none alone: it depends on the sampler. */
-    private static final Map<Class<?>, Map<String, Object>> FIELDS = Map.of(
-            SceneDto.class, Map.of("version", SceneDto.FORMAT_VERSION, "name", NAME, "background", BACKGROUND,
-                    "ambient", AMBIENT),
-            ImageDto.class, Map.of("width", WIDTH, "height", HEIGHT, "format", FORMAT, "quality", JPEG_QUALITY),
-            CameraDto.class, Map.of("position", CAMERA_POSITION, "lookAt", CAMERA_LOOK_AT, "up", CAMERA_UP,
-                    "fov", CAMERA_FOV_DEGREES),
-            RenderDto.class, Map.of("sampler", SAMPLER, "samples", SAMPLES, "maxDepth", MAX_DEPTH, "seed", SEED),
-            LightDto.Point.class, Map.of("position", LIGHT_POSITION, "color", LIGHT_COLOR, "intensity", LIGHT_INTENSITY,
-                    "falloff", false),
-            ObjectDto.Sphere.class, Map.of("center", SPHERE_CENTER, "radius", SPHERE_RADIUS),
-            ObjectDto.Box.class, Map.of("center", BOX_CENTER, "size", BOX_SIZE, "rotation", ORIGIN),
-            ObjectDto.Plane.class, Map.of("point", ORIGIN, "normal", PLANE_NORMAL),
-            ObjectDto.Mesh.class, Map.of("position", ORIGIN, "scale", MESH_SCALE, "rotation", ORIGIN),
-            ObjectDto.Gltf.class, Map.of("position", ORIGIN, "scale", MESH_SCALE, "rotation", ORIGIN));
+    private static final Map<Class<?>, Map<String, Object>> FIELDS = Map.ofEntries(
+            Map.entry(SceneDto.class, Map.of("version", SceneDto.FORMAT_VERSION, "name", NAME, "background", BACKGROUND,
+                    "ambient", AMBIENT)),
+            Map.entry(ImageDto.class, Map.of("width", WIDTH, "height", HEIGHT, "format", FORMAT, "quality", JPEG_QUALITY)),
+            Map.entry(CameraDto.class, Map.of("position", CAMERA_POSITION, "lookAt", CAMERA_LOOK_AT, "up", CAMERA_UP,
+                    "fov", CAMERA_FOV_DEGREES)),
+            Map.entry(RenderDto.class, Map.of("sampler", SAMPLER, "samples", SAMPLES, "maxDepth", MAX_DEPTH, "seed", SEED)),
+            Map.entry(LightDto.Point.class, Map.of("position", LIGHT_POSITION, "color", LIGHT_COLOR, "intensity", LIGHT_INTENSITY,
+                    "falloff", false, "radius", LIGHT_RADIUS)),
+            Map.entry(LightDto.Area.class, Map.of("position", LIGHT_POSITION, "size", AREA_LIGHT_SIZE, "lookAt", AREA_LIGHT_LOOK_AT,
+                    "color", LIGHT_COLOR, "intensity", LIGHT_INTENSITY, "falloff", false, "twoSided", false)),
+            Map.entry(ObjectDto.Sphere.class, Map.of("center", SPHERE_CENTER, "radius", SPHERE_RADIUS)),
+            Map.entry(ObjectDto.Box.class, Map.of("center", BOX_CENTER, "size", BOX_SIZE, "rotation", ORIGIN)),
+            Map.entry(ObjectDto.Plane.class, Map.of("point", ORIGIN, "normal", PLANE_NORMAL)),
+            Map.entry(ObjectDto.Mesh.class, Map.of("position", ORIGIN, "scale", MESH_SCALE, "rotation", ORIGIN)),
+            Map.entry(ObjectDto.Gltf.class, Map.of("position", ORIGIN, "scale", MESH_SCALE, "rotation", ORIGIN)));
 
     /**
      * The default of a field of one of the format's records, as the schema publishes it, or null

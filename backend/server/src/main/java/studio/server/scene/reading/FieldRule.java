@@ -114,6 +114,14 @@ sealed interface FieldRule {
         }
     }
 
+    /** Two numbers ({@link studio.server.scene.format.Pair}). */
+    record Pair() implements FieldRule {
+        @Override
+        public Predicate<Object> check() {
+            return value -> value == null || ((List<?>) value).size() == 2;
+        }
+    }
+
     /** Not every number zero ({@link studio.server.scene.format.NonZeroVector}). */
     record NonZeroVector() implements FieldRule {
         @Override
@@ -172,6 +180,9 @@ sealed interface FieldRule {
         }
         if (annotation instanceof studio.server.scene.format.Vector) {
             return new Vector();
+        }
+        if (annotation instanceof studio.server.scene.format.Pair) {
+            return new Pair();
         }
         if (annotation instanceof studio.server.scene.format.NonZeroVector) {
             return new NonZeroVector();

@@ -78,7 +78,29 @@ final class SceneConstraints {
                     new FieldRule.DecimalMax("1e6", true),
                     new FieldRule.Finite())),
             entry("LightDto.Point.falloff", List.of()),
+            entry("LightDto.Point.radius", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1e6", true),
+                    new FieldRule.Finite())),
             entry("LightDto.Point.name", List.of(new FieldRule.CodePointLength(0, 200))),
+            entry("LightDto.Area.position", List.of(new FieldRule.Vector())),
+            entry("LightDto.Area.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("LightDto.Area.size", List.of(new FieldRule.Pair())),
+            entry("LightDto.Area.size[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.Positive(),
+                    new FieldRule.DecimalMax("1e6", true),
+                    new FieldRule.Finite())),
+            entry("LightDto.Area.lookAt", List.of(new FieldRule.Vector())),
+            entry("LightDto.Area.lookAt[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("LightDto.Area.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("LightDto.Area.intensity", List.of(
+                    new FieldRule.PositiveOrZero(),
+                    new FieldRule.DecimalMax("1e6", true),
+                    new FieldRule.Finite())),
+            entry("LightDto.Area.falloff", List.of()),
+            entry("LightDto.Area.twoSided", List.of()),
+            entry("LightDto.Area.name", List.of(new FieldRule.CodePointLength(0, 200))),
             entry("SceneDto.objects", List.of(new FieldRule.NotNull())),
             entry("SceneDto.objects[]", List.of(new FieldRule.NotNull())),
             entry("ObjectDto.Sphere.center", List.of(new FieldRule.Vector())),
@@ -180,7 +202,8 @@ final class SceneConstraints {
 
     static final Map<Class<?>, Subtypes> SUBTYPES = Map.ofEntries(
             entry(LightDto.class, new Subtypes("type", Map.ofEntries(
-                    entry("point", LightDto.Point.class)))),
+                    entry("point", LightDto.Point.class),
+                    entry("area", LightDto.Area.class)))),
             entry(ObjectDto.class, new Subtypes("type", Map.ofEntries(
                     entry("sphere", ObjectDto.Sphere.class),
                     entry("box", ObjectDto.Box.class),
@@ -208,7 +231,24 @@ final class SceneConstraints {
             return new RenderDto((String) v[0], (Integer) v[1], (Integer) v[2], (Long) v[3], (Double) v[4]);
         }
         if (type == LightDto.Point.class) {
-            return new LightDto.Point((List<Double>) v[0], (String) v[1], (Double) v[2], (Boolean) v[3], (String) v[4]);
+            return new LightDto.Point(
+                    (List<Double>) v[0],
+                    (String) v[1],
+                    (Double) v[2],
+                    (Boolean) v[3],
+                    (Double) v[4],
+                    (String) v[5]);
+        }
+        if (type == LightDto.Area.class) {
+            return new LightDto.Area(
+                    (List<Double>) v[0],
+                    (List<Double>) v[1],
+                    (List<Double>) v[2],
+                    (String) v[3],
+                    (Double) v[4],
+                    (Boolean) v[5],
+                    (Boolean) v[6],
+                    (String) v[7]);
         }
         if (type == MaterialDto.Flat.class) {
             return new MaterialDto.Flat((String) v[0]);

@@ -14,7 +14,10 @@ import org.junit.jupiter.api.Test;
 import jakarta.validation.Validation;
 import jakarta.validation.ValidatorFactory;
 
+import studio.engine.light.AreaLight;
+import studio.engine.light.Light;
 import studio.engine.light.PointLight;
+import studio.engine.light.SphereLight;
 import studio.engine.math.Vec3;
 import studio.engine.render.RenderSettings;
 import studio.engine.sampler.JitteredSampler;
@@ -95,13 +98,33 @@ class SceneMapperTest {
 
     @Test
     void addsOneDefaultLightWhenLightsAreLeftOut() {
-        List<PointLight> lights = map("{'objects':[]}").scene().lights();
+        List<Light> lights = map("{'objects':[]}").scene().lights();
         assertThat(lights).hasSize(1);
-        PointLight light = lights.get(0);
+        PointLight light = (PointLight) lights.get(0);
         assertThat(light.position()).isEqualTo(new Vec3(5, 8, 5));
         assertThat(light.color()).isEqualTo(Colors.linear("#ffffff"));
         assertThat(light.intensity()).isEqualTo(1.0);
         assertThat(light.falloff()).isFalse();
+    }
+
+    @Test
+    void aPointLightOfRadiusZeroIsThePointLightAndAboveZeroASphereLight() {
+        assertThat(map("{'lights':[{'type':'point','position':[1,2,3],'radius':0}],'objects':[]}").scene().lights())
+                .containsExactly(new PointLight(new Vec3(1, 2, 3), Colors.linear("#ffffff"), 1, false));
+        assertThat(map("{'lights':[{'type':'point','position':[1,2,3],'radius':0.25,'falloff':true}],'objects':[]}")
+                .scene().lights())
+                .containsExactly(new SphereLight(new Vec3(1, 2, 3), 0.25, Colors.linear("#ffffff"), 1, true));
+    }
+
+    @Test
+    void mapsAnAreaLightWithItsDefaults() {
+        assertThat(map("{'lights':[{'type':'area','position':[0,3,0],'size':[2,0.5],'color':'#ff0000',"
+                + "'intensity':4,'twoSided':true}],'objects':[]}").scene().lights())
+                .containsExactly(new AreaLight(new Vec3(0, 3, 0), 2, 0.5, Vec3.ZERO, Colors.linear("#ff0000"), 4, false,
+                        true));
+        assertThat(map("{'lights':[{'type':'area'}],'objects':[]}").scene().lights())
+                .containsExactly(new AreaLight(new Vec3(5, 8, 5), 1, 1, Vec3.ZERO, Colors.linear("#ffffff"), 1, false,
+                        false));
     }
 
     @Test
@@ -111,7 +134,7 @@ class SceneMapperTest {
 
     @Test
     void fillsDefaultsOfEachLightLeftPartlyOut() {
-        List<PointLight> lights = map("{'lights':[{'type':'point','intensity':0.5,'falloff':true}],'objects':[]}")
+        List<Light> lights = map("{'lights':[{'type':'point','intensity':0.5,'falloff':true}],'objects':[]}")
                 .scene().lights();
         assertThat(lights).containsExactly(
                 new PointLight(new Vec3(5, 8, 5), Colors.linear("#ffffff"), 0.5, true));
@@ -313,6 +336,17 @@ class SceneMapperTest {
         FieldProblem problem = onlyProblem("{'camera':{'position':[1,2,3],'lookAt':[1,2,3]},'objects':[]}",
                 SceneLimits.DEFAULTS);
         assertThat(problem).isEqualTo(new FieldProblem("camera.lookAt", "must differ from camera.position"));
+    }
+
+    @Test
+    void rejectsAnAreaLightAimedAtItsOwnPosition() {
+        FieldProblem problem = onlyProblem("{'lights':[{'type':'point'},{'type':'area','position':[1,2,3],"
+                + "'lookAt':[1,2,3]}],'objects':[]}", SceneLimits.DEFAULTS);
+        assertThat(problem).isEqualTo(new FieldProblem("lights[1].lookAt", "must differ from lights[1].position"));
+        // lookAt left out is the origin; -0.0 names the same point
+        FieldProblem byDefault = onlyProblem("{'lights':[{'type':'area','position':[0,-0.0,0]}],'objects':[]}",
+                SceneLimits.DEFAULTS);
+        assertThat(byDefault).isEqualTo(new FieldProblem("lights[0].lookAt", "must differ from lights[0].position"));
     }
 
     @Test

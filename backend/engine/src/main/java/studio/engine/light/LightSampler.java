@@ -1,0 +1,187 @@
+package studio.engine.light;
+
+import java.util.List;
+
+import studio.engine.math.Vec3;
+
+/**
+ * Picks the point of a light a shadow ray goes to, and what that sample gives: one per worker
+ * thread, filled by {@link #sample} and read from its fields; it allocates nothing after
+ * construction.
+ *
+ * <ul>
+ * <li>A point light: its position, and colour * intensity (over d^2 with fall-off), computed as
+ * the renderer always has, to the bit.</li>
+ * <li>A sphere light: a direction in the cone of the cap the point sees, uniform in solid angle
+ * (pbrt-v4's SphereLight, "sampling spheres"), and the sphere's surface along it. With fall-off the
+ * estimate is L * Omega = (I / (pi r^2)) * 2 pi (1 - cos theta_max) = 2 I / (d^2 (1 + cos theta_max)),
+ * in which r cancels, so a radius of 1e-6 or of 100 has no 1/r^2 to lose digits in; 1 - cos theta_max
+ * is never formed by subtraction: cos theta_max = sqrt((d - r)(d + r)) / d, and a sampled
+ * sin^2 theta = a (2 - a) with a = u (1 - cos theta_max). Without fall-off it is I.</li>
+ * <li>An area light: a point on the rectangle, uniform by area, and I cos_l / d^2 (with fall-off;
+ * radiance I / A over the pdf 1 / A in area, turned into solid angle by cos_l / d^2) or I cos_l
+ * (without); nothing from behind a one-sided light.</li>
+ * </ul>
+ * The 2D point (u, v) in [0, 1)^2 comes from the pixel sampler; light i shifts it by i times the
+ * plastic number's (1 / phi_2, 1 / phi_2^2), modulo 1 (a toroidal shift keeps the strata), so that
+ * two lights do not sample the same spot of their shapes in step.
+ */
+public final class LightSampler {
+
+    private static final int POINT = 0, SPHERE = 1, AREA = 2;
+    private static final double SHIFT_U = 0.7548776662466927, SHIFT_V = 0.5698402909980532;
+
+    private final int[] kind;
+    private final boolean[] falloff, twoSided;
+    /** Per light: centre, colour * intensity, radius (sphere), normal and half axes (area). */
+    private final double[] cx, cy, cz, er, eg, eb, radius;
+    private final double[] nx, ny, nz, wx, wy, wz, hx, hy, hz;
+    private final boolean anySoft;
+
+    /** Unit direction from the point to the sample. */
+    public double lx, ly, lz;
+    /** The point sampled on the light: where the shadow ray ends. */
+    public double tx, ty, tz;
+    /** What the sample gives the point, per channel, before the cosine at the point and shadowing. */
+    public double r, g, b;
+
+    public LightSampler(List<? extends Light> lights) {
+        int n = lights.size();
+        kind = new int[n];
+        falloff = new boolean[n];
+        twoSided = new boolean[n];
+        cx = new double[n]; cy = new double[n]; cz = new double[n];
+        er = new double[n]; eg = new double[n]; eb = new double[n];
+        radius = new double[n];
+        nx = new double[n]; ny = new double[n]; nz = new double[n];
+        wx = new double[n]; wy = new double[n]; wz = new double[n];
+        hx = new double[n]; hy = new double[n]; hz = new double[n];
+        boolean soft = false;
+        for (int i = 0; i < n; i++) {
+            Light light = lights.get(i);
+            Vec3 p = light.position();
+            cx[i] = p.x(); cy[i] = p.y(); cz[i] = p.z();
+            er[i] = light.color().r() * light.intensity();
+            eg[i] = light.color().g() * light.intensity();
+            eb[i] = light.color().b() * light.intensity();
+            falloff[i] = light.falloff();
+            soft |= light.soft();
+            if (light instanceof SphereLight sphere) {
+                kind[i] = SPHERE;
+                radius[i] = sphere.radius();
+            } else if (light instanceof AreaLight area) {
+                kind[i] = AREA;
+                twoSided[i] = area.twoSided();
+                Vec3 normal = area.normal(), w = area.widthAxis().times(area.width() / 2),
+                        h = area.heightAxis().times(area.height() / 2);
+                nx[i] = normal.x(); ny[i] = normal.y(); nz[i] = normal.z();
+                wx[i] = w.x(); wy[i] = w.y(); wz[i] = w.z();
+                hx[i] = h.x(); hy[i] = h.y(); hz[i] = h.z();
+            } else {
+                kind[i] = POINT;
+            }
+        }
+        anySoft = soft;
+    }
+
+    /** Whether some light has a size (and so needs a 2D point per sample). */
+    public boolean anySoft() {
+        return anySoft;
+    }
+
+    /** Whether light i is a point light (whose shadow rays all end at one point). */
+    public boolean isPoint(int i) {
+        return kind[i] == POINT;
+    }
+
+    /**
+     * Samples light i as seen from point (px, py, pz) with the 2D point (u, v) into the fields.
+     *
+     * @return false when the light gives the point nothing: the point is on a point light, inside a
+     * sphere light, or behind (or in the plane of) a one-sided area light
+     */
+    public boolean sample(int i, double px, double py, double pz, double u, double v) {
+        return switch (kind[i]) {
+            case POINT -> point(i, px, py, pz);
+            case SPHERE -> sphere(i, px, py, pz, shift(u, i * SHIFT_U), shift(v, i * SHIFT_V));
+            default -> area(i, px, py, pz, shift(u, i * SHIFT_U), shift(v, i * SHIFT_V));
+        };
+    }
+
+    private static double shift(double u, double by) {
+        double s = u + by;
+        s -= Math.floor(s);
+        return s < 1 ? s : Math.nextDown(1.0);
+    }
+
+    private boolean point(int i, double px, double py, double pz) {
+        double x = cx[i] - px, y = cy[i] - py, z = cz[i] - pz;
+        double dist = Math.sqrt(x * x + y * y + z * z);
+        double pLen = Math.abs(px) + Math.abs(py) + Math.abs(pz);
+        if (!(dist > 1e-12 * (1 + pLen))) {
+            return false; // a light on the point itself lights nothing
+        }
+        lx = x / dist; ly = y / dist; lz = z / dist;
+        tx = cx[i]; ty = cy[i]; tz = cz[i];
+        r = er[i]; g = eg[i]; b = eb[i];
+        if (falloff[i]) {
+            double inverseSquare = 1 / (dist * dist);
+            r *= inverseSquare;
+            g *= inverseSquare;
+            b *= inverseSquare;
+        }
+        return true;
+    }
+
+    private boolean sphere(int i, double px, double py, double pz, double u, double v) {
+        double x = cx[i] - px, y = cy[i] - py, z = cz[i] - pz;
+        double d = Math.sqrt(x * x + y * y + z * z), rad = radius[i];
+        if (!(d > rad)) {
+            return false; // inside the light (or NaN)
+        }
+        x /= d; y /= d; z /= d;
+        double cosMax = Math.sqrt((d - rad) * (d + rad)) / d;
+        double sin2Max = (rad / d) * (rad / d);
+        double oneMinusCosMax = sin2Max / (1 + cosMax);
+        double a = u * oneMinusCosMax;
+        double cos = 1 - a, sin = Math.sqrt(a * (2 - a));
+        double phi = 2 * Math.PI * v, cosPhi = Math.cos(phi), sinPhi = Math.sin(phi);
+        // an orthonormal frame (s, t, w) around w = (x, y, z) (Duff et al. 2017)
+        double sign = Math.copySign(1.0, z), e = -1 / (sign + z), f = x * y * e;
+        double sx = 1 + sign * x * x * e, sy = sign * f, sz = -sign * x;
+        double qx = f, qy = sign + y * y * e, qz = -y;
+        lx = sin * cosPhi * sx + sin * sinPhi * qx + cos * x;
+        ly = sin * cosPhi * sy + sin * sinPhi * qy + cos * y;
+        lz = sin * cosPhi * sz + sin * sinPhi * qz + cos * z;
+        // the near root of |p + t l - c| = r: t = (d^2 - r^2) / (d cos + sqrt(r^2 - d^2 sin^2)), no cancellation
+        double root = Math.sqrt(Math.max(0, (rad - d * sin) * (rad + d * sin)));
+        double t = (d - rad) * (d + rad) / (d * cos + root);
+        tx = px + t * lx; ty = py + t * ly; tz = pz + t * lz;
+        double k = falloff[i] ? 2 / (d * d * (1 + cosMax)) : 1;
+        r = er[i] * k; g = eg[i] * k; b = eb[i] * k;
+        return true;
+    }
+
+    private boolean area(int i, double px, double py, double pz, double u, double v) {
+        double su = 2 * u - 1, sv = 2 * v - 1;
+        double qx = cx[i] + su * wx[i] + sv * hx[i], qy = cy[i] + su * wy[i] + sv * hy[i],
+                qz = cz[i] + su * wz[i] + sv * hz[i];
+        double x = qx - px, y = qy - py, z = qz - pz;
+        double dist = Math.sqrt(x * x + y * y + z * z);
+        if (!(dist > 0)) {
+            return false;
+        }
+        lx = x / dist; ly = y / dist; lz = z / dist;
+        double cosLight = -(nx[i] * lx + ny[i] * ly + nz[i] * lz);
+        if (twoSided[i]) {
+            cosLight = Math.abs(cosLight);
+        }
+        if (!(cosLight > 0)) {
+            return false;
+        }
+        tx = qx; ty = qy; tz = qz;
+        double k = falloff[i] ? cosLight / (dist * dist) : cosLight;
+        r = er[i] * k; g = eg[i] * k; b = eb[i] * k;
+        return true;
+    }
+}
