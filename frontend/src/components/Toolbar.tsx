@@ -2,7 +2,7 @@ import { useCallback } from 'react';
 import type { ApiError, FetchFn } from '../api/client';
 import { useSceneExamples } from '../hooks/useSceneExamples';
 import { sceneFileName, sceneFileText } from '../model/files';
-import type { ObjectType } from '../model/types';
+import type { AddableType } from '../model/types';
 import { describeErrors, validateScene } from '../model/validate';
 import type { Panels } from '../layout';
 import { useSceneStore } from '../store/sceneStore';
@@ -25,7 +25,7 @@ export interface ToolbarProps {
   onHelp?: () => void;
 }
 
-const ADDABLE: ObjectType[] = ['sphere', 'box', 'plane'];
+const ADDABLE: AddableType[] = ['sphere', 'box', 'plane'];
 
 /** The top bar: file (New, Open, Save, Examples), edit (Undo, Redo, Duplicate, Delete), add, snapping. */
 export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: ToolbarProps) {

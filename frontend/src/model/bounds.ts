@@ -15,7 +15,7 @@ export function scenePoints(scene: Scene, meshes: MeshLookup = NO_MESHES): Vec3[
   const points: Vec3[] = [r.camera.position, r.camera.lookAt, ...r.lights.map((l) => l.position)];
   for (const o of r.objects) {
     if (o.type === 'plane') points.push(o.point);
-    else if (o.type === 'mesh') {
+    else if (o.type === 'mesh' || o.type === 'gltf') {
       const state = meshes(o);
       if (state.status !== 'ready') points.push(o.position);
       else {

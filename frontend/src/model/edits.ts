@@ -16,6 +16,7 @@ import {
   type ImageSettings,
   type Material,
   type MaterialType,
+  type AddableType,
   type ObjectType,
   type PointLight,
   type RenderSettings,
@@ -33,7 +34,7 @@ export const DUPLICATE_OFFSET: Vec3 = [0.5, 0, 0.5];
  * clear of the others and of the camera target (see {@link placeOnFloor}); a plane is the floor
  * itself and stays where its defaults put it.
  */
-export function addObject(scene: Scene, kind: ObjectType, meshes: MeshLookup = NO_MESHES): Scene {
+export function addObject(scene: Scene, kind: AddableType, meshes: MeshLookup = NO_MESHES): Scene {
   if (kind === 'mesh') return addMesh(scene, SAMPLE_MESH_OBJ, 1, meshes);
   const object = newObject(kind);
   if (object.type === 'sphere') object.center = placeOnFloor(scene, object.radius!, object.radius!, meshes);
@@ -136,7 +137,7 @@ export function replaceObject(scene: Scene, index: number, object: SceneObject):
 
 /** The field that says where an object is: a sphere's or box's centre, a plane's point, a mesh's position. */
 export function anchorField(type: ObjectType): 'center' | 'point' | 'position' {
-  return type === 'plane' ? 'point' : type === 'mesh' ? 'position' : 'center';
+  return type === 'plane' ? 'point' : type === 'mesh' || type === 'gltf' ? 'position' : 'center';
 }
 
 /** Moves an object: a sphere's or box's centre, a plane's point, a mesh's position (nothing else changes). */

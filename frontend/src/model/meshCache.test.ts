@@ -13,7 +13,10 @@ describe('MeshCache', () => {
     const first = ready(cache.get(mesh));
     expect(first?.triangleCount).toBe(4);
     // A drag step or a material change keeps the text: the same parse comes back.
-    for (let i = 0; i < 50; i++) expect(ready(cache.get({ ...mesh, position: [i, 0, 0], scale: 1 + i }))).toBe(first);
+    for (let i = 0; i < 50; i++) {
+      const moved: MeshObject = { ...mesh, position: [i, 0, 0], scale: 1 + i };
+      expect(ready(cache.get(moved))).toBe(first);
+    }
     // An equal text that is another string (after a JSON round trip) too.
     const copy = JSON.parse(JSON.stringify(mesh)) as MeshObject;
     expect(ready(cache.get(copy))).toBe(first);
@@ -34,7 +37,7 @@ describe('MeshCache', () => {
     const cache = new MeshCache();
     expect(cache.get({ type: 'mesh', obj: 'v 0 0 0\nf 1 2 3\n' })).toEqual({ status: 'error', message: 'line 2: index 2 out of range (1 vertex so far)' });
     expect(cache.get({ type: 'mesh' })).toMatchObject({ status: 'error', message: expect.stringContaining('needs') });
-    expect(cache.get({ type: 'mesh', obj: '', file: 'a.obj' })).toMatchObject({ status: 'error', message: expect.stringContaining('not both') });
+    expect(cache.get({ type: 'mesh', obj: '', file: 'a.obj' })).toMatchObject({ status: 'error', message: expect.stringContaining('not more') });
   });
 
   it('loads each file once, tells subscribers when it arrives, and keeps it', async () => {

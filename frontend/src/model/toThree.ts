@@ -45,9 +45,14 @@ export interface MeshDescriptor {
    * Shared unit geometry: sphere radius 1, box edge 1, plane 1x1 in its x-y plane (normal +z); or
    * 'mesh': the triangles in `mesh`, in the OBJ's own coordinates (see {@link meshGeometry}).
    */
-  geometry: 'sphere' | 'box' | 'plane' | 'mesh';
-  /** The parsed OBJ of a 'mesh' (the same object for as long as the mesh's OBJ is unchanged). */
+  geometry: 'sphere' | 'box' | 'plane' | 'mesh' | 'gltf';
+  /**
+   * The parsed OBJ of a 'mesh' (the same object for as long as the mesh's OBJ is unchanged); of a
+   * 'gltf', its bounding box as 12 triangles (what a click picks; the model is drawn inside it).
+   */
   mesh?: ParsedObj;
+  /** The asset id of a 'gltf' model (the preview loads it and draws a copy of its scene). */
+  asset?: string;
   position: Vec3;
   scale: Vec3;
   /** Euler angles in radians, order XYZ (boxes, meshes); planes use `quaternion` instead. */
@@ -160,6 +165,13 @@ function meshOf(o: ResolvedObject, id: string, index: number, selected: boolean,
       const s = o.scale;
       return { ...base, geometry: 'mesh', mesh: state.mesh, position: o.position, scale: [s, s, s], rotation: o.rotation.map(toRadians) as Vec3 };
     }
+    case 'gltf': {
+      // Drawn once the preview has loaded the model (its box is then known); the glyph says why not.
+      const state = meshes(o);
+      if (state.status !== 'ready') return null;
+      const s = o.scale;
+      return { ...base, geometry: 'gltf', mesh: state.mesh, asset: o.asset, position: o.position, scale: [s, s, s], rotation: o.rotation.map(toRadians) as Vec3 };
+    }
   }
 }
 
@@ -215,7 +227,7 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
   for (const o of r.objects) {
     if (o.type === 'sphere') reach = within(length(sub(o.center, cam.position)) + Math.abs(o.radius));
     if (o.type === 'box') reach = within(length(sub(o.center, cam.position)) + length(o.size));
-    if (o.type === 'mesh') {
+    if (o.type === 'mesh' || o.type === 'gltf') {
       const state = meshes(o);
       if (state.status === 'ready') {
         const { min, max } = meshBounds(o, state.mesh);
@@ -229,7 +241,7 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
   const shown = (o: ResolvedObject) => {
     if (o.type === 'sphere') return near(o.center, Math.abs(o.radius));
     if (o.type === 'box') return near(o.center, length(o.size));
-    if (o.type === 'mesh') return near(o.position);
+    if (o.type === 'mesh' || o.type === 'gltf') return near(o.position);
     // a plane far from the camera is drawn where it is nearest; one beyond the horizon is not
     return Math.abs(dot(sub(cam.position, o.point), normalize(o.normal))) <= horizon;
   };

@@ -20,7 +20,7 @@ import type {
   ImageSettings,
   Material,
   MaterialType,
-  ObjectType,
+  AddableType,
   PointLight,
   RenderSettings,
   Scene,
@@ -90,7 +90,7 @@ export interface SceneState {
   setImage(patch: Partial<ImageSettings>): void;
   setRender(patch: Partial<RenderSettings>): void;
   setCamera(patch: Partial<CameraSettings>): void;
-  addObject(kind: ObjectType): void;
+  addObject(kind: AddableType): void;
   /** Adds a mesh of inline OBJ text with a uniform scale, resting on the floor in front of the camera, selected (one history entry). */
   addMesh(obj: string, scale: number): void;
   /** Replaces a mesh's triangles by inline OBJ text (its `file`, if any, goes). */

@@ -115,7 +115,7 @@ export class PreviewContent {
 
   /** The geometry of `m` (the same for as long as its build is). */
   private geometryOf(m: MeshDescriptor): BufferGeometry {
-    return m.geometry === 'mesh' ? this.meshGeometries.get(m.mesh!) : this.geometries[m.geometry];
+    return m.geometry === 'mesh' || m.geometry === 'gltf' ? this.meshGeometries.get(m.mesh!) : this.geometries[m.geometry];
   }
 
   private materialOf(m: MeshDescriptor): Material {
