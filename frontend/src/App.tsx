@@ -1,5 +1,6 @@
 import { lazy, Suspense, useCallback, useState } from 'react';
 import type { FetchFn } from './api/client';
+import { AutosaveNotice } from './components/AutosaveNotice';
 import { FieldErrorsProvider } from './components/fieldErrors';
 import { Inspector } from './components/Inspector';
 import { JsonTab } from './components/JsonTab';
@@ -72,6 +73,7 @@ export function App({ fetchFn }: AppProps) {
         <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} />
         {help && <ShortcutsHelp onClose={closeHelp} />}
         <SignInDialog />
+        <AutosaveNotice />
         {message && (
           <div className="studio-message" role="alert">
             <pre>{message}</pre>

@@ -1,12 +1,12 @@
 import { useCallback } from 'react';
 import type { ApiError, FetchFn } from '../api/client';
 import { useSceneExamples } from '../hooks/useSceneExamples';
-import { sceneFileName, sceneFileText } from '../model/files';
 import type { AddableType } from '../model/types';
 import { describeErrors, validateScene } from '../model/validate';
 import type { Panels } from '../layout';
 import { useSceneStore } from '../store/sceneStore';
 import { AddMeshButton } from './AddMeshButton';
+import { downloadScene } from './downloadScene';
 import { ExamplesMenu } from './ExamplesMenu';
 import { OpenSceneButton } from './OpenSceneButton';
 import { SignInStatus } from './SignInStatus';
@@ -49,15 +49,7 @@ export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: Toolba
     if (result.ok) s.loadScene(result.scene);
     else onMessage(`The example ${name} is not a scene this editor can read.\n${describeErrors(result.errors)}`);
   };
-  const save = () => {
-    const scene = useSceneStore.getState().scene;
-    const url = URL.createObjectURL(new Blob([sceneFileText(scene)], { type: 'application/json' }));
-    const link = document.createElement('a');
-    link.href = url;
-    link.download = sceneFileName(scene);
-    link.click();
-    setTimeout(() => URL.revokeObjectURL(url), 1000);
-  };
+  const save = () => downloadScene(useSceneStore.getState().scene);
 
   return (
     <div className="toolbar" role="toolbar" aria-label="Scene tools">

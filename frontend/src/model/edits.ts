@@ -5,7 +5,7 @@
  */
 import { newLight, newMesh, newObject, resolveObject, SAMPLE_MESH_OBJ, sceneLights, SCENE_DEFAULTS } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
-import { meshBounds, parseObj } from './obj';
+import { meshBounds, parseObj, type Bounds } from './obj';
 import { placeOnFloor } from './placement';
 import { roundNumber } from './rounding';
 import { objectAnchor } from './projection';
@@ -18,6 +18,7 @@ import {
   type MaterialType,
   type AddableType,
   type ObjectType,
+  type PlacedModel,
   type PointLight,
   type RenderSettings,
   type Scene,
@@ -60,6 +61,26 @@ export function addMesh(scene: Scene, obj: string, scale: number, meshes: MeshLo
   // the bounds' centre goes to the spot found; the position is the OBJ origin
   mesh.position = [centre[0] - (min[0] + max[0]) / 2, centre[1] - half[1] - min[1], centre[2] - (min[2] + max[2]) / 2].map(roundNumber) as Vec3;
   return { ...scene, objects: [...scene.objects, mesh] };
+}
+
+/**
+ * Adds an imported mesh or glTF model standing on the floor in front of the camera, clear of the
+ * others: `bounds` is its box in its own coordinates (unscaled); without it, its origin stands
+ * on the floor as if it were a 1 m thing.
+ */
+export function addModel(scene: Scene, model: PlacedModel, bounds?: Bounds, meshes: MeshLookup = NO_MESHES): Scene {
+  const factor = model.scale ?? 1;
+  const placed: PlacedModel = { ...model, position: [0, 0, 0], scale: factor, rotation: [0, 0, 0] };
+  if (!bounds) {
+    placed.position = placeOnFloor(scene, 0.5, 0, meshes);
+    return { ...scene, objects: [...scene.objects, placed] };
+  }
+  const min = bounds.min.map((v) => v * factor);
+  const max = bounds.max.map((v) => v * factor);
+  const half: Vec3 = [(max[0] - min[0]) / 2, (max[1] - min[1]) / 2, (max[2] - min[2]) / 2];
+  const centre = placeOnFloor(scene, Math.hypot(half[0], half[2]), half[1], meshes);
+  placed.position = [centre[0] - (min[0] + max[0]) / 2, centre[1] - half[1] - min[1], centre[2] - (min[2] + max[2]) / 2].map(roundNumber) as Vec3;
+  return { ...scene, objects: [...scene.objects, placed] };
 }
 
 /** Gives a mesh new inline OBJ text, dropping its `file` (a mesh has exactly one of the two). */
