@@ -2,16 +2,19 @@ import { lazy, Suspense, useCallback, useState } from 'react';
 import type { FetchFn } from './api/client';
 import { AutosaveNotice } from './components/AutosaveNotice';
 import { FieldErrorsProvider } from './components/fieldErrors';
+import { ImportProgress } from './components/ImportProgress';
 import { Inspector } from './components/Inspector';
 import { JsonTab } from './components/JsonTab';
 import { ProblemList } from './components/ProblemList';
 import { RenderPanel } from './render/RenderPanel';
 import { ShortcutsHelp } from './components/ShortcutsHelp';
 import { SignInDialog } from './components/SignInDialog';
+import { StageDropZone } from './components/StageDropZone';
 import { Toolbar } from './components/Toolbar';
 import { useEditorShortcuts } from './hooks/useEditorShortcuts';
-import { useMeshFiles } from './hooks/useMeshes';
+import { useAssetsOnServer, useMeshFiles } from './hooks/useMeshes';
 import { useSceneErrors } from './hooks/useSceneErrors';
+import { useImport } from './import/useImport';
 import { usePanels } from './hooks/usePanels';
 import type { Scene } from './model/types';
 import { useSceneStore } from './store/sceneStore';
@@ -52,7 +55,9 @@ export function App({ fetchFn }: AppProps) {
   const [help, setHelp] = useState(false);
   const closeHelp = useCallback(() => setHelp(false), []);
   useEditorShortcuts(() => setHelp((shown) => !shown));
+  const importFiles = useImport(fetchFn, setMessage);
   useMeshFiles(fetchFn);
+  useAssetsOnServer(fetchFn);
 
   const tabButton = (id: StageTab, label: string) => (
     <button type="button" role="tab" id={`tab-${id}`} aria-selected={tab === id} aria-controls={`panel-${id}`} onClick={() => setTab(id)}>
@@ -70,10 +75,11 @@ export function App({ fetchFn }: AppProps) {
   return (
     <FieldErrorsProvider errors={fieldErrors}>
       <div className="studio">
-        <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} />
+        <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} onImport={(files) => void importFiles(files)} />
         {help && <ShortcutsHelp onClose={closeHelp} />}
         <SignInDialog />
         <AutosaveNotice />
+        <ImportProgress />
         {message && (
           <div className="studio-message" role="alert">
             <pre>{message}</pre>
@@ -87,7 +93,7 @@ export function App({ fetchFn }: AppProps) {
             <TopView />
             <SideView />
           </div>
-          <div className="studio-centre">
+          <StageDropZone className="studio-centre" onFiles={(files) => void importFiles(files)}>
             <RenderPanel
               key={documentId}
               scene={scene}
@@ -106,7 +112,7 @@ export function App({ fetchFn }: AppProps) {
                 {tab === 'json' && <JsonTab />}
               </div>
             </RenderPanel>
-          </div>
+          </StageDropZone>
           <div className="studio-inspector" hidden={!panels.inspector}>
             <ProblemList />
             <Inspector />

@@ -5,7 +5,8 @@ import type { AddableType } from '../model/types';
 import { describeErrors, validateScene } from '../model/validate';
 import type { Panels } from '../layout';
 import { useSceneStore } from '../store/sceneStore';
-import { AddMeshButton } from './AddMeshButton';
+import { IMPORT_ACCEPT } from '../model/importFiles';
+import { FilePickButton } from './FilePickButton';
 import { downloadScene } from './downloadScene';
 import { ExamplesMenu } from './ExamplesMenu';
 import { OpenSceneButton } from './OpenSceneButton';
@@ -21,6 +22,8 @@ export interface ToolbarProps {
   /** Which side panels are shown, and the way to show or hide them; no toggles without it. */
   panels?: Panels;
   onPanels?: (panels: Panels) => void;
+  /** Imports files (+ Import, + Mesh): see `import/useImport.ts`; no import buttons without it. */
+  onImport?: (files: File[]) => void;
   /** Shows the keyboard shortcuts (the `?` panel); no button without it. */
   onHelp?: () => void;
 }
@@ -28,7 +31,7 @@ export interface ToolbarProps {
 const ADDABLE: AddableType[] = ['sphere', 'box', 'plane'];
 
 /** The top bar: file (New, Open, Save, Examples), edit (Undo, Redo, Duplicate, Delete), add, snapping. */
-export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: ToolbarProps) {
+export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp, onImport }: ToolbarProps) {
   const s = useSceneStore.getState();
   const canUndo = useSceneStore((st) => st.past.length > 0);
   const canRedo = useSceneStore((st) => st.future.length > 0);
@@ -84,7 +87,29 @@ export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: Toolba
             + {OBJECT_LABELS[kind]}
           </button>
         ))}
-        <AddMeshButton onMessage={onMessage} />
+        {onImport && (
+          <>
+            <FilePickButton
+              ariaLabel="Add mesh"
+              title="Add a triangle mesh from a Wavefront OBJ file, uploaded once and named by its id, on the floor in front of the camera, scaled to about 2 m"
+              accept=".obj"
+              testId="add-mesh"
+              onFiles={onImport}
+            >
+              + Mesh
+            </FilePickButton>
+            <FilePickButton
+              ariaLabel="Import files"
+              title="Import .obj and .glb/.gltf models (added in front of the camera) and .png/.jpg images (the selected object's texture); or drop them on the stage"
+              accept={IMPORT_ACCEPT}
+              multiple
+              testId="import-file"
+              onFiles={onImport}
+            >
+              + Import
+            </FilePickButton>
+          </>
+        )}
         <button type="button" data-testid="add-light" aria-label="Add light" title="Add a white point light" onClick={s.addLight}>
           + Light
         </button>

@@ -83,11 +83,11 @@ export function addModel(scene: Scene, model: PlacedModel, bounds?: Bounds, mesh
   return { ...scene, objects: [...scene.objects, placed] };
 }
 
-/** Gives a mesh new inline OBJ text, dropping its `file` (a mesh has exactly one of the two). */
+/** Gives a mesh new inline OBJ text, dropping its `file` or `asset` (a mesh has exactly one source). */
 export function setMeshObj(scene: Scene, index: number, obj: string): Scene {
   const object = scene.objects[index];
   if (object?.type !== 'mesh') return scene;
-  const { file: _file, ...rest } = object;
+  const { file: _file, asset: _asset, ...rest } = object;
   const objects = scene.objects.map((o, i) => (i === index ? { ...rest, obj } : o));
   return { ...scene, objects };
 }

@@ -260,3 +260,17 @@ export function scaleToFit(parsed: ParsedObj, size = 2): number {
   if (!(largest > 0) || !Number.isFinite(largest)) return 1;
   return Number((size / largest).toPrecision(3));
 }
+
+/** A box as a mesh of 12 triangles (a glTF model's bounds, for the views, picking and placement). */
+export function boxMesh({ min, max }: Bounds): ParsedObj {
+  const positions = new Float32Array(24);
+  for (let i = 0; i < 8; i++) {
+    positions[3 * i] = i & 1 ? max[0] : min[0];
+    positions[3 * i + 1] = i & 2 ? max[1] : min[1];
+    positions[3 * i + 2] = i & 4 ? max[2] : min[2];
+  }
+  // two triangles per face, counter-clockwise seen from outside
+  const faces = [[0, 4, 6, 2], [1, 3, 7, 5], [0, 1, 5, 4], [2, 6, 7, 3], [0, 2, 3, 1], [4, 5, 7, 6]];
+  const indices = new Uint32Array(faces.flatMap(([a, b, c, d]) => [a, b, c, a, c, d]));
+  return { positions, indices, triangleCount: 12 };
+}
