@@ -1,6 +1,7 @@
 import { describe, expect, it, vi } from 'vitest';
 import { fetchMeshFile, type FetchFn } from '../api/client';
-import { TETRAHEDRON_OBJ } from '../test/meshes';
+import { gridObj, TETRAHEDRON_OBJ } from '../test/meshes';
+import { boxMesh, meshBounds, parseObj } from './obj';
 import { MeshCache, type MeshState } from './meshCache';
 import type { MeshObject } from './types';
 
@@ -83,5 +84,37 @@ describe('MeshCache', () => {
     await Promise.resolve();
     await Promise.resolve();
     expect(cache.get({ type: 'mesh', file: 'late.obj' })).toEqual({ status: 'loading' });
+  });
+
+  it('reads an asset mesh once per id, in slices with its progress, and keeps what an import read', async () => {
+    const cache = new MeshCache();
+    const id = `sha256-${'e'.repeat(64)}`;
+    const load = vi.fn(async () => gridObj(60));
+    const seen: MeshState[] = [];
+    cache.subscribe(() => seen.push(cache.get({ type: 'mesh', asset: id })));
+    expect(cache.get({ type: 'mesh', asset: id })).toEqual({ status: 'loading' });
+    cache.ensureAsset(id, load);
+    cache.ensureAsset(id, load);
+    await vi.waitFor(() => expect(cache.get({ type: 'mesh', asset: id }).status).toBe('ready'));
+    expect(load).toHaveBeenCalledTimes(1);
+    expect(ready(cache.get({ type: 'mesh', asset: id }))?.triangleCount).toBe(7200);
+    expect(seen.at(-1)?.status).toBe('ready');
+    const imported = parseObj(TETRAHEDRON_OBJ);
+    cache.putAsset('sha256-other', imported);
+    expect(ready(cache.get({ type: 'mesh', asset: 'sha256-other' }))).toBe(imported);
+  });
+
+  it('says why an asset cannot be had, and holds a glTF model’s box once the preview has read it', async () => {
+    const cache = new MeshCache();
+    cache.ensureAsset('sha256-gone', async () => {
+      throw new Error('Not Found: no asset');
+    });
+    await vi.waitFor(() => expect(cache.get({ type: 'mesh', asset: 'sha256-gone' })).toEqual({ status: 'error', message: 'sha256-gone…: Not Found: no asset' }));
+    expect(cache.get({ type: 'gltf', asset: 'sha256-m' })).toEqual({ status: 'loading' });
+    expect(cache.hasModel('sha256-m')).toBe(false);
+    const box = boxMesh({ min: [-1, 0, -1], max: [1, 2, 1] });
+    cache.setModel('sha256-m', { status: 'ready', mesh: box });
+    expect(ready(cache.get({ type: 'gltf', asset: 'sha256-m' }))).toBe(box);
+    expect(meshBounds({ position: [0, 1, 0], scale: 2 }, box)).toEqual({ min: [-2, 1, -2], max: [2, 5, 2] });
   });
 });

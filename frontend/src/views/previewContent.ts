@@ -26,7 +26,10 @@ import {
 import type { DragTarget } from '../model/selection';
 import { applyRenderCamera, type LightDescriptor, type MeshDescriptor, type ThreeSceneDescriptor } from '../model/toThree';
 import { MeshGeometryCache } from './previewGeometries';
+import { loadAssetBytes } from '../hooks/useMeshes';
+import { gltfModel } from './gltfModels';
 import { MaterialCache } from './previewMaterials';
+import { TextureCache } from './previewTextures';
 import { castsShadow, meshBuild, planLights, planMeshes, type LightBuild, type MeshBuild } from './previewReconcile';
 import { ReflectionProbes } from './reflectionProbes';
 
@@ -53,7 +56,10 @@ export class PreviewContent {
   readonly pickables: Mesh[] = [];
   /** What reflections leave out: the markers and helpers. */
   readonly helpers: Object3D[] = [];
-  private readonly materials = new MaterialCache();
+  private readonly textures: TextureCache;
+  private readonly materials: MaterialCache;
+  /** What a glTF model's box is drawn with: nothing (the model inside it is what shows; the box is what a click picks). */
+  private readonly hidden = new MeshBasicMaterial({ visible: false });
   private readonly meshGeometries = new MeshGeometryCache();
   private readonly geometries = { sphere: new SphereGeometry(1, 48, 32), box: new BoxGeometry(1, 1, 1), plane: new PlaneGeometry(1, 1, 64, 64), marker: new SphereGeometry(1, 16, 12) };
   private readonly probes = new ReflectionProbes();
@@ -62,7 +68,10 @@ export class PreviewContent {
   private readonly lights = new Map<string, LightEntry>();
   private frustum: CameraHelper | null = null;
 
-  constructor() {
+  /** @param onAsync called when something arrives after an update (an image texture's pixels): draw again */
+  constructor(onAsync: () => void = () => {}) {
+    this.textures = new TextureCache((id) => loadAssetBytes(id), onAsync);
+    this.materials = new MaterialCache(this.textures);
     this.root.add(this.ambient);
   }
 
@@ -101,6 +110,8 @@ export class PreviewContent {
     this.showFrustum(null);
     this.probes.clear();
     this.materials.dispose();
+    this.textures.dispose();
+    this.hidden.dispose();
     this.meshGeometries.dispose();
     Object.values(this.geometries).forEach((g) => g.dispose());
   }
@@ -109,6 +120,15 @@ export class PreviewContent {
     const mesh = new Mesh(this.geometryOf(m), this.materialOf(m));
     mesh.castShadow = m.geometry !== 'plane';
     mesh.receiveShadow = true;
+    if (m.geometry === 'gltf') {
+      // a copy of the model read once per asset (it shares the model's geometries and materials)
+      const model = gltfModel(m.asset!)?.clone(true);
+      model?.traverse((o) => {
+        o.castShadow = true;
+        o.receiveShadow = true;
+      });
+      if (model) mesh.add(model);
+    }
     this.root.add(mesh);
     return { build: meshBuild(m), mesh, box: null };
   }
@@ -119,6 +139,7 @@ export class PreviewContent {
   }
 
   private materialOf(m: MeshDescriptor): Material {
+    if (m.geometry === 'gltf') return this.hidden;
     // Planes and meshes (which may be open) are seen from both sides.
     return this.materials.get(m.material, m.geometry === 'plane' || m.geometry === 'mesh');
   }
@@ -132,7 +153,7 @@ export class PreviewContent {
     mesh.scale.set(...m.scale);
     if (m.geometry === 'plane') mesh.quaternion.set(...m.quaternion);
     else mesh.rotation.set(m.rotation[0], m.rotation[1], m.rotation[2], 'XYZ');
-    if (m.material.kind === 'standard' || m.material.kind === 'physical') {
+    if (m.geometry !== 'gltf' && (m.material.kind === 'standard' || m.material.kind === 'physical')) {
       mesh.updateMatrixWorld();
       this.probes.add(mesh, m.position, d.camera.near, d.camera.far);
     }
