@@ -14,6 +14,7 @@ import { Toolbar } from './components/Toolbar';
 import { useEditorShortcuts } from './hooks/useEditorShortcuts';
 import { useAssetsOnServer, useMeshFiles } from './hooks/useMeshes';
 import { useSceneErrors } from './hooks/useSceneErrors';
+import { ImportContext } from './import/ImportContext';
 import { useImport } from './import/useImport';
 import { usePanels } from './hooks/usePanels';
 import type { Scene } from './model/types';
@@ -74,51 +75,53 @@ export function App({ fetchFn }: AppProps) {
   const layout = `studio-main${panels.views ? '' : ' no-views'}${panels.inspector ? '' : ' no-inspector'}`;
   return (
     <FieldErrorsProvider errors={fieldErrors}>
-      <div className="studio">
-        <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} onImport={(files) => void importFiles(files)} />
-        {help && <ShortcutsHelp onClose={closeHelp} />}
-        <SignInDialog />
-        <AutosaveNotice />
-        <ImportProgress />
-        {message && (
-          <div className="studio-message" role="alert">
-            <pre>{message}</pre>
-            <button type="button" className="small" onClick={() => setMessage(null)}>
-              Dismiss
-            </button>
-          </div>
-        )}
-        <main className={layout}>
-          <div className="studio-views" hidden={!panels.views}>
-            <TopView />
-            <SideView />
-          </div>
-          <StageDropZone className="studio-centre" onFiles={(files) => void importFiles(files)}>
-            <RenderPanel
-              key={documentId}
-              scene={scene}
-              onFieldErrors={onRenderErrors}
-              fetchFn={fetchFn}
-              tabs={tabs}
-              showingRender={tab === 'render'}
-              onRenderStarted={showRender}
-            >
-              <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
-                <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
-                  <Preview3D shown={tab === 'preview'} onFieldErrors={onLiveErrors} />
-                </Suspense>
-              </div>
-              <div role="tabpanel" id="panel-json" aria-labelledby="tab-json" hidden={tab !== 'json'} className="tab-panel">
-                {tab === 'json' && <JsonTab />}
-              </div>
-            </RenderPanel>
-          </StageDropZone>
-          <div className="studio-inspector" hidden={!panels.inspector}>
-            <ProblemList />
-            <Inspector />
-          </div>
-        </main>
-      </div>
+      <ImportContext.Provider value={importFiles}>
+        <div className="studio">
+          <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} onImport={(files) => void importFiles(files)} />
+          {help && <ShortcutsHelp onClose={closeHelp} />}
+          <SignInDialog />
+          <AutosaveNotice />
+          <ImportProgress />
+          {message && (
+            <div className="studio-message" role="alert">
+              <pre>{message}</pre>
+              <button type="button" className="small" onClick={() => setMessage(null)}>
+                Dismiss
+              </button>
+            </div>
+          )}
+          <main className={layout}>
+            <div className="studio-views" hidden={!panels.views}>
+              <TopView />
+              <SideView />
+            </div>
+            <StageDropZone className="studio-centre" onFiles={(files) => void importFiles(files)}>
+              <RenderPanel
+                key={documentId}
+                scene={scene}
+                onFieldErrors={onRenderErrors}
+                fetchFn={fetchFn}
+                tabs={tabs}
+                showingRender={tab === 'render'}
+                onRenderStarted={showRender}
+              >
+                <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
+                  <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
+                    <Preview3D shown={tab === 'preview'} onFieldErrors={onLiveErrors} />
+                  </Suspense>
+                </div>
+                <div role="tabpanel" id="panel-json" aria-labelledby="tab-json" hidden={tab !== 'json'} className="tab-panel">
+                  {tab === 'json' && <JsonTab />}
+                </div>
+              </RenderPanel>
+            </StageDropZone>
+            <div className="studio-inspector" hidden={!panels.inspector}>
+              <ProblemList />
+              <Inspector />
+            </div>
+          </main>
+        </div>
+      </ImportContext.Provider>
     </FieldErrorsProvider>
   );
 }

@@ -1,3 +1,4 @@
+import { InspectorTexture } from './InspectorTexture';
 import { resolveMaterial } from '../model/defaults';
 import { MATERIAL_FIELDS, MATERIAL_TYPES, type Material, type MaterialType } from '../model/types';
 import { ColorField } from './fields/ColorField';
@@ -64,6 +65,7 @@ export function InspectorMaterial({ path, material, onTypeChange, onChange, onPr
             />
           );
         })}
+      <InspectorTexture path={path} material={current} onChange={onChange} />
     </fieldset>
   );
 }

@@ -3,8 +3,8 @@ import { assetExists, fetchAsset, uploadAsset } from '../api/assets';
 import { fetchMeshFile, type FetchFn } from '../api/client';
 import { keepAsset, keptAsset } from '../store/autosave';
 import { assetIdsOf } from '../store/editorDb';
-import { MeshCache, type MeshState } from '../model/meshCache';
-import type { MeshObject, Scene } from '../model/types';
+import { MeshCache, type MeshState, type ModelRef } from '../model/meshCache';
+import type { Scene } from '../model/types';
 import { useSceneStore } from '../store/sceneStore';
 
 /** The editor's one mesh cache (parsed inline meshes and loaded mesh files). */
@@ -16,11 +16,11 @@ export function useMeshVersion(): number {
 }
 
 /** Looks up a mesh's triangles; a new function (and a re-render) whenever a mesh file finishes loading. */
-export function useMeshLookup(): (mesh: MeshObject) => MeshState {
+export function useMeshLookup(): (mesh: ModelRef) => MeshState {
   const version = useMeshVersion();
   // `version` is not read inside, but it is what changes the answers.
   // eslint-disable-next-line react-hooks/exhaustive-deps -- see above
-  return useCallback((mesh: MeshObject) => meshCache.get(mesh), [version]);
+  return useCallback((mesh: ModelRef) => meshCache.get(mesh), [version]);
 }
 
 /** The `file` names of a scene's meshes, one per line (a string, so a selector result is stable). */
