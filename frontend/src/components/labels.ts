@@ -75,6 +75,8 @@ export function triangleCountLabel(count: number): string {
 /** A mesh's name with what is known of its triangles: "Mesh 3 (4,800 triangles)", "Mesh 3 (loading…)". */
 export function meshName(label: string, state: MeshState, format = 'OBJ'): string {
   const loading = state.status === 'loading' && state.progress ? `reading… ${Math.round(100 * state.progress)}%` : 'loading…';
-  const detail = state.status === 'ready' ? triangleCountLabel(state.mesh.triangleCount) : state.status === 'loading' ? loading : `${format} error`;
+  // a glTF model's state holds its bounding box, not its triangles
+  const ready = state.status === 'ready' && format === 'glTF' ? 'glTF' : state.status === 'ready' ? triangleCountLabel(state.mesh.triangleCount) : '';
+  const detail = state.status === 'ready' ? ready : state.status === 'loading' ? loading : `${format} error`;
   return `${label} (${detail})`;
 }

@@ -2,7 +2,7 @@ import { useCallback, useEffect, useSyncExternalStore } from 'react';
 import { assetExists, fetchAsset, uploadAsset } from '../api/assets';
 import { fetchMeshFile, type FetchFn } from '../api/client';
 import { keepAsset, keptAsset } from '../store/autosave';
-import { assetIdsOf } from '../store/editorDb';
+import { assetBuffer, assetIdsOf } from '../store/editorDb';
 import { MeshCache, type MeshState, type ModelRef } from '../model/meshCache';
 import type { Scene } from '../model/types';
 import { useSceneStore } from '../store/sceneStore';
@@ -36,7 +36,7 @@ export function modelAssets(scene: Scene): string {
 /** An asset's bytes: as this browser keeps them, else from the server (and then kept). */
 export async function loadAssetBytes(id: string, fetchFn?: FetchFn): Promise<ArrayBuffer> {
   const kept = await keptAsset(id);
-  if (kept) return kept.bytes;
+  if (kept) return assetBuffer(kept);
   const blob = await fetchAsset(id, fetchFn);
   const bytes = await blob.arrayBuffer();
   void keepAsset({ id, mediaType: blob.type || 'application/octet-stream', bytes });

@@ -85,7 +85,8 @@ export async function importFile(file: File, deps: ImportDeps, target: ImportTar
     }
   }
   await sendToServer(file, id, plan, deps, progress);
-  await deps.keep({ id, mediaType: plan.mediaType, bytes });
+  // the File itself: the browser keeps it without copying its bytes on this thread
+  await deps.keep({ id, mediaType: plan.mediaType, bytes: file });
   return place(file.name, id, plan, parsed, bounds, textured, target);
 }
 

@@ -56,7 +56,7 @@ describe('autosave in IndexedDB', () => {
     expect(store().scene.objects.at(-1)).toMatchObject({ type: 'mesh', asset: id, position: [1, 0, 1] });
     expect(store().past).toHaveLength(3);
     const kept = await keptAsset(id);
-    expect(new TextDecoder().decode(kept!.bytes)).toBe(obj);
+    expect(new TextDecoder().decode(kept!.bytes as ArrayBuffer)).toBe(obj);
   });
 
   it('says when a change cannot be kept, and is back to keeping once the browser takes it', async () => {

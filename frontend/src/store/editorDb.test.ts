@@ -63,7 +63,7 @@ describe('EditorDb', () => {
     expect(await db.pruneAssets([scene('x'), scene('y')])).toBe(1);
     const kept = await db.getAsset(A);
     expect(kept?.mediaType).toBe('model/obj');
-    expect(new TextDecoder().decode(kept?.bytes)).toBe('v 0 0 0\n');
+    expect(new TextDecoder().decode(kept?.bytes as ArrayBuffer)).toBe('v 0 0 0\n');
     expect(await db.getAsset(B)).toBeNull();
   });
 

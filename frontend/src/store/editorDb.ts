@@ -21,11 +21,19 @@ const TIMELINE_KEY = 'timeline';
 /** The outcome of a write. */
 export type Kept = { ok: true } | { ok: false; reason: string };
 
-/** An asset's bytes as kept in the browser. */
+/**
+ * An asset's bytes as kept in the browser: a Blob (an imported File: the browser stores it
+ * without copying its bytes on the page's thread) or an ArrayBuffer.
+ */
 export interface StoredAsset {
   id: string;
   mediaType: string;
-  bytes: ArrayBuffer;
+  bytes: Blob | ArrayBuffer;
+}
+
+/** The bytes of a kept asset as an ArrayBuffer. */
+export function assetBuffer(asset: StoredAsset): Promise<ArrayBuffer> {
+  return asset.bytes instanceof ArrayBuffer ? Promise.resolve(asset.bytes) : asset.bytes.arrayBuffer();
 }
 
 /** The scene, undo steps (oldest first) and redo steps (next first) found on start-up. */
