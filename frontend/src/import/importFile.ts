@@ -64,13 +64,14 @@ export async function importFile(file: File, deps: ImportDeps, target: ImportTar
 
   progress('hashing', 0);
   const id = await deps.hash(file, (f) => progress('hashing', f));
-  const bytes = await file.arrayBuffer();
+  // the editor reads a model itself (an image only the preview decodes, from the kept file)
+  const bytes = plan.kind === 'image' ? null : await file.arrayBuffer();
   let parsed: ParsedObj | null = null;
   let bounds: Bounds | undefined;
   if (plan.kind === 'obj') {
     progress('reading', 0);
     try {
-      parsed = await deps.readObj(new TextDecoder().decode(bytes), (f) => progress('reading', f));
+      parsed = await deps.readObj(new TextDecoder().decode(bytes!), (f) => progress('reading', f));
     } catch (error) {
       throw new ImportProblem(`Cannot import ${file.name}: it is not a usable OBJ mesh (${messageOf(error)}).`);
     }
@@ -79,7 +80,7 @@ export async function importFile(file: File, deps: ImportDeps, target: ImportTar
   } else if (plan.kind === 'gltf') {
     progress('reading', 0);
     try {
-      bounds = await deps.readGltf(bytes);
+      bounds = await deps.readGltf(bytes!);
     } catch (error) {
       throw new ImportProblem(`Cannot import ${file.name}: ${messageOf(error)}.`);
     }
