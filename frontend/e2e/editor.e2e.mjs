@@ -694,18 +694,22 @@ try {
     await page.getByRole('button', { name: 'New', exact: true }).click();
     await page.getByTestId('import-file').setInputFiles({ name: 'triangle.gltf', mimeType: 'model/gltf+json', buffer: Buffer.from(triangleGltf()) });
     const outline = page.getByRole('navigation', { name: 'Scene contents' });
-    await outline.getByRole('button', { name: /glTF model .*\(glTF\)/ }).waitFor({ timeout: 20_000 });
+    const alerts = async () => (await page.getByRole('alert').allInnerTexts()).join(' | ');
+    await until(async () => (await outline.getByRole('button', { name: /glTF model .*\(glTF\)/ }).count()) > 0 || (await alerts()) !== '', 'the glTF model does not appear', 20_000);
+    expect((await alerts()) === '', `importing the glTF: ${await alerts()}`);
     const scene = await sceneOf(page);
     const model = scene.objects.at(-1);
     expect(model.type === 'gltf' && /^sha256-/.test(model.asset), `no gltf object: ${JSON.stringify(model)}`);
+    await page.screenshot({ path: `${out}import-gltf.png` });
     // the red triangle stands on the floor in front of the camera: its middle shows red in the preview
     const [red] = await previewColours(page, [await previewPixel(page, scene, [model.position[0] + 0.3, model.position[1] + 0.8, model.position[2]])]);
-    expect(red[0] > 120 && red[0] > 2 * red[2], `the glTF triangle is not drawn red in the preview: ${red}`);
+    expect(red[0] > 120 && red[0] > 2 * red[2], `the glTF triangle is not drawn red in the preview: ${red} at ${JSON.stringify(await previewPixel(page, scene, [model.position[0] + 0.3, model.position[1] + 0.8, model.position[2]]))}, model ${JSON.stringify(model)}, camera ${JSON.stringify(scene.camera)}`);
     await page.getByTestId('add-box').click();
     const png = tinyPng([[255, 255, 255], [0, 0, 0], [0, 0, 0], [255, 255, 255]]);
     await page.getByTestId('import-file').setInputFiles({ name: 'checks.png', mimeType: 'image/png', buffer: png });
     const thumbnail = page.getByRole('img', { name: /^Texture sha256-/ });
-    await thumbnail.waitFor({ timeout: 20_000 });
+    await until(async () => (await thumbnail.count()) > 0 || (await alerts()) !== '', 'no texture thumbnail', 20_000);
+    expect((await alerts()) === '', `importing the PNG: ${await alerts()}`);
     await until(() => thumbnail.evaluate((img) => img.complete && img.naturalWidth === 2), 'the texture thumbnail does not show');
     const box = (await sceneOf(page)).objects.at(-1);
     expect(box.material.texture?.type === 'image', `the box has no image texture: ${JSON.stringify(box.material)}`);

@@ -123,9 +123,10 @@ export class PreviewContent {
     if (m.geometry === 'gltf') {
       // a copy of the model read once per asset (it shares the model's geometries and materials)
       const model = gltfModel(m.asset!)?.clone(true);
+      // it casts shadows on the rest; it receives none, as its often open, double-sided surfaces
+      // would shadow themselves in stripes (three's shadow maps have no bias here: see createLight)
       model?.traverse((o) => {
         o.castShadow = true;
-        o.receiveShadow = true;
       });
       if (model) mesh.add(model);
     }
