@@ -95,4 +95,18 @@ describe('EditorDb', () => {
     };
     expect(assetIdsOf(s)).toEqual([A, B]);
   });
+
+  it('never lets two tabs write the same record, and drops records no kept history names on the next start', async () => {
+    const factory = new IDBFactory();
+    const [a, b] = [await EditorDb.open(factory), await EditorDb.open(factory)];
+    await a.load();
+    await b.load();
+    const [sa, sb] = [scene('tab a'), scene('tab b')];
+    await a.saveTimeline(sa, [], []);
+    await b.saveTimeline(sb, [], []);
+    expect(await sceneCount(factory)).toBe(2); // neither overwrote the other's record
+    const again = await EditorDb.open(factory);
+    expect(await again.load()).toEqual({ scene: sb, past: [], future: [] }); // the last written timeline
+    expect(await sceneCount(factory)).toBe(1);
+  });
 });

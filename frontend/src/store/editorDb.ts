@@ -44,9 +44,9 @@ export interface SavedTimeline {
 }
 
 interface TimelineRecord {
-  present: number;
-  past: number[];
-  future: number[];
+  present: string;
+  past: string[];
+  future: string[];
 }
 
 /** The asset ids a scene names: mesh and glTF assets, image textures. */
@@ -68,8 +68,11 @@ function reasonOf(error: DOMException | Error | null | undefined): string {
 
 export class EditorDb {
   /** The record key of each scene written (scenes are immutable: a scene once written is never written again). */
-  private readonly keys = new WeakMap<Scene, number>();
-  private stored = new Set<number>();
+  private readonly keys = new WeakMap<Scene, string>();
+  /** The records this editor's history uses and knows to be written (another tab's are never deleted here). */
+  private stored = new Set<string>();
+  /** Keys are this editor's own (`tab:n`), so two tabs never write the same record. */
+  private readonly tab = typeof crypto.randomUUID === 'function' ? crypto.randomUUID() : String(Math.random()).slice(2);
   private nextKey = 1;
 
   private constructor(private readonly db: IDBDatabase) {}
@@ -104,11 +107,14 @@ export class EditorDb {
   async load(): Promise<SavedTimeline | null> {
     const tx = this.db.transaction([SCENES, META], 'readonly');
     const timeline = await request<TimelineRecord | undefined>(tx.objectStore(META).get(TIMELINE_KEY));
-    const keys = await request<IDBValidKey[]>(tx.objectStore(SCENES).getAllKeys());
-    this.stored = new Set(keys.map(Number));
-    this.nextKey = Math.max(0, ...this.stored) + 1;
+    const keys = (await request<IDBValidKey[]>(tx.objectStore(SCENES).getAllKeys())).map(String);
+    const named = new Set(timeline ? [timeline.present, ...timeline.past, ...timeline.future] : []);
+    this.stored = new Set(keys.filter((key) => named.has(key)));
+    // records no kept history names (left by a tab closed mid-write, or by another tab's steps)
+    const orphans = keys.filter((key) => !named.has(key));
+    if (orphans.length > 0) await this.write([SCENES], (t) => orphans.forEach((key) => t.objectStore(SCENES).delete(key)));
     if (!timeline) return null;
-    const read = async (key: number): Promise<Scene | null> => {
+    const read = async (key: string): Promise<Scene | null> => {
       const value = await request<unknown>(this.db.transaction(SCENES).objectStore(SCENES).get(key));
       const result = validateScene(value);
       if (!result.ok) return null;
@@ -117,18 +123,18 @@ export class EditorDb {
     };
     const scene = await read(timeline.present);
     if (!scene) return null;
-    const many = async (list: number[]) => (await Promise.all(list.map(read))).filter((s): s is Scene => s !== null);
+    const many = async (list: string[]) => (await Promise.all(list.map(read))).filter((s): s is Scene => s !== null);
     return { scene, past: await many(timeline.past), future: await many(timeline.future) };
   }
 
   /** Keeps the present scene and its history: writes the scenes not yet kept, the timeline, and drops what no step uses. */
   async saveTimeline(present: Scene, past: readonly Scene[], future: readonly Scene[]): Promise<Kept> {
-    const fresh: [number, Scene][] = [];
-    const freshKeys = new Set<number>();
+    const fresh: [string, Scene][] = [];
+    const freshKeys = new Set<string>();
     const keyOf = (scene: Scene) => {
       let key = this.keys.get(scene);
       if (key === undefined) {
-        key = this.nextKey++;
+        key = `${this.tab}:${this.nextKey++}`;
         this.keys.set(scene, key);
       }
       if (!this.stored.has(key) && !freshKeys.has(key)) {
