@@ -2,7 +2,9 @@
 // add a sphere, drag it in the top view, change its material, render through a job and watch
 // it arrive, then send a value the server refuses and see the error by its field.
 // Usage: node e2e/editor.e2e.mjs path/to/studio.jar   (screenshots go to frontend/test-output/)
+import { createHash } from 'node:crypto';
 import { mkdirSync, readFileSync } from 'node:fs';
+import { deflateSync } from 'node:zlib';
 import { chromium } from 'playwright-core';
 import { PerspectiveCamera, Vector3 } from 'three';
 import { startServer } from './server.mjs';
@@ -97,6 +99,65 @@ async function previewColours(page, points) {
   }, { points, box });
 }
 const brightness = ([r, g, b]) => r + g + b;
+
+/** An OBJ grid of n x n quads (2 n² triangles), as the unit tests' gridObj. */
+function gridObj(n) {
+  const lines = [];
+  for (let i = 0; i <= n; i++) for (let j = 0; j <= n; j++) lines.push(`v ${i / n} 0 ${j / n}`);
+  const at = (i, j) => i * (n + 1) + j + 1;
+  for (let i = 0; i < n; i++) for (let j = 0; j < n; j++) lines.push(`f ${at(i, j)} ${at(i, j + 1)} ${at(i + 1, j + 1)} ${at(i + 1, j)}`);
+  return lines.join('\n') + '\n';
+}
+
+/** A PNG of 2x2 pixels (RGB), written out: signature, IHDR, IDAT, IEND. */
+function tinyPng(pixels) {
+  const crcTable = Array.from({ length: 256 }, (_, n) => {
+    let c = n;
+    for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+    return c >>> 0;
+  });
+  const crc = (buf) => {
+    let c = 0xffffffff;
+    for (const b of buf) c = crcTable[(c ^ b) & 255] ^ (c >>> 8);
+    return (c ^ 0xffffffff) >>> 0;
+  };
+  const chunk = (type, data) => {
+    const body = Buffer.concat([Buffer.from(type), data]);
+    const out = Buffer.alloc(12 + data.length);
+    out.writeUInt32BE(data.length, 0);
+    body.copy(out, 4);
+    out.writeUInt32BE(crc(body), 8 + data.length);
+    return out;
+  };
+  const ihdr = Buffer.alloc(13);
+  ihdr.writeUInt32BE(2, 0);
+  ihdr.writeUInt32BE(2, 4);
+  ihdr[8] = 8; // bit depth
+  ihdr[9] = 2; // RGB
+  const rows = Buffer.from([0, ...pixels[0], ...pixels[1], 0, ...pixels[2], ...pixels[3]]);
+  return Buffer.concat([Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]), chunk('IHDR', ihdr), chunk('IDAT', deflateSync(rows)), chunk('IEND', Buffer.alloc(0))]);
+}
+
+/** A glTF 2.0 JSON of one triangle, its buffer embedded. */
+function triangleGltf() {
+  const bytes = Buffer.alloc(44);
+  [0, 0, 0, 1, 0, 0, 0, 1, 0].forEach((v, i) => bytes.writeFloatLE(v, 4 * i));
+  [0, 1, 2].forEach((v, i) => bytes.writeUInt16LE(v, 36 + 2 * i));
+  return JSON.stringify({
+    asset: { version: '2.0' },
+    scene: 0,
+    scenes: [{ nodes: [0] }],
+    nodes: [{ mesh: 0, translation: [0, 0.5, 0] }],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1, material: 0 }] }],
+    materials: [{ pbrMetallicRoughness: { baseColorFactor: [0.9, 0.2, 0.1, 1] }, doubleSided: true }],
+    buffers: [{ byteLength: 44, uri: `data:application/octet-stream;base64,${bytes.toString('base64')}` }],
+    bufferViews: [{ buffer: 0, byteOffset: 0, byteLength: 36, target: 34962 }, { buffer: 0, byteOffset: 36, byteLength: 6, target: 34963 }],
+    accessors: [
+      { bufferView: 0, componentType: 5126, count: 3, type: 'VEC3', min: [0, 0, 0], max: [1, 1, 0] },
+      { bufferView: 1, componentType: 5123, count: 3, type: 'SCALAR' },
+    ],
+  });
+}
 
 const server = await startServer(jar);
 const browser = await chromium.launch({
@@ -577,6 +638,83 @@ try {
     await outline.getByRole('button', { name: /^Sphere 1/ }).waitFor();
     await page.getByRole('button', { name: 'Redo' }).click();
     await outline.getByRole('button', { name: /^Box/ }).waitFor();
+  });
+
+  await step('import: a 200,000-triangle OBJ shows its progress with no long task over 200 ms, is uploaded once by id, and survives a reload with the edits after it', async () => {
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    // long tasks with their start, and when the progress line first shows each phase (page clock)
+    await page.evaluate(() => {
+      window.longTasks = [];
+      window.phaseAt = {};
+      new PerformanceObserver((list) => list.getEntries().forEach((e) => window.longTasks.push({ start: e.startTime, duration: e.duration }))).observe({ type: 'longtask' });
+      new MutationObserver(() => {
+        const text = document.querySelector('[data-testid=import-progress]')?.textContent ?? '';
+        const phase = /Importing grid\.obj: (\w+)/.exec(text)?.[1] ?? (text.includes('added as a mesh') ? 'added' : null);
+        if (phase && window.phaseAt[phase] === undefined) window.phaseAt[phase] = performance.now();
+      }).observe(document.body, { subtree: true, childList: true, characterData: true });
+    });
+    if (process.env.E2E_PREVIEW_HIDDEN) await page.getByRole('tab', { name: 'JSON' }).click();
+    const obj = Buffer.from(gridObj(317)); // 200,978 triangles, 7.6 MB
+    const id = `sha256-${createHash('sha256').update(obj).digest('hex')}`;
+    const started = Date.now();
+    await page.getByTestId('import-file').setInputFiles({ name: 'grid.obj', mimeType: 'text/plain', buffer: obj });
+    const progress = page.getByTestId('import-progress');
+    await until(async () => (await progress.innerText().catch(() => '')).includes('grid.obj: 200,978 triangles added as a mesh.'), async () => `the import did not finish: ${await progress.innerText().catch(() => '(none)')}`, 60_000);
+    await page.waitForTimeout(1500); // the preview draws the mesh
+    const seconds = (Date.now() - started) / 1000;
+    const { phases, tasks } = await page.evaluate(() => ({ phases: window.phaseAt, tasks: window.longTasks }));
+    expect(phases.hashing !== undefined && phases.reading !== undefined && phases.uploading !== undefined, `progress not shown for every phase: ${JSON.stringify(phases)}`);
+    // the import's own work: from its first progress (after Playwright has handed the page the file) until the upload starts
+    const longest = (from, to) => Math.round(Math.max(0, ...tasks.filter((t) => t.start >= from && t.start < to).map((t) => t.duration)));
+    const reading = longest(phases.hashing, phases.uploading);
+    const adding = longest(phases.uploading, Infinity);
+    console.log(`        200,978-triangle OBJ (${(obj.length / 1e6).toFixed(1)} MB): imported in ${seconds.toFixed(1)} s; longest task while hashing and reading ${reading} ms, while adding and drawing it ${adding} ms`);
+    expect(reading < 200, `a long task of ${reading} ms while hashing and reading the OBJ`);
+    const head = await fetch(`${server.base}/api/assets/${id}`, { method: 'HEAD' });
+    expect(head.status === 200, `the server does not have the mesh (${head.status})`);
+    let scene = await sceneOf(page);
+    const mesh = scene.objects.at(-1);
+    expect(mesh.type === 'mesh' && mesh.asset === id && mesh.obj === undefined, `the mesh is not named by its id: ${JSON.stringify(mesh).slice(0, 200)}`);
+    await page.getByTestId('add-sphere').click(); // an edit after the mesh
+    const outline = page.getByRole('navigation', { name: 'Scene contents' });
+    await outline.getByRole('button', { name: /^Sphere/ }).waitFor();
+    await page.reload();
+    await page.getByTestId('top-view').waitFor();
+    await outline.getByRole('button', { name: /200,978 triangles/ }).waitFor({ timeout: 30_000 });
+    await outline.getByRole('button', { name: /^Sphere/ }).waitFor();
+    scene = await sceneOf(page);
+    expect(scene.objects.some((o) => o.asset === id), 'the mesh is gone after a reload');
+    expect(!(await page.getByRole('button', { name: 'Undo' }).isDisabled()), 'Undo is disabled after a reload');
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => (await outline.getByRole('button', { name: /^Sphere/ }).count()) === 0, 'undo after the reload did not take the sphere back');
+    expect(await page.getByTestId('autosave-notice').count() === 0, 'autosave says it failed');
+    await page.screenshot({ path: `${out}import-obj.png` });
+  });
+
+  await step('import: a glTF shows in the preview, and an image dropped with an object selected becomes its texture', async () => {
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByTestId('import-file').setInputFiles({ name: 'triangle.gltf', mimeType: 'model/gltf+json', buffer: Buffer.from(triangleGltf()) });
+    const outline = page.getByRole('navigation', { name: 'Scene contents' });
+    const alerts = async () => (await page.getByRole('alert').allInnerTexts()).join(' | ');
+    await until(async () => (await outline.getByRole('button', { name: /glTF model .*\(glTF\)/ }).count()) > 0 || (await alerts()) !== '', 'the glTF model does not appear', 20_000);
+    expect((await alerts()) === '', `importing the glTF: ${await alerts()}`);
+    const scene = await sceneOf(page);
+    const model = scene.objects.at(-1);
+    expect(model.type === 'gltf' && /^sha256-/.test(model.asset), `no gltf object: ${JSON.stringify(model)}`);
+    await page.screenshot({ path: `${out}import-gltf.png` });
+    // the red triangle stands on the floor in front of the camera: its middle shows red in the preview
+    const [red] = await previewColours(page, [await previewPixel(page, scene, [model.position[0] + 0.3, model.position[1] + 0.8, model.position[2]])]);
+    expect(red[0] > 120 && red[0] > 2 * red[2], `the glTF triangle is not drawn red in the preview: ${red} at ${JSON.stringify(await previewPixel(page, scene, [model.position[0] + 0.3, model.position[1] + 0.8, model.position[2]]))}, model ${JSON.stringify(model)}, camera ${JSON.stringify(scene.camera)}`);
+    await page.getByTestId('add-box').click();
+    const png = tinyPng([[255, 255, 255], [0, 0, 0], [0, 0, 0], [255, 255, 255]]);
+    await page.getByTestId('import-file').setInputFiles({ name: 'checks.png', mimeType: 'image/png', buffer: png });
+    const thumbnail = page.getByRole('img', { name: /^Texture sha256-/ });
+    await until(async () => (await thumbnail.count()) > 0 || (await alerts()) !== '', 'no texture thumbnail', 20_000);
+    expect((await alerts()) === '', `importing the PNG: ${await alerts()}`);
+    await until(() => thumbnail.evaluate((img) => img.complete && img.naturalWidth === 2), 'the texture thumbnail does not show');
+    const box = (await sceneOf(page)).objects.at(-1);
+    expect(box.material.texture?.type === 'image', `the box has no image texture: ${JSON.stringify(box.material)}`);
+    await page.screenshot({ path: `${out}import-gltf-texture.png` });
   });
 
   await step('resolution presets with an aspect lock, and the ? panel of shortcuts', async () => {

@@ -3,6 +3,7 @@ import userEvent from '@testing-library/user-event';
 import { beforeEach, describe, expect, it, vi } from 'vitest';
 import type { FetchFn } from './api/client';
 import { App } from './App';
+import { assetIdOf } from './model/assetHash';
 import { STARTER_SCENE } from './model/starterScene';
 import { gridObj } from './test/meshes';
 import { useSceneStore } from './store/sceneStore';
@@ -279,22 +280,34 @@ describe('App', () => {
     expect(screen.getByLabelText('Up y')).not.toHaveAttribute('aria-invalid');
   });
 
-  it('adds a mesh from an OBJ file: inline, on the floor, about 2 m across, selected, one undo step', async () => {
+  it('adds a mesh from an OBJ file: uploaded once, by its id, on the floor, about 2 m across, selected, one undo step', async () => {
     const user = userEvent.setup();
-    await renderApp();
+    const obj = gridObj(10, 0.5); // 0.5 m square: scaled by 4
+    const id = await assetIdOf(new Blob([obj]));
+    const uploaded: string[] = [];
+    const fetchFn = mockServer({
+      [`HEAD /api/assets/${id}`]: () => new Response(null, { status: 404 }),
+      'POST /api/assets': (init) => {
+        uploaded.push(new Headers(init?.headers).get('Content-Type')!);
+        return Response.json({ id, bytes: obj.length, mediaType: 'model/obj' }, { status: 201 });
+      },
+    });
+    await renderApp(fetchFn);
     expect(screen.getByRole('button', { name: 'Add mesh' })).toBeInTheDocument();
     await user.upload(screen.getByTestId('add-mesh'), new File(['v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4\n'], 'bad.obj'));
-    expect(await screen.findByRole('alert')).toHaveTextContent('Cannot add bad.obj: it is not a usable OBJ mesh (line 4: index 4 out of range (3 vertices so far))');
-    const obj = gridObj(10, 0.5); // 0.5 m square: scaled by 4
+    expect(await screen.findByRole('alert')).toHaveTextContent('Cannot import bad.obj: it is not a usable OBJ mesh (line 4: index 4 out of range (3 vertices so far))');
+    await user.click(screen.getByRole('button', { name: 'Dismiss' }));
     await user.upload(screen.getByTestId('add-mesh'), new File([obj], 'grid.obj'));
     const index = STARTER_SCENE.objects.length;
-    await waitFor(() => expect(store().scene.objects[index]).toEqual({ type: 'mesh', obj, position: expect.any(Array), scale: 4, rotation: [0, 0, 0], material: { type: 'plastic', color: '#4f8fd6' } }));
+    await waitFor(() => expect(store().scene.objects[index]).toEqual({ type: 'mesh', asset: id, position: expect.any(Array), scale: 4, rotation: [0, 0, 0], material: { type: 'plastic', color: '#4f8fd6' } }));
+    expect(uploaded).toEqual(['model/obj']);
+    expect(screen.getByTestId('import-progress')).toHaveTextContent('grid.obj: 200 triangles added as a mesh.');
     expect((store().scene.objects[index] as { position: number[] }).position[1]).toBe(0); // a flat grid lies on the floor
     expect(screen.queryByRole('alert')).toBeNull();
     expect(store().selection).toEqual({ kind: 'object', index });
     expect(store().past).toHaveLength(1);
     expect(screen.getByRole('heading', { name: `Mesh ${index + 1}` })).toBeInTheDocument();
-    expect(screen.getByTestId('mesh-source')).toHaveTextContent('inline OBJ, 200 triangles');
+    expect(screen.getByTestId('mesh-source')).toHaveTextContent(`uploaded OBJ ${id.slice(0, 15)}…, 200 triangles`);
     expect(within(screen.getByTestId('side-view')).getByTestId(`object-${index}`)).toHaveAttribute('data-selected', 'true');
     await user.click(screen.getByRole('button', { name: 'Undo' }));
     expect(store().scene).toEqual(STARTER_SCENE);
@@ -323,5 +336,22 @@ describe('App', () => {
     expect(screen.getByRole('alert')).toHaveTextContent("Cannot read the OBJ: meshes/missing.obj: Not Found: no mesh 'meshes/missing.obj' ships with this server");
     act(() => store().moveObject(0, [1, 2, 3]));
     expect(fetchFn.mock.calls.filter(([url]) => url.startsWith('/api/meshes'))).toHaveLength(2);
+  });
+
+  it('takes an image dropped on the stage as the selected object’s texture, and says when nothing is selected', async () => {
+    const png = new File([new Uint8Array([137, 80, 78, 71])], 'wood.png', { type: 'image/png' });
+    const id = await assetIdOf(png);
+    const fetchFn = mockServer({ [`HEAD /api/assets/${id}`]: () => new Response(null, { status: 200 }) });
+    await renderApp(fetchFn);
+    const drop = () => fireEvent.drop(screen.getByTestId('stage-drop'), { dataTransfer: { files: [png], types: ['Files'] } });
+    act(() => store().select(null));
+    drop();
+    expect(await screen.findByRole('alert')).toHaveTextContent('Cannot use wood.png as a texture: select the object whose material it should cover first');
+    act(() => store().select({ kind: 'object', index: 0 }));
+    drop();
+    await waitFor(() => expect(store().scene.objects[0].material?.texture).toEqual({ type: 'image', asset: id, scale: [1, 1] }));
+    // the server had the bytes: nothing was uploaded
+    expect(fetchFn.mock.calls.filter(([url, init]) => url === '/api/assets' && init?.method === 'POST')).toHaveLength(0);
+    expect(store().past).toHaveLength(1);
   });
 });

@@ -1,16 +1,21 @@
 import { lazy, Suspense, useCallback, useState } from 'react';
 import type { FetchFn } from './api/client';
+import { AutosaveNotice } from './components/AutosaveNotice';
 import { FieldErrorsProvider } from './components/fieldErrors';
+import { ImportProgress } from './components/ImportProgress';
 import { Inspector } from './components/Inspector';
 import { JsonTab } from './components/JsonTab';
 import { ProblemList } from './components/ProblemList';
 import { RenderPanel } from './render/RenderPanel';
 import { ShortcutsHelp } from './components/ShortcutsHelp';
 import { SignInDialog } from './components/SignInDialog';
+import { StageDropZone } from './components/StageDropZone';
 import { Toolbar } from './components/Toolbar';
 import { useEditorShortcuts } from './hooks/useEditorShortcuts';
-import { useMeshFiles } from './hooks/useMeshes';
+import { useAssetsOnServer, useMeshFiles } from './hooks/useMeshes';
 import { useSceneErrors } from './hooks/useSceneErrors';
+import { ImportContext } from './import/ImportContext';
+import { useImport } from './import/useImport';
 import { usePanels } from './hooks/usePanels';
 import type { Scene } from './model/types';
 import { useDraftErrors } from './store/draftErrors';
@@ -53,7 +58,9 @@ export function App({ fetchFn }: AppProps) {
   const [help, setHelp] = useState(false);
   const closeHelp = useCallback(() => setHelp(false), []);
   useEditorShortcuts(() => setHelp((shown) => !shown));
+  const importFiles = useImport(fetchFn, setMessage);
   useMeshFiles(fetchFn);
+  useAssetsOnServer(fetchFn);
 
   const tabButton = (id: StageTab, label: string) => (
     <button type="button" role="tab" id={`tab-${id}`} aria-selected={tab === id} aria-controls={`panel-${id}`} onClick={() => setTab(id)}>
@@ -70,53 +77,57 @@ export function App({ fetchFn }: AppProps) {
   const layout = `studio-main${panels.views ? '' : ' no-views'}${panels.inspector ? '' : ' no-inspector'}`;
   return (
     <FieldErrorsProvider errors={fieldErrors}>
-      <div className="studio">
-        <header>
-          <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} />
-        </header>
-        {help && <ShortcutsHelp onClose={closeHelp} />}
-        <SignInDialog />
-        {message && (
-          <div className="studio-message" role="alert">
-            <pre>{message}</pre>
-            <button type="button" className="small" onClick={() => setMessage(null)}>
-              Dismiss
-            </button>
-          </div>
-        )}
-        <main className={layout}>
-          <div className="studio-views" hidden={!panels.views}>
-            <TopView />
-            <SideView />
-          </div>
-          <div className="studio-centre">
-            <RenderPanel
-              key={documentId}
-              scene={scene}
-              onFieldErrors={onRenderErrors}
-              fetchFn={fetchFn}
-              tabs={tabs}
-              showingRender={tab === 'render'}
-              onRenderStarted={showRender}
-              unapplied={unapplied}
-            >
-              <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
-                <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
-                  <Preview3D shown={tab === 'preview'} onFieldErrors={onLiveErrors} />
-                </Suspense>
-              </div>
-              <div role="tabpanel" id="panel-json" aria-labelledby="tab-json" hidden={tab !== 'json'} className="tab-panel">
-                {tab === 'json' && <JsonTab />}
-              </div>
-            </RenderPanel>
-          </div>
-          <div className="studio-inspector" hidden={!panels.inspector}>
-            <h2 className="visually-hidden">Scene and selection</h2>
-            <ProblemList />
-            <Inspector />
-          </div>
-        </main>
-      </div>
+      <ImportContext.Provider value={importFiles}>
+        <div className="studio">
+          <header>
+            <Toolbar fetchFn={fetchFn} onMessage={setMessage} panels={panels} onPanels={setPanels} onHelp={() => setHelp(true)} onImport={(files) => void importFiles(files)} />
+          </header>
+          {help && <ShortcutsHelp onClose={closeHelp} />}
+          <SignInDialog />
+          <AutosaveNotice />
+          <ImportProgress />
+          {message && (
+            <div className="studio-message" role="alert">
+              <pre>{message}</pre>
+              <button type="button" className="small" onClick={() => setMessage(null)}>
+                Dismiss
+              </button>
+            </div>
+          )}
+          <main className={layout}>
+            <div className="studio-views" hidden={!panels.views}>
+              <TopView />
+              <SideView />
+            </div>
+            <StageDropZone className="studio-centre" onFiles={(files) => void importFiles(files)}>
+              <RenderPanel
+                key={documentId}
+                scene={scene}
+                onFieldErrors={onRenderErrors}
+                fetchFn={fetchFn}
+                tabs={tabs}
+                showingRender={tab === 'render'}
+                onRenderStarted={showRender}
+                unapplied={unapplied}
+              >
+                <div role="tabpanel" id="panel-preview" aria-labelledby="tab-preview" hidden={tab !== 'preview'} className="tab-panel">
+                  <Suspense fallback={<p className="hint">Loading the 3D preview…</p>}>
+                    <Preview3D shown={tab === 'preview'} onFieldErrors={onLiveErrors} />
+                  </Suspense>
+                </div>
+                <div role="tabpanel" id="panel-json" aria-labelledby="tab-json" hidden={tab !== 'json'} className="tab-panel">
+                  {tab === 'json' && <JsonTab />}
+                </div>
+              </RenderPanel>
+            </StageDropZone>
+            <div className="studio-inspector" hidden={!panels.inspector}>
+              <h2 className="visually-hidden">Scene and selection</h2>
+              <ProblemList />
+              <Inspector />
+            </div>
+          </main>
+        </div>
+      </ImportContext.Provider>
     </FieldErrorsProvider>
   );
 }

@@ -112,8 +112,8 @@ export async function renderScene(
   };
 }
 
-/** Sends a request; resolves only with a 2xx response, otherwise rejects with an ApiError. */
-async function send(fetchFn: FetchFn, url: string, init: RequestInit): Promise<Response> {
+/** Sends a request; resolves only with a 2xx response, otherwise rejects with an ApiError (the asset client uses it too). */
+export async function send(fetchFn: FetchFn, url: string, init: RequestInit): Promise<Response> {
   let response: Response;
   try {
     response = await fetchFn(url, init);

@@ -1,3 +1,4 @@
+import { InspectorTexture } from './InspectorTexture';
 import { resolveMaterial } from '../model/defaults';
 import { MATERIAL_FIELDS, MATERIAL_TYPES, type Material, type MaterialType } from '../model/types';
 import { ColorField } from './fields/ColorField';
@@ -22,7 +23,7 @@ export interface InspectorMaterialProps {
 
 /** The material picker and the overrides of the chosen kind (showing defaults where unset). */
 export function InspectorMaterial({ path, material, onTypeChange, onChange, onPreview, onPreviewEnd }: InspectorMaterialProps) {
-  const resolved = resolveMaterial(material) as Record<string, number | string>;
+  const resolved = resolveMaterial(material) as unknown as Record<string, number | string>;
   const current: Material = material ?? { type: resolved.type as MaterialType };
   const kind = current.type;
   const set = (field: string, value: unknown) => ({ ...current, [field]: value }) as Material;
@@ -47,7 +48,7 @@ export function InspectorMaterial({ path, material, onTypeChange, onChange, onPr
         onPreviewEnd={onPreviewEnd}
       />
       {MATERIAL_FIELDS[kind]
-        .filter((f) => f !== 'type' && f !== 'color')
+        .filter((f) => f !== 'type' && f !== 'color' && f !== 'texture')
         .map((field) => {
           const spec = OVERRIDE_FIELDS[field];
           return (
@@ -64,6 +65,7 @@ export function InspectorMaterial({ path, material, onTypeChange, onChange, onPr
             />
           );
         })}
+      <InspectorTexture path={path} material={current} onChange={onChange} />
     </fieldset>
   );
 }

@@ -27,13 +27,14 @@ export function InspectorMesh({ index, mesh }: InspectorMeshProps) {
   const state = useMeshLookup()(mesh);
   const [loadError, setLoadError] = useState<string | null>(null);
   const path = `objects[${index}]`;
-  const serverErrors = [useFieldError(path), useFieldError(`${path}.obj`), useFieldError(`${path}.file`)];
+  const serverErrors = [useFieldError(path), useFieldError(`${path}.obj`), useFieldError(`${path}.file`), useFieldError(`${path}.asset`)];
   const serverError = serverErrors.find((e) => e !== undefined);
   const vector = (field: string, label: string, value: Vec3, hint: string, step: number) => (
     <VectorField label={label} path={`${path}.${field}`} value={value} hint={hint} step={step} onCommit={(v) => setField(index, field, v)} />
   );
-  const source = mesh.obj !== undefined ? 'inline OBJ' : `file ${mesh.file ?? '(none)'}`;
-  const count = state.status === 'ready' ? triangleCountLabel(state.mesh.triangleCount) : state.status === 'loading' ? 'loading…' : null;
+  const source = mesh.obj !== undefined ? 'inline OBJ' : mesh.asset !== undefined ? `uploaded OBJ ${mesh.asset.slice(0, 15)}…` : `file ${mesh.file ?? '(none)'}`;
+  const reading = state.status === 'loading' && state.progress ? `reading… ${Math.round(100 * state.progress)}%` : 'loading…';
+  const count = state.status === 'ready' ? triangleCountLabel(state.mesh.triangleCount) : state.status === 'loading' ? reading : null;
   return (
     <>
       {vector('position', 'Position', mesh.position, 'Where the OBJ’s origin goes (metres)', 0.1)}

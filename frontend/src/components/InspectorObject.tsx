@@ -4,6 +4,7 @@ import type { Material, Vec3 } from '../model/types';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { InspectorMaterial } from './InspectorMaterial';
 import { InspectorMesh } from './InspectorMesh';
+import { InspectorModel } from './InspectorModel';
 import { NumberField } from './fields/NumberField';
 import { VectorField } from './fields/VectorField';
 import { NameField } from './fields/NameField';
@@ -68,20 +69,21 @@ export function InspectorObject({ index }: InspectorObjectProps) {
         </>
       )}
       {r.type === 'mesh' && <InspectorMesh index={index} mesh={r} />}
+      {r.type === 'gltf' && <InspectorModel index={index} model={r} />}
       {r.type === 'plane' && (
         <>
           {vector('point', 'Point', r.point, 'Any point on the plane (metres)')}
           {vector('normal', 'Normal', r.normal, 'The direction the plane faces (any non-zero length)')}
         </>
       )}
-      <InspectorMaterial
+      {r.type !== 'gltf' && <InspectorMaterial
         path={`${path}.material`}
         material={object.material}
         onTypeChange={(t) => setMaterialType(index, t)}
         onChange={(m) => setMaterial(index, m)}
         onPreview={previewMaterial}
         onPreviewEnd={cancelPreview}
-      />
+      />}
     </section>
   );
 }

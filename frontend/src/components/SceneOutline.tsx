@@ -77,7 +77,7 @@ export function SceneOutline() {
       {scene.objects.length === 0 && <p className="hint">No objects yet: use Add sphere, box, plane or mesh.</p>}
       <ul>
         {scene.objects.map((o, i) =>
-          item(idOf(o) ?? `o${i}`, o.type === 'mesh' ? meshName(labelOf(o, i), meshes(o)) : labelOf(o, i), { kind: 'object', index: i }, MATERIAL_LABELS[resolveMaterial(o.material).type], o.name),
+          item(idOf(o) ?? `o${i}`, o.type === 'mesh' || o.type === 'gltf' ? meshName(labelOf(o, i), meshes(o), o.type === 'gltf' ? 'glTF' : 'OBJ') : labelOf(o, i), { kind: 'object', index: i }, o.type === 'gltf' ? 'own materials' : MATERIAL_LABELS[resolveMaterial(o.material).type], o.name),
         )}
       </ul>
       <h3>Lights</h3>

@@ -1,12 +1,13 @@
 import { useCallback } from 'react';
 import type { ApiError, FetchFn } from '../api/client';
 import { useSceneExamples } from '../hooks/useSceneExamples';
-import { sceneFileName, sceneFileText } from '../model/files';
-import type { ObjectType } from '../model/types';
+import type { AddableType } from '../model/types';
 import { describeErrors, validateScene } from '../model/validate';
 import type { Panels } from '../layout';
 import { useSceneStore } from '../store/sceneStore';
-import { AddMeshButton } from './AddMeshButton';
+import { IMPORT_ACCEPT } from '../model/importFiles';
+import { FilePickButton } from './FilePickButton';
+import { downloadScene } from './downloadScene';
 import { ExamplesMenu } from './ExamplesMenu';
 import { OpenSceneButton } from './OpenSceneButton';
 import { SignInStatus } from './SignInStatus';
@@ -21,14 +22,16 @@ export interface ToolbarProps {
   /** Which side panels are shown, and the way to show or hide them; no toggles without it. */
   panels?: Panels;
   onPanels?: (panels: Panels) => void;
+  /** Imports files (+ Import, + Mesh): see `import/useImport.ts`; no import buttons without it. */
+  onImport?: (files: File[]) => void;
   /** Shows the keyboard shortcuts (the `?` panel); no button without it. */
   onHelp?: () => void;
 }
 
-const ADDABLE: ObjectType[] = ['sphere', 'box', 'plane'];
+const ADDABLE: AddableType[] = ['sphere', 'box', 'plane'];
 
 /** The top bar: file (New, Open, Save, Examples), edit (Undo, Redo, Duplicate, Delete), add, snapping. */
-export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: ToolbarProps) {
+export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp, onImport }: ToolbarProps) {
   const s = useSceneStore.getState();
   const canUndo = useSceneStore((st) => st.past.length > 0);
   const canRedo = useSceneStore((st) => st.future.length > 0);
@@ -49,15 +52,7 @@ export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: Toolba
     if (result.ok) s.loadScene(result.scene);
     else onMessage(`The example ${name} is not a scene this editor can read.\n${describeErrors(result.errors)}`);
   };
-  const save = () => {
-    const scene = useSceneStore.getState().scene;
-    const url = URL.createObjectURL(new Blob([sceneFileText(scene)], { type: 'application/json' }));
-    const link = document.createElement('a');
-    link.href = url;
-    link.download = sceneFileName(scene);
-    link.click();
-    setTimeout(() => URL.revokeObjectURL(url), 1000);
-  };
+  const save = () => downloadScene(useSceneStore.getState().scene);
 
   return (
     <div className="toolbar" role="toolbar" aria-label="Scene tools">
@@ -92,7 +87,29 @@ export function Toolbar({ fetchFn, onMessage, panels, onPanels, onHelp }: Toolba
             + {OBJECT_LABELS[kind]}
           </button>
         ))}
-        <AddMeshButton onMessage={onMessage} />
+        {onImport && (
+          <>
+            <FilePickButton
+              ariaLabel="Add mesh"
+              title="Add a triangle mesh from a Wavefront OBJ file, uploaded once and named by its id, on the floor in front of the camera, scaled to about 2 m"
+              accept=".obj"
+              testId="add-mesh"
+              onFiles={onImport}
+            >
+              + Mesh
+            </FilePickButton>
+            <FilePickButton
+              ariaLabel="Import files"
+              title="Import .obj and .glb/.gltf models (added in front of the camera) and .png/.jpg images (the selected object's texture); or drop them on the stage"
+              accept={IMPORT_ACCEPT}
+              multiple
+              testId="import-file"
+              onFiles={onImport}
+            >
+              + Import
+            </FilePickButton>
+          </>
+        )}
         <button type="button" data-testid="add-light" aria-label="Add light" title="Add a white point light (give it a radius for soft shadows)" onClick={s.addLight}>
           + Light
         </button>

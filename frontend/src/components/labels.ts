@@ -3,13 +3,14 @@ import type { MeshState } from '../model/meshCache';
 import { idNumber, idOf } from '../model/identity';
 import type { Light, LightType, MaterialType, ObjectType, Scene, SceneObject } from '../model/types';
 
-export const OBJECT_LABELS: Record<ObjectType, string> = { sphere: 'Sphere', box: 'Box', plane: 'Plane', mesh: 'Mesh' };
+export const OBJECT_LABELS: Record<ObjectType, string> = { sphere: 'Sphere', box: 'Box', plane: 'Plane', mesh: 'Mesh', gltf: 'glTF model' };
 
 export const OBJECT_HINTS: Record<ObjectType, string> = {
   sphere: 'A sphere: centre and radius',
   box: 'A box: centre, full edge lengths and rotation in degrees (x, y, z applied in order XYZ)',
   plane: 'An infinite plane through a point, facing its normal (e.g. a floor)',
   mesh: 'A triangle mesh from a Wavefront OBJ file: position, uniform scale and rotation in degrees (x, y, z applied in order XYZ)',
+  gltf: 'A glTF 2.0 model with its own materials: position, uniform scale and rotation in degrees (x, y, z applied in order XYZ)',
 };
 
 export const MATERIAL_LABELS: Record<MaterialType, string> = {
@@ -81,7 +82,10 @@ export function triangleCountLabel(count: number): string {
 }
 
 /** A mesh's name with what is known of its triangles: "Mesh 3 (4,800 triangles)", "Mesh 3 (loading…)". */
-export function meshName(label: string, state: MeshState): string {
-  const detail = state.status === 'ready' ? triangleCountLabel(state.mesh.triangleCount) : state.status === 'loading' ? 'loading…' : 'OBJ error';
+export function meshName(label: string, state: MeshState, format = 'OBJ'): string {
+  const loading = state.status === 'loading' && state.progress ? `reading… ${Math.round(100 * state.progress)}%` : 'loading…';
+  // a glTF model's state holds its bounding box, not its triangles
+  const ready = state.status === 'ready' && format === 'glTF' ? 'glTF' : state.status === 'ready' ? triangleCountLabel(state.mesh.triangleCount) : '';
+  const detail = state.status === 'ready' ? ready : state.status === 'loading' ? loading : `${format} error`;
   return `${label} (${detail})`;
 }

@@ -18,7 +18,7 @@ export function scenePoints(scene: Scene, meshes: MeshLookup = NO_MESHES): Vec3[
   for (const l of r.lights) points.push(...(l.type === 'area' ? [...areaLightCorners(l.position, l.size, l.lookAt), l.lookAt] : [l.position]));
   for (const o of r.objects) {
     if (o.type === 'plane') points.push(o.point);
-    else if (o.type === 'mesh') {
+    else if (o.type === 'mesh' || o.type === 'gltf') {
       const state = meshes(o);
       if (state.status !== 'ready') points.push(o.position);
       else {

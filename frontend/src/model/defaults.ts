@@ -4,6 +4,7 @@
  * in for display.
  */
 import type {
+  AddableType,
   Material,
   MaterialOf,
   MeshObject,
@@ -68,6 +69,7 @@ export const OBJECT_DEFAULTS: { [T in ObjectType]: Required<Omit<ObjectOf<T>, 'm
   box: { type: 'box', center: [0, 0.5, 0], size: [1, 1, 1], rotation: [0, 0, 0] },
   plane: { type: 'plane', point: [0, 0, 0], normal: [0, 1, 0] },
   mesh: { type: 'mesh', position: [0, 0, 0], scale: 1, rotation: [0, 0, 0] },
+  gltf: { type: 'gltf', position: [0, 0, 0], scale: 1, rotation: [0, 0, 0] },
 };
 
 /** The OBJ of a mesh added without a file: a regular octahedron with its corners 1 m from its centre. */
@@ -85,7 +87,7 @@ const GREY = '#cccccc';
 const WHITE = '#ffffff';
 
 /** Each material kind's defaults (engine MaterialDefaults). */
-export const MATERIAL_DEFAULTS: { [T in MaterialType]: Required<MaterialOf<T>> } = {
+export const MATERIAL_DEFAULTS: { [T in MaterialType]: Required<Omit<MaterialOf<T>, 'texture'>> } = {
   flat: { type: 'flat', color: GREY },
   chalk: { type: 'chalk', color: GREY, diffuse: 0.9 },
   plastic: { type: 'plastic', color: GREY, diffuse: 0.8, specular: 0.5, shininess: 60 },
@@ -143,11 +145,11 @@ export function imageAspect(scene: Scene): number {
 }
 
 /** A new object of a kind as the toolbar adds it: its defaults written out (a mesh: the sample octahedron). */
-export function newObject(kind: ObjectType): SceneObject {
+export function newObject(kind: AddableType): SceneObject {
   if (kind === 'mesh') return newMesh(SAMPLE_MESH_OBJ, 1);
   const object = cloneVectors({ ...OBJECT_DEFAULTS[kind] }) as SceneObject;
   const material: Material = kind === 'plane' ? { type: 'chalk', color: '#c8c0b0' } : { type: 'plastic', color: '#4f8fd6' };
-  return { ...object, material };
+  return { ...object, material } as SceneObject;
 }
 
 /** A new mesh of inline OBJ text at the origin, with the given uniform scale. */

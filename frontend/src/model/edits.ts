@@ -5,7 +5,7 @@
  */
 import { newAreaLight, newLight, newMesh, newObject, resolveLight, resolveObject, resolveScene, SAMPLE_MESH_OBJ, sceneLights, SCENE_DEFAULTS } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
-import { meshBounds, parseObj } from './obj';
+import { meshBounds, parseObj, type Bounds } from './obj';
 import { floorHeight, placeOnFloor } from './placement';
 import { roundNumber } from './rounding';
 import { objectAnchor } from './projection';
@@ -17,10 +17,12 @@ import {
   type ImageSettings,
   type Material,
   type MaterialType,
+  type AddableType,
   type Light,
   type LightOf,
   type LightType,
   type ObjectType,
+  type PlacedModel,
   type RenderSettings,
   type ResolvedLightOf,
   type Scene,
@@ -37,7 +39,7 @@ export const DUPLICATE_OFFSET: Vec3 = [0.5, 0, 0.5];
  * clear of the others and of the camera target (see {@link placeOnFloor}); a plane is the floor
  * itself and stays where its defaults put it.
  */
-export function addObject(scene: Scene, kind: ObjectType, meshes: MeshLookup = NO_MESHES): Scene {
+export function addObject(scene: Scene, kind: AddableType, meshes: MeshLookup = NO_MESHES): Scene {
   if (kind === 'mesh') return addMesh(scene, SAMPLE_MESH_OBJ, 1, meshes);
   const object = newObject(kind);
   if (object.type === 'sphere') object.center = placeOnFloor(scene, object.radius!, object.radius!, meshes);
@@ -65,11 +67,31 @@ export function addMesh(scene: Scene, obj: string, scale: number, meshes: MeshLo
   return { ...scene, objects: [...scene.objects, mesh] };
 }
 
-/** Gives a mesh new inline OBJ text, dropping its `file` (a mesh has exactly one of the two). */
+/**
+ * Adds an imported mesh or glTF model standing on the floor in front of the camera, clear of the
+ * others: `bounds` is its box in its own coordinates (unscaled); without it, its origin stands
+ * on the floor as if it were a 1 m thing.
+ */
+export function addModel(scene: Scene, model: PlacedModel, bounds?: Bounds, meshes: MeshLookup = NO_MESHES): Scene {
+  const factor = model.scale ?? 1;
+  const placed: PlacedModel = { ...model, position: [0, 0, 0], scale: factor, rotation: [0, 0, 0] };
+  if (!bounds) {
+    placed.position = placeOnFloor(scene, 0.5, 0, meshes);
+    return { ...scene, objects: [...scene.objects, placed] };
+  }
+  const min = bounds.min.map((v) => v * factor);
+  const max = bounds.max.map((v) => v * factor);
+  const half: Vec3 = [(max[0] - min[0]) / 2, (max[1] - min[1]) / 2, (max[2] - min[2]) / 2];
+  const centre = placeOnFloor(scene, Math.hypot(half[0], half[2]), half[1], meshes);
+  placed.position = [centre[0] - (min[0] + max[0]) / 2, centre[1] - half[1] - min[1], centre[2] - (min[2] + max[2]) / 2].map(roundNumber) as Vec3;
+  return { ...scene, objects: [...scene.objects, placed] };
+}
+
+/** Gives a mesh new inline OBJ text, dropping its `file` or `asset` (a mesh has exactly one source). */
 export function setMeshObj(scene: Scene, index: number, obj: string): Scene {
   const object = scene.objects[index];
   if (object?.type !== 'mesh') return scene;
-  const { file: _file, ...rest } = object;
+  const { file: _file, asset: _asset, ...rest } = object;
   const objects = scene.objects.map((o, i) => (i === index ? { ...rest, obj } : o));
   return { ...scene, objects };
 }
@@ -164,7 +186,7 @@ export function replaceObject(scene: Scene, index: number, object: SceneObject):
 
 /** The field that says where an object is: a sphere's or box's centre, a plane's point, a mesh's position. */
 export function anchorField(type: ObjectType): 'center' | 'point' | 'position' {
-  return type === 'plane' ? 'point' : type === 'mesh' ? 'position' : 'center';
+  return type === 'plane' ? 'point' : type === 'mesh' || type === 'gltf' ? 'position' : 'center';
 }
 
 /** Moves an object: a sphere's or box's centre, a plane's point, a mesh's position (nothing else changes). */

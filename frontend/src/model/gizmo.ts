@@ -32,7 +32,7 @@ export function gizmoModes(object: SceneObject): GizmoMode[] {
 /** Where the handles start for an object. */
 export function gizmoPose(object: SceneObject): GizmoPose {
   const r = resolveObject(object);
-  const rotation: Vec3 = r.type === 'box' || r.type === 'mesh' ? [...r.rotation] : [0, 0, 0];
+  const rotation: Vec3 = r.type === 'box' || r.type === 'mesh' || r.type === 'gltf' ? [...r.rotation] : [0, 0, 0];
   return { position: objectAnchor(r), rotation, scale: [1, 1, 1] };
 }
 
@@ -76,6 +76,7 @@ export function applyGizmo(object: SceneObject, pose: GizmoPose, step = 0.001): 
       next.size = [0, 1, 2].map((k) => positive(r.size[k] * clampFactor(pose.scale[k]))) as Vec3;
       break;
     case 'mesh':
+    case 'gltf':
       next.rotation = roundVec(pose.rotation, 0.1);
       next.scale = Number((r.scale * clampFactor(uniformFactor(pose.scale))).toPrecision(4));
       break;
@@ -88,10 +89,10 @@ export function applyGizmo(object: SceneObject, pose: GizmoPose, step = 0.001): 
   if (pose.scale.every((s) => s === 1)) {
     if (r.type === 'sphere') next.radius = object.type === 'sphere' ? object.radius : undefined;
     if (r.type === 'box') next.size = (object as { size?: Vec3 }).size;
-    if (r.type === 'mesh') next.scale = (object as { scale?: number }).scale;
+    if (r.type === 'mesh' || r.type === 'gltf') next.scale = (object as { scale?: number }).scale;
   }
   if (pose.rotation.every((a, k) => a === before.rotation[k])) {
-    if (r.type === 'box' || r.type === 'mesh') next.rotation = (object as { rotation?: Vec3 }).rotation;
+    if (r.type === 'box' || r.type === 'mesh' || r.type === 'gltf') next.rotation = (object as { rotation?: Vec3 }).rotation;
     if (r.type === 'plane') next.normal = (object as { normal?: Vec3 }).normal;
   }
   if (pose.position.every((p, k) => p === before.position[k])) next[anchorField(object.type)] = (object as unknown as Record<string, unknown>)[anchorField(object.type)];
@@ -122,7 +123,8 @@ export function objectBall(object: SceneObject, meshes: MeshLookup = NO_MESHES):
       return { center: r.center, radius: Math.hypot(...r.size) / 2 };
     case 'plane':
       return { center: r.point, radius: 2 };
-    case 'mesh': {
+    case 'mesh':
+    case 'gltf': {
       const state = meshes(r as never);
       if (state.status !== 'ready') return { center: r.position, radius: 1 };
       const { min, max } = meshBounds(r, state.mesh);

@@ -1,6 +1,7 @@
 import { describe, expect, it, vi } from 'vitest';
 import { fetchMeshFile, type FetchFn } from '../api/client';
-import { TETRAHEDRON_OBJ } from '../test/meshes';
+import { gridObj, TETRAHEDRON_OBJ } from '../test/meshes';
+import { boxMesh, meshBounds, parseObj } from './obj';
 import { MeshCache, type MeshState } from './meshCache';
 import type { MeshObject } from './types';
 
@@ -13,7 +14,10 @@ describe('MeshCache', () => {
     const first = ready(cache.get(mesh));
     expect(first?.triangleCount).toBe(4);
     // A drag step or a material change keeps the text: the same parse comes back.
-    for (let i = 0; i < 50; i++) expect(ready(cache.get({ ...mesh, position: [i, 0, 0], scale: 1 + i }))).toBe(first);
+    for (let i = 0; i < 50; i++) {
+      const moved: MeshObject = { ...mesh, position: [i, 0, 0], scale: 1 + i };
+      expect(ready(cache.get(moved))).toBe(first);
+    }
     // An equal text that is another string (after a JSON round trip) too.
     const copy = JSON.parse(JSON.stringify(mesh)) as MeshObject;
     expect(ready(cache.get(copy))).toBe(first);
@@ -34,7 +38,7 @@ describe('MeshCache', () => {
     const cache = new MeshCache();
     expect(cache.get({ type: 'mesh', obj: 'v 0 0 0\nf 1 2 3\n' })).toEqual({ status: 'error', message: 'line 2: index 2 out of range (1 vertex so far)' });
     expect(cache.get({ type: 'mesh' })).toMatchObject({ status: 'error', message: expect.stringContaining('needs') });
-    expect(cache.get({ type: 'mesh', obj: '', file: 'a.obj' })).toMatchObject({ status: 'error', message: expect.stringContaining('not both') });
+    expect(cache.get({ type: 'mesh', obj: '', file: 'a.obj' })).toMatchObject({ status: 'error', message: expect.stringContaining('not more') });
   });
 
   it('loads each file once, tells subscribers when it arrives, and keeps it', async () => {
@@ -80,5 +84,37 @@ describe('MeshCache', () => {
     await Promise.resolve();
     await Promise.resolve();
     expect(cache.get({ type: 'mesh', file: 'late.obj' })).toEqual({ status: 'loading' });
+  });
+
+  it('reads an asset mesh once per id, in slices with its progress, and keeps what an import read', async () => {
+    const cache = new MeshCache();
+    const id = `sha256-${'e'.repeat(64)}`;
+    const load = vi.fn(async () => gridObj(60));
+    const seen: MeshState[] = [];
+    cache.subscribe(() => seen.push(cache.get({ type: 'mesh', asset: id })));
+    expect(cache.get({ type: 'mesh', asset: id })).toEqual({ status: 'loading' });
+    cache.ensureAsset(id, load);
+    cache.ensureAsset(id, load);
+    await vi.waitFor(() => expect(cache.get({ type: 'mesh', asset: id }).status).toBe('ready'));
+    expect(load).toHaveBeenCalledTimes(1);
+    expect(ready(cache.get({ type: 'mesh', asset: id }))?.triangleCount).toBe(7200);
+    expect(seen.at(-1)?.status).toBe('ready');
+    const imported = parseObj(TETRAHEDRON_OBJ);
+    cache.putAsset('sha256-other', imported);
+    expect(ready(cache.get({ type: 'mesh', asset: 'sha256-other' }))).toBe(imported);
+  });
+
+  it('says why an asset cannot be had, and holds a glTF model’s box once the preview has read it', async () => {
+    const cache = new MeshCache();
+    cache.ensureAsset('sha256-gone', async () => {
+      throw new Error('Not Found: no asset');
+    });
+    await vi.waitFor(() => expect(cache.get({ type: 'mesh', asset: 'sha256-gone' })).toEqual({ status: 'error', message: 'sha256-gone…: Not Found: no asset' }));
+    expect(cache.get({ type: 'gltf', asset: 'sha256-m' })).toEqual({ status: 'loading' });
+    expect(cache.hasModel('sha256-m')).toBe(false);
+    const box = boxMesh({ min: [-1, 0, -1], max: [1, 2, 1] });
+    cache.setModel('sha256-m', { status: 'ready', mesh: box });
+    expect(ready(cache.get({ type: 'gltf', asset: 'sha256-m' }))).toBe(box);
+    expect(meshBounds({ position: [0, 1, 0], scale: 2 }, box)).toEqual({ min: [-2, 1, -2], max: [2, 5, 2] });
   });
 });

@@ -44,51 +44,116 @@ const WHITESPACE = /\s+/;
 
 /** Reads OBJ text; throws an {@link ObjError} naming the line of the first problem. */
 export function parseObj(text: string): ParsedObj {
-  const positions: number[] = [];
-  const normals: number[] = [];
-  const cornerPositions: number[] = [];
-  const cornerNormals: number[] = [];
-  let everyCornerHasNormal = true;
-  let line = 0;
-  let start = 0;
-  while (start <= text.length) {
-    let end = text.indexOf('\n', start);
-    if (end < 0) end = text.length;
-    line++;
-    const raw = text.slice(start, end);
-    const hash = raw.indexOf('#');
-    const content = (hash >= 0 ? raw.slice(0, hash) : raw).trim();
-    start = end + 1;
-    if (content === '') continue;
-    const tokens = content.split(WHITESPACE);
-    const keyword = tokens[0];
-    if (keyword === 'v') {
-      for (let k = 1; k <= 3; k++) positions.push(coordinate(tokens[k], 'vertex', line));
-    } else if (keyword === 'vn') {
-      const n = [1, 2, 3].map((k) => coordinate(tokens[k], 'normal', line));
-      if (n[0] === 0 && n[1] === 0 && n[2] === 0) throw new ObjError(line, 'normal has zero length');
-      normals.push(n[0], n[1], n[2]);
-    } else if (keyword === 'f') {
-      const corners = tokens.length - 1;
-      if (corners < 3) throw new ObjError(line, `face has ${corners} ${corners === 1 ? 'vertex' : 'vertices'}, needs at least 3`);
-      const ps: number[] = [];
-      const ns: number[] = [];
-      for (let k = 1; k <= corners; k++) {
-        const parts = tokens[k].split('/');
-        if (parts.length > 3) throw new ObjError(line, `'${tokens[k]}' is not a valid face corner`);
-        ps.push(resolve(index(parts[0], tokens[k], line), positions.length / 3, 'vertex', line));
-        if (parts[1]) index(parts[1], tokens[k], line); // texture index: checked for form, unused
-        const n = parts[2] === undefined ? -1 : resolve(index(parts[2], tokens[k], line), normals.length / 3, 'normal', line);
-        if (n < 0) everyCornerHasNormal = false;
-        ns.push(n);
-      }
-      for (let k = 1; k + 1 < corners; k++) {
-        cornerPositions.push(ps[0], ps[k], ps[k + 1]);
-        cornerNormals.push(ns[0], ns[k], ns[k + 1]);
+  const reader = new ObjReader(text);
+  while (!reader.done) reader.read(Infinity);
+  return reader.finish();
+}
+
+/** How {@link parseObjInChunks} shares the thread: a clock, a pause, and how often to look at the clock. */
+export interface ChunkOptions {
+  /** Milliseconds of work before the reader pauses (default 25: far below a 200 ms long task). */
+  budgetMs?: number;
+  /** Lines read between two looks at the clock (default 2,000). */
+  linesPerCheck?: number;
+  /** The clock (default `performance.now`). */
+  now?: () => number;
+  /** Gives the thread back for a moment (default: a macrotask, so input and painting happen). */
+  pause?: () => Promise<void>;
+  /** Called after each slice with the fraction of the text read, 0..1, rising; 1 once at the end. */
+  onProgress?: (fraction: number) => void;
+  /** Stops the reading: the promise rejects with the signal's reason. */
+  signal?: AbortSignal;
+}
+
+const macrotask = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
+
+/**
+ * Reads OBJ text as {@link parseObj} does, in slices of about `budgetMs` each with a pause between
+ * them, so a 200,000-triangle file never holds the page for long, reporting the fraction read.
+ */
+export async function parseObjInChunks(text: string, options: ChunkOptions = {}): Promise<ParsedObj> {
+  const { budgetMs = 25, linesPerCheck = 2000, now = () => performance.now(), pause = macrotask, onProgress, signal } = options;
+  const reader = new ObjReader(text);
+  while (!reader.done) {
+    signal?.throwIfAborted();
+    const started = now();
+    do reader.read(linesPerCheck);
+    while (!reader.done && now() - started < budgetMs);
+    onProgress?.(reader.done ? 1 : reader.fraction);
+    if (!reader.done) await pause();
+  }
+  signal?.throwIfAborted();
+  return reader.finish();
+}
+
+/** The OBJ statements read so far; {@link read} takes the next lines, {@link finish} builds the mesh. */
+class ObjReader {
+  private readonly positions: number[] = [];
+  private readonly normals: number[] = [];
+  private readonly cornerPositions: number[] = [];
+  private readonly cornerNormals: number[] = [];
+  private everyCornerHasNormal = true;
+  private line = 0;
+  private start = 0;
+
+  constructor(private readonly text: string) {}
+
+  /** True once every line has been read. */
+  get done(): boolean {
+    return this.start > this.text.length;
+  }
+
+  /** The fraction of the text's characters read. */
+  get fraction(): number {
+    return this.text.length === 0 ? 1 : Math.min(1, this.start / this.text.length);
+  }
+
+  /** Reads up to `maxLines` more lines; throws an {@link ObjError} at the first bad one. */
+  read(maxLines: number): void {
+    const { text, positions, normals, cornerPositions, cornerNormals } = this;
+    for (let n = 0; n < maxLines && this.start <= text.length; n++) {
+      let end = text.indexOf('\n', this.start);
+      if (end < 0) end = text.length;
+      const line = ++this.line;
+      const raw = text.slice(this.start, end);
+      const hash = raw.indexOf('#');
+      const content = (hash >= 0 ? raw.slice(0, hash) : raw).trim();
+      this.start = end + 1;
+      if (content === '') continue;
+      const tokens = content.split(WHITESPACE);
+      const keyword = tokens[0];
+      if (keyword === 'v') {
+        for (let k = 1; k <= 3; k++) positions.push(coordinate(tokens[k], 'vertex', line));
+      } else if (keyword === 'vn') {
+        const n = [1, 2, 3].map((k) => coordinate(tokens[k], 'normal', line));
+        if (n[0] === 0 && n[1] === 0 && n[2] === 0) throw new ObjError(line, 'normal has zero length');
+        normals.push(n[0], n[1], n[2]);
+      } else if (keyword === 'f') {
+        const corners = tokens.length - 1;
+        if (corners < 3) throw new ObjError(line, `face has ${corners} ${corners === 1 ? 'vertex' : 'vertices'}, needs at least 3`);
+        const ps: number[] = [];
+        const ns: number[] = [];
+        for (let k = 1; k <= corners; k++) {
+          const parts = tokens[k].split('/');
+          if (parts.length > 3) throw new ObjError(line, `'${tokens[k]}' is not a valid face corner`);
+          ps.push(resolve(index(parts[0], tokens[k], line), positions.length / 3, 'vertex', line));
+          if (parts[1]) index(parts[1], tokens[k], line); // texture index: checked for form, unused
+          const m = parts[2] === undefined ? -1 : resolve(index(parts[2], tokens[k], line), normals.length / 3, 'normal', line);
+          if (m < 0) this.everyCornerHasNormal = false;
+          ns.push(m);
+        }
+        for (let k = 1; k + 1 < corners; k++) {
+          cornerPositions.push(ps[0], ps[k], ps[k + 1]);
+          cornerNormals.push(ns[0], ns[k], ns[k + 1]);
+        }
       }
     }
   }
-  return result(positions, normals, cornerPositions, cornerNormals, everyCornerHasNormal);
+
+  /** The mesh of everything read. */
+  finish(): ParsedObj {
+    return result(this.positions, this.normals, this.cornerPositions, this.cornerNormals, this.everyCornerHasNormal);
+  }
 }
 
 function coordinate(token: string | undefined, what: string, line: number): number {
@@ -194,4 +259,18 @@ export function scaleToFit(parsed: ParsedObj, size = 2): number {
   const largest = Math.max(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
   if (!(largest > 0) || !Number.isFinite(largest)) return 1;
   return Number((size / largest).toPrecision(3));
+}
+
+/** A box as a mesh of 12 triangles (a glTF model's bounds, for the views, picking and placement). */
+export function boxMesh({ min, max }: Bounds): ParsedObj {
+  const positions = new Float32Array(24);
+  for (let i = 0; i < 8; i++) {
+    positions[3 * i] = i & 1 ? max[0] : min[0];
+    positions[3 * i + 1] = i & 2 ? max[1] : min[1];
+    positions[3 * i + 2] = i & 4 ? max[2] : min[2];
+  }
+  // two triangles per face, counter-clockwise seen from outside
+  const faces = [[0, 4, 6, 2], [1, 3, 7, 5], [0, 1, 5, 4], [2, 6, 7, 3], [0, 2, 3, 1], [4, 5, 7, 6]];
+  const indices = new Uint32Array(faces.flatMap(([a, b, c, d]) => [a, b, c, a, c, d]));
+  return { positions, indices, triangleCount: 12 };
 }

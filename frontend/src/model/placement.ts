@@ -42,7 +42,7 @@ function footprints(scene: Scene, meshes: MeshLookup): Disc[] {
   for (const o of resolveScene(scene).objects) {
     if (o.type === 'sphere') discs.push({ x: o.center[0], z: o.center[2], r: Math.abs(o.radius) });
     else if (o.type === 'box') discs.push({ x: o.center[0], z: o.center[2], r: length(o.size) / 2 });
-    else if (o.type === 'mesh') {
+    else if (o.type === 'mesh' || o.type === 'gltf') {
       const state = meshes(o);
       if (state.status !== 'ready') discs.push({ x: o.position[0], z: o.position[2], r: 1 });
       else {

@@ -207,7 +207,7 @@ export function viewDepth(kind: ViewKind, p: Vec3): number {
 /** A resolved object's reference point: centre, a plane's point, a mesh's position. */
 export function objectAnchor(object: ResolvedObject): Vec3 {
   if (object.type === 'plane') return object.point;
-  if (object.type === 'mesh') return object.position;
+  if (object.type === 'mesh' || object.type === 'gltf') return object.position;
   return object.center;
 }
 

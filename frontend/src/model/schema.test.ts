@@ -16,7 +16,8 @@ import {
   LIGHT_FIELDS,
   MATERIAL_FIELDS,
   OBJECT_FIELDS,
-  OBJECT_TYPES,
+  ADDABLE_TYPES,
+  AWAITING_SERVER_SCHEMA,
   RENDER_FIELDS,
   SCENE_FIELDS,
   type Scene,
@@ -73,10 +74,24 @@ function kindsOf(defName: string): Record<string, string[]> {
 const sorted = (o: Record<string, readonly string[]>) =>
   Object.fromEntries(Object.entries(o).map(([k, v]) => [k, [...v].sort()]));
 
+/**
+ * The editor's kinds and fields, less those of issue 45 that the server's schema does not have yet
+ * (AWAITING_SERVER_SCHEMA): once the schema has a kind or field, it is compared like the rest.
+ */
+function published(fields: Record<string, readonly string[]>, def: 'Object' | 'Material'): Record<string, string[]> {
+  const inSchema = kindsOf(def);
+  const awaitedKinds: readonly string[] = def === 'Object' ? AWAITING_SERVER_SCHEMA.objects : [];
+  const awaitedFields: readonly string[] = def === 'Material' ? AWAITING_SERVER_SCHEMA.materialFields : [];
+  const schemaHas = (field: string) => Object.values(inSchema).some((f) => f.includes(field));
+  return sorted(Object.fromEntries(Object.entries(fields)
+    .filter(([kind]) => !awaitedKinds.includes(kind) || kind in inSchema)
+    .map(([kind, f]) => [kind, f.filter((name) => !awaitedFields.includes(name) || schemaHas(name))])));
+}
+
 describe.skipIf(schema === null)('the editor types follow the server JSON Schema (scene.schema.json)', () => {
   it('has the same object, material and light kinds, each with the same field names', () => {
-    expect(kindsOf('Object')).toEqual(sorted(OBJECT_FIELDS));
-    expect(kindsOf('Material')).toEqual(sorted(MATERIAL_FIELDS));
+    expect(kindsOf('Object')).toEqual(published(OBJECT_FIELDS, 'Object'));
+    expect(kindsOf('Material')).toEqual(published(MATERIAL_FIELDS, 'Material'));
     expect(kindsOf('Light')).toEqual(sorted(LIGHT_FIELDS));
   });
 
@@ -107,7 +122,7 @@ describe.skipIf(schema === null)('the editor types follow the server JSON Schema
       ...blankScene(),
       lights: [newLight()],
       objects: [
-        ...OBJECT_TYPES.map(newObject),
+        ...ADDABLE_TYPES.map(newObject),
         ...Object.values(MATERIAL_DEFAULTS).map((material) => ({ type: 'sphere' as const, material })),
       ],
     };

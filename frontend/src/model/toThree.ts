@@ -9,7 +9,7 @@ import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, type ParsedObj } from './obj';
 import { inItems, type SceneItem, type Selection } from './selection';
 import { idOf } from './identity';
-import type { Light, ResolvedLight, ResolvedMaterial, ResolvedObject, Scene, SceneObject, Vec3 } from './types';
+import type { Light, ResolvedLight, ResolvedMaterial, ResolvedObject, Scene, SceneObject, Texture, Vec3 } from './types';
 import { cross, dot, length, normalize, sub } from './vec';
 
 /**
@@ -29,12 +29,39 @@ export const MAX_REACH = 1e5;
  * it, so the preview gives it a cube map of the scene taken from where it stands (never a made-up
  * environment the render would not show).
  */
-export type MaterialDescriptor =
+export type MaterialDescriptor = (
   | { kind: 'basic'; color: string }
   | { kind: 'lambert'; color: string; diffuse: number }
   | { kind: 'phong'; color: string; diffuse: number; specular: number; shininess: number }
   | { kind: 'standard'; color: string; metalness: number; roughness: number; reflects: true }
-  | { kind: 'physical'; color: string; transmission: number; ior: number; roughness: number; reflects: true };
+  | { kind: 'physical'; color: string; transmission: number; ior: number; roughness: number; reflects: true }
+) & { texture?: TextureDescriptor };
+
+/**
+ * A material's texture as the preview maps it: a checker as a 2x2 texture of its colours (one
+ * repeat is two squares), an image by its asset id; `repeat` and `offset` carry the surface's UVs
+ * (a sphere's longitude and latitude, a box face's 0..1, a plane's quad) to the texture's units:
+ * texture coordinate = uv · repeat + offset.
+ */
+export type TextureDescriptor =
+  | { kind: 'checker'; colors: [string, string]; repeat: [number, number]; offset: [number, number] }
+  | { kind: 'image'; asset: string; repeat: [number, number]; offset: [number, number] };
+
+/**
+ * The texture of a material on a surface whose UV unit spans `uvMetres` metres (1 for spheres and
+ * box faces, whose UVs run 0..1 per face as the engine's do; a plane's quad side for planes), the
+ * UV origin at `originMetres` in the texture's own units (a plane's quad is centred where the
+ * camera is nearest, so its pattern is held in place by the offset).
+ */
+export function textureToThree(texture: Texture | undefined, uvMetres: [number, number] = [1, 1], originMetres: [number, number] = [0, 0]): TextureDescriptor | undefined {
+  if (!texture) return undefined;
+  if (texture.type === 'checker') {
+    const period = 2 * texture.size;
+    return { kind: 'checker', colors: texture.colors, repeat: [uvMetres[0] / period, uvMetres[1] / period], offset: [originMetres[0] / period, originMetres[1] / period] };
+  }
+  const [su, sv] = texture.scale ?? [1, 1];
+  return { kind: 'image', asset: texture.asset, repeat: [su, sv], offset: [0, 0] };
+}
 
 export interface MeshDescriptor {
   /** The object's stable id in the editor (see {@link previewId}): the preview keeps its mesh by it. */
@@ -45,9 +72,14 @@ export interface MeshDescriptor {
    * Shared unit geometry: sphere radius 1, box edge 1, plane 1x1 in its x-y plane (normal +z); or
    * 'mesh': the triangles in `mesh`, in the OBJ's own coordinates (see {@link meshGeometry}).
    */
-  geometry: 'sphere' | 'box' | 'plane' | 'mesh';
-  /** The parsed OBJ of a 'mesh' (the same object for as long as the mesh's OBJ is unchanged). */
+  geometry: 'sphere' | 'box' | 'plane' | 'mesh' | 'gltf';
+  /**
+   * The parsed OBJ of a 'mesh' (the same object for as long as the mesh's OBJ is unchanged); of a
+   * 'gltf', its bounding box as 12 triangles (what a click picks; the model is drawn inside it).
+   */
   mesh?: ParsedObj;
+  /** The asset id of a 'gltf' model (the preview loads it and draws a copy of its scene). */
+  asset?: string;
   position: Vec3;
   scale: Vec3;
   /** Euler angles in radians, order XYZ (boxes, meshes); planes use `quaternion` instead. */
@@ -118,7 +150,12 @@ export interface ThreeSceneDescriptor {
 }
 
 /** Maps a material kind onto the closest three.js material. */
-export function materialToThree(m: ResolvedMaterial): MaterialDescriptor {
+export function materialToThree(m: ResolvedMaterial, texture: TextureDescriptor | undefined = textureToThree(m.texture)): MaterialDescriptor {
+  const d = untextured(m);
+  return texture ? { ...d, texture } : d;
+}
+
+function untextured(m: ResolvedMaterial): MaterialDescriptor {
   switch (m.type) {
     case 'flat':
       return { kind: 'basic', color: m.color };
@@ -139,6 +176,15 @@ export function materialToThree(m: ResolvedMaterial): MaterialDescriptor {
 /** Blinn-Phong exponent to a GGX roughness (the usual sqrt(2 / (n + 2))). */
 export function shininessToRoughness(shininess: number): number {
   return Math.min(1, Math.max(0.05, Math.sqrt(2 / (shininess + 2))));
+}
+
+/** `v` turned by the unit quaternion [x, y, z, w]. */
+export function rotateByQuaternion(v: Vec3, [x, y, z, w]: [number, number, number, number]): Vec3 {
+  // v + 2w (q × v) + 2 q × (q × v)
+  const q: Vec3 = [x, y, z];
+  const t = cross(q, v).map((c) => 2 * c) as Vec3;
+  const u = cross(q, t);
+  return [v[0] + w * t[0] + u[0], v[1] + w * t[1] + u[1], v[2] + w * t[2] + u[2]];
 }
 
 /** The quaternion [x, y, z, w] turning +z onto the direction of `normal`. */
@@ -174,7 +220,13 @@ function meshOf(o: ResolvedObject, id: string, index: number, selected: boolean,
       const off = dot(sub(camera, o.point), n);
       const near: Vec3 = [camera[0] - off * n[0], camera[1] - off * n[1], camera[2] - off * n[2]];
       const size = planeSize;
-      return { ...base, geometry: 'plane', position: near, scale: [size, size, 1], quaternion: quaternionFromZ(o.normal) };
+      const quaternion = quaternionFromZ(o.normal);
+      // the quad's own x and y axes in the world: the pattern is laid in metres along them, anchored at the world origin
+      const ex = rotateByQuaternion([1, 0, 0], quaternion);
+      const ey = rotateByQuaternion([0, 1, 0], quaternion);
+      const origin: [number, number] = [dot(near, ex) - size / 2, dot(near, ey) - size / 2];
+      const material = materialToThree(o.material, textureToThree(o.material.texture, [size, size], origin));
+      return { ...base, material, geometry: 'plane', position: near, scale: [size, size, 1], quaternion };
     }
     case 'mesh': {
       // Drawn once its triangles are known; nothing while loading or broken (the inspector says why).
@@ -182,6 +234,13 @@ function meshOf(o: ResolvedObject, id: string, index: number, selected: boolean,
       if (state.status !== 'ready') return null;
       const s = o.scale;
       return { ...base, geometry: 'mesh', mesh: state.mesh, position: o.position, scale: [s, s, s], rotation: o.rotation.map(toRadians) as Vec3 };
+    }
+    case 'gltf': {
+      // Drawn once the preview has loaded the model (its box is then known); the glyph says why not.
+      const state = meshes(o);
+      if (state.status !== 'ready') return null;
+      const s = o.scale;
+      return { ...base, geometry: 'gltf', mesh: state.mesh, asset: o.asset, position: o.position, scale: [s, s, s], rotation: o.rotation.map(toRadians) as Vec3 };
     }
   }
 }
@@ -238,7 +297,7 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
   for (const o of r.objects) {
     if (o.type === 'sphere') reach = within(length(sub(o.center, cam.position)) + Math.abs(o.radius));
     if (o.type === 'box') reach = within(length(sub(o.center, cam.position)) + length(o.size));
-    if (o.type === 'mesh') {
+    if (o.type === 'mesh' || o.type === 'gltf') {
       const state = meshes(o);
       if (state.status === 'ready') {
         const { min, max } = meshBounds(o, state.mesh);
@@ -252,7 +311,7 @@ export function sceneToThree(scene: Scene, selection: Selection = null, meshes: 
   const shown = (o: ResolvedObject) => {
     if (o.type === 'sphere') return near(o.center, Math.abs(o.radius));
     if (o.type === 'box') return near(o.center, length(o.size));
-    if (o.type === 'mesh') return near(o.position);
+    if (o.type === 'mesh' || o.type === 'gltf') return near(o.position);
     // a plane far from the camera is drawn where it is nearest; one beyond the horizon is not
     return Math.abs(dot(sub(cam.position, o.point), normalize(o.normal))) <= horizon;
   };

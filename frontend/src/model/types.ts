@@ -11,10 +11,57 @@ export type Vec3 = [number, number, number];
 /** An sRGB colour `"#rrggbb"`, as `<input type="color">` gives it. */
 export type Color = string;
 
+// ---- Issue 45's additions, declared here ahead of the server's schema (textures and glTF) ----
+// They take the exact form the server's `textures` and `gltf` work gives them; until the server's
+// schema (scene.schema.json, openapi.json) has them, AWAITING_SERVER_SCHEMA names them, and the
+// schema tests compare everything else. When the schema has them, that list becomes empty.
+
+/** Names the kinds and fields above that the server's published schema does not have yet. */
+export const AWAITING_SERVER_SCHEMA = { objects: ['gltf'], materialFields: ['texture'] } as const;
+
+/** A checkerboard of two colours, squares `size` metres on a side (in the surface's UV units). */
+export interface CheckerTexture {
+  type: 'checker';
+  colors: [Color, Color];
+  size: number;
+}
+
+/** An uploaded PNG or JPEG (by its asset id, `sha256-<hex>`), repeated `scale` times along u and v. */
+export interface ImageTexture {
+  type: 'image';
+  asset: string;
+  scale?: [number, number];
+}
+
+export type Texture = CheckerTexture | ImageTexture;
+export type TextureType = Texture['type'];
+
+/**
+ * A glTF 2.0 model (`.glb` or `.gltf`) uploaded as an asset, with its own materials, placed as a
+ * mesh is: each vertex v of the model's scene goes to `position + R(rotation) · (scale · v)`.
+ */
+export interface GltfObject {
+  type: 'gltf';
+  /** The user's name for it (the engine ignores it). */
+  name?: string;
+  asset: string;
+  /** A model file beside the scene, which only the command line reads (the editor names models by `asset`). */
+  file?: string;
+  position?: Vec3;
+  /** Uniform scale, greater than 0. */
+  scale?: number;
+  rotation?: Vec3;
+  /** Never given: the model brings its own materials (declared so code can read any object's `material`). */
+  material?: never;
+}
+// ---- end of issue 45's additions ----
+
 /** Its colour, unlit. */
 export interface FlatMaterial {
   type: 'flat';
   color?: Color;
+  /** A texture its colour multiplies (issue 45). */
+  texture?: Texture;
 }
 
 /** Diffuse only. */
@@ -22,6 +69,8 @@ export interface ChalkMaterial {
   type: 'chalk';
   color?: Color;
   diffuse?: number;
+  /** A texture its colour multiplies (issue 45). */
+  texture?: Texture;
 }
 
 /** Diffuse plus a white highlight. */
@@ -31,6 +80,8 @@ export interface PlasticMaterial {
   diffuse?: number;
   specular?: number;
   shininess?: number;
+  /** A texture its colour multiplies (issue 45). */
+  texture?: Texture;
 }
 
 /** Highlight and reflection tinted by its colour. */
@@ -41,6 +92,8 @@ export interface MetalMaterial {
   specular?: number;
   shininess?: number;
   reflectivity?: number;
+  /** A texture its colour multiplies (issue 45). */
+  texture?: Texture;
 }
 
 /** Perfect reflection, tinted. */
@@ -48,6 +101,8 @@ export interface MirrorMaterial {
   type: 'mirror';
   color?: Color;
   reflectivity?: number;
+  /** A texture its colour multiplies (issue 45). */
+  texture?: Texture;
 }
 
 /** Refraction with an index of refraction, Fresnel reflection; its colour tints the light. */
@@ -57,6 +112,8 @@ export interface GlassMaterial {
   ior?: number;
   specular?: number;
   shininess?: number;
+  /** A texture its colour multiplies (issue 45). */
+  texture?: Texture;
 }
 
 export type Material =
@@ -123,7 +180,9 @@ export interface MeshObject {
 /** The fields naming where a mesh's triangles come from (no defaults: exactly one is given). */
 export type MeshSourceField = 'obj' | 'file' | 'asset';
 
-export type SceneObject = Sphere | Box | Plane | MeshObject;
+export type SceneObject = Sphere | Box | Plane | MeshObject | GltfObject;
+/** An object placed as a three.js Object3D (position, uniform scale, rotation), whose shape is loaded: a mesh or a glTF model. */
+export type PlacedModel = MeshObject | GltfObject;
 export type ObjectType = SceneObject['type'];
 export type ObjectOf<T extends ObjectType> = Extract<SceneObject, { type: T }>;
 
@@ -154,6 +213,8 @@ export interface PointLight {
  */
 export interface AreaLight {
   type: 'area';
+  /** The user's name for it (the engine ignores it). */
+  name?: string;
   position?: Vec3;
   size?: Size2;
   lookAt?: Vec3;
@@ -220,10 +281,11 @@ export interface Scene {
 /** Every field present: what the renderer will use. */
 type Complete<T> = { [K in keyof T]-?: Exclude<T[K], undefined> };
 
-export type ResolvedMaterial = { [T in MaterialType]: Complete<MaterialOf<T>> }[MaterialType];
+export type ResolvedMaterial = { [T in MaterialType]: Complete<Omit<MaterialOf<T>, 'texture'>> & Pick<MaterialOf<T>, 'texture'> }[MaterialType];
 export type ResolvedObject = {
   [T in ObjectType]: Complete<Omit<ObjectOf<T>, 'material' | MeshSourceField | 'name'>> &
     Pick<ObjectOf<T>, Extract<keyof ObjectOf<T>, MeshSourceField | 'name'>> & { material: ResolvedMaterial };
+  // a glTF model has its own materials: its resolved `material` is the default, never shown
 }[ObjectType];
 /** A resolved object of one kind, e.g. `ResolvedObjectOf<'mesh'>`. */
 export type ResolvedObjectOf<T extends ObjectType> = Extract<ResolvedObject, { type: T }>;
@@ -261,20 +323,26 @@ export const OBJECT_FIELDS = {
   box: fieldsOf<Box>()(['type', 'name', 'center', 'size', 'rotation', 'material']),
   plane: fieldsOf<Plane>()(['type', 'name', 'point', 'normal', 'material']),
   mesh: fieldsOf<MeshObject>()(['type', 'name', 'obj', 'file', 'asset', 'position', 'scale', 'rotation', 'material']),
+  gltf: fieldsOf<Omit<GltfObject, 'material'>>()(['type', 'name', 'asset', 'file', 'position', 'scale', 'rotation']),
 } as const;
 
 export const MATERIAL_FIELDS = {
-  flat: fieldsOf<FlatMaterial>()(['type', 'color']),
-  chalk: fieldsOf<ChalkMaterial>()(['type', 'color', 'diffuse']),
-  plastic: fieldsOf<PlasticMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess']),
-  metal: fieldsOf<MetalMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess', 'reflectivity']),
-  mirror: fieldsOf<MirrorMaterial>()(['type', 'color', 'reflectivity']),
-  glass: fieldsOf<GlassMaterial>()(['type', 'color', 'ior', 'specular', 'shininess']),
+  flat: fieldsOf<FlatMaterial>()(['type', 'color', 'texture']),
+  chalk: fieldsOf<ChalkMaterial>()(['type', 'color', 'diffuse', 'texture']),
+  plastic: fieldsOf<PlasticMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess', 'texture']),
+  metal: fieldsOf<MetalMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess', 'reflectivity', 'texture']),
+  mirror: fieldsOf<MirrorMaterial>()(['type', 'color', 'reflectivity', 'texture']),
+  glass: fieldsOf<GlassMaterial>()(['type', 'color', 'ior', 'specular', 'shininess', 'texture']),
+} as const;
+
+export const TEXTURE_FIELDS = {
+  checker: fieldsOf<CheckerTexture>()(['type', 'colors', 'size']),
+  image: fieldsOf<ImageTexture>()(['type', 'asset', 'scale']),
 } as const;
 
 export const LIGHT_FIELDS = {
   point: fieldsOf<PointLight>()(['type', 'name', 'position', 'color', 'intensity', 'falloff', 'radius']),
-  area: fieldsOf<AreaLight>()(['type', 'position', 'size', 'lookAt', 'color', 'intensity', 'falloff', 'twoSided']),
+  area: fieldsOf<AreaLight>()(['type', 'name', 'position', 'size', 'lookAt', 'color', 'intensity', 'falloff', 'twoSided']),
 } as const;
 
 export const SCENE_FIELDS = fieldsOf<Scene>()([
@@ -285,5 +353,8 @@ export const CAMERA_FIELDS = fieldsOf<CameraSettings>()(['position', 'lookAt', '
 export const RENDER_FIELDS = fieldsOf<RenderSettings>()(['sampler', 'samples', 'maxDepth', 'seed', 'adaptive']);
 
 export const OBJECT_TYPES = Object.keys(OBJECT_FIELDS) as ObjectType[];
+/** The kinds that can be added without a file (a glTF model needs its uploaded asset). */
+export type AddableType = Exclude<ObjectType, 'gltf'>;
+export const ADDABLE_TYPES = OBJECT_TYPES.filter((t): t is AddableType => t !== 'gltf');
 export const MATERIAL_TYPES = Object.keys(MATERIAL_FIELDS) as MaterialType[];
 export const LIGHT_TYPES = Object.keys(LIGHT_FIELDS) as LightType[];

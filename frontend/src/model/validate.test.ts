@@ -42,7 +42,7 @@ describe('validateScene', () => {
     if (!bad.ok) expect(describeErrors(bad.errors)).toMatch(/not valid JSON/);
   });
 
-  it('checks a mesh as the server does: exactly one of obj and file, a scale above 0, vectors of three numbers', () => {
+  it('checks a mesh as the server does: exactly one of obj, file and asset, a scale above 0, vectors of three numbers', () => {
     const ok = validateScene({ objects: [{ type: 'mesh', obj: 'v 0 0 0\n', position: [0, 1, 0], scale: 0.5, rotation: [0, 90, 0] }, { type: 'mesh', file: 'meshes/torus-knot.obj' }] });
     expect(ok.ok).toBe(true);
     const result = validateScene({
@@ -56,8 +56,8 @@ describe('validateScene', () => {
       ],
     });
     expect(result.ok ? [] : result.errors).toEqual([
-      { path: 'objects[1]', message: 'a mesh needs its OBJ text in "obj" or a "file" name' },
-      { path: 'objects[2]', message: 'give the mesh either "obj" or "file", not both' },
+      { path: 'objects[1]', message: 'a mesh needs its OBJ text in "obj", a "file" name or an "asset" id' },
+      { path: 'objects[2]', message: 'give the mesh one of "obj", "file" and "asset", not more' },
       { path: 'objects[3].scale', message: 'must be a finite number greater than 0' },
       { path: 'objects[4].scale', message: 'must be a finite number greater than 0' },
       { path: 'objects[4].position', message: 'must be a list of three numbers [x, y, z]' },
@@ -80,7 +80,7 @@ describe('validateScene', () => {
       objects: [],
       lights: [
         { type: 'point', radius: 'big', size: [1, 1] },
-        { type: 'area', size: [1, 1, 1], lookAt: [0, 0], twoSided: 'no', name: 'key' },
+        { type: 'area', size: [1, 1, 1], lookAt: [0, 0], twoSided: 'no', name: 7 },
         { type: 'area', size: [1, 'x'] },
       ],
     });
@@ -90,8 +90,39 @@ describe('validateScene', () => {
       { path: 'lights[1].size', message: 'must be a list of two numbers [width, height]' },
       { path: 'lights[1].lookAt', message: 'must be a list of three numbers [x, y, z]' },
       { path: 'lights[1].twoSided', message: 'must be true or false' },
-      { path: 'lights[1].name', message: expect.stringMatching(/^is not a known field/) },
+      { path: 'lights[1].name', message: 'must be a string' },
       { path: 'lights[2].size[1]', message: 'must be a finite number' },
+    ]);
+  });
+
+  it('reads issue 45\'s asset meshes, glTF models and textures, naming each bad field', () => {
+    const id = `sha256-${'ab'.repeat(32)}`;
+    const ok = validateScene({
+      objects: [
+        { type: 'mesh', asset: id, material: { type: 'chalk', texture: { type: 'checker', colors: ['#ffffff', '#000000'], size: 0.5 } } },
+        { type: 'gltf', asset: id, position: [0, 1, 0], rotation: [0, 90, 0], scale: 2 },
+        { type: 'plane', material: { type: 'plastic', texture: { type: 'image', asset: id, scale: [2, 2] } } },
+      ],
+    });
+    expect(ok.ok ? [] : ok.errors).toEqual([]);
+    const bad = validateScene({
+      objects: [
+        { type: 'mesh', asset: 'sha256-xyz' },
+        { type: 'gltf', scale: 0, material: { type: 'chalk' } },
+        { type: 'sphere', material: { type: 'chalk', texture: { type: 'checker', colors: ['#fff', '#000000'] } } },
+        { type: 'sphere', material: { type: 'flat', texture: { type: 'image', asset: id, scale: [1, -1] } } },
+        { type: 'sphere', material: { type: 'flat', texture: { type: 'marble' } } },
+      ],
+    });
+    expect(bad.ok ? [] : bad.errors).toEqual([
+      { path: 'objects[0].asset', message: 'must be an asset id, sha256- and 64 hex digits' },
+      { path: 'objects[1].scale', message: 'must be a finite number greater than 0' },
+      { path: 'objects[1].material', message: expect.stringMatching(/^is not a known field/) },
+      { path: 'objects[1].asset', message: 'is required' },
+      { path: 'objects[2].material.texture.colors[0]', message: 'must be a colour of the form #rrggbb' },
+      { path: 'objects[2].material.texture.size', message: 'is required' },
+      { path: 'objects[3].material.texture.scale[1]', message: 'must be a finite number greater than 0' },
+      { path: 'objects[4].material.texture.type', message: 'must be one of "checker", "image"' },
     ]);
   });
 });

@@ -2,8 +2,8 @@
  * Checks that an unknown JSON value has the shape of a scene before the editor loads it:
  * known fields only, `type` of every polymorphic element known, vectors of three finite
  * numbers, colours `#rrggbb`, numbers as numbers. Value ranges are the server's business, but
- * for a mesh, whose triangles the editor reads itself: exactly one of `obj` and `file`, and a
- * `scale` greater than 0 (as the server's rules).
+ * for a mesh, whose triangles the editor reads itself: exactly one of `obj`, `file` and `asset`,
+ * and a `scale` greater than 0 (as the server's rules); asset ids of the form `sha256-<hex>`.
  */
 import { FORMAT_VERSION } from './defaults';
 import {
@@ -14,6 +14,7 @@ import {
   OBJECT_FIELDS,
   RENDER_FIELDS,
   SCENE_FIELDS,
+  TEXTURE_FIELDS,
   type Scene,
 } from './types';
 import { isRecord } from '../util/json';
@@ -107,18 +108,44 @@ const list =
     else v.forEach((x, i) => item(x, `${path}[${i}]`, errors));
   };
 
-const positive: Check = (v, path, errors) => {
+function positiveNumber(v: unknown, path: string, errors: ShapeError[]): void {
   if (typeof v !== 'number' || !Number.isFinite(v) || v <= 0) errors.push({ path, message: 'must be a finite number greater than 0' });
-};
+}
+const positive: Check = positiveNumber;
 
-/** A mesh names its triangles by exactly one of `obj` and `file` (the message goes on the object, as the server's). */
+/** A mesh names its triangles by exactly one of `obj`, `file` and `asset` (the message goes on the object, as the server's). */
 const meshSource: Check = (v, path, errors) => {
   if (!isRecord(v)) return;
-  const hasObj = v.obj !== undefined;
-  if (hasObj === (v.file !== undefined)) {
-    errors.push({ path, message: hasObj ? 'give the mesh either "obj" or "file", not both' : 'a mesh needs its OBJ text in "obj" or a "file" name' });
+  const sources = [v.obj, v.file, v.asset].filter((s) => s !== undefined).length;
+  if (sources !== 1) {
+    errors.push({ path, message: sources > 1 ? 'give the mesh one of "obj", "file" and "asset", not more' : 'a mesh needs its OBJ text in "obj", a "file" name or an "asset" id' });
   }
 };
+
+/** A glTF model names exactly one of its asset id (the editor's) and a file beside the scene (the command line's). */
+const modelSource: Check = (v, path, errors) => {
+  if (!isRecord(v)) return;
+  if (v.asset !== undefined && v.file !== undefined) errors.push({ path, message: 'give the model one of "asset" and "file", not both' });
+  else if (v.asset === undefined && v.file === undefined) errors.push({ path: `${path}.asset`, message: 'is required' });
+};
+
+/** An asset id as the server gives it: `sha256-` and 64 lower-case hex digits. */
+export const ASSET_ID = /^sha256-[0-9a-f]{64}$/;
+const assetId: Check = (v, path, errors) => {
+  if (typeof v !== 'string' || !ASSET_ID.test(v)) errors.push({ path, message: 'must be an asset id, sha256- and 64 hex digits' });
+};
+const required =
+  (...fields: string[]): Check =>
+  (v, path, errors) => {
+    if (isRecord(v)) for (const f of fields) if (v[f] === undefined) errors.push({ path: `${path}.${f}`, message: 'is required' });
+  };
+const pair =
+  (item: Check): Check =>
+  (v, path, errors) => {
+    if (!Array.isArray(v) || v.length !== 2) errors.push({ path, message: 'must be a list of two' });
+    else v.forEach((x, i) => item(x, `${path}[${i}]`, errors));
+  };
+
 
 /** Runs every check on the same value. */
 const all =
@@ -126,18 +153,23 @@ const all =
   (v, path, errors) =>
     checks.forEach((check) => check(v, path, errors));
 
+const texture = byType({
+  checker: all(record(TEXTURE_FIELDS.checker, { type: () => {}, colors: pair(color), size: positiveNumber }), required('colors', 'size')),
+  image: all(record(TEXTURE_FIELDS.image, { type: () => {}, asset: assetId, scale: pair(positiveNumber) }), required('asset')),
+});
 const type: Check = () => {};
-const materialChecks = { type, color, diffuse: number, specular: number, shininess: number, reflectivity: number, ior: number };
+const materialChecks = { type, color, diffuse: number, specular: number, shininess: number, reflectivity: number, ior: number, texture };
 const material = byType(
   Object.fromEntries(Object.entries(MATERIAL_FIELDS).map(([k, f]) => [k, record(f, materialChecks)])),
 );
 const objectChecks = {
   type, center: vector, radius: number, size: vector, rotation: vector, point: vector, normal: vector, material,
-  obj: string, file: string, position: vector, scale: positive, name: string,
+  obj: string, file: string, asset: assetId, position: vector, scale: positive, name: string,
 };
 const object = byType({
   ...Object.fromEntries(Object.entries(OBJECT_FIELDS).map(([k, f]) => [k, record(f, objectChecks)])),
   mesh: all(record(OBJECT_FIELDS.mesh, objectChecks), meshSource),
+  gltf: all(record(OBJECT_FIELDS.gltf, objectChecks), modelSource),
 });
 const lightChecks = { type, name: string, position: vector, color, intensity: number, falloff: boolean, radius: number, size: size2, lookAt: vector, twoSided: boolean };
 const light = byType(Object.fromEntries(Object.entries(LIGHT_FIELDS).map(([k, f]) => [k, record(f, lightChecks)])));

@@ -1,11 +1,14 @@
-/** Keeps the scene in localStorage so a reload finds it again. */
+/**
+ * The scene an earlier editor kept in localStorage: read once, when IndexedDB holds nothing yet,
+ * so a scene autosaved before autosave moved to IndexedDB (`autosave.ts`) is not lost; then removed.
+ */
 import { validateScene } from '../model/validate';
 import type { Scene } from '../model/types';
 
 export const STORAGE_KEY = 'ray-studio.scene';
 
-/** The saved scene, or null when there is none or it no longer has a scene's shape. */
-export function loadSavedScene(storage: Storage | undefined = safeStorage()): Scene | null {
+/** The scene an earlier editor saved, or null when there is none or it no longer has a scene's shape. */
+export function loadLegacyScene(storage: Storage | undefined = safeStorage()): Scene | null {
   try {
     const text = storage?.getItem(STORAGE_KEY);
     if (!text) return null;
@@ -16,12 +19,12 @@ export function loadSavedScene(storage: Storage | undefined = safeStorage()): Sc
   }
 }
 
-/** Saves the scene; a full or unavailable storage is ignored (the editor still works). */
-export function saveScene(scene: Scene, storage: Storage | undefined = safeStorage()): void {
+/** Forgets the earlier editor's copy (once IndexedDB keeps the scene). */
+export function forgetLegacyScene(storage: Storage | undefined = safeStorage()): void {
   try {
-    storage?.setItem(STORAGE_KEY, JSON.stringify(scene));
+    storage?.removeItem(STORAGE_KEY);
   } catch {
-    // Quota exceeded or storage disabled: nothing to do.
+    // storage unavailable: nothing to forget
   }
 }
 

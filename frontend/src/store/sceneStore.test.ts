@@ -5,8 +5,7 @@ import { STARTER_SCENE } from '../model/starterScene';
 import { parseScene } from '../model/validate';
 import { gridObj, TETRAHEDRON_OBJ } from '../test/meshes';
 import type { Scene } from '../model/types';
-import { loadSavedScene, STORAGE_KEY } from './persistence';
-import { persistSceneStore, resetSceneStore, useSceneStore, type SceneState } from './sceneStore';
+import { resetSceneStore, useSceneStore, type SceneState } from './sceneStore';
 
 const store = () => useSceneStore.getState();
 
@@ -219,16 +218,6 @@ describe('sceneStore', () => {
     expect(store()).toMatchObject({ snap: true, gridSize: 0.25, selection: { kind: 'camera' } });
   });
 
-  it('saves every committed scene to localStorage and loads it back', () => {
-    const stop = persistSceneStore();
-    store().setName('persisted');
-    expect(JSON.parse(localStorage.getItem(STORAGE_KEY)!)).toMatchObject({ name: 'persisted' });
-    expect(loadSavedScene()?.name).toBe('persisted');
-    stop();
-    localStorage.setItem(STORAGE_KEY, '{"objects": "nope"}');
-    expect(loadSavedScene()).toBeNull();
-  });
-
   it('is reset between tests', () => {
     store().setName('dirty');
     resetSceneStore();
@@ -277,13 +266,10 @@ describe('sceneStore', () => {
       expect(store().scene.objects[2]).toEqual(MESH_SCENE.objects[2]);
     });
 
-    it('keeps a large inline OBJ unchanged through localStorage and the JSON text', () => {
+    it('keeps a large inline OBJ unchanged through the JSON text', () => {
       const obj = gridObj(60); // 7 200 triangles, some 150 kB
       const scene: Scene = { ...MESH_SCENE, objects: [...MESH_SCENE.objects, { type: 'mesh', obj, scale: 0.5 }] };
-      const stop = persistSceneStore();
       store().loadScene(scene);
-      stop();
-      expect(loadSavedScene()).toEqual(scene);
       const parsed = parseScene(formatScene(store().scene));
       expect(parsed.ok && parsed.scene).toEqual(scene);
       if (parsed.ok) store().setScene(parsed.scene);

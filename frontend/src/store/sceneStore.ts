@@ -20,7 +20,8 @@ import type {
   ImageSettings,
   Material,
   MaterialType,
-  ObjectType,
+  AddableType,
+  PlacedModel,
   RenderSettings,
   Scene,
   SceneObject,
@@ -28,8 +29,7 @@ import type {
 } from '../model/types';
 import type { FieldErrors } from '../model/standingErrors';
 import { push, redo, undo, type Timeline } from './history';
-import { loadHistory, saveHistory } from './historyStorage';
-import { loadSavedScene, saveScene } from './persistence';
+import type { Bounds } from '../model/obj';
 
 /** Zoom (SVG pixels per metre) and pan (the world point at the view's centre) of one view. */
 export interface ViewState {
@@ -80,6 +80,8 @@ export interface SceneState {
   /** Records (or, with `{}`, clears) a source's field errors for the scene it sent. */
   reportServerErrors(source: ErrorSource, scene: Scene, errors: FieldErrors): void;
   loadScene(scene: Scene): void;
+  /** Puts back a kept scene with its undo and redo steps (autosave, on start-up); not itself a step. */
+  resetTo(scene: Scene, past: Scene[], future: Scene[]): void;
   newScene(): void;
   /** Replaces the scene but keeps the selection where it still exists (the JSON tab). */
   setScene(scene: Scene): void;
@@ -89,9 +91,14 @@ export interface SceneState {
   setImage(patch: Partial<ImageSettings>): void;
   setRender(patch: Partial<RenderSettings>): void;
   setCamera(patch: Partial<CameraSettings>): void;
-  addObject(kind: ObjectType): void;
+  addObject(kind: AddableType): void;
   /** Adds a mesh of inline OBJ text with a uniform scale, resting on the floor in front of the camera, selected (one history entry). */
   addMesh(obj: string, scale: number): void;
+  /**
+   * Adds an imported mesh or glTF model (by asset id) standing on the floor in front of the camera,
+   * clear of the others, selected (one history entry); `bounds`: its box in its own coordinates, when known.
+   */
+  addModel(model: PlacedModel, bounds?: Bounds): void;
   /** Replaces a mesh's triangles by inline OBJ text (its `file`, if any, goes). */
   setMeshObj(index: number, obj: string): void;
   addLight(): void;
@@ -204,7 +211,7 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     set({ scene: t.present, past: t.past, future: t.future, preview: null, ...keepPicked(t.present, { primary: selection, items: selectedItems }) });
   };
   return {
-    ...initialData(loadSavedScene() ?? structuredClone(STARTER_SCENE)),
+    ...initialData(structuredClone(STARTER_SCENE)),
 
     reportServerErrors: (source, scene, errors) => {
       const report = Object.keys(errors).length === 0 ? null : { scene, errors };
@@ -214,6 +221,9 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     loadScene: (scene) => {
       commit(() => structuredClone(scene), () => null, true);
       set({ fitRequest: get().fitRequest + 1, documentId: get().documentId + 1, serverErrors: NO_SERVER_ERRORS });
+    },
+    resetTo: (scene, past, future) => {
+      set({ ...initialData(scene), past, future, fitRequest: get().fitRequest + 1, documentId: get().documentId + 1 });
     },
     newScene: () => {
       commit(() => blankScene(), () => null, true);
@@ -228,6 +238,7 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     setCamera: (patch) => commit((s) => edits.setCamera(s, patch)),
     addObject: (kind) => commit((s) => edits.addObject(s, kind), (n) => ({ kind: 'object', index: n.objects.length - 1 })),
     addMesh: (obj, scale) => commit((s) => edits.addMesh(s, obj, scale), (n) => ({ kind: 'object', index: n.objects.length - 1 })),
+    addModel: (model, bounds) => commit((s) => edits.addModel(s, model, bounds), (n) => ({ kind: 'object', index: n.objects.length - 1 })),
     setMeshObj: (index, obj) => commit((s) => edits.setMeshObj(s, index, obj)),
     addLight: () => commit((s) => edits.addLight(s), (n) => ({ kind: 'light', index: sceneLights(n).length - 1 })),
     addAreaLight: () => commit((s) => edits.addAreaLight(s), (n) => ({ kind: 'light', index: sceneLights(n).length - 1 })),
@@ -301,18 +312,4 @@ export const selectDisplayScene = (state: SceneState): Scene => state.preview ??
 /** Puts the store back to a fresh state (tests, and a "reset" if ever needed). */
 export function resetSceneStore(scene: Scene = STARTER_SCENE): void {
   useSceneStore.setState(initialData(structuredClone(scene)));
-}
-
-/**
- * Saves every committed scene to localStorage and the undo history to sessionStorage, after
- * taking back the history a reload left for the same scene (call once at start-up).
- */
-export function persistSceneStore(): () => void {
-  const { scene } = useSceneStore.getState();
-  const { past, future } = loadHistory(scene);
-  if (past.length > 0 || future.length > 0) useSceneStore.setState({ past, future });
-  return useSceneStore.subscribe((state, previous) => {
-    if (state.scene !== previous.scene) saveScene(state.scene);
-    if (state.past !== previous.past || state.future !== previous.future) saveHistory(state.scene, state.past, state.future);
-  });
 }

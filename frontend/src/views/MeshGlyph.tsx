@@ -11,7 +11,7 @@ export interface MeshGlyphProps {
   kind: ViewKind;
   t: ViewTransform;
   /** The mesh, defaults filled in. */
-  mesh: ResolvedObjectOf<'mesh'>;
+  mesh: ResolvedObjectOf<'mesh'> | ResolvedObjectOf<'gltf'>;
   /** What is known of its triangles. */
   state: MeshState;
   /** The label written at the rectangle's top-left corner, e.g. "Mesh 3". */
@@ -34,7 +34,7 @@ export function MeshGlyph({ kind, t, mesh, state, label, color }: MeshGlyphProps
   } else {
     const side = Math.max(12, PLACEHOLDER_SIZE * t.zoom);
     rect = { x: px - side / 2, y: py - side / 2, width: side, height: side };
-    text = `${label} (${state.status === 'loading' ? 'loading…' : 'OBJ error'})`;
+    text = `${label} (${state.status === 'loading' ? `loading…${state.progress ? ` ${Math.round(100 * state.progress)}%` : ''}` : mesh.type === 'gltf' ? 'glTF error' : 'OBJ error'})`;
   }
   return (
     <>

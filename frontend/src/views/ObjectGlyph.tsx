@@ -27,7 +27,7 @@ export interface ObjectGlyphProps {
  */
 export function ObjectGlyph({ kind, t, object, index, selected, hatchId, meshState = { status: 'loading' } }: ObjectGlyphProps) {
   const r = resolveObject(object);
-  const name = r.type === 'mesh' ? meshName(labelOf(object, index), meshState) : labelOf(object, index);
+  const name = r.type === 'mesh' || r.type === 'gltf' ? meshName(labelOf(object, index), meshState, r.type === 'gltf' ? 'glTF' : 'OBJ') : labelOf(object, index);
   const common = {
     'data-testid': `object-${index}`,
     'data-kind': r.type,
@@ -49,7 +49,7 @@ export function ObjectGlyph({ kind, t, object, index, selected, hatchId, meshSta
       </g>
     );
   }
-  if (r.type === 'mesh') {
+  if (r.type === 'mesh' || r.type === 'gltf') {
     return (
       <g {...common}>
         {title}

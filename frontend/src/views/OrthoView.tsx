@@ -88,7 +88,7 @@ export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
               index={index}
               selected={(selection?.kind === 'object' && selection.index === index) || inItems(selectedItems, { kind: 'object', index })}
               hatchId={`plane-hatch-${kind}`}
-              meshState={object.type === 'mesh' ? meshes(object) : undefined}
+              meshState={object.type === 'mesh' || object.type === 'gltf' ? meshes(object) : undefined}
             />
           ))}
           <CameraGlyph kind={kind} t={t} camera={camera} aspect={imageAspect(scene)} selected={cameraSelected} />

@@ -12,6 +12,7 @@ import {
   CameraHelper,
   Group,
   Mesh,
+  MeshBasicMaterial,
   PerspectiveCamera,
   PlaneGeometry,
   SphereGeometry,
@@ -24,8 +25,11 @@ import {
 import type { DragTarget } from '../model/selection';
 import { applyRenderCamera, type MeshDescriptor, type ThreeSceneDescriptor } from '../model/toThree';
 import { MeshGeometryCache } from './previewGeometries';
+import { loadAssetBytes } from '../hooks/useMeshes';
+import { gltfModel } from './gltfModels';
 import { PreviewLights } from './previewLights';
 import { MaterialCache } from './previewMaterials';
+import { TextureCache } from './previewTextures';
 import { meshBuild, planMeshes, type MeshBuild } from './previewReconcile';
 import { ReflectionProbes } from './reflectionProbes';
 
@@ -45,7 +49,10 @@ export class PreviewContent {
   readonly pickables: Mesh[] = [];
   /** What reflections leave out: the markers and helpers. */
   readonly helpers: Object3D[] = [];
-  private readonly materials = new MaterialCache();
+  private readonly textures: TextureCache;
+  private readonly materials: MaterialCache;
+  /** What a glTF model's box is drawn with: nothing (the model inside it is what shows; the box is what a click picks). */
+  private readonly hidden = new MeshBasicMaterial({ visible: false });
   private readonly meshGeometries = new MeshGeometryCache();
   private readonly geometries = {
     sphere: new SphereGeometry(1, 48, 32), box: new BoxGeometry(1, 1, 1), plane: new PlaneGeometry(1, 1, 64, 64), marker: new SphereGeometry(1, 16, 12), panel: new PlaneGeometry(1, 1),
@@ -56,7 +63,10 @@ export class PreviewContent {
   private readonly lights = new PreviewLights(this.root, this.geometries);
   private frustum: CameraHelper | null = null;
 
-  constructor() {
+  /** @param onAsync called when something arrives after an update (an image texture's pixels): draw again */
+  constructor(onAsync: () => void = () => {}) {
+    this.textures = new TextureCache((id) => loadAssetBytes(id), onAsync);
+    this.materials = new MaterialCache(this.textures);
     this.root.add(this.ambient);
   }
 
@@ -90,6 +100,8 @@ export class PreviewContent {
     this.showFrustum(null);
     this.probes.clear();
     this.materials.dispose();
+    this.textures.dispose();
+    this.hidden.dispose();
     this.meshGeometries.dispose();
     Object.values(this.geometries).forEach((g) => g.dispose());
   }
@@ -98,16 +110,27 @@ export class PreviewContent {
     const mesh = new Mesh(this.geometryOf(m), this.materialOf(m));
     mesh.castShadow = m.geometry !== 'plane';
     mesh.receiveShadow = true;
+    if (m.geometry === 'gltf') {
+      // a copy of the model read once per asset (it shares the model's geometries and materials)
+      const model = gltfModel(m.asset!)?.clone(true);
+      // it casts shadows on the rest; it receives none, as its often open, double-sided surfaces
+      // would shadow themselves in stripes (three's shadow maps have no bias here: see createLight)
+      model?.traverse((o) => {
+        o.castShadow = true;
+      });
+      if (model) mesh.add(model);
+    }
     this.root.add(mesh);
     return { build: meshBuild(m), mesh, box: null };
   }
 
   /** The geometry of `m` (the same for as long as its build is). */
   private geometryOf(m: MeshDescriptor): BufferGeometry {
-    return m.geometry === 'mesh' ? this.meshGeometries.get(m.mesh!) : this.geometries[m.geometry];
+    return m.geometry === 'mesh' || m.geometry === 'gltf' ? this.meshGeometries.get(m.mesh!) : this.geometries[m.geometry];
   }
 
   private materialOf(m: MeshDescriptor): Material {
+    if (m.geometry === 'gltf') return this.hidden;
     // Planes and meshes (which may be open) are seen from both sides.
     return this.materials.get(m.material, m.geometry === 'plane' || m.geometry === 'mesh');
   }
@@ -121,7 +144,7 @@ export class PreviewContent {
     mesh.scale.set(...m.scale);
     if (m.geometry === 'plane') mesh.quaternion.set(...m.quaternion);
     else mesh.rotation.set(m.rotation[0], m.rotation[1], m.rotation[2], 'XYZ');
-    if (m.material.kind === 'standard' || m.material.kind === 'physical') {
+    if (m.geometry !== 'gltf' && (m.material.kind === 'standard' || m.material.kind === 'physical')) {
       mesh.updateMatrixWorld();
       this.probes.add(mesh, m.position, d.camera.near, d.camera.far);
     }

@@ -24,7 +24,10 @@ export class PreviewEngine {
   private readonly renderer: WebGLRenderer;
   private readonly scene = new Scene();
   private readonly background = new Color();
-  private readonly content = new PreviewContent();
+  private readonly content = new PreviewContent(() => {
+    this.stale = true;
+    this.requestRender();
+  });
   private readonly renderCamera = new PerspectiveCamera();
   private readonly orbitCamera = new PerspectiveCamera(50, 1, 0.01, 1e4);
   private readonly controls: OrbitControls;

@@ -9,11 +9,19 @@ import {
   MeshPhysicalMaterial,
   MeshStandardMaterial,
   type Material,
+  type Texture,
 } from 'three';
 import type { MaterialDescriptor } from '../model/toThree';
+import type { TextureCache } from './previewTextures';
 
-/** Builds the three.js material of a descriptor (colours are sRGB, converted to linear). */
-export function createMaterial(d: MaterialDescriptor, doubleSided: boolean): Material {
+/** Builds the three.js material of a descriptor (colours are sRGB, converted to linear); `map` its texture, if any. */
+export function createMaterial(d: MaterialDescriptor, doubleSided: boolean, map: Texture | null = null): Material {
+  const material = untexturedMaterial(d, doubleSided);
+  if (map) Object.assign(material, { map });
+  return material;
+}
+
+function untexturedMaterial(d: MaterialDescriptor, doubleSided: boolean): Material {
   const side = doubleSided ? DoubleSide : FrontSide;
   const color = new Color(d.color);
   switch (d.kind) {
@@ -51,12 +59,15 @@ export class MaterialCache {
   private readonly live = new Map<string, Material>();
   private used = new Set<string>();
 
+  /** @param textures makes each textured material's texture (none: textures are left out) */
+  constructor(private readonly textures: TextureCache | null = null) {}
+
   get(d: MaterialDescriptor, doubleSided: boolean): Material {
     const key = JSON.stringify([d, doubleSided]);
     this.used.add(key);
     let material = this.live.get(key);
     if (!material) {
-      material = createMaterial(d, doubleSided);
+      material = createMaterial(d, doubleSided, d.texture && this.textures ? this.textures.create(d.texture) : null);
       this.live.set(key, material);
     }
     return material;
@@ -66,7 +77,7 @@ export class MaterialCache {
   sweep(): void {
     for (const [key, material] of this.live) {
       if (!this.used.has(key)) {
-        material.dispose();
+        disposeWithMap(material);
         this.live.delete(key);
       }
     }
@@ -74,7 +85,13 @@ export class MaterialCache {
   }
 
   dispose(): void {
-    for (const material of this.live.values()) material.dispose();
+    for (const material of this.live.values()) disposeWithMap(material);
     this.live.clear();
   }
+}
+
+/** A material and its own texture copy go together. */
+function disposeWithMap(material: Material): void {
+  (material as Material & { map?: Texture | null }).map?.dispose();
+  material.dispose();
 }

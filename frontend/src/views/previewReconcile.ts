@@ -12,14 +12,14 @@ import type { ParsedObj } from '../model/obj';
 /** Lights that cast shadows (a point light's shadow is six renders of the scene). */
 export const MAX_SHADOW_LIGHTS = 4;
 
-/** What a mesh entry is built from: a shared unit geometry, or the parse of a mesh's OBJ. */
+/** What a mesh entry is built from: a shared unit geometry, the parse of a mesh's OBJ, or a glTF model's box. */
 export type MeshBuild = 'sphere' | 'box' | 'plane' | ParsedObj;
 
 /** What a light entry is built from: its kind, whether it casts a shadow, and an area light's sides (`area2+shadow`). */
 export type LightBuild = string;
 
 export function meshBuild(m: MeshDescriptor): MeshBuild {
-  return m.geometry === 'mesh' ? m.mesh! : m.geometry;
+  return m.geometry === 'mesh' || m.geometry === 'gltf' ? m.mesh! : m.geometry;
 }
 
 /** The first {@link MAX_SHADOW_LIGHTS} lights of the scene cast shadows. */
