@@ -379,11 +379,26 @@ export interface components {
         };
         Object: components["schemas"]["SphereObject"] | components["schemas"]["BoxObject"] | components["schemas"]["PlaneObject"] | components["schemas"]["MeshObject"];
         Material: components["schemas"]["FlatMaterial"] | components["schemas"]["ChalkMaterial"] | components["schemas"]["PlasticMaterial"] | components["schemas"]["MetalMaterial"] | components["schemas"]["MirrorMaterial"] | components["schemas"]["GlassMaterial"];
+        Texture: components["schemas"]["CheckerTexture"] | components["schemas"]["ImageTexture"];
+        CheckerTexture: {
+            /** @constant */
+            type: "checker";
+            colors?: string[];
+            size?: number;
+        };
+        ImageTexture: {
+            /** @constant */
+            type: "image";
+            asset?: string;
+            file?: string;
+            scale?: number[];
+        };
         FlatMaterial: {
             /** @constant */
             type: "flat";
             /** @default #cccccc */
             color: string;
+            texture?: components["schemas"]["Texture"];
         };
         ChalkMaterial: {
             /** @constant */
@@ -392,6 +407,7 @@ export interface components {
             color: string;
             /** @default 0.9 */
             diffuse: number;
+            texture?: components["schemas"]["Texture"];
         };
         PlasticMaterial: {
             /** @constant */
@@ -404,6 +420,7 @@ export interface components {
             specular: number;
             /** @default 60 */
             shininess: number;
+            texture?: components["schemas"]["Texture"];
         };
         MetalMaterial: {
             /** @constant */
@@ -418,6 +435,7 @@ export interface components {
             shininess: number;
             /** @default 0.5 */
             reflectivity: number;
+            texture?: components["schemas"]["Texture"];
         };
         MirrorMaterial: {
             /** @constant */
@@ -426,6 +444,7 @@ export interface components {
             color: string;
             /** @default 1 */
             reflectivity: number;
+            texture?: components["schemas"]["Texture"];
         };
         GlassMaterial: {
             /** @constant */
@@ -438,6 +457,7 @@ export interface components {
             specular: number;
             /** @default 250 */
             shininess: number;
+            texture?: components["schemas"]["Texture"];
         };
         SphereObject: {
             /** @constant */
