@@ -20,6 +20,7 @@ import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.MeshFiles;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
+import studio.server.scene.format.SceneDto;
 import studio.server.scene.reading.LazyValidation;
 import studio.server.scene.reading.SceneReader;
 
@@ -74,8 +75,11 @@ public final class BenchCommand {
                     MeshFiles meshes = MeshFiles.in(file.toAbsolutePath().getParent());
                     CompiledScene compiled = compiler.compile(json, options.overrides(), 0, meshes);
                     scenes.put(stem(file), compiled);
-                    forPovray.put(stem(file), ResolvedScene.of(reader.read(json), compiled.settings().width(),
-                            compiled.settings().height(), meshes));
+                    SceneDto dto = reader.read(json);
+                    if (!textured(dto)) { // the POV-Ray writer has no textures: it would render another scene
+                        forPovray.put(stem(file), ResolvedScene.of(dto, compiled.settings().width(),
+                                compiled.settings().height(), meshes));
+                    }
                 } catch (InvalidSceneException e) {
                     err.println("error: invalid scene " + file + ": " + e.getMessage());
                     return INVALID;
@@ -108,7 +112,7 @@ public final class BenchCommand {
             List<Measurement> times = new ArrayList<>();
             try {
                 for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
-                    PovrayAccuracy.Scene povrayScene = povray == null ? null
+                    PovrayAccuracy.Scene povrayScene = povray == null || !forPovray.containsKey(scene.getKey()) ? null
                             : povray.prepareTimesOnly(scene.getKey(), forPovray.get(scene.getKey()));
                     times.addAll(bench.timesOnly(scene.getKey(), scene.getValue(), povrayScene));
                 }
@@ -130,7 +134,7 @@ public final class BenchCommand {
         try {
             Files.createDirectories(options.out);
             for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
-                PovrayAccuracy.Scene povrayScene = povray == null ? null
+                PovrayAccuracy.Scene povrayScene = povray == null || !forPovray.containsKey(scene.getKey()) ? null
                         : povray.prepare(scene.getKey(), forPovray.get(scene.getKey()));
                 SpeedAccuracyBench.SceneResult result = bench.run(scene.getKey(), scene.getValue(), povrayScene);
                 rowsByScene.put(scene.getKey(), result.rows());
@@ -273,5 +277,10 @@ public final class BenchCommand {
             return overrides;
         }
 
+    }
+
+    /** Whether any of the scene's materials has a texture. */
+    private static boolean textured(SceneDto dto) {
+        return dto.objects().stream().anyMatch(o -> o.material() != null && o.material().texture() != null);
     }
 }
