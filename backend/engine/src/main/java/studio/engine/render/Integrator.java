@@ -84,8 +84,8 @@ final class Integrator {
 
     /**
      * The ray cone's spread (radians) for texture filtering: a pixel's angle over the square root of
-     * its samples, so each sample averages its share of the pixel (0: textures are point-sampled).
-     * Set by the caller.
+     * its samples, times {@link SampleTracer#FOOTPRINT_SHARE} (0: textures are point-sampled). Set by
+     * the caller.
      */
     double coneSpread;
     /** Looks textures up at textured hits only: untextured shading never touches it. */
