@@ -84,7 +84,7 @@ final class TextureMapping {
             }
             return null;
         }
-        MipMap image = problems.attempt(field, () -> decode(bytes));
+        MipMap image = problems.attempt(field, () -> decode(bytes, memory));
         if (image != null) {
             cache.keep(key, image);
         }
@@ -93,11 +93,16 @@ final class TextureMapping {
 
     private MipMap fromFile(String file, String field) {
         byte[] bytes = problems.attempt(field, () -> files.image(file));
-        return bytes == null ? null : problems.attempt(field, () -> decode(bytes));
+        return bytes == null ? null : problems.attempt(field, () -> decode(bytes, memory));
     }
 
-    /** The image's pixels, sRGB, into a linear mip-map (the memory it keeps asked of the gate first). */
-    private MipMap decode(byte[] bytes) {
+    /**
+     * PNG or JPEG bytes, sRGB, into a linear mip-map, the memory it takes asked of {@code memory} first
+     * (also for images inside other assets, such as a glb's).
+     *
+     * @throws IllegalArgumentException if the bytes are not an image javax.imageio reads
+     */
+    static MipMap decode(byte[] bytes, MemoryGate memory) {
         BufferedImage image;
         try {
             image = ImageIO.read(new ByteArrayInputStream(bytes));
@@ -108,7 +113,7 @@ final class TextureMapping {
             throw new IllegalArgumentException("is not a PNG or JPEG image");
         }
         int w = image.getWidth(), h = image.getHeight();
-        memory.reserve(MemoryGate.ints((long) w * h));
+        memory.reserve(2 * MemoryGate.ints((long) w * h)); // the decoded image and its pixels as ints
         return MipMap.fromSrgb(w, h, image.getRGB(0, 0, w, h, null, 0, w), memory);
     }
 }
