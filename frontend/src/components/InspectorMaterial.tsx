@@ -1,5 +1,5 @@
 import { resolveMaterial } from '../model/defaults';
-import { MATERIAL_FIELDS, MATERIAL_TYPES, type Material, type MaterialType } from '../model/types';
+import { MATERIAL_FIELDS, MATERIAL_TYPES, type Material, type MaterialType, type ResolvedMaterial } from '../model/types';
 import { ColorField } from './fields/ColorField';
 import { NumberField } from './fields/NumberField';
 import { SelectField } from './fields/SelectField';
@@ -22,7 +22,8 @@ export interface InspectorMaterialProps {
 
 /** The material picker and the overrides of the chosen kind (showing defaults where unset). */
 export function InspectorMaterial({ path, material, onTypeChange, onChange, onPreview, onPreviewEnd }: InspectorMaterialProps) {
-  const resolved = resolveMaterial(material) as Record<string, number | string>;
+  // the overrides shown here; a texture is kept as it is by every edit (set copies the material)
+  const resolved = withoutTexture(resolveMaterial(material)) as Record<string, number | string>;
   const current: Material = material ?? { type: resolved.type as MaterialType };
   const kind = current.type;
   const set = (field: string, value: unknown) => ({ ...current, [field]: value }) as Material;
@@ -47,7 +48,7 @@ export function InspectorMaterial({ path, material, onTypeChange, onChange, onPr
         onPreviewEnd={onPreviewEnd}
       />
       {MATERIAL_FIELDS[kind]
-        .filter((f) => f !== 'type' && f !== 'color')
+        .filter((f) => f !== 'type' && f !== 'color' && f !== 'texture')
         .map((field) => {
           const spec = OVERRIDE_FIELDS[field];
           return (
@@ -66,4 +67,11 @@ export function InspectorMaterial({ path, material, onTypeChange, onChange, onPr
         })}
     </fieldset>
   );
+}
+
+/** A resolved material's overrides: all but its texture. */
+function withoutTexture(m: ResolvedMaterial): Omit<ResolvedMaterial, 'texture'> {
+  const overrides: Partial<ResolvedMaterial> = { ...m };
+  delete overrides.texture;
+  return overrides as Omit<ResolvedMaterial, 'texture'>;
 }

@@ -11,10 +11,29 @@ export type Vec3 = [number, number, number];
 /** An sRGB colour `"#rrggbb"`, as `<input type="color">` gives it. */
 export type Color = string;
 
+/** Squares of two colours, `size` metres a side (default 1). */
+export interface CheckerTexture {
+  type: 'checker';
+  colors: [Color, Color];
+  size?: number;
+}
+
+/** A PNG or JPEG: an uploaded `asset` id or (the command line) a `file` beside the scene; `scale` copies per unit of u, v. */
+export interface ImageTexture {
+  type: 'image';
+  asset?: string;
+  file?: string;
+  scale?: [number, number];
+}
+
+/** What a material's colour is multiplied by over the surface. */
+export type Texture = CheckerTexture | ImageTexture;
+
 /** Its colour, unlit. */
 export interface FlatMaterial {
   type: 'flat';
   color?: Color;
+  texture?: Texture;
 }
 
 /** Diffuse only. */
@@ -22,6 +41,7 @@ export interface ChalkMaterial {
   type: 'chalk';
   color?: Color;
   diffuse?: number;
+  texture?: Texture;
 }
 
 /** Diffuse plus a white highlight. */
@@ -31,6 +51,7 @@ export interface PlasticMaterial {
   diffuse?: number;
   specular?: number;
   shininess?: number;
+  texture?: Texture;
 }
 
 /** Highlight and reflection tinted by its colour. */
@@ -41,6 +62,7 @@ export interface MetalMaterial {
   specular?: number;
   shininess?: number;
   reflectivity?: number;
+  texture?: Texture;
 }
 
 /** Perfect reflection, tinted. */
@@ -48,6 +70,7 @@ export interface MirrorMaterial {
   type: 'mirror';
   color?: Color;
   reflectivity?: number;
+  texture?: Texture;
 }
 
 /** Refraction with an index of refraction, Fresnel reflection; its colour tints the light. */
@@ -57,6 +80,7 @@ export interface GlassMaterial {
   ior?: number;
   specular?: number;
   shininess?: number;
+  texture?: Texture;
 }
 
 export type Material =
@@ -193,7 +217,11 @@ export interface Scene {
 /** Every field present: what the renderer will use. */
 type Complete<T> = { [K in keyof T]-?: Exclude<T[K], undefined> };
 
-export type ResolvedMaterial = { [T in MaterialType]: Complete<MaterialOf<T>> }[MaterialType];
+/** A material's overrides, which all have defaults (its texture has none: absent, the colour alone). */
+export type MaterialDefaultsOf<T extends MaterialType> = Complete<Omit<MaterialOf<T>, 'texture'>>;
+export type ResolvedMaterial = {
+  [T in MaterialType]: MaterialDefaultsOf<T> & Pick<MaterialOf<T>, 'texture'>;
+}[MaterialType];
 export type ResolvedObject = {
   [T in ObjectType]: Complete<Omit<ObjectOf<T>, 'material' | MeshSourceField | 'name'>> &
     Pick<ObjectOf<T>, Extract<keyof ObjectOf<T>, MeshSourceField | 'name'>> & { material: ResolvedMaterial };
@@ -233,12 +261,17 @@ export const OBJECT_FIELDS = {
 } as const;
 
 export const MATERIAL_FIELDS = {
-  flat: fieldsOf<FlatMaterial>()(['type', 'color']),
-  chalk: fieldsOf<ChalkMaterial>()(['type', 'color', 'diffuse']),
-  plastic: fieldsOf<PlasticMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess']),
-  metal: fieldsOf<MetalMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess', 'reflectivity']),
-  mirror: fieldsOf<MirrorMaterial>()(['type', 'color', 'reflectivity']),
-  glass: fieldsOf<GlassMaterial>()(['type', 'color', 'ior', 'specular', 'shininess']),
+  flat: fieldsOf<FlatMaterial>()(['type', 'color', 'texture']),
+  chalk: fieldsOf<ChalkMaterial>()(['type', 'color', 'diffuse', 'texture']),
+  plastic: fieldsOf<PlasticMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess', 'texture']),
+  metal: fieldsOf<MetalMaterial>()(['type', 'color', 'diffuse', 'specular', 'shininess', 'reflectivity', 'texture']),
+  mirror: fieldsOf<MirrorMaterial>()(['type', 'color', 'reflectivity', 'texture']),
+  glass: fieldsOf<GlassMaterial>()(['type', 'color', 'ior', 'specular', 'shininess', 'texture']),
+} as const;
+
+export const TEXTURE_FIELDS = {
+  checker: fieldsOf<CheckerTexture>()(['type', 'colors', 'size']),
+  image: fieldsOf<ImageTexture>()(['type', 'asset', 'file', 'scale']),
 } as const;
 
 export const LIGHT_FIELDS = {

@@ -14,6 +14,7 @@ import {
   OBJECT_FIELDS,
   RENDER_FIELDS,
   SCENE_FIELDS,
+  TEXTURE_FIELDS,
   type Scene,
 } from './types';
 import { isRecord } from '../util/json';
@@ -120,7 +121,13 @@ const all =
     checks.forEach((check) => check(v, path, errors));
 
 const type: Check = () => {};
-const materialChecks = { type, color, diffuse: number, specular: number, shininess: number, reflectivity: number, ior: number };
+const texture = byType({
+  checker: record(TEXTURE_FIELDS.checker, { type, colors: list(color), size: positive }),
+  image: record(TEXTURE_FIELDS.image, { type, asset: string, file: string, scale: list(positive) }),
+});
+const materialChecks = {
+  type, color, diffuse: number, specular: number, shininess: number, reflectivity: number, ior: number, texture,
+};
 const material = byType(
   Object.fromEntries(Object.entries(MATERIAL_FIELDS).map(([k, f]) => [k, record(f, materialChecks)])),
 );
