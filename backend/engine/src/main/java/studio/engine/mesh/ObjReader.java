@@ -13,8 +13,8 @@ import studio.engine.memory.MemoryGate;
  * (w and any further values ignored), {@code vn x y z}, {@code f} with corners {@code i},
  * {@code i/j}, {@code i//k} or {@code i/j/k}, negative (relative) indices, and polygons, which are
  * fanned into triangles, and texture coordinates ({@code vt u [v]}), kept if every face corner
- * names one (a position used with several normals or UVs becomes several vertices); {@code o}, {@code g}, {@code s}, {@code usemtl}, {@code mtllib}, comments and every other
- * statement are ignored.
+ * names one (a position used with several UVs becomes several vertices); {@code o}, {@code g},
+ * {@code s}, {@code usemtl}, {@code mtllib}, comments and every other statement are ignored.
  *
  * <p>Vertex normals are kept only if every face corner names one; a position used with several
  * normals becomes several vertices. Problems (a non-finite or unparsable number, an index of 0 or
@@ -85,7 +85,7 @@ public final class ObjReader {
         int vertices = (int) Math.min(1024, known / 8 + 1); // "v 0 0 0" and its newline
         int triangles = (int) Math.min(1024, known / 2 + 1); // a corner and its space
         memory.reserve(MemoryGate.chars(chars) + 2 * MemoryGate.doubles(3 * vertices)
-                + 2 * MemoryGate.ints(3 * triangles) + 2 * MemoryGate.ints(16));
+                + 2 * MemoryGate.ints(3 * triangles) + 3 * MemoryGate.ints(16));
         text = new char[chars];
         positions = new double[3 * vertices];
         normals = new double[3 * vertices];
@@ -217,17 +217,22 @@ public final class ObjReader {
             memory.reserve(MemoryGate.doubles(uvs.length * 2L));
             uvs = Arrays.copyOf(uvs, uvs.length * 2);
         }
-        double u = coordinate("texture");
-        double v = 0;
-        if (nextToken()) {
-            v = number(tokenStart, tokenEnd);
-            if (!Double.isFinite(v)) {
-                throw new ObjFormatException(line, "texture coordinate '" + token() + "' is not finite");
-            }
+        if (!nextToken()) {
+            throw new ObjFormatException(line, "texture coordinate needs at least u");
         }
+        double u = textureValue();
+        double v = nextToken() ? textureValue() : 0;
         uvs[2 * uvCount] = u;
         uvs[2 * uvCount + 1] = v;
         uvCount++;
+    }
+
+    private double textureValue() {
+        double value = number(tokenStart, tokenEnd);
+        if (!Double.isFinite(value)) {
+            throw new ObjFormatException(line, "texture coordinate '" + token() + "' is not finite");
+        }
+        return value;
     }
 
     private double coordinate(String what) {
