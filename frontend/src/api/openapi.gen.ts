@@ -418,11 +418,26 @@ export interface components {
         };
         Object: components["schemas"]["SphereObject"] | components["schemas"]["BoxObject"] | components["schemas"]["PlaneObject"] | components["schemas"]["MeshObject"] | components["schemas"]["GltfObject"];
         Material: components["schemas"]["FlatMaterial"] | components["schemas"]["ChalkMaterial"] | components["schemas"]["PlasticMaterial"] | components["schemas"]["MetalMaterial"] | components["schemas"]["MirrorMaterial"] | components["schemas"]["GlassMaterial"];
+        Texture: components["schemas"]["CheckerTexture"] | components["schemas"]["ImageTexture"];
+        CheckerTexture: {
+            /** @constant */
+            type: "checker";
+            colors?: string[];
+            size?: number;
+        };
+        ImageTexture: {
+            /** @constant */
+            type: "image";
+            asset?: string;
+            file?: string;
+            scale?: number[];
+        };
         FlatMaterial: {
             /** @constant */
             type: "flat";
             /** @default #cccccc */
             color: string;
+            texture?: components["schemas"]["Texture"];
         };
         ChalkMaterial: {
             /** @constant */
@@ -431,6 +446,7 @@ export interface components {
             color: string;
             /** @default 0.9 */
             diffuse: number;
+            texture?: components["schemas"]["Texture"];
         };
         PlasticMaterial: {
             /** @constant */
@@ -443,6 +459,7 @@ export interface components {
             specular: number;
             /** @default 60 */
             shininess: number;
+            texture?: components["schemas"]["Texture"];
         };
         MetalMaterial: {
             /** @constant */
@@ -457,6 +474,7 @@ export interface components {
             shininess: number;
             /** @default 0.5 */
             reflectivity: number;
+            texture?: components["schemas"]["Texture"];
         };
         MirrorMaterial: {
             /** @constant */
@@ -465,6 +483,7 @@ export interface components {
             color: string;
             /** @default 1 */
             reflectivity: number;
+            texture?: components["schemas"]["Texture"];
         };
         GlassMaterial: {
             /** @constant */
@@ -477,6 +496,7 @@ export interface components {
             specular: number;
             /** @default 250 */
             shininess: number;
+            texture?: components["schemas"]["Texture"];
         };
         SphereObject: {
             /** @constant */

@@ -84,7 +84,7 @@ function CheckerFields({ path, texture, onChange }: { path: string; texture: Che
     <>
       {color(0)}
       {color(1)}
-      <NumberField label="Square size" path={`${path}.size`} value={texture.size} min={0} minExclusive step={0.1} hint="The side of a square, in metres on the surface (greater than 0)" onCommit={(size) => onChange({ ...texture, size })} />
+      <NumberField label="Square size" path={`${path}.size`} value={texture.size ?? 1} min={0} minExclusive step={0.1} hint="The side of a square, in metres on the surface (greater than 0)" onCommit={(size) => onChange({ ...texture, size })} />
     </>
   );
 }
@@ -94,7 +94,7 @@ function ImageFields({ path, texture, onChange }: { path: string; texture: Image
   const [su, sv] = texture.scale ?? [1, 1];
   return (
     <>
-      {url && <img className="texture-thumbnail" src={url} alt={`Texture ${texture.asset.slice(0, 15)}…`} width={96} height={96} />}
+      {url && <img className="texture-thumbnail" src={url} alt={`Texture ${(texture.asset ?? texture.file ?? '').slice(0, 15)}…`} width={96} height={96} />}
       {error && (
         <p className="field-error" role="alert">
           Cannot show the image: {error}

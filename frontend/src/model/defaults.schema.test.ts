@@ -8,7 +8,6 @@ import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { AREA_LIGHT_DEFAULTS, LIGHT_DEFAULTS, MATERIAL_DEFAULTS, OBJECT_DEFAULTS, SCENE_DEFAULTS } from './defaults';
-import { AWAITING_SERVER_SCHEMA } from './types';
 
 type Schema = { properties?: Record<string, { default?: unknown }>; $defs?: Record<string, Schema> };
 const schema = JSON.parse(readFileSync(resolve(process.cwd(), 'src/model/scene.schema.json'), 'utf8')) as Schema;
@@ -36,8 +35,7 @@ const RECORDS: [string, Schema | undefined, Record<string, unknown>][] = [
   ['render', defs.Render, Object.fromEntries(Object.entries(SCENE_DEFAULTS.render).filter(([field]) => field !== 'adaptive'))],
   ['a light', defs.PointLight, lightDefaults(LIGHT_DEFAULTS)],
   ['an area light', defs.AreaLight, lightDefaults(AREA_LIGHT_DEFAULTS)],
-  // issue 45's glTF object is compared once the server's schema has it (AWAITING_SERVER_SCHEMA)
-  ...Object.entries(OBJECT_DEFAULTS).filter(([type]) => defs[`${capitalise(type)}Object`] || !(AWAITING_SERVER_SCHEMA.objects as readonly string[]).includes(type)).map(([type, d]): [string, Schema | undefined, Record<string, unknown>] => [
+  ...Object.entries(OBJECT_DEFAULTS).map(([type, d]): [string, Schema | undefined, Record<string, unknown>] => [
     `a ${type}`, defs[`${capitalise(type)}Object`], Object.fromEntries(Object.entries(d).filter(([field]) => field !== 'type')),
   ]),
   ...Object.entries(MATERIAL_DEFAULTS).map(([type, d]): [string, Schema | undefined, Record<string, unknown>] => [

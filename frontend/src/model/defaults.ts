@@ -6,7 +6,7 @@
 import type {
   AddableType,
   Material,
-  MaterialOf,
+  MaterialDefaultsOf,
   MeshObject,
   MeshSourceField,
   MaterialType,
@@ -87,7 +87,7 @@ const GREY = '#cccccc';
 const WHITE = '#ffffff';
 
 /** Each material kind's defaults (engine MaterialDefaults). */
-export const MATERIAL_DEFAULTS: { [T in MaterialType]: Required<Omit<MaterialOf<T>, 'texture'>> } = {
+export const MATERIAL_DEFAULTS: { [T in MaterialType]: MaterialDefaultsOf<T> } = {
   flat: { type: 'flat', color: GREY },
   chalk: { type: 'chalk', color: GREY, diffuse: 0.9 },
   plastic: { type: 'plastic', color: GREY, diffuse: 0.8, specular: 0.5, shininess: 60 },

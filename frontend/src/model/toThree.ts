@@ -56,9 +56,11 @@ export type TextureDescriptor =
 export function textureToThree(texture: Texture | undefined, uvMetres: [number, number] = [1, 1], originMetres: [number, number] = [0, 0]): TextureDescriptor | undefined {
   if (!texture) return undefined;
   if (texture.type === 'checker') {
-    const period = 2 * texture.size;
+    const period = 2 * (texture.size ?? 1);
     return { kind: 'checker', colors: texture.colors, repeat: [uvMetres[0] / period, uvMetres[1] / period], offset: [originMetres[0] / period, originMetres[1] / period] };
   }
+  // an image named by a file beside the scene (the command line's) has no asset the preview could show
+  if (texture.asset === undefined) return undefined;
   const [su, sv] = texture.scale ?? [1, 1];
   return { kind: 'image', asset: texture.asset, repeat: [su, sv], offset: [0, 0] };
 }

@@ -11,25 +11,18 @@ export type Vec3 = [number, number, number];
 /** An sRGB colour `"#rrggbb"`, as `<input type="color">` gives it. */
 export type Color = string;
 
-// ---- Issue 45's additions, declared here ahead of the server's schema (textures and glTF) ----
-// They take the exact form the server's `textures` and `gltf` work gives them; until the server's
-// schema (scene.schema.json, openapi.json) has them, AWAITING_SERVER_SCHEMA names them, and the
-// schema tests compare everything else. When the schema has them, that list becomes empty.
-
-/** Names the kinds and fields above that the server's published schema does not have yet. */
-export const AWAITING_SERVER_SCHEMA = { objects: ['gltf'], materialFields: ['texture'] } as const;
-
-/** A checkerboard of two colours, squares `size` metres on a side (in the surface's UV units). */
+/** Squares of two colours, `size` metres a side (default 1). */
 export interface CheckerTexture {
   type: 'checker';
   colors: [Color, Color];
-  size: number;
+  size?: number;
 }
 
-/** An uploaded PNG or JPEG (by its asset id, `sha256-<hex>`), repeated `scale` times along u and v. */
+/** A PNG or JPEG: an uploaded `asset` id or (the command line) a `file` beside the scene; `scale` copies per unit of u, v. */
 export interface ImageTexture {
   type: 'image';
-  asset: string;
+  asset?: string;
+  file?: string;
   scale?: [number, number];
 }
 
@@ -54,7 +47,6 @@ export interface GltfObject {
   /** Never given: the model brings its own materials (declared so code can read any object's `material`). */
   material?: never;
 }
-// ---- end of issue 45's additions ----
 
 /** Its colour, unlit. */
 export interface FlatMaterial {
@@ -281,7 +273,11 @@ export interface Scene {
 /** Every field present: what the renderer will use. */
 type Complete<T> = { [K in keyof T]-?: Exclude<T[K], undefined> };
 
-export type ResolvedMaterial = { [T in MaterialType]: Complete<Omit<MaterialOf<T>, 'texture'>> & Pick<MaterialOf<T>, 'texture'> }[MaterialType];
+/** A material's overrides, which all have defaults (its texture has none: absent, the colour alone). */
+export type MaterialDefaultsOf<T extends MaterialType> = Complete<Omit<MaterialOf<T>, 'texture'>>;
+export type ResolvedMaterial = {
+  [T in MaterialType]: MaterialDefaultsOf<T> & Pick<MaterialOf<T>, 'texture'>;
+}[MaterialType];
 export type ResolvedObject = {
   [T in ObjectType]: Complete<Omit<ObjectOf<T>, 'material' | MeshSourceField | 'name'>> &
     Pick<ObjectOf<T>, Extract<keyof ObjectOf<T>, MeshSourceField | 'name'>> & { material: ResolvedMaterial };
@@ -337,7 +333,7 @@ export const MATERIAL_FIELDS = {
 
 export const TEXTURE_FIELDS = {
   checker: fieldsOf<CheckerTexture>()(['type', 'colors', 'size']),
-  image: fieldsOf<ImageTexture>()(['type', 'asset', 'scale']),
+  image: fieldsOf<ImageTexture>()(['type', 'asset', 'file', 'scale']),
 } as const;
 
 export const LIGHT_FIELDS = {

@@ -120,7 +120,6 @@ describe('validateScene', () => {
       { path: 'objects[1].material', message: expect.stringMatching(/^is not a known field/) },
       { path: 'objects[1].asset', message: 'is required' },
       { path: 'objects[2].material.texture.colors[0]', message: 'must be a colour of the form #rrggbb' },
-      { path: 'objects[2].material.texture.size', message: 'is required' },
       { path: 'objects[3].material.texture.scale[1]', message: 'must be a finite number greater than 0' },
       { path: 'objects[4].material.texture.type', message: 'must be one of "checker", "image"' },
     ]);

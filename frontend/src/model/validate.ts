@@ -129,6 +129,13 @@ const modelSource: Check = (v, path, errors) => {
   else if (v.asset === undefined && v.file === undefined) errors.push({ path: `${path}.asset`, message: 'is required' });
 };
 
+/** An image texture names exactly one of its asset id and a file beside the scene. */
+const imageSource: Check = (v, path, errors) => {
+  if (!isRecord(v)) return;
+  if (v.asset !== undefined && v.file !== undefined) errors.push({ path, message: 'give the image one of "asset" and "file", not both' });
+  else if (v.asset === undefined && v.file === undefined) errors.push({ path: `${path}.asset`, message: 'is required' });
+};
+
 /** An asset id as the server gives it: `sha256-` and 64 lower-case hex digits. */
 export const ASSET_ID = /^sha256-[0-9a-f]{64}$/;
 const assetId: Check = (v, path, errors) => {
@@ -154,8 +161,9 @@ const all =
     checks.forEach((check) => check(v, path, errors));
 
 const texture = byType({
-  checker: all(record(TEXTURE_FIELDS.checker, { type: () => {}, colors: pair(color), size: positiveNumber }), required('colors', 'size')),
-  image: all(record(TEXTURE_FIELDS.image, { type: () => {}, asset: assetId, scale: pair(positiveNumber) }), required('asset')),
+  checker: all(record(TEXTURE_FIELDS.checker, { type: () => {}, colors: pair(color), size: positiveNumber }), required('colors')),
+  // an image names an uploaded asset (the editor's) or a file beside the scene (the command line's)
+  image: all(record(TEXTURE_FIELDS.image, { type: () => {}, asset: assetId, file: string, scale: pair(positiveNumber) }), imageSource),
 });
 const type: Check = () => {};
 const materialChecks = { type, color, diffuse: number, specular: number, shininess: number, reflectivity: number, ior: number, texture };

@@ -55,7 +55,7 @@ export function assetIdsOf(scene: Scene): string[] {
   for (const o of scene.objects) {
     if ((o.type === 'mesh' || o.type === 'gltf') && o.asset) ids.add(o.asset);
     const texture = o.material?.texture;
-    if (texture?.type === 'image') ids.add(texture.asset);
+    if (texture?.type === 'image' && texture.asset) ids.add(texture.asset);
   }
   return [...ids];
 }

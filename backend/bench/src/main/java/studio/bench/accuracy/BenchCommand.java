@@ -21,6 +21,7 @@ import studio.server.scene.compiling.MeshFiles;
 import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
+import studio.server.scene.format.SceneDto;
 import studio.server.scene.reading.LazyValidation;
 import studio.server.scene.reading.SceneReader;
 
@@ -75,8 +76,11 @@ public final class BenchCommand {
                     MeshFiles meshes = MeshFiles.in(file.toAbsolutePath().getParent());
                     CompiledScene compiled = compiler.compile(CompileRequest.of(json).overriding(options.overrides()).readingMeshesFrom(meshes));
                     scenes.put(stem(file), compiled);
-                    forPovray.put(stem(file), ResolvedScene.of(reader.read(json), compiled.settings().width(),
-                            compiled.settings().height(), meshes));
+                    SceneDto dto = reader.read(json);
+                    if (!textured(dto)) { // the POV-Ray writer has no textures: it would render another scene
+                        forPovray.put(stem(file), ResolvedScene.of(dto, compiled.settings().width(),
+                                compiled.settings().height(), meshes));
+                    }
                 } catch (InvalidSceneException e) {
                     err.println("error: invalid scene " + file + ": " + e.getMessage());
                     return INVALID;
@@ -109,7 +113,7 @@ public final class BenchCommand {
             List<Measurement> times = new ArrayList<>();
             try {
                 for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
-                    PovrayAccuracy.Scene povrayScene = povray == null ? null
+                    PovrayAccuracy.Scene povrayScene = povray == null || !forPovray.containsKey(scene.getKey()) ? null
                             : povray.prepareTimesOnly(scene.getKey(), forPovray.get(scene.getKey()));
                     times.addAll(bench.timesOnly(scene.getKey(), scene.getValue(), povrayScene));
                 }
@@ -131,7 +135,7 @@ public final class BenchCommand {
         try {
             Files.createDirectories(options.out);
             for (Map.Entry<String, CompiledScene> scene : scenes.entrySet()) {
-                PovrayAccuracy.Scene povrayScene = povray == null ? null
+                PovrayAccuracy.Scene povrayScene = povray == null || !forPovray.containsKey(scene.getKey()) ? null
                         : povray.prepare(scene.getKey(), forPovray.get(scene.getKey()));
                 SpeedAccuracyBench.SceneResult result = bench.run(scene.getKey(), scene.getValue(), povrayScene);
                 rowsByScene.put(scene.getKey(), result.rows());
@@ -274,5 +278,10 @@ public final class BenchCommand {
             return overrides;
         }
 
+    }
+
+    /** Whether any of the scene's materials has a texture. */
+    private static boolean textured(SceneDto dto) {
+        return dto.objects().stream().anyMatch(o -> o.material() != null && o.material().texture() != null);
     }
 }

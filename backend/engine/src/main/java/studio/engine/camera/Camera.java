@@ -83,6 +83,14 @@ public final class Camera {
         return position;
     }
 
+    /**
+     * The angle (radians, small-angle) between the rays through neighbouring pixels of an image
+     * {@code height} pixels high, at its centre: the spread of a pixel's ray cone.
+     */
+    public double pixelSpread(int height) {
+        return 2 * tanHalfFov / height;
+    }
+
     /** Unit vectors of the camera frame: right, up and backwards (away from the target). */
     public Vec3 right() {
         return new Vec3(ux, uy, uz);

@@ -208,6 +208,47 @@ public final class Box implements Shape {
         return new Aabb(cx - ex, cy - ey, cz - ez, cx + ex, cy + ey, cz + ez).padded(BOUNDS_PADDING);
     }
 
+    /**
+     * Each face 0..1, seen from outside with u to the right and v up (the top and bottom faces with
+     * -z and +z up): the hit point taken into the box's frame, its face the axis it lies furthest
+     * out along, relative to the half size.
+     */
+    @Override
+    public void textureCoordinates(Hit hit, TextureCoordinates out) {
+        double px = hit.px - cx, py = hit.py - cy, pz = hit.pz - cz;
+        double lx = m00 * px + m10 * py + m20 * pz;
+        double ly = m01 * px + m11 * py + m21 * pz;
+        double lz = m02 * px + m12 * py + m22 * pz;
+        double fx = Math.abs(lx) / hx, fy = Math.abs(ly) / hy, fz = Math.abs(lz) / hz;
+        int uAxis, vAxis;
+        double uSign, vSign;
+        if (fx >= fy && fx >= fz) {
+            uAxis = 2; vAxis = 1;
+            uSign = lx >= 0 ? -1 : 1; vSign = 1;
+        } else if (fy >= fz) {
+            uAxis = 0; vAxis = 2;
+            uSign = 1; vSign = ly >= 0 ? -1 : 1;
+        } else {
+            uAxis = 0; vAxis = 1;
+            uSign = lz >= 0 ? 1 : -1; vSign = 1;
+        }
+        double hu = uAxis == 0 ? hx : hz, hv = vAxis == 1 ? hy : hz;
+        double lu = uAxis == 0 ? lx : lz, lv = vAxis == 1 ? ly : lz;
+        double su = uSign * 2 * hu, sv = vSign * 2 * hv;
+        out.set((uSign * lu / hu + 1) / 2, (vSign * lv / hv + 1) / 2,
+                su * column(uAxis, 0), su * column(uAxis, 1), su * column(uAxis, 2),
+                sv * column(vAxis, 0), sv * column(vAxis, 1), sv * column(vAxis, 2), 2 * hu, 2 * hv, false);
+    }
+
+    /** Row {@code row} of the world-from-box rotation's column {@code axis}: the box's axis in the world. */
+    private double column(int axis, int row) {
+        return switch (row * 3 + axis) {
+            case 0 -> m00; case 1 -> m01; case 2 -> m02;
+            case 3 -> m10; case 4 -> m11; case 5 -> m12;
+            case 6 -> m20; case 7 -> m21; default -> m22;
+        };
+    }
+
     private static double clamp(double v, double h) {
         return v < -h ? -h : v > h ? h : v;
     }

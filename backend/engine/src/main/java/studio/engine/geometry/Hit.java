@@ -25,6 +25,13 @@ public final class Hit {
     public double ex, ey, ez;
     /** Index of the primitive in its scene, in declaration order. */
     public int primitive;
+    /**
+     * On a mesh: the triangle hit (in the mesh's order) and the barycentric weights of its second and
+     * third vertices, recorded for texture coordinates ({@link Shape#textureCoordinates}); other shapes
+     * leave them as they are.
+     */
+    public int triangle;
+    public double b1, b2;
 
     /** Traversal stack of the scene's BVH over its objects. */
     public final int[] sceneStack = new int[Bvh.STACK_SIZE];

@@ -45,6 +45,23 @@ public record Plane(Vec3 point, Vec3 normal) implements Shape {
         return Aabb.UNBOUNDED;
     }
 
+    /**
+     * World units along a tangent frame that depends on the normal alone (Duff et al., "Building an
+     * Orthonormal Basis, Revisited", JCGT 2017), measured from the plane's point: on a floor (normal
+     * +y) u runs along +x and v along -z, as three.js lays a PlaneGeometry turned to the floor.
+     */
+    @Override
+    public void textureCoordinates(Hit hit, TextureCoordinates out) {
+        double nx = normal.x(), ny = normal.y(), nz = normal.z();
+        double sign = Math.copySign(1.0, nz);
+        double a = -1 / (sign + nz);
+        double b = nx * ny * a;
+        double tx = 1 + sign * nx * nx * a, ty = sign * b, tz = -sign * nx;
+        double bx = b, by = sign + ny * ny * a, bz = -ny;
+        double rx = hit.px - point.x(), ry = hit.py - point.y(), rz = hit.pz - point.z();
+        out.set(rx * tx + ry * ty + rz * tz, rx * bx + ry * by + rz * bz, tx, ty, tz, bx, by, bz, 1, 1, false);
+    }
+
     private double distance(Ray ray, double tMax) {
         double nx = normal.x(), ny = normal.y(), nz = normal.z();
         double denom = nx * ray.dx + ny * ray.dy + nz * ray.dz;

@@ -22,4 +22,13 @@ public sealed interface Shape permits Sphere, Plane, Box, TriangleMesh {
      * or {@link Aabb#UNBOUNDED} for shapes without finite extent, which stay out of a BVH.
      */
     Aabb bounds();
+
+    /**
+     * Into {@code out}: the texture coordinates of {@code hit}, a hit this shape reported (its point
+     * and normal; for a mesh, its triangle and barycentrics). Called once, for the hit being shaded
+     * with a texture: spheres (longitude, latitude in 0..1, as three.js's SphereGeometry), planes
+     * (world units along a tangent frame fixed by the normal), boxes (each face 0..1), meshes (their
+     * vertices' UVs interpolated, or the barycentrics without UVs).
+     */
+    void textureCoordinates(Hit hit, TextureCoordinates out);
 }

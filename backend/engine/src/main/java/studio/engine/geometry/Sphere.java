@@ -41,6 +41,32 @@ public record Sphere(Vec3 center, double radius) implements Shape {
     }
 
     /**
+     * Longitude and latitude as three.js's SphereGeometry lays them out: u = 0 where the surface
+     * faces -x, growing towards +z; v = 0 at the bottom pole, 1 at the top. dp/du and dp/dv follow;
+     * at a pole dp/du is zero (every longitude meets there).
+     */
+    @Override
+    public void textureCoordinates(Hit hit, TextureCoordinates out) {
+        double nx = hit.nx, ny = hit.ny, nz = hit.nz;
+        double phi = Math.atan2(nz, -nx);
+        double u = phi < 0 ? phi / (2 * Math.PI) + 1 : phi / (2 * Math.PI);
+        double v = 1 - Math.acos(Math.max(-1, Math.min(1, ny))) / Math.PI;
+        double sinTheta = Math.sqrt(nx * nx + nz * nz);
+        double twoPiR = 2 * Math.PI * radius, piR = Math.PI * radius;
+        double vx, vy, vz;
+        if (sinTheta > 0) {
+            vx = -piR * nx * ny / sinTheta;
+            vy = piR * sinTheta;
+            vz = -piR * nz * ny / sinTheta;
+        } else {
+            vx = piR;
+            vy = 0;
+            vz = 0;
+        }
+        out.set(u >= 1 ? 0 : u, v, twoPiR * nz, 0, -twoPiR * nx, vx, vy, vz, twoPiR, piR, true);
+    }
+
+    /**
      * {@link #intersect(Ray, double, Hit)} for the sphere with centre (cx, cy, cz) and the given
      * radius: the one implementation, which the record and a scene's flat sphere arrays both call,
      * so a sphere found either way has the same bits of t, point and normal.

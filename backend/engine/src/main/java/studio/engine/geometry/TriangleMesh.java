@@ -51,6 +51,8 @@ public final class TriangleMesh implements Shape {
     private final double[] positions;
     /** World unit normals, 3 per vertex, or null. */
     private final double[] normals;
+    /** Texture coordinates, 2 per vertex (the mesh data's own array), or null. */
+    private final double[] uvs;
     /** Vertex indices, 3 per triangle, in BVH leaf order; shared by moved copies. */
     private final int[] indices;
     /** The BVH's boxes, fitted to the world positions. */
@@ -108,6 +110,7 @@ public final class TriangleMesh implements Shape {
         this.unplaced = unplacedPositions(mesh.positions(), r, scale);
         this.positions = moved(unplaced, position);
         this.normals = mesh.normals() == null ? null : worldNormals(mesh.normals(), r);
+        this.uvs = mesh.uvs();
         int[] valid = nonDegenerate(mesh.indices(), unplaced);
         boolean movable = haveArea(valid, positions);
         if (!movable) {
@@ -163,6 +166,7 @@ public final class TriangleMesh implements Shape {
         this.unplaced = from.unplaced;
         this.positions = positions;
         this.normals = from.normals;
+        this.uvs = from.uvs;
         this.indices = from.indices;
         this.nodeLinks = from.nodeLinks;
         this.nodeCount = from.nodeCount;
@@ -582,6 +586,51 @@ public final class TriangleMesh implements Shape {
             }
         }
         hit.set(t, px, py, pz, nx, ny, nz, gx, gy, gz, ex, ey, ez);
+        hit.triangle = tri;
+        hit.b1 = b1;
+        hit.b2 = b2;
+    }
+
+    /**
+     * The hit triangle's vertex UVs interpolated by its barycentrics, and dp/du, dp/dv solved from its
+     * edges (pbrt's Triangle::Intersect); without UVs the barycentrics themselves (the vertices at
+     * (0, 0), (1, 0) and (0, 1)). A triangle whose UVs have no area has dp/du = dp/dv = 0: its
+     * footprint covers the whole texture.
+     */
+    @Override
+    public void textureCoordinates(Hit hit, TextureCoordinates out) {
+        double[] p = positions;
+        int tri = hit.triangle;
+        int ia = indices[3 * tri], ib = indices[3 * tri + 1], ic = indices[3 * tri + 2];
+        int a = 3 * ia, b = 3 * ib, c = 3 * ic;
+        double b1 = hit.b1, b2 = hit.b2, b0 = 1 - b1 - b2;
+        if (uvs == null) {
+            out.set(b1, b2, p[b] - p[a], p[b + 1] - p[a + 1], p[b + 2] - p[a + 2],
+                    p[c] - p[a], p[c + 1] - p[a + 1], p[c + 2] - p[a + 2], 1, 1, false);
+            return;
+        }
+        double[] t = uvs;
+        double u0 = t[2 * ia], v0 = t[2 * ia + 1], u1 = t[2 * ib], v1 = t[2 * ib + 1], u2 = t[2 * ic], v2 = t[2 * ic + 1];
+        double du02 = u0 - u2, dv02 = v0 - v2, du12 = u1 - u2, dv12 = v1 - v2;
+        double det = du02 * dv12 - dv02 * du12;
+        double ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
+        if (det != 0 && Double.isFinite(1 / det)) {
+            double inv = 1 / det;
+            double x02 = p[a] - p[c], y02 = p[a + 1] - p[c + 1], z02 = p[a + 2] - p[c + 2];
+            double x12 = p[b] - p[c], y12 = p[b + 1] - p[c + 1], z12 = p[b + 2] - p[c + 2];
+            ux = (dv12 * x02 - dv02 * x12) * inv;
+            uy = (dv12 * y02 - dv02 * y12) * inv;
+            uz = (dv12 * z02 - dv02 * z12) * inv;
+            vx = (du02 * x12 - du12 * x02) * inv;
+            vy = (du02 * y12 - du12 * y02) * inv;
+            vz = (du02 * z12 - du12 * z02) * inv;
+        }
+        out.set(b0 * u0 + b1 * u1 + b2 * u2, b0 * v0 + b1 * v1 + b2 * v2, ux, uy, uz, vx, vy, vz, 1, 1, false);
+    }
+
+    /** Whether the mesh carries texture coordinates. */
+    public boolean hasUvs() {
+        return uvs != null;
     }
 
     @Override

@@ -1,6 +1,7 @@
 package studio.engine.material;
 
 import studio.engine.math.Rgb;
+import studio.engine.texture.Texture;
 
 /**
  * How a surface answers light: one of the six kinds of the scene format with its resolved
@@ -13,9 +14,17 @@ import studio.engine.math.Rgb;
  * @param shininess    Blinn-Phong exponent
  * @param reflectivity weight of the mirror reflection (metal, mirror); glass uses Fresnel instead
  * @param ior          index of refraction (glass)
+ * @param texture      what the colour is multiplied by over the surface (as glTF's baseColorTexture
+ *                     times its baseColorFactor), or null: the colour alone
  */
 public record Material(MaterialKind kind, Rgb color, double diffuse, double specular, double shininess,
-                       double reflectivity, double ior) {
+                       double reflectivity, double ior, Texture texture) {
+
+    /** An untextured material. */
+    public Material(MaterialKind kind, Rgb color, double diffuse, double specular, double shininess,
+                    double reflectivity, double ior) {
+        this(kind, color, diffuse, specular, shininess, reflectivity, ior, null);
+    }
 
     public Material {
         if (kind == null || color == null) {
@@ -37,6 +46,11 @@ public record Material(MaterialKind kind, Rgb color, double diffuse, double spec
         if (!(value >= min && value <= max)) {
             throw new IllegalArgumentException(name + " must be in [" + min + ", " + max + "]: " + value);
         }
+    }
+
+    /** This material with its colour multiplied by {@code texture} (null: none). */
+    public Material withTexture(Texture texture) {
+        return new Material(kind, color, diffuse, specular, shininess, reflectivity, ior, texture);
     }
 
     /** The colour of a highlight: white on plastic and glass, the metal's own colour on metal. */

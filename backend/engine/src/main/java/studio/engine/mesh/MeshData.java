@@ -3,14 +3,21 @@ package studio.engine.mesh;
 /**
  * A triangle mesh in object space, as read from a file or generated: vertex positions (x, y, z per
  * vertex), triangles as three vertex indices each (counter-clockwise seen from outside, as in OBJ),
- * and optionally one normal per vertex (x, y, z, non-zero; not necessarily unit length) for smooth
- * shading, or null.
+ * optionally one normal per vertex (x, y, z, non-zero; not necessarily unit length) for smooth
+ * shading, or null, and optionally one texture coordinate per vertex (u, v, finite; v up, as OBJ's
+ * {@code vt} and three.js have it: a glTF reader passes 1 - v), or null. A mesh without normals or
+ * UVs holds no array for them.
  *
  * <p>The arrays are taken as they are, not copied (meshes are large): whoever makes a MeshData
  * hands its arrays over and does not change them afterwards. Record equality is therefore array
  * identity.
  */
-public record MeshData(double[] positions, int[] indices, double[] normals) {
+public record MeshData(double[] positions, int[] indices, double[] normals, double[] uvs) {
+
+    /** A mesh without texture coordinates. */
+    public MeshData(double[] positions, int[] indices, double[] normals) {
+        this(positions, indices, normals, null);
+    }
 
     public MeshData {
         if (positions == null || indices == null) {
@@ -25,6 +32,18 @@ public record MeshData(double[] positions, int[] indices, double[] normals) {
         if (normals != null && normals.length != positions.length) {
             throw new IllegalArgumentException("normals must match positions one to one: " + normals.length
                     + " values for " + positions.length);
+        }
+        if (uvs != null && uvs.length != positions.length / 3 * 2) {
+            throw new IllegalArgumentException("uvs must hold 2 values per vertex: " + uvs.length + " values for "
+                    + positions.length / 3 + " vertices");
+        }
+        if (uvs != null) {
+            for (int i = 0; i < uvs.length; i++) {
+                if (!Double.isFinite(uvs[i])) {
+                    throw new IllegalArgumentException("vertex " + i / 2 + " has a non-finite texture coordinate: "
+                            + uvs[i]);
+                }
+            }
         }
         for (int i = 0; i < positions.length; i++) {
             if (!Double.isFinite(positions[i])) {
@@ -58,5 +77,9 @@ public record MeshData(double[] positions, int[] indices, double[] normals) {
 
     public boolean hasNormals() {
         return normals != null;
+    }
+
+    public boolean hasUvs() {
+        return uvs != null;
     }
 }

@@ -12,9 +12,9 @@ import studio.engine.memory.MemoryGate;
  * Reads Wavefront OBJ text into an object-space {@link MeshData}. Understood: {@code v x y z [w]}
  * (w and any further values ignored), {@code vn x y z}, {@code f} with corners {@code i},
  * {@code i/j}, {@code i//k} or {@code i/j/k}, negative (relative) indices, and polygons, which are
- * fanned into triangles. Texture coordinates ({@code vt}) are checked for nothing and dropped;
- * {@code o}, {@code g}, {@code s}, {@code usemtl}, {@code mtllib}, comments and every other
- * statement are ignored.
+ * fanned into triangles, and texture coordinates ({@code vt u [v]}), kept if every face corner
+ * names one (a position used with several UVs becomes several vertices); {@code o}, {@code g},
+ * {@code s}, {@code usemtl}, {@code mtllib}, comments and every other statement are ignored.
  *
  * <p>Vertex normals are kept only if every face corner names one; a position used with several
  * normals becomes several vertices. Problems (a non-finite or unparsable number, an index of 0 or
@@ -58,9 +58,15 @@ public final class ObjReader {
     private int[] cornerNormals;
     private int cornerCount;
     private boolean everyCornerHasNormal = true;
+    /** Texture coordinates (u, v per vt) and each corner's index into them (-1: none): null until the first vt. */
+    private double[] uvs;
+    private int uvCount;
+    private int[] cornerUvs;
+    private boolean everyCornerHasUv = true;
     /** The current face's corners. */
     private int[] facePositions;
     private int[] faceNormals;
+    private int[] faceUvs;
 
     /**
      * @param length the text's length if known, else -1: a short text gets small buffers (a scene
@@ -79,7 +85,7 @@ public final class ObjReader {
         int vertices = (int) Math.min(1024, known / 8 + 1); // "v 0 0 0" and its newline
         int triangles = (int) Math.min(1024, known / 2 + 1); // a corner and its space
         memory.reserve(MemoryGate.chars(chars) + 2 * MemoryGate.doubles(3 * vertices)
-                + 2 * MemoryGate.ints(3 * triangles) + 2 * MemoryGate.ints(16));
+                + 2 * MemoryGate.ints(3 * triangles) + 3 * MemoryGate.ints(16));
         text = new char[chars];
         positions = new double[3 * vertices];
         normals = new double[3 * vertices];
@@ -87,6 +93,7 @@ public final class ObjReader {
         cornerNormals = new int[3 * triangles];
         facePositions = new int[16];
         faceNormals = new int[16];
+        faceUvs = new int[16];
     }
 
     /** Reads a whole text, without limits. */
@@ -167,8 +174,10 @@ public final class ObjReader {
             face();
         } else if (n == 2 && c0 == 'v' && text[tokenStart + 1] == 'n') {
             normal();
+        } else if (n == 2 && c0 == 'v' && text[tokenStart + 1] == 't') {
+            textureCoordinate();
         }
-        // vt, o, g, s, usemtl, mtllib and anything else: ignored
+        // o, g, s, usemtl, mtllib and anything else: ignored
     }
 
     private void vertex() {
@@ -197,6 +206,35 @@ public final class ObjReader {
         normalCount++;
     }
 
+    /** {@code vt u [v [w]]}: v defaults to 0, w is ignored. The arrays for them exist from the first one. */
+    private void textureCoordinate() {
+        if (uvs == null) {
+            memory.reserve(MemoryGate.doubles(2L * 64) + MemoryGate.ints(cornerPositions.length));
+            uvs = new double[2 * 64];
+            cornerUvs = new int[cornerPositions.length];
+            Arrays.fill(cornerUvs, 0, cornerCount, -1);
+        } else if (2 * uvCount + 2 > uvs.length) {
+            memory.reserve(MemoryGate.doubles(uvs.length * 2L));
+            uvs = Arrays.copyOf(uvs, uvs.length * 2);
+        }
+        if (!nextToken()) {
+            throw new ObjFormatException(line, "texture coordinate needs at least u");
+        }
+        double u = textureValue();
+        double v = nextToken() ? textureValue() : 0;
+        uvs[2 * uvCount] = u;
+        uvs[2 * uvCount + 1] = v;
+        uvCount++;
+    }
+
+    private double textureValue() {
+        double value = number(tokenStart, tokenEnd);
+        if (!Double.isFinite(value)) {
+            throw new ObjFormatException(line, "texture coordinate '" + token() + "' is not finite");
+        }
+        return value;
+    }
+
     private double coordinate(String what) {
         if (!nextToken()) {
             throw new ObjFormatException(line, what + " needs 3 coordinates");
@@ -219,6 +257,7 @@ public final class ObjReader {
                 memory.reserve(2 * MemoryGate.ints(corners * 2L));
                 facePositions = Arrays.copyOf(facePositions, corners * 2);
                 faceNormals = Arrays.copyOf(faceNormals, corners * 2);
+                faceUvs = Arrays.copyOf(faceUvs, corners * 2);
             }
             corner(corners++);
         }
@@ -229,9 +268,12 @@ public final class ObjReader {
         int triangles = corners - 2;
         if (cornerCount + 3 * triangles > cornerPositions.length) {
             int capacity = Math.max(cornerPositions.length * 2, cornerCount + 3 * triangles);
-            memory.reserve(2 * MemoryGate.ints(capacity));
+            memory.reserve((cornerUvs != null ? 3 : 2) * MemoryGate.ints(capacity));
             cornerPositions = Arrays.copyOf(cornerPositions, capacity);
             cornerNormals = Arrays.copyOf(cornerNormals, capacity);
+            if (cornerUvs != null) {
+                cornerUvs = Arrays.copyOf(cornerUvs, capacity);
+            }
         }
         for (int k = 1; k + 1 < corners; k++) { // fan around the first corner
             addCorner(0);
@@ -243,6 +285,9 @@ public final class ObjReader {
     private void addCorner(int k) {
         cornerPositions[cornerCount] = facePositions[k];
         cornerNormals[cornerCount] = faceNormals[k];
+        if (cornerUvs != null) {
+            cornerUvs[cornerCount] = faceUvs[k];
+        }
         cornerCount++;
     }
 
@@ -253,11 +298,14 @@ public final class ObjReader {
         int vEnd = slash1 < 0 ? end : slash1;
         facePositions[k] = resolve(integer(tokenStart, vEnd), positionCount, "vertex");
         faceNormals[k] = -1;
+        faceUvs[k] = -1;
         if (slash1 >= 0) {
             int slash2 = indexOf('/', slash1 + 1, end);
             int tEnd = slash2 < 0 ? end : slash2;
             if (tEnd > slash1 + 1) {
-                integer(slash1 + 1, tEnd); // texture index: checked for form, otherwise unused
+                int uv = integer(slash1 + 1, tEnd);
+                // with no vt at all, an index is checked for form only (as before texture coordinates were read)
+                faceUvs[k] = uvs != null ? resolve(uv, uvCount, "texture coordinate") : -1;
             }
             if (slash2 >= 0) {
                 faceNormals[k] = resolve(integer(slash2 + 1, end), normalCount, "normal");
@@ -265,6 +313,9 @@ public final class ObjReader {
         }
         if (faceNormals[k] < 0) {
             everyCornerHasNormal = false;
+        }
+        if (faceUvs[k] < 0) {
+            everyCornerHasUv = false;
         }
     }
 
@@ -400,6 +451,9 @@ public final class ObjReader {
     }
 
     private MeshData result() {
+        if (uvs != null && everyCornerHasUv && cornerCount > 0) {
+            return withUvs();
+        }
         long copies = MemoryGate.doubles(3L * positionCount) + MemoryGate.ints(cornerCount);
         if (!everyCornerHasNormal || cornerCount == 0) {
             memory.reserve(copies);
@@ -438,5 +492,56 @@ public final class ObjReader {
         }
         memory.reserve(2 * MemoryGate.doubles(3L * vertices));
         return new MeshData(Arrays.copyOf(outPositions, 3 * vertices), indices, Arrays.copyOf(outNormals, 3 * vertices));
+    }
+
+    /**
+     * The mesh when every corner names a texture coordinate: vertices are (position, normal, uv)
+     * triples (normal only if every corner has one), numbered in order of first use.
+     */
+    private MeshData withUvs() {
+        boolean withNormals = everyCornerHasNormal;
+        LongIntMap attributes = new LongIntMap(positionCount, memory); // (normal, uv) -> id
+        LongIntMap triples = new LongIntMap(positionCount, memory); // (position, id) -> vertex
+        memory.reserve((withNormals ? 2 : 1) * MemoryGate.doubles(3L * positionCount)
+                + MemoryGate.doubles(2L * positionCount) + MemoryGate.ints(cornerCount));
+        double[] outPositions = new double[3 * positionCount];
+        double[] outNormals = withNormals ? new double[3 * positionCount] : null;
+        double[] outUvs = new double[2 * positionCount];
+        int[] indices = new int[cornerCount];
+        int vertices = 0, ids = 0;
+        for (int c = 0; c < cornerCount; c++) {
+            int p = cornerPositions[c], n = withNormals ? cornerNormals[c] : 0, t = cornerUvs[c];
+            long pair = ((long) n << 32) | t;
+            int id = attributes.get(pair);
+            if (id < 0) {
+                id = ids++;
+                attributes.putNew(pair, id);
+            }
+            long key = ((long) p << 32) | id;
+            int v = triples.get(key);
+            if (v < 0) {
+                v = vertices++;
+                triples.putNew(key, v);
+                if (3 * v + 3 > outPositions.length) {
+                    int grown = outPositions.length * 2;
+                    memory.reserve((withNormals ? 2 : 1) * MemoryGate.doubles(grown) + MemoryGate.doubles(grown / 3 * 2));
+                    outPositions = Arrays.copyOf(outPositions, grown);
+                    outUvs = Arrays.copyOf(outUvs, grown / 3 * 2);
+                    if (withNormals) {
+                        outNormals = Arrays.copyOf(outNormals, grown);
+                    }
+                }
+                System.arraycopy(positions, 3 * p, outPositions, 3 * v, 3);
+                if (withNormals) {
+                    System.arraycopy(normals, 3 * n, outNormals, 3 * v, 3);
+                }
+                outUvs[2 * v] = uvs[2 * t];
+                outUvs[2 * v + 1] = uvs[2 * t + 1];
+            }
+            indices[c] = v;
+        }
+        memory.reserve((withNormals ? 2 : 1) * MemoryGate.doubles(3L * vertices) + MemoryGate.doubles(2L * vertices));
+        return new MeshData(Arrays.copyOf(outPositions, 3 * vertices), indices,
+                withNormals ? Arrays.copyOf(outNormals, 3 * vertices) : null, Arrays.copyOf(outUvs, 2 * vertices));
     }
 }

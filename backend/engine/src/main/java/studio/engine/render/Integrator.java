@@ -11,7 +11,10 @@ import studio.engine.material.Fresnel;
 import studio.engine.material.Material;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
+import studio.engine.math.Vec3;
 import studio.engine.scene.Scene;
+import studio.engine.texture.Texture;
+import studio.engine.texture.TextureLookup;
 
 /**
  * Whitted-style ray tracing in linear light: direct light by one shadow ray a light ({@link LightSampler}),
@@ -84,6 +87,15 @@ final class Integrator {
     /** Where the rays of the pixel being traced are recorded (null: nowhere), and that pixel's index. */
     PixelPaths paths;
     int pathPixel;
+
+    /**
+     * The ray cone's spread (radians) for texture filtering: a pixel's angle over the square root of
+     * its samples, times {@link SampleTracer#FOOTPRINT_SHARE} (0: textures are point-sampled). Set by
+     * the caller.
+     */
+    double coneSpread;
+    /** Looks textures up at textured hits only: untextured shading never touches it. */
+    private final TextureLookup textures = new TextureLookup();
 
     /** What the current pixel's camera rays and their shadow rays can meet; set by the caller. */
     final PixelCandidates candidates;
@@ -167,8 +179,24 @@ final class Integrator {
             paths.record(pathPixel, depth, hit.px, hit.py, hit.pz, false);
         }
         Material m = scene.material(hit.primitive);
+        Rgb color = m.color();
+        double cr = color.r(), cg = color.g(), cb = color.b(), cMax;
+        Texture texture = m.texture();
+        if (texture == null) {
+            cMax = color.max();
+        } else {
+            double dLen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
+            textures.lookup(texture, scene.shape(hit.primitive), hit, ray.dx / dLen, ray.dy / dLen, ray.dz / dLen,
+                    coneSpread * pathLength(ray, depth));
+            cr *= textures.r;
+            cg *= textures.g;
+            cb *= textures.b;
+            cMax = Math.max(cr, Math.max(cg, cb));
+        }
         if (m.kind() == MaterialKind.FLAT) {
-            set(out, m.color());
+            radiance[out] = cr;
+            radiance[out + 1] = cg;
+            radiance[out + 2] = cb;
             return;
         }
         double dLen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
@@ -178,33 +206,57 @@ final class Integrator {
         boolean front = hit.gx * dx + hit.gy * dy + hit.gz * dz < 0;
         double sx = front ? hit.nx : -hit.nx, sy = front ? hit.ny : -hit.ny, sz = front ? hit.nz : -hit.nz;
 
-        direct(m, hit, sx, sy, sz, -dx, -dy, -dz, front, depth == 0, weight);
+        direct(m, cr, cg, cb, hit, sx, sy, sz, -dx, -dy, -dz, front, depth == 0, weight);
         double r = directR, g = directG, b = directB;
         if (depth < maxDepth) {
             double cosView = -(sx * dx + sy * dy + sz * dz);
             if (m.kind() == MaterialKind.GLASS) {
-                glass(m, hit, dx, dy, dz, front, depth, weight);
+                glass(m, cr, cg, cb, cMax, hit, dx, dy, dz, front, depth, weight);
                 int child = out + 3;
                 r += radiance[child];
                 g += radiance[child + 1];
                 b += radiance[child + 2];
             } else if (m.reflectivity() > 0) {
-                Rgb color = m.color();
                 double k = m.reflectivity();
-                double w = weight * color.max() * k;
+                double w = weight * cMax * k;
                 if (w > minPathWeight) {
                     double rx = dx + 2 * cosView * sx, ry = dy + 2 * cosView * sy, rz = dz + 2 * cosView * sz;
                     trace(Rays.spawn(hit, rx, ry, rz, childRays[depth]), depth + 1, w);
                     int child = out + 3;
-                    r += color.r() * k * radiance[child];
-                    g += color.g() * k * radiance[child + 1];
-                    b += color.b() * k * radiance[child + 2];
+                    r += cr * k * radiance[child];
+                    g += cg * k * radiance[child + 1];
+                    b += cb * k * radiance[child + 2];
                 }
             }
         }
         radiance[out] = r;
         radiance[out + 1] = g;
         radiance[out + 2] = b;
+    }
+
+    /**
+     * How far light travels from the camera to the hit at {@code depth} along the current path (the
+     * hits of shallower depths are its ancestors'): the ray cone's width there is the spread times
+     * this. Only a textured hit asks. (Curved mirrors and lenses widen a real cone further; the
+     * cone here spreads as through flat ones.)
+     */
+    private double pathLength(Ray ray, int depth) {
+        Hit hit = hits[depth];
+        if (depth == 0) {
+            return distance(ray, hit.px, hit.py, hit.pz);
+        }
+        Vec3 eye = scene.camera().position();
+        Hit first = hits[0];
+        double x = first.px - eye.x(), y = first.py - eye.y(), z = first.pz - eye.z();
+        double length = Math.sqrt(x * x + y * y + z * z);
+        for (int k = 1; k <= depth; k++) {
+            Hit from = hits[k - 1], to = hits[k];
+            x = to.px - from.px;
+            y = to.py - from.py;
+            z = to.pz - from.pz;
+            length += Math.sqrt(x * x + y * y + z * z);
+        }
+        return length;
     }
 
     private void set(int out, Rgb c) {
@@ -217,8 +269,8 @@ final class Integrator {
      * Ambient, diffuse and highlight from every light the point sees, into directR/G/B; a light
      * that could add only a {@link #NEGLIGIBLE_LIGHT} share to a path of this weight is not looked for.
      */
-    private void direct(Material m, Hit hit, double nx, double ny, double nz, double vx, double vy, double vz,
-                        boolean front, boolean cameraHit, double weight) {
+    private void direct(Material m, double cr, double cg, double cb, Hit hit, double nx, double ny, double nz,
+                        double vx, double vy, double vz, boolean front, boolean cameraHit, double weight) {
         double kd = m.diffuse(), ks = m.specular();
         if (m.kind() == MaterialKind.GLASS && !front) {
             ks = 0;
@@ -227,9 +279,10 @@ final class Integrator {
             directR = directG = directB = 0;
             return;
         }
-        Rgb color = m.color(), specular = m.specularTint();
-        double ar = color.r() * kd, ag = color.g() * kd, ab = color.b() * kd;
-        double sr = specular.r() * ks, sg = specular.g() * ks, sb = specular.b() * ks;
+        // a metal's highlight takes its (textured) colour; the others' are white
+        boolean metal = m.kind() == MaterialKind.METAL;
+        double ar = cr * kd, ag = cg * kd, ab = cb * kd;
+        double sr = (metal ? cr : 1) * ks, sg = (metal ? cg : 1) * ks, sb = (metal ? cb : 1) * ks;
         double r = ar * scene.ambient(), g = ag * scene.ambient(), b = ab * scene.ambient();
         double aMax = Math.max(ar, Math.max(ag, ab)), sMax = Math.max(sr, Math.max(sg, sb));
         LightSampler light = lightSampler;
@@ -369,7 +422,8 @@ final class Integrator {
      * radiance[3 (depth + 1) ..]; a branch too weak to change the pixel is left out, and a weak one
      * plays the roulette.
      */
-    private void glass(Material m, Hit hit, double dx, double dy, double dz, boolean front, int depth, double weight) {
+    private void glass(Material m, double cr, double cg, double cb, double cMax, Hit hit, double dx, double dy,
+                       double dz, boolean front, int depth, double weight) {
         // n points against the incoming ray, into the medium the ray comes from.
         double nx = front ? hit.nx : -hit.nx, ny = front ? hit.ny : -hit.ny, nz = front ? hit.nz : -hit.nz;
         double etaI = front ? 1 : m.ior(), etaT = front ? m.ior() : 1;
@@ -392,8 +446,8 @@ final class Integrator {
             b = radiance[child + 2] * kr;
         }
         if (k > 0) {
-            Rgb tint = front ? m.color() : Rgb.WHITE;
-            double wt = weight * (1 - reflectance) * tint.max();
+            double tr = front ? cr : 1, tg = front ? cg : 1, tb = front ? cb : 1;
+            double wt = weight * (1 - reflectance) * (front ? cMax : 1);
             double countT = branchCount(wt);
             if (countT > 0) {
                 double c = eta * cosI - Math.sqrt(k);
@@ -401,9 +455,9 @@ final class Integrator {
                 // refracted into the object, the ray leaves it next
                 trace(Rays.spawn(hit, tx, ty, tz, childRays[depth]), depth + 1, wt * countT, front ? hit.primitive : -1);
                 double kt = (1 - reflectance) * countT;
-                r += radiance[child] * tint.r() * kt;
-                g += radiance[child + 1] * tint.g() * kt;
-                b += radiance[child + 2] * tint.b() * kt;
+                r += radiance[child] * tr * kt;
+                g += radiance[child + 1] * tg * kt;
+                b += radiance[child + 2] * tb * kt;
             }
         }
         radiance[child] = r;

@@ -24,6 +24,14 @@ import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
+import studio.engine.geometry.TriangleMesh;
+import studio.engine.material.Material;
+import studio.engine.mesh.MeshShapes;
+import studio.engine.memory.MemoryGate;
+import studio.engine.texture.CheckerTexture;
+import studio.engine.texture.ImageTexture;
+import studio.engine.texture.MipMap;
+import studio.engine.texture.Texture;
 
 /**
  * Allocation guard for the whole hot loop: camera ray, intersection, shading with shadow rays through
@@ -61,6 +69,38 @@ class TraceAllocationTest {
                 lights, new Rgb(0.2, 0.3, 0.5), 0.1);
     }
 
+    /**
+     * The same kind of scene with every material textured, half by checks and half by an image, on
+     * every shape (a mesh among them): texture coordinates, footprints and filtered lookups at every
+     * depth, through mirrors and glass.
+     */
+    private static Scene texturedScene() {
+        Random random = new Random(4);
+        int[] pixels = new int[64 * 32];
+        for (int i = 0; i < pixels.length; i++) {
+            pixels[i] = random.nextInt(1 << 24);
+        }
+        Texture image = new ImageTexture(MipMap.fromSrgb(64, 32, pixels, MemoryGate.UNLIMITED), 2, 3);
+        Texture checks = new CheckerTexture(new Rgb(0.1, 0.2, 0.3), new Rgb(0.9, 0.8, 0.7), 0.25);
+        List<SceneObject> objects = new ArrayList<>();
+        objects.add(new SceneObject(new Plane(Vec3.ZERO, new Vec3(0, 1, 0)),
+                MaterialDefaults.of(MaterialKind.CHALK, new Rgb(0.7, 0.7, 0.7)).withTexture(checks)));
+        objects.add(new SceneObject(new TriangleMesh(MeshShapes.icosphere(2), new Vec3(0, 1, -2), 1, Vec3.ZERO),
+                MaterialDefaults.of(MaterialKind.PLASTIC, Rgb.WHITE).withTexture(image)));
+        MaterialKind[] kinds = MaterialKind.values();
+        for (int i = 0; i < 40; i++) {
+            Vec3 c = new Vec3(random.nextDouble() * 8 - 4, random.nextDouble() * 2 + 0.3, random.nextDouble() * 8 - 4);
+            Material m = MaterialDefaults.of(kinds[i % kinds.length], new Rgb(0.9, 0.6, 0.3))
+                    .withTexture(i % 4 < 2 ? checks : image);
+            objects.add(new SceneObject(i % 2 == 0 ? new Sphere(c, 0.3 + random.nextDouble() * 0.4)
+                    : new Box(c, new Vec3(0.6, 0.5, 0.4), new Vec3(10 * i, 20, 5)), m));
+        }
+        return new Scene(new Camera(new Vec3(0, 3, 9), new Vec3(0, 1, 0), new Vec3(0, 1, 0), 50), objects,
+                List.of(new PointLight(new Vec3(3, 6, 2), Rgb.WHITE, 1, false),
+                        new PointLight(new Vec3(-4, 3, 4), new Rgb(0.3, 0.4, 1), 30, true)),
+                new Rgb(0.2, 0.3, 0.5), 0.1);
+    }
+
     @Test
     void tracingCameraSamplesAllocatesNothing() {
         assertTracingAllocatesNothing(scene());
@@ -74,8 +114,14 @@ class TraceAllocationTest {
                 new PointLight(new Vec3(0, 5, -3), Rgb.WHITE, 0.3, false))));
     }
 
+    @Test
+    void tracingTexturedSurfacesAllocatesNothing() {
+        assertTracingAllocatesNothing(texturedScene());
+    }
+
     private static void assertTracingAllocatesNothing(Scene scene) {
         Integrator integrator = new Integrator(scene, 8, RenderSettings.DEFAULT_MIN_PATH_WEIGHT);
+        integrator.coneSpread = 1e-3;
         Ray ray = new Ray();
         double[] sink = new double[1];
         Random random = new Random(5);

@@ -4,6 +4,7 @@ import org.springframework.beans.factory.ObjectProvider;
 import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
 
+import studio.server.scene.compiling.ImageAssets;
 import studio.server.scene.compiling.MeshAssets;
 import studio.server.system.MemoryBudget;
 import studio.server.system.StudioProperties;
@@ -33,5 +34,11 @@ class AssetConfiguration {
     @Bean
     MeshAssets meshAssets(AssetStore store) {
         return store.meshes();
+    }
+
+    /** A texture's image asset: its bytes if it is kept and is PNG or JPEG. */
+    @Bean
+    ImageAssets imageAssets(AssetStore store) {
+        return store.images();
     }
 }

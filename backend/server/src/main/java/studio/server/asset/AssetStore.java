@@ -1,5 +1,6 @@
 package studio.server.asset;
 
+import studio.server.scene.compiling.ImageAssets;
 import studio.server.scene.compiling.MeshAssets;
 
 /** Where assets are kept, by id: this member's memory, backed by the cluster's copy in a cluster ({@link LocalAssets}). */
@@ -49,6 +50,18 @@ public interface AssetStore {
                 }
                 return asset != null ? asset.bytes() : null;
             }
+        };
+    }
+
+    /** The store as the scene compiler reads textures' assets: PNG or JPEG bytes, or null if none is kept by that id. */
+    default ImageAssets images() {
+        return id -> {
+            Asset asset = get(id);
+            if (asset != null && asset.type() != AssetType.PNG && asset.type() != AssetType.JPEG) {
+                throw new IllegalArgumentException("the asset " + id + " is " + asset.type().mediaType()
+                        + ", not a PNG or JPEG image");
+            }
+            return asset != null ? asset.bytes() : null;
         };
     }
 }

@@ -8,10 +8,12 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 
 import studio.server.scene.format.GltfFileNames;
+import studio.server.scene.format.ImageFileNames;
 import studio.server.scene.format.MeshFileNames;
 
 /**
- * Where a mesh's {@code file} is read from, and a glTF model's ({@link #gltf}). The command line reads files beside the scene file; the
+ * Where a mesh's {@code file} is read from, a glTF model's ({@link #gltf}) and an image texture's
+ * ({@link #image}). The command line reads files beside the scene file; the
  * service reads only the meshes shipped with its example scenes (anything else is sent inline as
  * {@code obj}, which is how a mesh is uploaded).
  */
@@ -36,6 +38,17 @@ public interface MeshFiles {
                 + "and name it by its id in \"asset\"");
     }
 
+    /**
+     * The bytes of the image {@code file} (a texture's); only files beside a scene (the command line)
+     * can be: the service takes images as assets.
+     *
+     * @throws IllegalArgumentException saying what is wrong with the name, or that there is no such file
+     */
+    default byte[] image(String file) {
+        throw new IllegalArgumentException("image files cannot be read here; upload the image (POST /api/assets) "
+                + "and name it by its id in \"asset\"");
+    }
+
     /** The meshes shipped in the jar under scenes/ (copied from scenes/ at build time). */
     static MeshFiles bundled() {
         return file -> {
@@ -52,26 +65,27 @@ public interface MeshFiles {
         };
     }
 
-    /** Files relative to a folder, e.g. the one holding the scene file: meshes and glTF models. */
+    /** Files relative to a folder, e.g. the one holding the scene file: meshes, glTF models and images. */
     static MeshFiles in(Path folder) {
         return new MeshFiles() {
             @Override
             public String read(String file) {
                 requireName(file);
-                Path path = folder.resolve(file);
-                try {
-                    return Files.readString(path, StandardCharsets.UTF_8);
-                } catch (NoSuchFileException e) {
-                    throw new IllegalArgumentException("no such file: " + path);
-                } catch (IOException e) {
-                    throw new IllegalArgumentException("cannot read " + path + ": " + e.getMessage());
-                }
+                return new String(bytes(folder.resolve(file)), StandardCharsets.UTF_8);
             }
 
             @Override
             public byte[] gltf(String file) {
                 if (!GltfFileNames.PATTERN.matcher(file).matches()) {
                     throw new IllegalArgumentException(GltfFileNames.MESSAGE);
+                }
+                return bytes(folder.resolve(file));
+            }
+
+            @Override
+            public byte[] image(String file) {
+                if (!ImageFileNames.PATTERN.matcher(file).matches()) {
+                    throw new IllegalArgumentException(ImageFileNames.MESSAGE);
                 }
                 return bytes(folder.resolve(file));
             }

@@ -13,6 +13,7 @@ import studio.engine.geometry.Sphere;
 import studio.engine.material.Material;
 import studio.engine.memory.MemoryGate;
 import studio.engine.scene.SceneObject;
+import studio.engine.texture.Texture;
 import studio.server.scene.format.ObjectDto;
 import studio.server.scene.format.SceneDefaults;
 import studio.server.scene.format.SceneLimits;
@@ -34,15 +35,17 @@ final class ObjectMapping {
     private final SceneLimits limits;
     private final MeshMapping meshes;
     private final GltfMapping models;
+    private final TextureMapping textures;
     private final MemoryGate memory;
     private final MappingProblems problems;
 
-    ObjectMapping(SceneLimits limits, MeshCache cache, MeshFiles files, MeshAssets assets, MemoryGate memory,
-                  MappingProblems problems) {
+    ObjectMapping(SceneLimits limits, MeshCache cache, MeshFiles files, MeshAssets assets, TextureCache imageCache,
+                  ImageAssets images, MemoryGate memory, MappingProblems problems) {
         this.limits = limits;
         TriangleBudget triangles = new TriangleBudget(limits.maxTriangles());
         this.meshes = new MeshMapping(triangles, cache, files, assets, memory, problems);
         this.models = new GltfMapping(triangles, cache, files, assets, memory, problems);
+        this.textures = new TextureMapping(imageCache, files, images, memory, problems);
         this.memory = memory;
         this.problems = problems;
     }
@@ -72,6 +75,10 @@ final class ObjectMapping {
             Shape shape = o instanceof ObjectDto.Mesh mesh ? meshes.of(mesh, path)
                     : problems.attempt(path, () -> shape(o));
             Material material = problems.attempt(path + ".material", () -> MaterialMapping.of(o.material()));
+            if (material != null && o.material() != null && o.material().texture() != null) {
+                Texture texture = textures.of(o.material().texture(), path + ".material.texture");
+                material = texture != null ? material.withTexture(texture) : null;
+            }
             if (shape != null && material != null) {
                 objects.add(new SceneObject(shape, material));
             }

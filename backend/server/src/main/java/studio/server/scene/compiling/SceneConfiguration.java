@@ -25,14 +25,16 @@ class SceneConfiguration {
     }
 
     /**
-     * Reads the meshes shipped with the example scenes, and meshes' assets from the asset feature
-     * (none without it); keeps meshes for scenes that send them again.
+     * Reads the meshes shipped with the example scenes, and meshes' and images' assets from the asset
+     * feature (none without it); keeps meshes, and textures' decoded images (an eighth of the render
+     * memory each), for scenes that send them again.
      */
     @Bean
     SceneCompiler sceneCompiler(Validator validator, SceneLimits limits, MemoryBudget memory,
-                                ObjectProvider<MeshAssets> assets) {
+                                ObjectProvider<MeshAssets> assets, ObjectProvider<ImageAssets> images) {
         return new SceneCompiler(new SceneReader(validator), new SceneMapper(limits, meshCache(limits, memory),
-                assets.getIfAvailable(MeshAssets::none)), MeshFiles.bundled());
+                assets.getIfAvailable(MeshAssets::none), new TextureCache(memory.capacity() / 8, memory),
+                images.getIfAvailable(ImageAssets::none)), MeshFiles.bundled());
     }
 
     /** Meshes kept for scenes that send them again (the live view does on every edit): an eighth of the render memory. */

@@ -31,6 +31,8 @@ public final class SceneMapper {
     private final SceneLimits limits;
     private final MeshCache meshes;
     private final MeshAssets assets;
+    private final TextureCache images;
+    private final ImageAssets imageAssets;
 
     public SceneMapper(SceneLimits limits) {
         this(limits, MeshCache.none());
@@ -43,9 +45,17 @@ public final class SceneMapper {
 
     /** @param assets where meshes' {@code asset} ids are read from */
     public SceneMapper(SceneLimits limits, MeshCache meshes, MeshAssets assets) {
+        this(limits, meshes, assets, TextureCache.none(), ImageAssets.none());
+    }
+
+    /** @param images images decoded for textures, reused when a scene names them again; imageAssets: where they are read from */
+    public SceneMapper(SceneLimits limits, MeshCache meshes, MeshAssets assets, TextureCache images,
+                       ImageAssets imageAssets) {
         this.limits = limits;
         this.meshes = meshes;
         this.assets = assets;
+        this.images = images;
+        this.imageAssets = imageAssets;
     }
 
     /** As {@link #map(SceneDto, int, MeshFiles)}, with no mesh files (inline meshes only). */
@@ -67,7 +77,8 @@ public final class SceneMapper {
     public CompiledScene map(SceneDto dto, int threads, MeshFiles meshFiles, MemoryGate memory) {
         MappingProblems problems = new MappingProblems();
         RenderMapping render = RenderMapping.of(dto.image(), dto.render(), limits, problems);
-        List<SceneObject> objects = new ObjectMapping(limits, meshes, meshFiles, assets, memory, problems).of(dto.objects());
+        List<SceneObject> objects = new ObjectMapping(limits, meshes, meshFiles, assets, images, imageAssets, memory,
+                problems).of(dto.objects());
         List<Light> lights = LightMapping.of(dto.lights(), limits, problems);
         Camera camera = CameraMapping.of(dto.camera(), problems);
         problems.throwIfAny();

@@ -12,6 +12,7 @@ import studio.server.scene.format.MaterialDto;
 import studio.server.scene.format.ObjectDto;
 import studio.server.scene.format.RenderDto;
 import studio.server.scene.format.SceneDto;
+import studio.server.scene.format.TextureDto;
 
 /**
  * Generated from the scene records' annotations by SceneConstraintsTest, which fails when this
@@ -108,11 +109,26 @@ final class SceneConstraints {
             entry("ObjectDto.Sphere.radius", List.of(new FieldRule.Positive(), new FieldRule.Finite())),
             entry("ObjectDto.Sphere.material", List.of()),
             entry("MaterialDto.Flat.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("MaterialDto.Flat.texture", List.of()),
+            entry("TextureDto.Checker.colors", List.of()),
+            entry("TextureDto.Checker.colors[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
+            entry("TextureDto.Checker.size", List.of(new FieldRule.Positive(), new FieldRule.Finite())),
+            entry("TextureDto.Image.asset", List.of(new FieldRule.Pattern("sha256-[0-9a-f]{64}"))),
+            entry("TextureDto.Image.file", List.of(
+                    new FieldRule.Pattern("(?!.*\\.\\.)(?!.*/\\.)(?!.*//)[A-Za-z0-9_-][A-Za-z0-9._/-]*\\.(png|jpg|jpeg)"))),
+            entry("TextureDto.Image.scale", List.of()),
+            entry("TextureDto.Image.scale[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.Positive(),
+                    new FieldRule.Finite())),
             entry("MaterialDto.Chalk.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
             entry("MaterialDto.Chalk.diffuse", List.of(
                     new FieldRule.PositiveOrZero(),
                     new FieldRule.DecimalMax("1", true),
                     new FieldRule.Finite())),
+            entry("MaterialDto.Chalk.texture", List.of()),
             entry("MaterialDto.Plastic.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
             entry("MaterialDto.Plastic.diffuse", List.of(
                     new FieldRule.PositiveOrZero(),
@@ -126,6 +142,7 @@ final class SceneConstraints {
                     new FieldRule.DecimalMin("1", true),
                     new FieldRule.DecimalMax("10000", true),
                     new FieldRule.Finite())),
+            entry("MaterialDto.Plastic.texture", List.of()),
             entry("MaterialDto.Metal.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
             entry("MaterialDto.Metal.diffuse", List.of(
                     new FieldRule.PositiveOrZero(),
@@ -143,11 +160,13 @@ final class SceneConstraints {
                     new FieldRule.PositiveOrZero(),
                     new FieldRule.DecimalMax("1", true),
                     new FieldRule.Finite())),
+            entry("MaterialDto.Metal.texture", List.of()),
             entry("MaterialDto.Mirror.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
             entry("MaterialDto.Mirror.reflectivity", List.of(
                     new FieldRule.PositiveOrZero(),
                     new FieldRule.DecimalMax("1", true),
                     new FieldRule.Finite())),
+            entry("MaterialDto.Mirror.texture", List.of()),
             entry("MaterialDto.Glass.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
             entry("MaterialDto.Glass.ior", List.of(
                     new FieldRule.DecimalMin("1", true),
@@ -161,6 +180,7 @@ final class SceneConstraints {
                     new FieldRule.DecimalMin("1", true),
                     new FieldRule.DecimalMax("10000", true),
                     new FieldRule.Finite())),
+            entry("MaterialDto.Glass.texture", List.of()),
             entry("ObjectDto.Sphere.name", List.of(new FieldRule.CodePointLength(0, 200))),
             entry("ObjectDto.Box.center", List.of(new FieldRule.Vector())),
             entry("ObjectDto.Box.center[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
@@ -216,7 +236,10 @@ final class SceneConstraints {
                     entry("plastic", MaterialDto.Plastic.class),
                     entry("metal", MaterialDto.Metal.class),
                     entry("mirror", MaterialDto.Mirror.class),
-                    entry("glass", MaterialDto.Glass.class)))));
+                    entry("glass", MaterialDto.Glass.class)))),
+            entry(TextureDto.class, new Subtypes("type", Map.ofEntries(
+                    entry("checker", TextureDto.Checker.class),
+                    entry("image", TextureDto.Image.class)))));
 
     /** A record of {@code type} from its components' values, in declaration order. */
     @SuppressWarnings("unchecked")
@@ -250,23 +273,40 @@ final class SceneConstraints {
                     (Boolean) v[6],
                     (String) v[7]);
         }
+        if (type == TextureDto.Checker.class) {
+            return new TextureDto.Checker((List<String>) v[0], (Double) v[1]);
+        }
+        if (type == TextureDto.Image.class) {
+            return new TextureDto.Image((String) v[0], (String) v[1], (List<Double>) v[2]);
+        }
         if (type == MaterialDto.Flat.class) {
-            return new MaterialDto.Flat((String) v[0]);
+            return new MaterialDto.Flat((String) v[0], (TextureDto) v[1]);
         }
         if (type == MaterialDto.Chalk.class) {
-            return new MaterialDto.Chalk((String) v[0], (Double) v[1]);
+            return new MaterialDto.Chalk((String) v[0], (Double) v[1], (TextureDto) v[2]);
         }
         if (type == MaterialDto.Plastic.class) {
-            return new MaterialDto.Plastic((String) v[0], (Double) v[1], (Double) v[2], (Double) v[3]);
+            return new MaterialDto.Plastic(
+                    (String) v[0],
+                    (Double) v[1],
+                    (Double) v[2],
+                    (Double) v[3],
+                    (TextureDto) v[4]);
         }
         if (type == MaterialDto.Metal.class) {
-            return new MaterialDto.Metal((String) v[0], (Double) v[1], (Double) v[2], (Double) v[3], (Double) v[4]);
+            return new MaterialDto.Metal(
+                    (String) v[0],
+                    (Double) v[1],
+                    (Double) v[2],
+                    (Double) v[3],
+                    (Double) v[4],
+                    (TextureDto) v[5]);
         }
         if (type == MaterialDto.Mirror.class) {
-            return new MaterialDto.Mirror((String) v[0], (Double) v[1]);
+            return new MaterialDto.Mirror((String) v[0], (Double) v[1], (TextureDto) v[2]);
         }
         if (type == MaterialDto.Glass.class) {
-            return new MaterialDto.Glass((String) v[0], (Double) v[1], (Double) v[2], (Double) v[3]);
+            return new MaterialDto.Glass((String) v[0], (Double) v[1], (Double) v[2], (Double) v[3], (TextureDto) v[4]);
         }
         if (type == ObjectDto.Sphere.class) {
             return new ObjectDto.Sphere((List<Double>) v[0], (Double) v[1], (MaterialDto) v[2], (String) v[3]);

@@ -52,8 +52,11 @@ class SceneSchemaTest {
         Map<String, Object> glass = (Map<String, Object>) defs.get("GlassMaterial");
         Map<String, Object> properties = (Map<String, Object>) glass.get("properties");
         assertEquals(Map.of("const", "glass"), properties.get("type"));
-        assertEquals(List.of("type", "color", "ior", "specular", "shininess"), List.copyOf(properties.keySet()));
+        assertEquals(List.of("type", "color", "ior", "specular", "shininess", "texture"),
+                List.copyOf(properties.keySet()));
         assertEquals(false, glass.get("additionalProperties"));
+        assertEquals(List.of(Map.of("$ref", "#/$defs/CheckerTexture"), Map.of("$ref", "#/$defs/ImageTexture")),
+                ((Map<String, Object>) defs.get("Texture")).get("oneOf"));
     }
 
     @Test
