@@ -120,13 +120,6 @@ public final class GltfReader {
         if (parts.isEmpty()) {
             throw bad("scenes", "the default scene draws no triangles");
         }
-        for (GltfPart part : parts) {
-            if (part.texture() != null) {
-                // until the engine has textured materials; the hook is GltfMapping's, where each part becomes an object
-                warnings.add(part.texture().source() + ": base colour textures are read but not drawn yet; the "
-                        + "material's base colour factor is");
-            }
-        }
         return new GltfModel(parts, listed(warnings));
     }
 
@@ -191,7 +184,7 @@ public final class GltfReader {
         }
         MeshData mesh;
         try {
-            mesh = new MeshData(positions, triangles, normals);
+            mesh = new MeshData(positions, triangles, normals, uvs);
         } catch (IllegalArgumentException e) {
             throw bad("nodes", "the nodes' transforms place a vertex out of range: " + e.getMessage());
         }

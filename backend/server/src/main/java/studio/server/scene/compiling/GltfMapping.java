@@ -8,7 +8,10 @@ import java.util.List;
 
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.memory.MemoryGate;
+import studio.engine.material.Material;
 import studio.engine.scene.SceneObject;
+import studio.engine.texture.ImageTexture;
+import studio.engine.texture.MipMap;
 import studio.server.gltf.GltfModel;
 import studio.server.gltf.GltfPart;
 import studio.server.gltf.GltfReader;
@@ -29,15 +32,18 @@ final class GltfMapping {
 
     private final TriangleBudget budget;
     private final MeshCache cache;
+    /** Decoded base colour textures, by the model's digest and the part's index. */
+    private final TextureCache textures;
     private final MeshFiles files;
     private final MeshAssets assets;
     private final MemoryGate memory;
     private final MappingProblems problems;
 
-    GltfMapping(TriangleBudget budget, MeshCache cache, MeshFiles files, MeshAssets assets, MemoryGate memory,
-                MappingProblems problems) {
+    GltfMapping(TriangleBudget budget, MeshCache cache, TextureCache textures, MeshFiles files, MeshAssets assets,
+                MemoryGate memory, MappingProblems problems) {
         this.budget = budget;
         this.cache = cache;
+        this.textures = textures;
         this.files = files;
         this.assets = assets;
         this.memory = memory;
@@ -85,9 +91,38 @@ final class GltfMapping {
                 }
                 cache.keepBuilt(placement, shape);
             }
-            objects.add(new SceneObject(shape, part.material()));
+            Material material = textured(part, digest == null ? null : digest + "#" + i, field);
+            if (material == null) {
+                return List.of();
+            }
+            objects.add(new SceneObject(shape, material));
         }
         return objects;
+    }
+
+    /**
+     * The part's material, its base colour texture decoded (once per model and part, then kept) where
+     * it has one and UVs to lay it on; null (and a problem) if the image cannot be read.
+     */
+    private Material textured(GltfPart part, String key, String field) {
+        if (part.texture() == null || part.mesh().uvs() == null) {
+            return part.material();
+        }
+        MipMap image = key == null ? null : textures.get(key);
+        if (image == null) {
+            image = problems.attempt(field, () -> {
+                try {
+                    return TextureMapping.decode(part.texture().image(), memory);
+                } catch (IllegalArgumentException e) {
+                    throw new IllegalArgumentException(part.texture().source() + " " + e.getMessage());
+                }
+            });
+            if (image == null) {
+                return null;
+            }
+            textures.keep(key, image);
+        }
+        return part.material().withTexture(new ImageTexture(image));
     }
 
     /** The model of the file's bytes (read before, or now and kept); null (and a problem) if it cannot be read. */

@@ -44,7 +44,7 @@ final class ObjectMapping {
         this.limits = limits;
         TriangleBudget triangles = new TriangleBudget(limits.maxTriangles());
         this.meshes = new MeshMapping(triangles, cache, files, assets, memory, problems);
-        this.models = new GltfMapping(triangles, cache, files, assets, memory, problems);
+        this.models = new GltfMapping(triangles, cache, imageCache, files, assets, memory, problems);
         this.textures = new TextureMapping(imageCache, files, images, memory, problems);
         this.memory = memory;
         this.problems = problems;

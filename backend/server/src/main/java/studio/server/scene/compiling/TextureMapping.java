@@ -3,9 +3,12 @@ package studio.server.scene.compiling;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
+import java.util.Iterator;
 import java.util.List;
 
 import javax.imageio.ImageIO;
+import javax.imageio.ImageReader;
+import javax.imageio.stream.ImageInputStream;
 
 import studio.engine.memory.MemoryGate;
 import studio.engine.texture.CheckerTexture;
@@ -103,17 +106,38 @@ final class TextureMapping {
      * @throws IllegalArgumentException if the bytes are not an image javax.imageio reads
      */
     static MipMap decode(byte[] bytes, MemoryGate memory) {
+        // the size from the header first: the memory is asked before a declared 100,000 x 100,000
+        // image (inside a glb, say, which no upload check saw) is decoded
+        int w, h;
+        try (ImageInputStream in = ImageIO.createImageInputStream(new ByteArrayInputStream(bytes))) {
+            Iterator<ImageReader> readers = in == null ? null : ImageIO.getImageReaders(in);
+            if (readers == null || !readers.hasNext()) {
+                throw new IllegalArgumentException("is not a PNG or JPEG image");
+            }
+            ImageReader reader = readers.next();
+            try {
+                reader.setInput(in, true, true);
+                w = reader.getWidth(0);
+                h = reader.getHeight(0);
+            } finally {
+                reader.dispose();
+            }
+        } catch (IOException | RuntimeException e) {
+            if (e instanceof IllegalArgumentException bad) {
+                throw bad;
+            }
+            throw new IllegalArgumentException("is not a PNG or JPEG image this server can read: " + e.getMessage());
+        }
+        memory.reserve(2 * MemoryGate.ints((long) w * h)); // the decoded image and its pixels as ints
         BufferedImage image;
         try {
             image = ImageIO.read(new ByteArrayInputStream(bytes));
         } catch (IOException | RuntimeException e) {
             throw new IllegalArgumentException("is not a PNG or JPEG image this server can read: " + e.getMessage());
         }
-        if (image == null) {
+        if (image == null || image.getWidth() != w || image.getHeight() != h) {
             throw new IllegalArgumentException("is not a PNG or JPEG image");
         }
-        int w = image.getWidth(), h = image.getHeight();
-        memory.reserve(2 * MemoryGate.ints((long) w * h)); // the decoded image and its pixels as ints
         return MipMap.fromSrgb(w, h, image.getRGB(0, 0, w, h, null, 0, w), memory);
     }
 }

@@ -23,6 +23,7 @@ import tools.jackson.databind.node.ObjectNode;
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.material.MaterialKind;
 import studio.engine.memory.MemoryGate;
+import studio.engine.texture.ImageTexture;
 import studio.server.gltf.TestGltf;
 import studio.server.scene.format.FieldProblem;
 import studio.server.scene.format.InvalidSceneException;
@@ -108,6 +109,16 @@ class GltfMappingTest {
         CompiledScene compiled = map("{'type':'gltf','file':'box.gltf'}", new SceneMapper(SceneLimits.DEFAULTS),
                 MeshFiles.in(dir));
         assertThat(((TriangleMesh) compiled.scene().shape(0)).triangleCount()).isEqualTo(12);
+    }
+
+    @Test
+    void drawsABaseColourTextureOnTheModelsUvs() throws IOException {
+        Files.write(dir.resolve("box.gltf"), TestGltf.khronos("BoxTextured/BoxTextured.gltf"));
+        CompiledScene compiled = map("{'type':'gltf','file':'box.gltf'}", new SceneMapper(SceneLimits.DEFAULTS),
+                MeshFiles.in(dir));
+        assertThat(((TriangleMesh) compiled.scene().shape(0)).hasUvs()).isTrue();
+        assertThat(compiled.scene().material(0).texture()).isInstanceOf(ImageTexture.class);
+        assertThat(((ImageTexture) compiled.scene().material(0).texture()).image().levelCount()).isGreaterThan(1);
     }
 
     @Test
