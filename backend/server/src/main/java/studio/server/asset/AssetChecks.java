@@ -9,8 +9,8 @@ import java.util.List;
 import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.ObjReader;
 import studio.engine.mesh.TooManyTrianglesException;
-import studio.server.gltf.GltfAssets;
-import studio.server.gltf.GltfReader;
+import studio.server.scene.gltf.GltfAssets;
+import studio.server.scene.gltf.GltfReader;
 
 /**
  * What bytes must be to be kept as an asset of their declared kind: they start as that kind does

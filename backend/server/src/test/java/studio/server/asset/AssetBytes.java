@@ -7,7 +7,7 @@ import java.nio.charset.StandardCharsets;
 
 import tools.jackson.databind.node.ObjectNode;
 
-import studio.server.gltf.TestGltf;
+import studio.server.scene.gltf.TestGltf;
 
 /** Small assets of each kind, well-formed or broken in one way, built byte by byte. */
 final class AssetBytes {

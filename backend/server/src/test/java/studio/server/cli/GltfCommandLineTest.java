@@ -18,7 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import tools.jackson.databind.node.ObjectNode;
 
-import studio.server.gltf.TestGltf;
+import studio.server.scene.gltf.TestGltf;
 
 /** The command line renders a glTF model named by its file beside the scene, and names a broken one. */
 class GltfCommandLineTest {

@@ -16,7 +16,7 @@ import studio.server.Await;
 import studio.server.asset.Asset;
 import studio.server.asset.AssetType;
 import studio.server.asset.LocalAssets;
-import studio.server.gltf.TestGltf;
+import studio.server.scene.gltf.TestGltf;
 import studio.server.job.JobRequest;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;

@@ -12,9 +12,9 @@ import studio.engine.material.Material;
 import studio.engine.scene.SceneObject;
 import studio.engine.texture.ImageTexture;
 import studio.engine.texture.MipMap;
-import studio.server.gltf.GltfModel;
-import studio.server.gltf.GltfPart;
-import studio.server.gltf.GltfReader;
+import studio.server.scene.gltf.GltfModel;
+import studio.server.scene.gltf.GltfPart;
+import studio.server.scene.gltf.GltfReader;
 import studio.server.scene.format.ObjectDto;
 import studio.server.scene.format.SceneDefaults;
 

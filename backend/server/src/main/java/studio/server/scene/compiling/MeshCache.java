@@ -11,7 +11,7 @@ import java.util.Map;
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.math.Vec3;
 import studio.engine.mesh.MeshData;
-import studio.server.gltf.GltfModel;
+import studio.server.scene.gltf.GltfModel;
 import studio.server.system.MemoryBudget;
 
 /**

@@ -24,7 +24,7 @@ import studio.engine.geometry.TriangleMesh;
 import studio.engine.material.MaterialKind;
 import studio.engine.memory.MemoryGate;
 import studio.engine.texture.ImageTexture;
-import studio.server.gltf.TestGltf;
+import studio.server.scene.gltf.TestGltf;
 import studio.server.scene.format.FieldProblem;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.scene.format.SceneLimits;

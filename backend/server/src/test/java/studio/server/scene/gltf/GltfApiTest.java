@@ -1,4 +1,4 @@
-package studio.server.gltf;
+package studio.server.scene.gltf;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.hamcrest.Matchers.containsString;

@@ -1,4 +1,4 @@
-package studio.server.gltf;
+package studio.server.scene.gltf;
 
 import studio.engine.material.Material;
 import studio.engine.mesh.MeshData;

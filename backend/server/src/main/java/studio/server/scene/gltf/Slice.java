@@ -1,4 +1,4 @@
-package studio.server.gltf;
+package studio.server.scene.gltf;
 
 /** A range of a byte array, checked to lie within it: a buffer, a buffer view, the glb's BIN chunk. */
 record Slice(byte[] bytes, int offset, int length) {

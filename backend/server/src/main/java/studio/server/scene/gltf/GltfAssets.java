@@ -1,4 +1,4 @@
-package studio.server.gltf;
+package studio.server.scene.gltf;
 
 /**
  * Where a .gltf's buffers and images named by asset id ({@code "uri": "sha256-..."}) are read from:

@@ -1,6 +1,6 @@
-package studio.server.gltf;
+package studio.server.scene.gltf;
 
-import static studio.server.gltf.GltfJson.bad;
+import static studio.server.scene.gltf.GltfJson.bad;
 
 import java.util.ArrayList;
 import java.util.HashMap;

@@ -1,4 +1,4 @@
-package studio.server.gltf;
+package studio.server.scene.gltf;
 
 /**
  * A material's base colour texture: the image's bytes (PNG or JPEG, not yet decoded) and where they

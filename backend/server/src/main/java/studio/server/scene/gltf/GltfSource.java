@@ -1,4 +1,4 @@
-package studio.server.gltf;
+package studio.server.scene.gltf;
 
 import tools.jackson.core.JacksonException;
 import tools.jackson.databind.JsonNode;

@@ -1,4 +1,4 @@
-package studio.server.gltf;
+package studio.server.scene.gltf;
 
 import java.io.IOException;
 import java.io.InputStream;
