@@ -1,12 +1,11 @@
 import { resolveLight } from '../model/defaults';
-import * as edits from '../model/edits';
 import type { AreaLight, ResolvedLightOf } from '../model/types';
 import { useSceneStore } from '../store/sceneStore';
 import { CheckboxField } from './fields/CheckboxField';
-import { ColorField } from './fields/ColorField';
-import { NumberField } from './fields/NumberField';
+import { NameField } from './fields/NameField';
 import { VectorField } from './fields/VectorField';
 import { labelOf } from './labels';
+import { LightEmissionFields } from './LightEmissionFields';
 
 /** Props of {@link InspectorAreaLight}. */
 export interface InspectorAreaLightProps {
@@ -21,13 +20,12 @@ const WH = ['w', 'h'] as const;
 /** Fields of one area light: where it is, its width and height, where it faces, its light. */
 export function InspectorAreaLight({ index, light }: InspectorAreaLightProps) {
   const setField = useSceneStore((s) => s.setLightField);
-  const setPreview = useSceneStore((s) => s.setPreview);
-  const cancelPreview = useSceneStore((s) => s.cancelPreview);
   const r = resolveLight(light) as ResolvedLightOf<'area'>;
   const path = `lights[${index}]`;
   return (
     <section className="inspector-section" aria-label={`${labelOf(light, index)} properties`} data-testid="inspector-light">
       <h3>{labelOf(light, index)}</h3>
+      <NameField path={`${path}.name`} value={light.name} onCommit={(name) => setField(index, 'name', name)} />
       <VectorField
         label="Light position"
         path={`${path}.position`}
@@ -52,30 +50,11 @@ export function InspectorAreaLight({ index, light }: InspectorAreaLightProps) {
         hint="The point the light faces; its front shines towards it"
         onCommit={(v) => setField(index, 'lookAt', v)}
       />
-      <ColorField
-        label="Light color"
-        path={`${path}.color`}
-        value={r.color}
-        hint="Colour of the light (sRGB)"
-        onCommit={(c) => setField(index, 'color', c)}
-        onPreview={(c) => setPreview(edits.setLightField(useSceneStore.getState().scene, index, 'color', c))}
-        onPreviewEnd={cancelPreview}
-      />
-      <NumberField
-        label="Intensity"
-        path={`${path}.intensity`}
-        value={r.intensity}
-        min={0}
-        step={0.05}
-        hint="Brightness; a very small area light lights as a point light of the same intensity"
-        onCommit={(v) => setField(index, 'intensity', v)}
-      />
-      <CheckboxField
-        label="Falls off with distance (1/d²)"
-        path={`${path}.falloff`}
-        checked={r.falloff}
-        hint="As a point light's: a very small area light lights as a point light with the same setting"
-        onCommit={(v) => setField(index, 'falloff', v)}
+      <LightEmissionFields
+        index={index}
+        light={r}
+        intensityHint="Brightness; a very small area light lights as a point light of the same intensity"
+        falloffHint="As a point light's: a very small area light lights as a point light with the same setting"
       />
       <CheckboxField
         label="Two-sided"

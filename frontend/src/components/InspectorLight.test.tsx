@@ -68,7 +68,7 @@ describe('the light inspector', () => {
     const section = screen.getByTestId('inspector-light');
     expect(within(section).getByRole('heading')).toHaveTextContent('Area light 2');
     expect(screen.queryByLabelText('Radius')).toBeNull();
-    expect(within(section).queryByLabelText('Name')).toBeNull(); // the format gives an area light no name
+    expect(within(section).getByLabelText('Name')).toHaveAttribute('data-field', 'lights[1].name'); // named as any light
     for (const [label, path, value] of [
       ['Light position y', 'lights[1].position[1]', 3],
       ['Size w', 'lights[1].size[0]', 2],
@@ -116,7 +116,7 @@ describe('the light inspector', () => {
     expect(screen.getByTestId('problem-list')).toHaveTextContent('Area light 2 › Aim: must differ from Area light 2 › Position');
   });
 
-  it('lists an area light without a rename, and adds one from the toolbar, selected', async () => {
+  it('lists an area light to rename as any light, and adds one from the toolbar, selected', async () => {
     const user = userEvent.setup();
     resetSceneStore(SCENE);
     const fetchFn = vi.fn<FetchFn>(async () => Response.json([]));
@@ -128,9 +128,10 @@ describe('the light inspector', () => {
     );
     const outline = screen.getByRole('navigation', { name: 'Scene contents' });
     const area = within(outline).getByRole('button', { name: 'Area light 2' });
-    expect(area.title).not.toMatch(/rename/);
+    expect(area.title).toMatch(/rename/);
     await user.dblClick(area);
-    expect(screen.queryByLabelText(/New name for/)).toBeNull();
+    expect(screen.getByLabelText(/New name for/)).toBeInTheDocument();
+    await user.keyboard('{Escape}');
     await user.click(screen.getByRole('button', { name: 'Add area light' }));
     expect(store().scene.lights).toHaveLength(3);
     expect(store().scene.lights![2]).toMatchObject({ type: 'area', position: [2, 3, 1], lookAt: [2, 0, 1] }); // the camera is at +z

@@ -82,7 +82,7 @@ export function SceneOutline() {
       </ul>
       <h3>Lights</h3>
       <ul>
-        {lights.map((l, i) => item(idOf(l) ?? `l${i}`, labelOf(l, i), { kind: 'light', index: i }, scene.lights ? undefined : 'default', nameOf(l), l.type === 'point'))}
+        {lights.map((l, i) => item(idOf(l) ?? `l${i}`, labelOf(l, i), { kind: 'light', index: i }, scene.lights ? undefined : 'default', nameOf(l)))}
         {item('camera', 'Camera', { kind: 'camera' })}
         {item('target', 'Camera target', { kind: 'target' })}
       </ul>
