@@ -45,17 +45,6 @@ public final class TileRenderer {
     }
 
     /**
-     * Renders the tile's pixels on {@code pixels} and not on {@code except} (null: none) into the
-     * film; the film's other pixels are left as they are.
-     *
-     * @throws IllegalArgumentException under adaptive sampling, which renders every pixel
-     * @throws RenderCancelledException once this worker's render is stopped
-     */
-    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except) {
-        return render(film, tile, pixels, except, null);
-    }
-
-    /**
      * Renders the tile's pixels on {@code pixels}, not on {@code except} (null: none) and not known
      * to {@code paths} (null: none) into the film, recording the rendered pixels' rays in
      * {@code paths}; the film's other pixels are left as they are.
