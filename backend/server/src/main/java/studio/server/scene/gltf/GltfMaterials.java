@@ -18,8 +18,10 @@ import studio.engine.math.Rgb;
  * <li>{@code KHR_materials_transmission}'s {@code transmissionFactor} of 0.5 or more -> glass, tinted by
  * the base colour, its index from {@code KHR_materials_ior} (1.5 without);</li>
  * <li>{@code metallicFactor} of 0.5 or more -> metal, else plastic, in the base colour; the highlight's
- * Blinn-Phong exponent from the roughness r as 2/a^2 - 2 with a = r^2 (within [1, 10000]), and a metal's
- * reflectivity 0.5 * (1 - r) and diffuse weight 0.15 + 0.65 * r.</li>
+ * Blinn-Phong exponent n from the roughness r as 2/a^2 - 2 with a = r^2 (within [1, 10000]), its strength
+ * the kind's default times (n + 8)/(n0 + 8) for the default exponent n0 (at most 1), as normalised
+ * Blinn-Phong keeps a lobe's energy, so that a rough surface's broad highlight does not wash its colour
+ * out; and a metal's reflectivity 0.5 * (1 - r) and diffuse weight 0.15 + 0.65 * r.</li>
  * </ul>
  * glTF's colours are linear already, as the engine's are. A primitive without a material takes glTF's
  * default (white, metallic 1, roughness 1: a rough white metal, as three.js draws it).
@@ -98,7 +100,7 @@ final class GltfMaterials {
             return new Mapped(MaterialDefaults.of(MaterialKind.GLASS, color, null, null, null, null, ior), texture);
         }
         return new Mapped(metallic >= 0.5 ? metallic(color, roughness)
-                : MaterialDefaults.of(MaterialKind.PLASTIC, color, null, null, shininess(roughness), null, null), texture);
+                : plastic(color, roughness), texture);
     }
 
     /**
@@ -107,8 +109,24 @@ final class GltfMaterials {
      * tinted reflection every way: a fully rough one has a plastic's diffuse weight, in its own colour.
      */
     private static Material metallic(Rgb color, double roughness) {
-        return MaterialDefaults.of(MaterialKind.METAL, color, 0.15 + 0.65 * roughness, null, shininess(roughness),
-                0.5 * (1 - roughness), null);
+        double n = shininess(roughness);
+        return MaterialDefaults.of(MaterialKind.METAL, color, 0.15 + 0.65 * roughness,
+                highlight(MaterialKind.METAL, n), n, 0.5 * (1 - roughness), null);
+    }
+
+    private static Material plastic(Rgb color, double roughness) {
+        double n = shininess(roughness);
+        return MaterialDefaults.of(MaterialKind.PLASTIC, color, null, highlight(MaterialKind.PLASTIC, n), n, null, null);
+    }
+
+    /**
+     * The highlight's strength at exponent n: the kind's default strength at its default exponent,
+     * scaled as normalised Blinn-Phong's (n + 8)/(8 pi) scales a lobe, at most 1. A broad lobe (rough,
+     * n near 1) then adds about as much light as the default's narrow one, not six times as much.
+     */
+    static double highlight(MaterialKind kind, double n) {
+        Material defaults = MaterialDefaults.of(kind, null);
+        return Math.min(1, defaults.specular() * (n + 8) / (defaults.shininess() + 8));
     }
 
     /** The Blinn-Phong exponent of a GGX roughness r: 2/a^2 - 2 with a = r^2, within [1, 10000]. */
