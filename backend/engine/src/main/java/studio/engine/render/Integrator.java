@@ -124,12 +124,6 @@ final class Integrator {
         this.emitters = new Emitters(scene.lights());
     }
 
-    /** Radiance arriving along a camera ray, as a colour (a convenience that allocates; the render loop uses {@link #trace}). */
-    Rgb radiance(Ray ray) {
-        trace(ray, 0, 1.0);
-        return new Rgb(r(), g(), b());
-    }
-
     /** The red, green and blue radiance found by the last {@link #trace} at depth 0. */
     double r() {
         return radiance[0];

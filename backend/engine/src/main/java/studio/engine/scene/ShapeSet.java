@@ -111,7 +111,7 @@ public final class ShapeSet {
 
     private static final byte UNKNOWN = 0, APART = 1, NEAR = 2;
 
-    private ShapeSet(Shape[] shapes, boolean useBvh, List<Vec3> lights) {
+    ShapeSet(Shape[] shapes, boolean useBvh, List<Vec3> lights) {
         this.shapes = shapes.clone();
         int boundedCount = 0;
         for (Shape s : shapes) {
@@ -204,16 +204,6 @@ public final class ShapeSet {
      */
     public static ShapeSet of(List<Vec3> lights, Shape... shapes) {
         return new ShapeSet(shapes, shapes.length > LINEAR_MAX, lights);
-    }
-
-    /** Always the linear loop (the reference in tests and timings). */
-    public static ShapeSet linear(Shape... shapes) {
-        return new ShapeSet(shapes, false, List.of());
-    }
-
-    /** Always a BVH over the bounded shapes, if there are any. */
-    public static ShapeSet bvh(Shape... shapes) {
-        return new ShapeSet(shapes, true, List.of());
     }
 
     public boolean usesBvh() {

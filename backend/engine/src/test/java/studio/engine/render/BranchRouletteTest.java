@@ -104,14 +104,14 @@ class BranchRouletteTest {
         for (double x : new double[] {0, 0.55, 0.9}) { // through the middle, off centre, near the rim
             Ray ray = new Ray(0, 0, 4, x, 0.1, -4);
             Integrator full = new Integrator(scene, 8, minWeight);
-            Rgb expected = full.radiance(ray);
+            Rgb expected = Radiance.of(full, ray);
 
             Integrator sampled = new Integrator(scene, 8, minWeight, new BranchRoulette(BranchRoulette.BELOW, 5));
             int n = 40_000;
             double r = 0, g = 0, b = 0;
             for (int s = 0; s < n; s++) {
                 sampled.roulette.startSample(0, 0, s);
-                Rgb c = sampled.radiance(ray);
+                Rgb c = Radiance.of(sampled, ray);
                 r += c.r();
                 g += c.g();
                 b += c.b();

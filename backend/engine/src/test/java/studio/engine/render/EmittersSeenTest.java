@@ -32,7 +32,7 @@ class EmittersSeenTest {
         Integrator integrator = new Integrator(scene, 4, RenderSettings.DEFAULT_MIN_PATH_WEIGHT);
 
         // from (0, 1, 0) down to the mirror at (0, 0, -2), reflected up through the light's centre (0, 2, -6)
-        Rgb seen = integrator.radiance(new Ray(0, 1, 0, 0, -1, -2));
+        Rgb seen = Radiance.of(integrator, new Ray(0, 1, 0, 0, -1, -2));
 
         double k = mirror.reflectivity();
         assertEquals(0.9 * k * 3, seen.r(), 1e-12);
@@ -49,7 +49,7 @@ class EmittersSeenTest {
                 new Rgb(0.1, 0.1, 0.1), 0);
         Integrator integrator = new Integrator(scene, 2, RenderSettings.DEFAULT_MIN_PATH_WEIGHT);
 
-        assertEquals(new Rgb(2, 2, 1), integrator.radiance(new Ray(0.5, 0.5, 5, 0, 0, -1)), "its front");
-        assertEquals(new Rgb(0.2, 0.2, 0.2), integrator.radiance(new Ray(0, 0, -5, 0, 0, -1)), "from behind: what is beyond");
+        assertEquals(new Rgb(2, 2, 1), Radiance.of(integrator, new Ray(0.5, 0.5, 5, 0, 0, -1)), "its front");
+        assertEquals(new Rgb(0.2, 0.2, 0.2), Radiance.of(integrator, new Ray(0, 0, -5, 0, 0, -1)), "from behind: what is beyond");
     }
 }

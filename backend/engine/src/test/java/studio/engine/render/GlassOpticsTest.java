@@ -100,7 +100,7 @@ class GlassOpticsTest {
         Ray ray = new Ray();
         for (int y = 0; y < 128; y++) {
             for (int x = 0; x < 128; x++) {
-                Rgb c = integrator.radiance(pixelCentre(scene, x, y, ray));
+                Rgb c = Radiance.of(integrator, pixelCentre(scene, x, y, ray));
                 for (double v : new double[] {c.r(), c.g(), c.b()}) {
                     assertTrue(v >= 0 && v <= 1 + 1e-12, "pixel " + x + "," + y + " = " + c);
                 }
@@ -118,7 +118,7 @@ class GlassOpticsTest {
         double fullSum = 0;
         for (int y = 0; y < 128; y++) {
             for (int x = 0; x < 128; x++) {
-                Rgb c = fullSplit.radiance(pixelCentre(scene, x, y, ray));
+                Rgb c = Radiance.of(fullSplit, pixelCentre(scene, x, y, ray));
                 fullSum += c.r() + c.g() + c.b();
             }
         }
@@ -174,6 +174,6 @@ class GlassOpticsTest {
     private static Rgb trace(List<SceneObject> objects, Ray ray) {
         Scene scene = new Scene(new Camera(new Vec3(0, 1, 5), Vec3.ZERO, UP, 45), objects,
                 List.<PointLight>of(), Rgb.BLACK, 0.1);
-        return new Integrator(scene, 3, 0).radiance(ray);
+        return Radiance.of(new Integrator(scene, 3, 0), ray);
     }
 }

@@ -38,20 +38,20 @@ class MirrorRecursionTest {
         for (int depth : new int[] {0, 1, 5, 20, 40}) {
             Integrator integrator = new Integrator(MIRRORS, depth, 0);
 
-            Rgb c = integrator.radiance(RAY);
+            Rgb c = Radiance.of(integrator, RAY);
 
             double expected = 0.1 * (1 - Math.pow(0.5, depth + 1)) / 0.5;
             assertEquals(expected, c.r(), 1e-9, "maxDepth " + depth);
             assertEquals(c.r(), c.b(), 0.0);
             assertEquals(depth + 1, integrator.rays, "one ray per bounce, none re-hitting its own mirror");
         }
-        assertEquals(0.199999905, new Integrator(MIRRORS, 20, 0).radiance(RAY).g(), 1e-9);
+        assertEquals(0.199999905, Radiance.of(new Integrator(MIRRORS, 20, 0), RAY).g(), 1e-9);
     }
 
     @Test
     void deeperRecursionChangesTheValueByLessThanTheDroppedTail() {
-        double d20 = new Integrator(MIRRORS, 20, 0).radiance(RAY).r();
-        double d40 = new Integrator(MIRRORS, 40, 0).radiance(RAY).r();
+        double d20 = Radiance.of(new Integrator(MIRRORS, 20, 0), RAY).r();
+        double d40 = Radiance.of(new Integrator(MIRRORS, 40, 0), RAY).r();
 
         assertTrue(Math.abs(d40 - d20) < 1e-6, d20 + " vs " + d40);
     }
@@ -60,7 +60,7 @@ class MirrorRecursionTest {
     void minimumPathWeightStopsBouncesThatCannotChangeThePixel() {
         Integrator integrator = new Integrator(MIRRORS, 40, RenderSettings.DEFAULT_MIN_PATH_WEIGHT);
 
-        Rgb c = integrator.radiance(RAY);
+        Rgb c = Radiance.of(integrator, RAY);
 
         // the ray after hit k carries weight 0.5^(k+1), traced only while above 1/1024: hits 0 to 9
         assertEquals(10, integrator.rays);

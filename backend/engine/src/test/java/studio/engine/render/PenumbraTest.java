@@ -53,8 +53,8 @@ class PenumbraTest {
             for (int j = 0; j < n; j++) {
                 shadowed.lightU = open.lightU = (i + 0.5) / n;
                 shadowed.lightV = open.lightV = (j + 0.5) / n;
-                a += shadowed.radiance(new Ray(x, 0.5, 0, 0, -1, 0)).r();
-                b += open.radiance(new Ray(x, 0.5, 0, 0, -1, 0)).r();
+                a += Radiance.of(shadowed, new Ray(x, 0.5, 0, 0, -1, 0)).r();
+                b += Radiance.of(open, new Ray(x, 0.5, 0, 0, -1, 0)).r();
             }
         }
         return a / b;

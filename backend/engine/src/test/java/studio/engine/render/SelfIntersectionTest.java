@@ -147,7 +147,7 @@ class SelfIntersectionTest {
                         new SceneObject(new Sphere(new Vec3(0.37, 2, -0.21), 1), SPHERE_MATERIAL)),
                 List.of(new PointLight(light, Rgb.WHITE, 1, false)), new Rgb(0, 0, 0.5), AMBIENT);
 
-        Rgb c = new Integrator(scene, 1, 0).radiance(new Ray(0.37, 0.5, -0.21, 0, -1, 0));
+        Rgb c = Radiance.of(new Integrator(scene, 1, 0), new Ray(0.37, 0.5, -0.21, 0, -1, 0));
 
         assertEquals(new Rgb(PLANE_SHADOWED, 0, 0), c);
     }

@@ -126,7 +126,7 @@ class ShadingTest {
                     List.of(new PointLight(new Vec3(0, 5, 0), LIGHT_COLOR, intensity, false)), BACKGROUND, AMBIENT);
             Integrator integrator = new Integrator(scene, 1, 0);
 
-            Rgb c = integrator.radiance(DOWN);
+            Rgb c = Radiance.of(integrator, DOWN);
 
             boolean shows = intensity == visible;
             assertEquals(shows ? 2 : 1, integrator.rays, "rays traced: the camera ray, and a shadow ray if the light shows");
@@ -272,7 +272,7 @@ class ShadingTest {
     private static Rgb trace(List<SceneObject> objects, List<PointLight> lights, Ray ray, int maxDepth) {
         Camera camera = new Camera(new Vec3(0, 1, 5), Vec3.ZERO, UP, 45);
         Scene scene = new Scene(camera, objects, lights, BACKGROUND, AMBIENT);
-        return new Integrator(scene, maxDepth, 0).radiance(ray);
+        return Radiance.of(new Integrator(scene, maxDepth, 0), ray);
     }
 
     private static SceneObject object(Shape shape, Material material) {

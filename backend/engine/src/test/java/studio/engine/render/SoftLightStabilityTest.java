@@ -81,7 +81,7 @@ class SoftLightStabilityTest {
                 for (int j = 0; j < n; j++) {
                     integrator.lightU = (i + 0.5) / n;
                     integrator.lightV = (j + 0.5) / n;
-                    double v = integrator.radiance(new Ray(x, 0.005, 0, 0, -1, 0)).r();
+                    double v = Radiance.of(integrator, new Ray(x, 0.005, 0, 0, -1, 0)).r();
                     assertTrue(Double.isFinite(v));
                     sum += v;
                     max = Math.max(max, v);
@@ -106,8 +106,8 @@ class SoftLightStabilityTest {
         integrator.lightU = 0.3;
         integrator.lightV = 0.6;
 
-        Rgb floor = integrator.radiance(new Ray(1.5, 0.2, 0, 0, -1, 0));
-        Rgb seen = integrator.radiance(new Ray(0, 1.5, 6, 0, 0, -1));
+        Rgb floor = Radiance.of(integrator, new Ray(1.5, 0.2, 0, 0, -1, 0));
+        Rgb seen = Radiance.of(integrator, new Ray(0, 1.5, 6, 0, 0, -1));
 
         assertTrue(floor.r() > 0.1 && floor.r() < 2 * 0.6, "the floor beside the ball, lit through the glass: " + floor);
         // through the glass's front at normal incidence, (1 - 0.04) of the emitter's colour * 2; the reflection sees black
@@ -134,9 +134,9 @@ class SoftLightStabilityTest {
         for (double u : new double[] {0.01, 0.5, 0.99}) {
             integrator.lightU = u;
             integrator.lightV = 1 - u;
-            Rgb centre = integrator.radiance(new Ray(0, 2, 6, 0, 0, -1));
+            Rgb centre = Radiance.of(integrator, new Ray(0, 2, 6, 0, 0, -1));
             assertEquals(0, centre.r(), "the wall behind, where the light's plane meets it, gets nothing: " + centre);
-            assertTrue(integrator.radiance(new Ray(0, 1, 0, 0, -1, 0)).r() > 0, "the floor under it is lit");
+            assertTrue(Radiance.of(integrator, new Ray(0, 1, 0, 0, -1, 0)).r() > 0, "the floor under it is lit");
         }
         RenderResult result = Renderer.render(RenderRequest.of(scene, new RenderSettings(33, 25, new JitteredSampler(4), 2, 2)));
         assertEquals(0, result.nonFiniteSamples());

@@ -74,7 +74,7 @@ class ShapeSetTest {
         int rays = 0, blocked = 0;
         for (int scene = 0; scene < 6; scene++) {
             Shape[] shapes = randomScene(random, 70 + 60 * scene);
-            ShapeSet plain = ShapeSet.bvh(shapes), lit = ShapeSet.of(lights, shapes);
+            ShapeSet plain = ShapeSets.bvh(shapes), lit = ShapeSet.of(lights, shapes);
             assertEquals(3, lit.lightBufferCount(), "the light inside the box has none");
             Hit hit = new Hit();
             for (int k = 0; k < 3000; k++) {
@@ -120,7 +120,7 @@ class ShapeSetTest {
         int hits = 0;
         for (int scene = 0; scene < 10; scene++) {
             Shape[] shapes = randomScene(random, 20 + 20 * scene);
-            ShapeSet linear = ShapeSet.linear(shapes), bvh = ShapeSet.bvh(shapes);
+            ShapeSet linear = ShapeSets.linear(shapes), bvh = ShapeSets.bvh(shapes);
             assertTrue(bvh.usesBvh());
             Hit a = new Hit(), b = new Hit(), c = new Hit();
             for (int i = 0; i < 1000; i++) {
@@ -203,7 +203,7 @@ class ShapeSetTest {
             }
             Shape[] shapes = list.toArray(Shape[]::new);
             ShapeSet set = ShapeSet.of(shapes);
-            ShapeSet linear = ShapeSet.linear(shapes);
+            ShapeSet linear = ShapeSets.linear(shapes);
             assertTrue(set.usesBvh(), "more than " + ShapeSet.LINEAR_MAX + " objects take the BVH path");
             int flat = Math.min(list.indexOf(plane), Math.min(list.indexOf(box), list.indexOf(sameBox)));
             int round = Math.min(list.indexOf(sphere), list.indexOf(sameSphere));
@@ -270,7 +270,7 @@ class ShapeSetTest {
                 }
             }
             Shape[] shapes = list.toArray(Shape[]::new);
-            ShapeSet set = ShapeSet.bvh(shapes), linear = ShapeSet.linear(shapes);
+            ShapeSet set = ShapeSets.bvh(shapes), linear = ShapeSets.linear(shapes);
             Hit a = new Hit(), b = new Hit(), c = new Hit(), entry = new Hit();
             for (int i = 1; i < shapes.length; i++) {
                 boolean standsApart = set.standsApart(set.slotOf(i));
@@ -317,7 +317,7 @@ class ShapeSetTest {
         Sphere closeToB = new Sphere(new Vec3(0, 0, 22 + 1e-6), 1);
         Sphere c = new Sphere(new Vec3(0, 0, -20), 1);
         Sphere clearOfC = new Sphere(new Vec3(0, 0, -22 - 1e-3), 1);
-        ShapeSet set = ShapeSet.bvh(far, a, touching, b, closeToB, c, clearOfC);
+        ShapeSet set = ShapeSets.bvh(far, a, touching, b, closeToB, c, clearOfC);
 
         assertTrue(set.standsApart(set.slotOf(0)));
         assertFalse(set.standsApart(set.slotOf(1)));
@@ -378,7 +378,7 @@ class ShapeSetTest {
                 // no planes: every pixel's hits are bounded, not only where it sees a plane's bounded part
                 shapes = java.util.Arrays.stream(shapes).filter(s -> !(s instanceof Plane)).toArray(Shape[]::new);
             }
-            ShapeSet set = ShapeSet.bvh(shapes);
+            ShapeSet set = ShapeSets.bvh(shapes);
             Vec3 light = randomPoint(random, 14);
             for (int pixel = 0; pixel < 400; pixel++) {
                 Camera camera = new Camera(randomPoint(random, 15), randomPoint(random, 5), new Vec3(0, 1, 0), 60);

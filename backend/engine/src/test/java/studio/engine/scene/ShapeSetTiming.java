@@ -36,13 +36,13 @@ public final class ShapeSetTiming {
         }
         for (int n : counts) { // warm-up: every configuration compiled before any is timed
             Shape[] shapes = scene(n, new Random(n));
-            time(ShapeSet.linear(shapes), rays);
-            time(ShapeSet.bvh(shapes), rays);
+            time(ShapeSets.linear(shapes), rays);
+            time(ShapeSets.bvh(shapes), rays);
         }
         System.out.println("objects  linear ns/ray  bvh ns/ray   (best of 7, alternating)");
         for (int n : counts) {
             Shape[] shapes = scene(n, new Random(n));
-            ShapeSet linear = ShapeSet.linear(shapes), bvh = ShapeSet.bvh(shapes);
+            ShapeSet linear = ShapeSets.linear(shapes), bvh = ShapeSets.bvh(shapes);
             double bestLinear = Double.POSITIVE_INFINITY, bestBvh = Double.POSITIVE_INFINITY;
             for (int rep = 0; rep < 7; rep++) {
                 bestLinear = Math.min(bestLinear, time(linear, rays));
