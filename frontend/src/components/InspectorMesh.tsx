@@ -6,7 +6,9 @@ import { FieldErrorMessage, useFieldError } from './fieldErrors';
 import { NumberField } from './fields/NumberField';
 import { VectorField } from './fields/VectorField';
 import { triangleCountLabel } from './labels';
+import { FilePickButton } from './FilePickButton';
 import { ObjFileButton } from './ObjFileButton';
+import { useImportFiles } from '../import/ImportContext';
 
 /** Props of {@link InspectorMesh}. */
 export interface InspectorMeshProps {
@@ -18,12 +20,15 @@ export interface InspectorMeshProps {
 
 /**
  * A mesh's placement (position, uniform scale, rotation) and where its triangles come from:
- * inline OBJ or a file (read-only), their count or why they cannot be read, and "Load OBJ file…"
- * to replace them by an inline copy of a local file (one undo step).
+ * inline OBJ, a file (read-only) or an uploaded asset, their count or why they cannot be read, and
+ * "Load OBJ file…" to replace them by a local file's (one undo step): through the editor's import
+ * (read in slices with progress, uploaded once and named by id), or inline where there is none.
  */
 export function InspectorMesh({ index, mesh }: InspectorMeshProps) {
   const setField = useSceneStore((s) => s.setObjectField);
   const setMeshObj = useSceneStore((s) => s.setMeshObj);
+  // in the editor a file goes through the import (read in slices, uploaded once); alone, inline
+  const importFiles = useImportFiles();
   const state = useMeshLookup()(mesh);
   const [loadError, setLoadError] = useState<string | null>(null);
   const path = `objects[${index}]`;
@@ -65,18 +70,33 @@ export function InspectorMesh({ index, mesh }: InspectorMeshProps) {
           </p>
         )}
         <FieldErrorMessage id={`${path}-mesh-error`} message={serverError} path={path} />
-        <ObjFileButton
-          title="Replace the triangles by an inline copy of a Wavefront OBJ file from your computer (keeps position, scale and rotation)"
-          testId="load-obj"
-          onLoad={(text, fileName) => {
-            const error = checkObj(text);
-            setLoadError(error && `Cannot use ${fileName}: ${error}`);
-            if (!error) setMeshObj(index, text);
-          }}
-          onError={setLoadError}
-        >
-          Load OBJ file…
-        </ObjFileButton>
+        {importFiles ? (
+          <FilePickButton
+            ariaLabel="Load OBJ file"
+            title="Replace the triangles by those of a Wavefront OBJ file from your computer, read in the background and uploaded once (keeps position, scale and rotation)"
+            accept=".obj"
+            testId="load-obj"
+            onFiles={(files) => {
+              setLoadError(null);
+              importFiles(files.slice(0, 1), { replaceMesh: index });
+            }}
+          >
+            Load OBJ file…
+          </FilePickButton>
+        ) : (
+          <ObjFileButton
+            title="Replace the triangles by an inline copy of a Wavefront OBJ file from your computer (keeps position, scale and rotation)"
+            testId="load-obj"
+            onLoad={(text, fileName) => {
+              const error = checkObj(text);
+              setLoadError(error && `Cannot use ${fileName}: ${error}`);
+              if (!error) setMeshObj(index, text);
+            }}
+            onError={setLoadError}
+          >
+            Load OBJ file…
+          </ObjFileButton>
+        )}
       </fieldset>
     </>
   );

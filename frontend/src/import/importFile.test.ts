@@ -30,9 +30,10 @@ function fakes(onServer = false) {
     readGltf: async () => ({ min: [-1, 0, -1], max: [1, 2, 1] }),
   };
   let scene: Scene = { objects: [{ type: 'sphere', material: { type: 'plastic', color: '#ff0000' } }, { type: 'gltf', asset: `sha256-${'c'.repeat(64)}` }] };
-  const target: ImportTarget & { added: unknown[]; put: string[] } = {
+  const target: ImportTarget & { added: unknown[]; put: string[]; replaced: [number, string][] } = {
     added: [],
     put: [],
+    replaced: [],
     scene: () => scene,
     selection: () => null,
     addModel: (model, bounds) => void target.added.push({ model, bounds }),
@@ -40,6 +41,7 @@ function fakes(onServer = false) {
       scene = { ...scene, objects: scene.objects.map((o, i) => (i === index ? { ...o, material } : o)) as Scene['objects'] };
     },
     putMesh: (id) => void target.put.push(id),
+    setMeshAsset: (index, id) => void target.replaced.push([index, id]),
   };
   return { deps, target, calls, scene: () => scene };
 }
@@ -55,6 +57,20 @@ describe('importFile', () => {
     expect(target.added).toEqual([{ model: { type: 'mesh', asset: id, scale: 2, material: { type: 'plastic', color: '#4f8fd6' } }, bounds: { min: [0, 0, 0], max: [1, 1, 1] } }]);
     expect(target.put).toEqual([id]);
     expect(message).toBe('tetra.obj: 4 triangles added as a mesh.');
+  });
+
+  it('replaces a mesh’s triangles by an OBJ, uploaded and read as any import, and takes nothing but an OBJ for that', async () => {
+    const { deps, target, calls } = fakes();
+    const message = await importFile(file(TETRAHEDRON_OBJ, 'tetra.obj'), deps, target, () => undefined, { replaceMesh: 3 });
+    const id = await assetIdOf(new Blob([TETRAHEDRON_OBJ]));
+    expect(calls).toEqual(['hash', 'head', 'upload model/obj', 'keep model/obj']);
+    expect(target.replaced).toEqual([[3, id]]);
+    expect(target.added).toEqual([]);
+    expect(target.put).toEqual([id]);
+    expect(message).toBe('tetra.obj: 4 triangles now make the mesh.');
+    await expect(importFile(file('glb bytes', 'duck.glb'), deps, target, () => undefined, { replaceMesh: 3 })).rejects.toThrow(
+      'Cannot use duck.glb as a mesh’s triangles: choose a Wavefront .obj file.'.replace('’', "'"),
+    );
   });
 
   it('does not upload what the server has already', async () => {

@@ -43,6 +43,14 @@ export interface ImportTarget {
   setMaterial(index: number, material: Material): void;
   /** Keeps an OBJ just read, so the views do not read it again. */
   putMesh(id: string, mesh: ParsedObj): void;
+  /** Gives the mesh at `index` the triangles of the OBJ asset `id`. */
+  setMeshAsset(index: number, id: string): void;
+}
+
+/** What an import is for: by default it adds a model or textures the selection. */
+export interface ImportOptions {
+  /** An OBJ replaces the triangles of the mesh at this index instead of adding one. */
+  replaceMesh?: number;
 }
 
 /** Says what an import is doing. */
@@ -56,9 +64,10 @@ export function textureTarget(scene: Scene, selection: Selection, name: string):
   return selection.index;
 }
 
-export async function importFile(file: File, deps: ImportDeps, target: ImportTarget, progress: ProgressFn): Promise<string> {
+export async function importFile(file: File, deps: ImportDeps, target: ImportTarget, progress: ProgressFn, options: ImportOptions = {}): Promise<string> {
   const plan = planImport(file.name, file.size);
   if ('problem' in plan) throw new ImportProblem(plan.problem);
+  if (options.replaceMesh !== undefined && plan.kind !== 'obj') throw new ImportProblem(`Cannot use ${file.name} as a mesh's triangles: choose a Wavefront .obj file.`);
   const textured = plan.kind === 'image' ? textureTarget(target.scene(), target.selection(), file.name) : -1;
   if (typeof textured === 'string') throw new ImportProblem(textured);
 
@@ -88,6 +97,11 @@ export async function importFile(file: File, deps: ImportDeps, target: ImportTar
   await sendToServer(file, id, plan, deps, progress);
   // the File itself: the browser keeps it without copying its bytes on this thread
   await deps.keep({ id, mediaType: plan.mediaType, bytes: file });
+  if (options.replaceMesh !== undefined) {
+    target.putMesh(id, parsed!);
+    target.setMeshAsset(options.replaceMesh, id);
+    return `${file.name}: ${parsed!.triangleCount.toLocaleString('en')} triangles now make the mesh.`;
+  }
   return place(file.name, id, plan, parsed, bounds, textured, target);
 }
 

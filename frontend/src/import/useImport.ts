@@ -7,7 +7,7 @@ import { parseObjInChunks } from '../model/obj';
 import { keepAsset } from '../store/autosave';
 import { useSceneStore } from '../store/sceneStore';
 import { hashFile } from './hashFile';
-import { importFile, ImportProblem, type ImportDeps, type ImportTarget } from './importFile';
+import { importFile, ImportProblem, type ImportDeps, type ImportOptions, type ImportTarget } from './importFile';
 import { useImportStore } from './importStore';
 
 /** The browser's side of an import; `fetchFn` for every request (uploads report progress with the browser's own). */
@@ -31,22 +31,23 @@ const target: ImportTarget = {
   addModel: (model, bounds) => useSceneStore.getState().addModel(model, bounds),
   setMaterial: (index, material) => useSceneStore.getState().setMaterial(index, material),
   putMesh: (id, mesh) => meshCache.putAsset(id, mesh),
+  setMeshAsset: (index, id) => useSceneStore.getState().setMeshAsset(index, id),
 };
 
 /**
  * Imports files one after another (the toolbar's + Import and + Mesh, a drop on the stage), the
  * progress in {@link useImportStore}; each problem goes to `onProblem`, none is swallowed.
  */
-export function useImport(fetchFn: FetchFn | undefined, onProblem: (message: string) => void): (files: File[]) => Promise<void> {
+export function useImport(fetchFn: FetchFn | undefined, onProblem: (message: string) => void): (files: File[], options?: ImportOptions) => Promise<void> {
   return useCallback(
-    async (files: File[]) => {
+    async (files: File[], options?: ImportOptions) => {
       const deps = browserDeps(fetchFn);
       const problems: string[] = [];
       useImportStore.setState({ done: null });
       for (const [i, file] of files.entries()) {
         useImportStore.setState({ current: { name: file.name, phase: 'hashing', fraction: 0 }, waiting: files.length - i - 1 });
         try {
-          const done = await importFile(file, deps, target, (phase, fraction) => useImportStore.setState({ current: { name: file.name, phase, fraction } }));
+          const done = await importFile(file, deps, target, (phase, fraction) => useImportStore.setState({ current: { name: file.name, phase, fraction } }), options);
           useImportStore.setState({ done });
         } catch (error) {
           problems.push(error instanceof ImportProblem ? error.message : `Cannot import ${file.name}: ${error instanceof Error ? error.message : String(error)}`);

@@ -96,6 +96,15 @@ export function setMeshObj(scene: Scene, index: number, obj: string): Scene {
   return { ...scene, objects };
 }
 
+/** Gives a mesh the triangles of an uploaded OBJ asset, dropping its `obj` or `file` (a mesh has exactly one source). */
+export function setMeshAsset(scene: Scene, index: number, asset: string): Scene {
+  const object = scene.objects[index];
+  if (object?.type !== 'mesh') return scene;
+  const { file: _file, obj: _obj, ...rest } = object;
+  const objects = scene.objects.map((o, i) => (i === index ? { ...rest, asset } : o));
+  return { ...scene, objects };
+}
+
 export function addLight(scene: Scene): Scene {
   const light = newLight();
   const lights = sceneLights(scene);

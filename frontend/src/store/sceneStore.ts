@@ -101,6 +101,8 @@ export interface SceneState {
   addModel(model: PlacedModel, bounds?: Bounds): void;
   /** Replaces a mesh's triangles by inline OBJ text (its `file`, if any, goes). */
   setMeshObj(index: number, obj: string): void;
+  /** Replaces a mesh's triangles by an uploaded OBJ asset's (its `obj` or `file`, if any, goes). */
+  setMeshAsset(index: number, asset: string): void;
   addLight(): void;
   /** Adds an area light hanging above the camera's target, aimed at it, selected (one history entry). */
   addAreaLight(): void;
@@ -240,6 +242,7 @@ export const useSceneStore = create<SceneState>()((set, get) => {
     addMesh: (obj, scale) => commit((s) => edits.addMesh(s, obj, scale), (n) => ({ kind: 'object', index: n.objects.length - 1 })),
     addModel: (model, bounds) => commit((s) => edits.addModel(s, model, bounds), (n) => ({ kind: 'object', index: n.objects.length - 1 })),
     setMeshObj: (index, obj) => commit((s) => edits.setMeshObj(s, index, obj)),
+    setMeshAsset: (index, asset) => commit((s) => edits.setMeshAsset(s, index, asset)),
     addLight: () => commit((s) => edits.addLight(s), (n) => ({ kind: 'light', index: sceneLights(n).length - 1 })),
     addAreaLight: () => commit((s) => edits.addAreaLight(s), (n) => ({ kind: 'light', index: sceneLights(n).length - 1 })),
     duplicateSelected: () => {
