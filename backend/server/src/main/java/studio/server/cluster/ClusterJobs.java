@@ -54,10 +54,8 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     static final long END_WRITE_SECONDS = 10;
     /**
      * The cluster's tiles are this large when the image has at least {@value #MIN_LARGE_TILES} of
-     * them. Each tile costs a few round trips between members (take and claim it, put its result,
-     * log its event), a few milliseconds each on a busy machine: with 32x32 tiles of a 960x720 glass
-     * scene at 36 samples (50 ms of rendering each on one core), two members pinned to a core each
-     * took as long as one.
+     * them: each tile costs a few round trips between members (take and claim it, put its result,
+     * log its event), a few milliseconds each on a busy machine (docs/cluster.md, scaling).
      */
     static final int LARGE_TILE = 64;
     static final int MIN_LARGE_TILES = 64;
