@@ -1,3 +1,4 @@
+import { memo } from 'react';
 import { resolveObject } from '../model/defaults';
 import type { MeshState } from '../model/meshCache';
 import { boxFootprint, planeToSvg, worldToSvg, type ViewKind, type ViewTransform } from '../model/projection';
@@ -5,6 +6,8 @@ import type { SceneObject } from '../model/types';
 import { labelOf, MATERIAL_LABELS, meshName } from '../components/labels';
 import { MeshGlyph } from './MeshGlyph';
 import { PlaneGlyph } from './PlaneGlyph';
+
+const LOADING: MeshState = { status: 'loading' };
 
 /** Props of {@link ObjectGlyph}. */
 export interface ObjectGlyphProps {
@@ -24,8 +27,10 @@ export interface ObjectGlyphProps {
  * footprint (with a tick on its own +x face), a plane edge-on or as a hatched hint, a mesh as its
  * labelled bounding rectangle (see {@link MeshGlyph}). The group
  * carries `data-testid="object-N"`, `data-kind`, `data-selected` and `data-target` (for dragging).
+ * Memoised: a drag step changes one object of the scene (the others keep their values, and the
+ * view its transform), so only the glyphs whose props changed render again.
  */
-export function ObjectGlyph({ kind, t, object, index, selected, hatchId, meshState = { status: 'loading' } }: ObjectGlyphProps) {
+export const ObjectGlyph = memo(function ObjectGlyph({ kind, t, object, index, selected, hatchId, meshState = LOADING }: ObjectGlyphProps) {
   const r = resolveObject(object);
   const name = r.type === 'mesh' || r.type === 'gltf' ? meshName(labelOf(object, index), meshState, r.type === 'gltf' ? 'glTF' : 'OBJ') : labelOf(object, index);
   const common = {
@@ -75,4 +80,4 @@ export function ObjectGlyph({ kind, t, object, index, selected, hatchId, meshSta
       <circle cx={cx} cy={cy} r={2} className="glyph-centre" />
     </g>
   );
-}
+});

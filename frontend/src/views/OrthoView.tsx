@@ -39,7 +39,8 @@ export function OrthoView({ kind, title, axesHint }: OrthoViewProps) {
   const view = useSceneStore((s) => s.views[kind]);
   const gridSize = useSceneStore((s) => s.gridSize);
   const meshes = useMeshLookup();
-  const t: ViewTransform = { ...view, width: size.width, height: size.height };
+  // one transform while the view stays, so that the glyphs' memo holds across a drag
+  const t: ViewTransform = useMemo(() => ({ ...view, width: size.width, height: size.height }), [view, size.width, size.height]);
   const { handlers, marquee } = useViewPointer(kind, svg, t);
 
   useFitView(kind, size);
