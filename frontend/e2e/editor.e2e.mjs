@@ -480,6 +480,31 @@ try {
     expect(!missing.some((url) => url.includes('favicon')), `the favicon is a 404: ${missing.join(', ')}`);
   });
 
+  await step('camera from this view: the render camera takes the orbit view\'s position and target, one undo step', async () => {
+    await page.getByRole('tab', { name: '3D preview' }).click();
+    await page.keyboard.press('Escape'); // nothing selected: the drag below orbits, it moves no handle
+    const before = (await sceneOf(page)).camera;
+    await page.getByRole('button', { name: 'Orbit view' }).click();
+    const viewport = await page.getByTestId('preview-3d').boundingBox();
+    const x = viewport.x + viewport.width / 2, y = viewport.y + viewport.height / 2;
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let i = 1; i <= 8; i++) await page.mouse.move(x + 20 * i, y);
+    await page.mouse.up();
+    await page.getByRole('button', { name: 'Camera from this view' }).click();
+    let after;
+    await until(async () => {
+      after = (await sceneOf(page)).camera;
+      return after && JSON.stringify(after.position) !== JSON.stringify(before?.position);
+    }, () => `the render camera did not move: ${JSON.stringify(before)} -> ${JSON.stringify(after)}`);
+    const distance = (c) => Math.hypot(...c.position.map((p, i) => p - (c.lookAt ?? [0, 0, 0])[i]));
+    expect(Math.abs(distance(after) - distance({ position: before.position ?? [0, 2, 8], lookAt: before.lookAt })) < 0.05,
+      `orbiting changed the camera's distance to its target: ${JSON.stringify(before)} -> ${JSON.stringify(after)}`);
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => JSON.stringify((await sceneOf(page)).camera) === JSON.stringify(before), 'one undo did not bring the camera back');
+    await page.getByRole('button', { name: 'Camera view' }).click();
+  });
+
   await step('3D: a click selects, the move handle drags it as one undo step, R scales, F frames', async () => {
     await page.getByRole('button', { name: 'New', exact: true }).click();
     await page.getByTestId('add-sphere').click();

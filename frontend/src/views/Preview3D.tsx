@@ -108,9 +108,22 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
           {viewButton('raytraced', 'Ray traced', 'See the server’s render, refined live as you edit')}
         </div>
         {view === 'orbit' && (
-          <button type="button" className="small" onClick={() => engine.current?.resetOrbit()} title="Look through the render camera again">
-            Reset view
-          </button>
+          <>
+            <button
+              type="button"
+              className="small"
+              onClick={() => {
+                const seen = engine.current?.orbitView();
+                if (seen) useSceneStore.getState().setCamera(seen);
+              }}
+              title="Make the render camera look as this view does (position, target and up; one undo step)"
+            >
+              Camera from this view
+            </button>
+            <button type="button" className="small" onClick={() => engine.current?.resetOrbit()} title="Look through the render camera again">
+              Reset view
+            </button>
+          </>
         )}
       </header>
       {view === 'raytraced' && shown && <RayTracedView onFieldErrors={onFieldErrors} socketFactory={socketFactory} />}

@@ -113,6 +113,15 @@ export class PreviewEngine {
     if (this.last) this.update(this.last);
   }
 
+  /** Where the orbit camera is, what it looks at and its up: a render camera that frames what it sees. */
+  orbitView(): { position: Vec3; lookAt: Vec3; up: Vec3 } {
+    return {
+      position: this.orbitCamera.position.toArray() as Vec3,
+      lookAt: this.controls.target.toArray() as Vec3,
+      up: this.orbitCamera.up.toArray() as Vec3,
+    };
+  }
+
   /** Puts the orbit camera back where the render camera is, looking at its target. */
   resetOrbit(): void {
     if (!this.last) return;
