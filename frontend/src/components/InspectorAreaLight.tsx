@@ -2,10 +2,9 @@ import { resolveLight } from '../model/defaults';
 import type { AreaLight, ResolvedLightOf } from '../model/types';
 import { useSceneStore } from '../store/sceneStore';
 import { CheckboxField } from './fields/CheckboxField';
-import { NameField } from './fields/NameField';
 import { VectorField } from './fields/VectorField';
-import { labelOf } from './labels';
 import { LightEmissionFields } from './LightEmissionFields';
+import { LightSection } from './LightSection';
 
 /** Props of {@link InspectorAreaLight}. */
 export interface InspectorAreaLightProps {
@@ -23,16 +22,7 @@ export function InspectorAreaLight({ index, light }: InspectorAreaLightProps) {
   const r = resolveLight(light) as ResolvedLightOf<'area'>;
   const path = `lights[${index}]`;
   return (
-    <section className="inspector-section" aria-label={`${labelOf(light, index)} properties`} data-testid="inspector-light">
-      <h3>{labelOf(light, index)}</h3>
-      <NameField path={`${path}.name`} value={light.name} onCommit={(name) => setField(index, 'name', name)} />
-      <VectorField
-        label="Light position"
-        path={`${path}.position`}
-        value={r.position}
-        hint="The centre of the rectangle (metres)"
-        onCommit={(v) => setField(index, 'position', v)}
-      />
+    <LightSection index={index} light={light} position={r.position} positionHint="The centre of the rectangle (metres)">
       <VectorField
         label="Size"
         path={`${path}.size`}
@@ -63,6 +53,6 @@ export function InspectorAreaLight({ index, light }: InspectorAreaLightProps) {
         hint="Off: it shines from its front only (towards its aim). On: from both faces."
         onCommit={(v) => setField(index, 'twoSided', v)}
       />
-    </section>
+    </LightSection>
   );
 }

@@ -3,10 +3,8 @@ import type { ResolvedLightOf } from '../model/types';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { InspectorAreaLight } from './InspectorAreaLight';
 import { NumberField } from './fields/NumberField';
-import { NameField } from './fields/NameField';
-import { VectorField } from './fields/VectorField';
-import { labelOf } from './labels';
 import { LightEmissionFields } from './LightEmissionFields';
+import { LightSection } from './LightSection';
 
 /** Props of {@link InspectorLight}. */
 export interface InspectorLightProps {
@@ -24,16 +22,7 @@ export function InspectorLight({ index }: InspectorLightProps) {
   const r = resolveLight(light) as ResolvedLightOf<'point'>;
   const path = `lights[${index}]`;
   return (
-    <section className="inspector-section" aria-label={`${labelOf(light, index)} properties`} data-testid="inspector-light">
-      <h3>{labelOf(light, index)}</h3>
-      <NameField path={`${path}.name`} value={light.name} onCommit={(name) => setField(index, 'name', name)} />
-      <VectorField
-        label="Light position"
-        path={`${path}.position`}
-        value={r.position}
-        hint="Where the point light is (metres)"
-        onCommit={(v) => setField(index, 'position', v)}
-      />
+    <LightSection index={index} light={light} position={r.position} positionHint="Where the point light is (metres)">
       <NumberField
         label="Radius"
         path={`${path}.radius`}
@@ -49,6 +38,6 @@ export function InspectorLight({ index }: InspectorLightProps) {
         intensityHint="Brightness; 1 lights a white chalk surface facing it fully"
         falloffHint="Off: the same light at any distance (as POV-Ray's default). On: divided by the squared distance."
       />
-    </section>
+    </LightSection>
   );
 }
