@@ -309,4 +309,30 @@ class StudioLauncherTest {
         assertThat(launched()).doesNotContain("-XX:+UseParallelGC", QUICK_COMPILER).contains("-XX:AOTCache=");
         assertThat(launched("--server.port=8081", "--samples", "1")).doesNotContain(QUICK_COMPILER);
     }
+
+    /**
+     * A JDK of version 20 or newer with the Vector API's incubator module runs everything with it,
+     * the training run too (the cache keeps the module graph it was recorded with); JDK 17, and a
+     * runtime built without the module, run without it.
+     */
+    @Test
+    void aJdkWithTheVectorModuleRunsEveryJvmWithIt() throws Exception {
+        String module = "--add-modules jdk.incubator.vector";
+        List<String> calls = calls("render", "s.json", "--samples", "16");
+        String training = calls.stream().filter(c -> c.contains(" train ")).findFirst().orElseThrow();
+        assertThat(training).contains(module);
+        assertThat(calls.get(calls.size() - 1)).contains(module);
+        assertThat(launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "1")).contains(module);
+        assertThat(launched()).contains(module);
+        assertThat(dir.resolve("studio-cds/java")).content().contains(" aot vector");
+
+        standInJdk("17.0.15");
+        calls = calls("render", "s.json", "--samples", "16");
+        assertThat(calls).noneMatch(c -> c.contains("add-modules"));
+
+        standInJdk("25.0.1", "java.base jdk.jfr");
+        calls = calls("render", "s.json", "--samples", "16");
+        assertThat(calls).noneMatch(c -> c.contains("add-modules"));
+        assertThat(dir.resolve("studio-cds/java")).content().doesNotContain("vector");
+    }
 }
