@@ -2,7 +2,9 @@ package studio.engine.accel;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import java.lang.management.ManagementFactory;
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
@@ -53,6 +55,47 @@ class WideWalkTest {
             }
         }
         assertAgree(new TriangleLeaves(positions, indices), random, 1, 0);
+    }
+
+    /**
+     * Once compiled, a walk allocates nothing: with the scalar box test everywhere, with the Vector
+     * API's from JDK 20, where {@link WideBoxTests} picks it (JDK 17's incubator API, forced on,
+     * allocated some 720 bytes a ray here).
+     */
+    @Test
+    void theWalksAndTheBoxTestAllocateNothingOnceCompiled() {
+        assumeTrue(!WideBoxTests.vectorized() || Runtime.version().feature() >= 20, "JDK 17's vector API allocates");
+        Random random = new Random(472);
+        int n = 3_000;
+        double[] spheres = new double[4 * n];
+        for (int i = 0; i < 4 * n; i++) {
+            spheres[i] = i % 4 == 3 ? 0.3 : random.nextDouble() * 40;
+        }
+        SphereLeaves leaves = new SphereLeaves(spheres);
+        WideWalk walk = new WideWalk(WideBvh.of(Bvh.build(leaves.boxes(), n)), leaves);
+        Ray[] rays = new Ray[1024];
+        for (int i = 0; i < rays.length; i++) {
+            rays[i] = new Ray(-5, random.nextDouble() * 40, random.nextDouble() * 40, 1, random.nextGaussian() * 0.3,
+                    random.nextGaussian() * 0.3);
+        }
+        long sink = walks(walk, rays, 200_000); // warm-up: compiled before measuring
+        com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long thread = Thread.currentThread().getId();
+        long before = threads.getThreadAllocatedBytes(thread);
+        sink += walks(walk, rays, 100_000);
+        long allocated = threads.getThreadAllocatedBytes(thread) - before;
+        assertTrue(sink > 0, "some rays hit");
+        assertTrue(allocated < 10_000, allocated + " bytes for 100,000 rays through " + WideBoxTests.get());
+    }
+
+    private static long walks(WideWalk walk, Ray[] rays, int count) {
+        long found = 0;
+        for (int i = 0; i < count; i++) {
+            Ray ray = rays[i & (rays.length - 1)];
+            found += walk.closest(ray, Double.POSITIVE_INFINITY) >= 0 ? 1 : 0;
+            found += walk.occluded(ray, 30) ? 1 : 0;
+        }
+        return found;
     }
 
     private static void assertAgree(Leaves leaves, Random random, double scale, double shift) {
