@@ -61,22 +61,7 @@ public class WideBvhBenchmark {
 
     @Setup
     public void setUp() {
-        Leaves leaves;
-        if (scene.equals("spheres-10k")) {
-            List<SceneObject> objects = ScalingScenes.spheres(10_000);
-            double[] spheres = new double[4 * objects.size()];
-            for (int i = 0; i < objects.size(); i++) {
-                Sphere s = (Sphere) objects.get(i).shape();
-                spheres[4 * i] = s.center().x();
-                spheres[4 * i + 1] = s.center().y();
-                spheres[4 * i + 2] = s.center().z();
-                spheres[4 * i + 3] = s.radius();
-            }
-            leaves = new SphereLeaves(spheres);
-        } else {
-            TriangleMesh knot = ScalingScenes.placedKnot(MeshScene.mesh());
-            leaves = new TriangleLeaves(knot.positions(), knot.indices());
-        }
+        Leaves leaves = leaves(scene);
         Bvh bvh = Bvh.build(leaves.boxes(), leaves.count());
         switch (tree) {
             case "binary" -> binary = new BinaryWalk(bvh, leaves);
@@ -92,7 +77,29 @@ public class WideBvhBenchmark {
         rays = RandomRays.toward(bounds(leaves.boxes()), 4);
     }
 
-    private static Aabb bounds(double[] boxes) {
+    /** The primitives of a scene: {@code spheres-10k} or {@code mesh-100k}. */
+    public static Leaves leaves(String scene) {
+        if (scene.equals("spheres-10k")) {
+            List<SceneObject> objects = ScalingScenes.spheres(10_000);
+            double[] spheres = new double[4 * objects.size()];
+            for (int i = 0; i < objects.size(); i++) {
+                Sphere s = (Sphere) objects.get(i).shape();
+                spheres[4 * i] = s.center().x();
+                spheres[4 * i + 1] = s.center().y();
+                spheres[4 * i + 2] = s.center().z();
+                spheres[4 * i + 3] = s.radius();
+            }
+            return new SphereLeaves(spheres);
+        }
+        if (scene.equals("mesh-100k")) {
+            TriangleMesh knot = ScalingScenes.placedKnot(MeshScene.mesh());
+            return new TriangleLeaves(knot.positions(), knot.indices());
+        }
+        throw new IllegalArgumentException(scene);
+    }
+
+    /** The union of primitive boxes (six doubles each). */
+    public static Aabb bounds(double[] boxes) {
         double[] b = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE,
                 -Double.MAX_VALUE};
         for (int i = 0; i < boxes.length; i += 6) {
