@@ -21,7 +21,8 @@ import studio.engine.math.Vec3;
  * estimate is L * Omega = (I / (pi r^2)) * 2 pi (1 - cos theta_max) = 2 I / (d^2 (1 + cos theta_max)),
  * in which r cancels, so a radius of 1e-6 or of 100 has no 1/r^2 to lose digits in; 1 - cos theta_max
  * is never formed by subtraction: cos theta_max = sqrt((d - r)(d + r)) / d, and a sampled
- * sin^2 theta = a (2 - a) with a = u (1 - cos theta_max). Without fall-off it is I.</li>
+ * sin^2 theta = a (2 - a) with a = rho^2 (1 - cos theta_max), rho the 2D point's radius on the
+ * concentric disc. Without fall-off it is I.</li>
  * <li>An area light: a point on the rectangle, uniform by area, and I cos_l / d^2 (with fall-off;
  * radiance I / A over the pdf 1 / A in area, turned into solid angle by cos_l / d^2) or I cos_l
  * (without); nothing from behind a one-sided light.</li>
