@@ -9,10 +9,10 @@ package studio.engine.sampler;
  * count. The pattern is the run's own pixel points, except under the jittered sampler: there it is a
  * multi-jittered pattern of the run's size ({@link MultiJitteredSampler}), which has jittered's
  * cells and also one point in each of N narrow columns and rows, so a shadow edge across the light
- * is cut into N strata, not sqrt(N) (PenumbraTest: at 16 and 64 jittered samples, a penumbra row's
- * squared error against random's). A Sobol run of 2^k from 2^k is a (0, k, 2)-net already, and the
- * runs of one pixel together are the sequence's first points, so sobol keeps its own points. One per
- * worker thread; allocates nothing after construction.
+ * is cut into N strata, not sqrt(N) (PenumbraTest's wall at 64 jittered samples: 0.08 of random's
+ * squared error, 0.51 with the pixel's own points shuffled). A Sobol run of 2^k from 2^k is a
+ * (0, k, 2)-net already, and the runs of one pixel together are the sequence's first points, so
+ * sobol keeps its own points. One per worker thread; allocates nothing after construction.
  */
 public final class LightPoints {
 
@@ -51,6 +51,9 @@ public final class LightPoints {
         this.first = first;
         random.reset(x, y, seed ^ STREAM);
         random.skip((long) first << 24);
+        if (count == 0) {
+            return;
+        }
         if (ownPattern) {
             multiJittered.fill(random, count, 0, count, patternU, patternV);
         } else {

@@ -1,6 +1,7 @@
 package studio.engine.sampler;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -96,5 +97,14 @@ class LightPointsTest {
             assertEquals(first[1][s], points.v(s));
         }
         assertNotEquals(first[0][0], run(sampler, 5, 4, 0, 16, 9L)[0][0]);
+    }
+
+    /** An empty run (an adaptive pixel already at its limit) is accepted: there is no pattern of 0 points to draw. */
+    @Test
+    void anEmptyRunIsAccepted() {
+        for (Sampler sampler : new Sampler[] {new JitteredSampler(16), new SobolSampler(16)}) {
+            LightPoints points = new LightPoints(sampler, 1L);
+            assertDoesNotThrow(() -> points.start(0, 0, 16, 0, new double[16], new double[16]));
+        }
     }
 }
