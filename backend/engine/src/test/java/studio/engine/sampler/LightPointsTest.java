@@ -107,4 +107,32 @@ class LightPointsTest {
             assertDoesNotThrow(() -> points.start(0, 0, 16, 0, new double[16], new double[16]));
         }
     }
+
+    /** Dealing a run's light points, multi-jittered or the pixel's own, allocates nothing (it runs once per pixel run, in the hot loop). */
+    @Test
+    void dealingLightPointsAllocatesNothing() {
+        for (Sampler sampler : new Sampler[] {new JitteredSampler(64), new SobolSampler(64)}) {
+            LightPoints points = new LightPoints(sampler, 4L);
+            double[] xs = new double[64], ys = new double[64];
+            double sum = deal(points, xs, ys); // warm-up: lets the JIT compile the loop
+            sum += deal(points, xs, ys);
+            com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+            long thread = Thread.currentThread().getId();
+            long before = threads.getThreadAllocatedBytes(thread);
+            sum += deal(points, xs, ys);
+            long bytes = threads.getThreadAllocatedBytes(thread) - before;
+            assertTrue(bytes < 4096, sampler.name() + ": allocated " + bytes + " bytes");
+            assertTrue(Double.isFinite(sum));
+        }
+    }
+
+    private static double deal(LightPoints points, double[] xs, double[] ys) {
+        double sum = 0;
+        for (int pixel = 0; pixel < 20_000; pixel++) {
+            int first = pixel % 3 == 0 ? 0 : 16, count = pixel % 3 == 0 ? 16 : 48;
+            points.start(pixel % 97, pixel / 97, first, count, xs, ys);
+            sum += points.u(first) + points.v(first + count - 1);
+        }
+        return sum;
+    }
 }
