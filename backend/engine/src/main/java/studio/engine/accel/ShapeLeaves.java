@@ -74,9 +74,15 @@ public final class ShapeLeaves implements Leaves {
                     ? Sphere.occluded(spheres[k], spheres[k + 1], spheres[k + 2], spheres[k + 3], ray, tMax)
                     : shapes[slotShapes[slot]].occluded(ray, tMax);
             if (found) {
+                ray.blocker = slotShapes[slot];
                 return true;
             }
         }
         return false;
+    }
+
+    /** Whether shape i (by declaration index; false when there is none) lies on the ray with 0 &lt; t &lt; tMax. */
+    public boolean blocks(int i, Ray ray, double tMax) {
+        return i >= 0 && i < shapes.length && shapes[i].occluded(ray, tMax);
     }
 }

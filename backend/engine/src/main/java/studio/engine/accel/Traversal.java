@@ -1,5 +1,6 @@
 package studio.engine.accel;
 
+import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 
@@ -110,5 +111,40 @@ public final class Traversal {
             node = links[o + 2];
         }
         return false;
+    }
+
+    /**
+     * Into {@code out} from index {@code from} on: the leaf slots a ray inside the pyramid can
+     * meet, those in leaves whose node boxes it may meet and whose own boxes ({@code slotBoxes},
+     * six doubles a slot) it may meet too. Returns the index after the last, or -1 when they would
+     * not fit. {@code stack} needs {@link Bvh#STACK_SIZE} ints.
+     */
+    public int slotsIn(Frustum pyramid, double[] slotBoxes, int[] out, int from, int[] stack) {
+        double[] nb = nodeBounds;
+        int[] links = this.links;
+        int n = from, sp = 0, node = 0;
+        while (true) {
+            if (pyramid.mayMeet(nb, 6 * node)) {
+                int o = 3 * node;
+                int count = links[o + 1];
+                if (count < 0) {
+                    stack[sp++] = links[o];
+                    node++;
+                    continue;
+                }
+                for (int slot = links[o], end = slot + count; slot < end; slot++) {
+                    if (count == 1 || pyramid.mayMeet(slotBoxes, 6 * slot)) {
+                        if (n == out.length) {
+                            return -1;
+                        }
+                        out[n++] = slot;
+                    }
+                }
+            }
+            if (sp == 0) {
+                return n;
+            }
+            node = stack[--sp];
+        }
     }
 }

@@ -2,6 +2,7 @@ package studio.engine.camera;
 
 import java.util.Arrays;
 
+import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Ray;
 import studio.engine.math.Vec3;
 
@@ -65,6 +66,17 @@ public final class Camera {
         double dx = x * ux + y * vx - wx, dy = x * uy + y * vy - wy, dz = x * uz + y * vz - wz;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         return out.set(px, py, pz, dx / len, dy / len, dz / len);
+    }
+
+    /**
+     * Into {@code out}: a pyramid holding every ray {@link #ray(double, double, double, Ray)}
+     * shoots through normalised device coordinates between ndcX0 and ndcX1 and between ndcY0 and
+     * ndcY1 (inclusive), for this aspect. Returns out.
+     */
+    public Frustum frustum(double ndcX0, double ndcX1, double ndcY0, double ndcY1, double aspect, Frustum out) {
+        double scaleX = tanHalfFov * aspect;
+        return out.set(px, py, pz, -wx, -wy, -wz, ux, uy, uz, vx, vy, vz,
+                ndcX0 * scaleX, ndcX1 * scaleX, ndcY0 * tanHalfFov, ndcY1 * tanHalfFov, Double.POSITIVE_INFINITY);
     }
 
     public Vec3 position() {

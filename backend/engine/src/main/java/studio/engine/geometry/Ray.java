@@ -18,6 +18,17 @@ public final class Ray {
      * same hit. Set by {@link Rays#spawn}, reset by {@link #set}.
      */
     public int within = -1;
+    /**
+     * The bundle of rays from one apex this ray belongs to (null: none), whose pyramid holds it:
+     * the aggregate may test the ray against what it listed in the pyramid. Reset by {@link #set}.
+     */
+    public RayBundle bundle;
+    /**
+     * The object that blocked this ray object's last blocked any-hit question (-1: none): a hint
+     * the aggregate tests first, as POV-Ray keeps a shadow cache per light (a renderer keeps one
+     * ray object per light for its shadow rays). Kept by {@link #set}; any value gives the same answer.
+     */
+    public int blocker = -1;
     /** The ray in the triangle test's frame, set up on the first {@link #shear} after {@link #set}. */
     private final RayShear shear = new RayShear();
     private boolean sheared;
@@ -35,6 +46,7 @@ public final class Ray {
         this.ox = ox; this.oy = oy; this.oz = oz;
         this.dx = dx; this.dy = dy; this.dz = dz;
         within = -1;
+        bundle = null;
         sheared = false;
         return this;
     }

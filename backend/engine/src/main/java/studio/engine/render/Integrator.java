@@ -267,7 +267,7 @@ final class Integrator {
             if (highlightDecides && diffuseShare + share * sMax * highlight < NEGLIGIBLE_LIGHT) {
                 continue;
             }
-            boolean reached = shadows.reach(hit, light.tx, light.ty, light.tz);
+            boolean reached = shadows.reach(i, hit, light.tx, light.ty, light.tz);
             rays += shadows.traced;
             if (!reached) {
                 continue;

@@ -2,6 +2,8 @@ package studio.engine.render;
 
 import studio.engine.camera.Camera;
 import studio.engine.geometry.Ray;
+import studio.engine.geometry.RayBundle;
+import studio.engine.math.Vec3;
 import studio.engine.sampler.LightPoints;
 import studio.engine.scene.Scene;
 
@@ -14,6 +16,19 @@ import studio.engine.scene.Scene;
  */
 final class SampleTracer {
 
+    /**
+     * A call tracing at least this many samples sends its camera rays as a {@link RayBundle}, for
+     * the scene to list what they can meet once; fewer would not repay the listing.
+     */
+    static final int BUNDLE_FROM = 4;
+    /**
+     * Pixels of a row bundled together: one pyramid over runs of this many pixels (from a column
+     * that is a multiple of it), kept while the pixels traced stay in the run. The rays test a few
+     * more objects each, and the listings, which took a third of 10,000 spheres' render pixel by
+     * pixel, happen a quarter as often (warm, 800x600, 16 samples, 2 threads: one pixel 437 ms,
+     * runs of 2 379, of 4 327, of 8 344).
+     */
+    static final int RUN = 4;
     /**
      * A sample's texture footprint: this share of its cell of the pixel (the pixel over the square
      * root of its samples). The sampler's stratification already averages across cells; the
@@ -29,6 +44,9 @@ final class SampleTracer {
     private final Camera camera;
     private final StopSignal stop;
     private final Ray cameraRay = new Ray();
+    /** The camera rays' bundle, and the row and first column of the run of pixels it holds (row -1: none). */
+    private final RayBundle bundle = new RayBundle();
+    private int bundledRow = -1, bundledFrom;
     private final int width, height;
     private final double aspect;
     /** The radiance summed over the last call of {@link #trace}. */
@@ -90,6 +108,17 @@ final class SampleTracer {
      */
     long trace(int x, int y, double[] xs, double[] ys, int first, int count) {
         long bad = 0;
+        boolean bundled = count >= BUNDLE_FROM;
+        if (!bundled) {
+            bundledRow = -1;
+        } else if (y != bundledRow || x < bundledFrom || x >= bundledFrom + RUN) {
+            bundledRow = y;
+            bundledFrom = x - x % RUN;
+            int to = Math.min(width, bundledFrom + RUN);
+            Vec3 eye = camera.position();
+            camera.frustum(ndcX(bundledFrom, 0), ndcX(to, 0), ndcY(y, 1), ndcY(y, 0), aspect,
+                    bundle.aim(eye.x(), eye.y(), eye.z()));
+        }
         if (lightPoints != null) {
             lightPoints.start(x, y, first, count);
         }
@@ -102,6 +131,7 @@ final class SampleTracer {
                 integrator.lightV = ys[j];
             }
             Ray ray = camera.ray(ndcX(x, xs[s]), ndcY(y, ys[s]), aspect, cameraRay);
+            ray.bundle = bundled ? bundle : null;
             // Each sample starts with throughput 1: culling by the sample's share of the pixel
             // (1/N) would drop every weak reflection at high sample counts, a bias, not noise.
             integrator.roulette.startSample(x, y, s);

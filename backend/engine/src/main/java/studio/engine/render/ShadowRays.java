@@ -35,7 +35,8 @@ final class ShadowRays {
     /** The scene's opaque objects, and its glass ones (null: none). */
     private final ShapeSet opaque, glass;
     private final Hit shadowHit = new Hit();
-    private final Ray shadowRay = new Ray();
+    /** Per light, the ray object of its shadow rays, which keeps what blocked the last one ({@link Ray#blocker}). */
+    private final Ray[] shadowRays;
     /** The transmittance found by the last {@link #reach}, and how many rays it traced. */
     double throughR, throughG, throughB;
     int traced;
@@ -45,6 +46,10 @@ final class ShadowRays {
         this.minPathWeight = minPathWeight;
         this.opaque = scene.opaque();
         this.glass = scene.glass();
+        this.shadowRays = new Ray[scene.lights().size()];
+        for (int i = 0; i < shadowRays.length; i++) {
+            shadowRays[i] = new Ray();
+        }
     }
 
     /**
@@ -54,7 +59,8 @@ final class ShadowRays {
      * their closest-hit question, multiplying their transmittance (the scene's own aggregate, with
      * glass in it, would make every blocked ray walk: glass-pattern about 1.5 times as long).
      */
-    boolean reach(Hit from, double tx, double ty, double tz) {
+    boolean reach(int light, Hit from, double tx, double ty, double tz) {
+        Ray shadowRay = shadowRays[light];
         Ray ray = Rays.spawnTowards(from, tx, ty, tz, shadowRay);
         double dist = distance(ray, tx, ty, tz);
         traced = 1;

@@ -10,6 +10,7 @@ import studio.engine.accel.Traversal;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.LightBuffer;
 import studio.engine.geometry.Ray;
+import studio.engine.geometry.RayBundle;
 import studio.engine.geometry.Shape;
 import studio.engine.math.Vec3;
 import studio.engine.memory.MemoryGate;
@@ -29,6 +30,10 @@ import studio.engine.memory.MemoryGate;
  * with point lights keeps a {@link LightBuffer} for each of up to {@value LightBuffer#MAX_LIGHTS}
  * of them: a ray that ends at such a light tests the few shapes listed in its direction, nearest
  * the light first, and walks the tree only when the buffer leaves the ray to it; the same answer.
+ * Behind {@link #intersect}, a ray of a {@link RayBundle} tests what the bundle's pyramid holds
+ * ({@link BundleSearch}), and a ray that starts into a shape tests it first ({@link Ray#within});
+ * behind {@link #occluded}, the shape that last blocked the ray object is tested first
+ * ({@link Ray#blocker}).
  */
 public final class ShapeSet {
 
@@ -43,6 +48,8 @@ public final class ShapeSet {
     private static final double AT_LIGHT = 1e-6;
 
     private final int size;
+    /** Per shape (by its index among all the shapes), whether it is in this set; null: all are. */
+    private final boolean[] members;
     /** Linear: every shape, slot = index. With a tree: the planes alone. */
     private final ShapeLeaves listed;
     private final int listedCount;
@@ -64,6 +71,8 @@ public final class ShapeSet {
     private final byte[] slotApart;
     /** How far beyond a shape's box a segment may reach and still count as inside it; twice this, no other box may come. */
     private final double apartMargin;
+    /** Camera rays' bundles (null: the set is too small for lists to pay, or has no tree). */
+    private final BundleSearch bundles;
     /** Per light, a light buffer over the tree's slots, or null. */
     private final LightBuffer[] lightBuffers;
 
@@ -74,6 +83,7 @@ public final class ShapeSet {
     /** Shapes i with {@code members[i]} (all if null), reporting hits by their index among all the shapes. */
     private ShapeSet(Shape[] shapes, boolean[] members, boolean useBvh, List<Vec3> lights) {
         Shape[] all = shapes.clone();
+        this.members = members;
         int memberCount = 0, boundedCount = 0;
         for (int i = 0; i < all.length; i++) {
             if (members == null || members[i]) {
@@ -99,6 +109,7 @@ public final class ShapeSet {
             slotBoxes = null;
             slotApart = null;
             apartMargin = 0;
+            bundles = null;
             lightBuffers = new LightBuffer[0];
             return;
         }
@@ -141,6 +152,8 @@ public final class ShapeSet {
         listedCount = unboundedIndex.length;
         bounded = new ShapeLeaves(all, slotShapes);
         tree = new Traversal(bvh.bounds(), bvh.nodes(), bounded);
+        bundles = BundleSearch.pays(memberCount, unboundedIndex.length)
+                ? new BundleSearch(tree, bounded, slotShapes, slotBoxes, listed, unboundedIndex, largest) : null;
         int buffered = boundedCount >= LIGHT_BUFFER_MIN ? Math.min(lights.size(), LightBuffer.MAX_LIGHTS) : 0;
         lightBuffers = new LightBuffer[buffered];
         LightBuffer.Primitives slots = (slot, ray, tMax) -> bounded.any(slot, slot + 1, ray, tMax);
@@ -195,6 +208,9 @@ public final class ShapeSet {
      * the tree is not walked at all. The same hit either way: one more visiting order.
      */
     public boolean intersect(Ray ray, double tMax, Hit hit) {
+        if (ray.bundle != null && bundles != null && bundles.lists(ray.bundle, this)) {
+            return bundles.intersect(ray, tMax, hit);
+        }
         hit.primitive = ShapeLeaves.NONE;
         int likely = ray.within;
         int slot = tree != null && likely >= 0 && likely < slotOfShape.length ? slotOfShape[likely] : -1;
@@ -278,12 +294,20 @@ public final class ShapeSet {
 
     /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */
     public boolean occluded(Ray ray, double tMax) {
-        if (listed.any(0, listedCount, ray, tMax)) {
+        int last = ray.blocker;
+        boolean member = last >= 0 && (members == null || last < members.length && members[last]);
+        if (member && listed.blocks(last, ray, tMax)) {
             return true;
         }
-        if (tree == null) {
-            return false;
+        boolean blocked = listed.any(0, listedCount, ray, tMax) || tree != null && blockedInTree(ray, tMax);
+        if (!blocked) {
+            ray.blocker = -1;
         }
+        return blocked;
+    }
+
+    /** Whether a bounded shape lies on the ray: through the light buffer of the light it ends at, if any, else the tree. */
+    private boolean blockedInTree(Ray ray, double tMax) {
         LightBuffer buffer = bufferAtEnd(ray, tMax);
         int slot = buffer == null ? LightBuffer.UNDECIDED : buffer.occluder(ray, tMax);
         return slot == LightBuffer.UNDECIDED ? tree.any(ray, tMax) : slot >= 0;

@@ -17,6 +17,7 @@ import studio.engine.geometry.Box;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Plane;
 import studio.engine.geometry.Ray;
+import studio.engine.geometry.RayBundle;
 import studio.engine.geometry.Rays;
 import studio.engine.geometry.Shape;
 import studio.engine.geometry.Sphere;
@@ -167,6 +168,9 @@ class ShapeSetTest {
                 boolean expected = reference.intersect(ray, tMax, a);
                 assertEquals(expected, some.intersect(ray, tMax, b), ray.toString());
                 assertEquals(expected, some.occluded(ray, tMax), "any-hit " + ray);
+                // whatever blocked the ray object last, a member or not, in range or not: the same answer
+                ray.blocker = random.nextInt(shapes.length + 4) - 2;
+                assertEquals(expected, some.occluded(ray, tMax), "any-hit after blocker " + ray.blocker + ", " + ray);
                 if (expected) {
                     hits++;
                     assertEquals((int) index.get(a.primitive), b.primitive, "named by its index in the scene");
@@ -191,7 +195,7 @@ class ShapeSetTest {
     }
 
     @Test
-    @DisplayName("NUM-12 with a BVH: the first-declared of coincident surfaces wins, in either declaration order")
+    @DisplayName("NUM-12 with a BVH and through a pixel's ray bundle: the first-declared of coincident surfaces wins, in either declaration order")
     void coincidentSurfacesNum12FirstDeclaredWinsThroughTheBvhInEitherOrder() {
         Plane plane = new Plane(Vec3.ZERO, new Vec3(0, 1, 0));
         Box box = new Box(new Vec3(0, -0.5, 0), new Vec3(2, 1, 2));
@@ -204,7 +208,9 @@ class ShapeSetTest {
             fillers.add(new Sphere(new Vec3(uniform(random, -8, 8), uniform(random, 4, 8), uniform(random, -8, -4)), 0.5));
         }
         Camera camera = new Camera(new Vec3(1.3, 1.7, 2.9), new Vec3(1, 0, 0), new Vec3(0, 1, 0), 60);
-        Hit hit = new Hit(), reference = new Hit();
+        Hit hit = new Hit(), reference = new Hit(), bundled = new Hit();
+        RayBundle bundle = new RayBundle();
+        Vec3 eye = camera.position();
         for (int order = 0; order < 8; order++) {
             // Coincident pairs (plane, box, sameBox) and (sphere, sameSphere) at shuffled positions among fillers.
             List<Shape> list = new ArrayList<>(fillers);
@@ -225,11 +231,18 @@ class ShapeSetTest {
                     Ray ray = camera.ray(2 * (x + 0.5) / 128 - 1, 1 - 2 * (y + 0.5) / 128, 1.0);
                     boolean found = set.intersect(ray, Double.POSITIVE_INFINITY, hit);
                     assertEquals(linear.intersect(ray, Double.POSITIVE_INFINITY, reference), found);
+                    camera.frustum(2.0 * x / 128 - 1, 2.0 * (x + 1) / 128 - 1, 1 - 2.0 * (y + 1) / 128,
+                            1 - 2.0 * y / 128, 1.0, bundle.aim(eye.x(), eye.y(), eye.z()));
+                    ray.bundle = bundle;
+                    assertEquals(found, set.intersect(ray, Double.POSITIVE_INFINITY, bundled), "through the pixel's bundle");
+                    assertTrue(bundle.count >= 0, "a pixel's list fits");
                     if (!found) {
                         continue;
                     }
                     assertEquals(reference.primitive, hit.primitive, "same winner as the linear loop");
+                    assertEquals(reference.primitive, bundled.primitive, "the bundle's winner is the linear loop's");
                     assertEquals(reference.t, hit.t, 0.0);
+                    assertEquals(reference.t, bundled.t, 0.0);
                     Shape winner = shapes[hit.primitive];
                     if (winner == plane || winner == box || winner == sameBox) {
                         if (Math.abs(hit.px) < 0.99 && Math.abs(hit.pz) < 0.99) {
