@@ -59,8 +59,9 @@ public final class Scene {
         }
         if (anyGlass) {
             this.geometry = ShapeSet.of(shapes);
-            this.opaque = ShapeSet.of(buffered, shapes, isOpaque);
-            this.glass = ShapeSet.of(List.of(), shapes, isGlass);
+            this.opaque = ShapeSet.of(buffered, shapes, isOpaque, false);
+            // a tree even for one object: most shadow rays miss the glass, and its box says so quickest
+            this.glass = ShapeSet.of(List.of(), shapes, isGlass, true);
         } else {
             this.geometry = ShapeSet.of(buffered, shapes);
             this.opaque = geometry;

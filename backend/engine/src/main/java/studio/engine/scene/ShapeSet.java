@@ -181,14 +181,14 @@ public final class ShapeSet {
 
     /**
      * Of the shapes, those i with {@code members[i]}, as {@link #of(List, Shape...)} makes a set of
-     * them; hits report a shape's index among all the shapes.
+     * them, or always through a tree if {@code tree}; hits report a shape's index among all the shapes.
      */
-    public static ShapeSet of(List<Vec3> lights, Shape[] shapes, boolean[] members) {
+    public static ShapeSet of(List<Vec3> lights, Shape[] shapes, boolean[] members, boolean tree) {
         int count = 0;
         for (boolean m : members) {
             count += m ? 1 : 0;
         }
-        return new ShapeSet(shapes, members.clone(), count > LINEAR_MAX, lights);
+        return new ShapeSet(shapes, members.clone(), tree || count > LINEAR_MAX, lights);
     }
 
     public int size() {

@@ -157,7 +157,7 @@ class ShapeSetTest {
                     index.add(i);
                 }
             }
-            ShapeSet some = ShapeSet.of(List.of(), shapes, members);
+            ShapeSet some = ShapeSet.of(List.of(), shapes, members, false);
             ShapeSet reference = ShapeSets.linear(chosen.toArray(Shape[]::new));
             assertEquals(chosen.size(), some.size());
             assertTrue(some.usesBvh());
