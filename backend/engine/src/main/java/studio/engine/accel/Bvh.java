@@ -15,20 +15,10 @@ import studio.engine.memory.MemoryGate;
  * The escape index is the first node after the subtree, which lets an any-hit traversal run
  * without a stack. A leaf's primitives are {@code primitives()[first .. first+count-1]}.
  *
- * <p>Traversal loops live beside the primitive tests they call (in the scene, {@code ShapeSet},
- * and in each mesh, {@code TriangleMesh}), so the tests inline; they read the arrays through the
- * accessors below and must not change them. Both go the same way. A closest-hit traversal tests
- * both children's boxes at their parent, visits the one the ray enters first, keeps the other on a
- * stack with its entry distance (skipped when popped if a hit nearer than that has been found
- * since) and never pushes one the ray misses; it needs a stack of {@value #STACK_SIZE} ints and
- * doubles: the builder keeps every tree at most {@value #STACK_SIZE} levels deep. An any-hit
- * traversal needs no order and no stack: a missed node, or a finished leaf, escapes to the node
- * after its subtree. (Meshes once ordered the children by the sign of the ray's direction on the
- * split axis instead, which tests no box before it is visited; on one thread, thread CPU time,
- * 640x480 one sample, four alternated runs, a 50,000-triangle torus took 139-143 ms that way and
- * 141-145 ms by entry distance, the 968-triangle example mesh 97-104 and 99-102: the same, so one
- * order. One traversal behind a leaf-test interface would cost a call per leaf that the JIT cannot
- * inline once the scene's leaves and a mesh's both go through it; see {@code ShapeSet}.)
+ * <p>The tree is walked by {@link Traversal}, the engine's one closest-hit and one any-hit walk,
+ * over the scene's shapes and each mesh's triangles alike ({@link Leaves}). A closest-hit walk
+ * needs a stack of {@value #STACK_SIZE} ints and doubles: the builder keeps every tree at most
+ * {@value #STACK_SIZE} levels deep.
  */
 public final class Bvh {
 

@@ -71,7 +71,7 @@ public final class LightBuffer {
     static final int MAX_ENTRIES_PER_PRIMITIVE = 16;
     /** Lights a mesh or a scene keeps buffers for at most: each buffer costs building time and memory. */
     public static final int MAX_LIGHTS = 4;
-    private static final int MAX_CELLS = 1 << 22, MAX_SIDE = 4096;
+    static final int MAX_CELLS = 1 << 22, MAX_SIDE = 4096;
 
     private final Primitives primitives;
     private final double lx, ly, lz;
@@ -89,7 +89,7 @@ public final class LightBuffer {
     private final float[] nearest;
 
     /** How the box is seen from the light: null where it is not clear on one side of it. */
-    private record Frame(double[] l, double[] box, int depth, double side, double uMin, double vMin,
+    record Frame(double[] l, double[] box, int depth, double side, double uMin, double vMin,
                          double uMax, double vMax) {
 
         int uAxis() {
@@ -171,7 +171,7 @@ public final class LightBuffer {
         rect[at + 3] = vMax;
     }
 
-    private LightBuffer(Frame f, Primitives primitives, int nu, int nv, int[] cellStart, int[] listed,
+    LightBuffer(Frame f, Primitives primitives, int nu, int nv, int[] cellStart, int[] listed,
                         float[] nearest) {
         this.primitives = primitives;
         this.lx = f.l[0];
@@ -236,7 +236,7 @@ public final class LightBuffer {
             }
             near[t] = nearestBound(box, 0, f.l);
         }
-        return assemble(f, rects, near, triangles, memory);
+        return LightBufferLists.assemble(f, rects, near, triangles, memory);
     }
 
     /**
@@ -259,114 +259,7 @@ public final class LightBuffer {
             projectBox(boxes, 6 * i, f.l, f.depth, f.side, rects, 4 * i);
             near[i] = nearestBound(boxes, 6 * i, f.l);
         }
-        return assemble(f, rects, near, primitives, memory);
-    }
-
-    /** The grid over the projected rectangles (uMin, uMax, vMin, vMax each) and the lists, nearest first. */
-    private static LightBuffer assemble(Frame f, double[] rects, float[] bounds, Primitives primitives,
-                                        MemoryGate memory) {
-        int count = bounds.length;
-        if (count == 0) {
-            return null;
-        }
-        // cells about as large as a primitive's projected rectangle on average
-        double sumU = 0, sumV = 0;
-        for (int t = 0; t < count; t++) {
-            sumU += rects[4 * t + 1] - rects[4 * t];
-            sumV += rects[4 * t + 3] - rects[4 * t + 2];
-        }
-        double spanU = f.uMax - f.uMin, spanV = f.vMax - f.vMin;
-        double cellU = Math.max(CELL_SIZE * sumU / count, spanU / MAX_SIDE);
-        double cellV = Math.max(CELL_SIZE * sumV / count, spanV / MAX_SIDE);
-        int nu = (int) Math.max(1, Math.min(MAX_SIDE, Math.ceil(spanU / cellU)));
-        int nv = (int) Math.max(1, Math.min(MAX_SIDE, Math.ceil(spanV / cellV)));
-        while ((long) nu * nv > Math.min(MAX_CELLS, 4L * count + 16)) {
-            nu = Math.max(1, nu / 2);
-            nv = Math.max(1, nv / 2);
-        }
-        int cells = nu * nv;
-        double perU = nu / spanU, perV = nv / spanV;
-        if (!memory.tryReserve(MemoryGate.ints(4L * count) + MemoryGate.ints(cells + 1L))) {
-            return null;
-        }
-
-        // each primitive's cells (i0, i1, j0, j1) and the lists' lengths
-        int[] range = new int[4 * count];
-        int[] cellStart = new int[cells + 1];
-        long entries = 0;
-        for (int t = 0; t < count; t++) {
-            int i0 = cell(rects[4 * t] - UV_MARGIN, f.uMin, perU, nu);
-            int i1 = cell(rects[4 * t + 1] + UV_MARGIN, f.uMin, perU, nu);
-            int j0 = cell(rects[4 * t + 2] - UV_MARGIN, f.vMin, perV, nv);
-            int j1 = cell(rects[4 * t + 3] + UV_MARGIN, f.vMin, perV, nv);
-            range[4 * t] = i0;
-            range[4 * t + 1] = i1;
-            range[4 * t + 2] = j0;
-            range[4 * t + 3] = j1;
-            entries += (long) (i1 - i0 + 1) * (j1 - j0 + 1);
-            if (entries > (long) MAX_ENTRIES_PER_PRIMITIVE * count + cells) {
-                return null;
-            }
-            for (int j = j0; j <= j1; j++) {
-                for (int i = i0; i <= i1; i++) {
-                    cellStart[j * nu + i + 1]++;
-                }
-            }
-        }
-        for (int cell = 0; cell < cells; cell++) {
-            cellStart[cell + 1] += cellStart[cell];
-        }
-        if (!memory.tryReserve(MemoryGate.ints(entries) + MemoryGate.floats(entries) + MemoryGate.ints(cells)
-                + 2 * MemoryGate.ints(count + 1L))) {
-            return null;
-        }
-        int[] listed = new int[(int) entries];
-        float[] near = new float[(int) entries];
-        // the primitives in about the order of their bounds (a counting sort on a grid of them), so
-        // that each cell's list comes out nearly sorted and its sort has little left to do
-        float least = Float.POSITIVE_INFINITY, most = 0;
-        for (float bound : bounds) {
-            least = Math.min(least, bound);
-            most = Math.max(most, bound);
-        }
-        double perBound = most > least ? (count - 1) / ((double) most - least) : 0;
-        int[] bucketStart = new int[count + 1];
-        for (int t = 0; t < count; t++) {
-            bucketStart[bucket(bounds[t], least, perBound, count) + 1]++;
-        }
-        for (int q = 0; q < count; q++) {
-            bucketStart[q + 1] += bucketStart[q];
-        }
-        int[] order = new int[count];
-        for (int t = 0; t < count; t++) {
-            order[bucketStart[bucket(bounds[t], least, perBound, count)]++] = t;
-        }
-        int[] next = Arrays.copyOf(cellStart, cells);
-        for (int t : order) {
-            float bound = bounds[t];
-            for (int j = range[4 * t + 2]; j <= range[4 * t + 3]; j++) {
-                for (int i = range[4 * t]; i <= range[4 * t + 1]; i++) {
-                    int at = next[j * nu + i]++;
-                    listed[at] = t;
-                    near[at] = bound;
-                }
-            }
-        }
-        for (int cell = 0; cell < cells; cell++) {
-            sortByNearest(listed, near, cellStart[cell], cellStart[cell + 1]);
-        }
-        return new LightBuffer(f, primitives, nu, nv, cellStart, listed, near);
-    }
-
-    /** The counting sort's bucket of a bound. */
-    private static int bucket(float bound, float least, double perBound, int count) {
-        return Math.min(count - 1, (int) (((double) bound - least) * perBound));
-    }
-
-    /** The cell of a projected coordinate, clamped to the grid. */
-    private static int cell(double u, double min, double perCell, int n) {
-        double at = (u - min) * perCell;
-        return at < 0 ? 0 : at >= n ? n - 1 : (int) at;
+        return LightBufferLists.assemble(f, rects, near, primitives, memory);
     }
 
     /**
@@ -376,22 +269,6 @@ public final class LightBuffer {
     private static float nearestBound(double[] box, int o, double[] l) {
         float bound = (float) (Aabb.distance(box, o, l[0], l[1], l[2]) * (1 - 1e-6));
         return bound > 0 ? Math.nextDown(bound) : 0;
-    }
-
-    /** Insertion sort of one cell's entries by their bound (lists are short). */
-    private static void sortByNearest(int[] listed, float[] near, int from, int to) {
-        for (int i = from + 1; i < to; i++) {
-            int t = listed[i];
-            float key = near[i];
-            int j = i - 1;
-            while (j >= from && near[j] > key) {
-                listed[j + 1] = listed[j];
-                near[j + 1] = near[j];
-                j--;
-            }
-            listed[j + 1] = t;
-            near[j + 1] = key;
-        }
     }
 
     /** Whether the light this buffer sees from lies within {@code tolerance} of (x, y, z). */

@@ -11,6 +11,24 @@ public final class Ray {
 
     public double ox, oy, oz;
     public double dx, dy, dz;
+    /**
+     * The object whose surface the ray starts on, heading into it (-1: none, or not known): a
+     * hint, as pbrt's ray carries its medium. A ray refracted into glass, or reflected inside it,
+     * most likely leaves that object next, so the aggregate tests it first; any value gives the
+     * same hit. Set by {@link Rays#spawn}, reset by {@link #set}.
+     */
+    public int within = -1;
+    /**
+     * The bundle of rays from one apex this ray belongs to (null: none), whose pyramid holds it:
+     * the aggregate may test the ray against what it listed in the pyramid. Reset by {@link #set}.
+     */
+    public RayBundle bundle;
+    /**
+     * The object that blocked this ray object's last blocked any-hit question (-1: none): a hint
+     * the aggregate tests first, as POV-Ray keeps a shadow cache per light (a renderer keeps one
+     * ray object per light for its shadow rays). Kept by {@link #set}; any value gives the same answer.
+     */
+    public int blocker = -1;
     /** The ray in the triangle test's frame, set up on the first {@link #shear} after {@link #set}. */
     private final RayShear shear = new RayShear();
     private boolean sheared;
@@ -27,12 +45,14 @@ public final class Ray {
     public Ray set(double ox, double oy, double oz, double dx, double dy, double dz) {
         this.ox = ox; this.oy = oy; this.oz = oz;
         this.dx = dx; this.dy = dy; this.dz = dz;
+        within = -1;
+        bundle = null;
         sheared = false;
         return this;
     }
 
     /** This ray in the watertight triangle test's frame, worked out once however many meshes it meets. */
-    RayShear shear() {
+    public RayShear shear() {
         if (!sheared) {
             shear.setUp(this);
             sheared = true;

@@ -5,13 +5,13 @@ package studio.engine.geometry;
  * axes permuted so that the direction's largest component becomes z (kx, ky swapped when it is
  * negative, so the winding is kept), the shear (sx, sy, sz) that makes the ray run along z, and the
  * origin's permuted coordinates. Worked out once per ray, however many meshes and triangles the ray
- * then meets ({@link Ray#shear}).
+ * then meets ({@link Ray#shear}). Read-only outside this class.
  */
-final class RayShear {
+public final class RayShear {
 
-    int kx, ky, kz;
-    double sx, sy, sz;
-    double okx, oky, okz;
+    public int kx, ky, kz;
+    public double sx, sy, sz;
+    public double okx, oky, okz;
 
     /** Sets this up for the ray. */
     void setUp(Ray ray) {

@@ -26,13 +26,16 @@ public final class Rays {
     /** {@link #spawn(Hit, double, double, double)} into {@code out} (the hot loop reuses its rays); returns out. */
     public static Ray spawn(Hit hit, double dx, double dy, double dz, Ray out) {
         double offset = Math.abs(hit.gx) * hit.ex + Math.abs(hit.gy) * hit.ey + Math.abs(hit.gz) * hit.ez;
-        if (hit.gx * dx + hit.gy * dy + hit.gz * dz < 0) {
+        boolean inward = hit.gx * dx + hit.gy * dy + hit.gz * dz < 0;
+        if (inward) {
             offset = -offset;
         }
         double ox = step(hit.px, offset * hit.gx);
         double oy = step(hit.py, offset * hit.gy);
         double oz = step(hit.pz, offset * hit.gz);
-        return out.set(ox, oy, oz, dx, dy, dz);
+        out.set(ox, oy, oz, dx, dy, dz);
+        out.within = inward ? hit.primitive : -1; // against the outward normal: into the object
+        return out;
     }
 
     /** {@link #spawnTowards(Hit, double, double, double)} into {@code out}; returns out. */

@@ -1,7 +1,5 @@
 package studio.engine.render;
 
-import java.util.Arrays;
-
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Rays;
@@ -23,21 +21,13 @@ import studio.engine.texture.TextureLookup;
  * only where a material asks for it and the path's weight can still change the pixel. At glass,
  * a weak branch of the split plays a {@link BranchRoulette}.
  *
- * <p>Shadows through glass: a shadow ray passes through glass surfaces, losing the Fresnel
- * reflectance at each and taking the glass's tint on the way in, so glass casts a lighter, tinted
- * shadow. The light is assumed to go straight through (no caustic focusing): a ray tracer that
- * traces from the eye cannot find the bent path to a point light, and a black shadow under clear
- * glass looks more wrong than a light one.
+ * <p>Shadow rays, through glass too, are {@link ShadowRays}'.
  *
  * <p>One instance per worker thread: it owns its hit records, rays and radiance slots (one of each
  * per recursion depth, so tracing allocates nothing) and counts its rays.
  */
 final class Integrator {
 
-    /** At most this many glass surfaces are crossed by one shadow ray before it counts as blocked. */
-    private static final int MAX_SHADOW_CROSSINGS = 32;
-    /** A shadow ray is blocked only by hits closer than this fraction of the light's distance. */
-    private static final double SHADOW_END = 1 - 1e-9;
     /**
      * A light whose unshadowed share of a sample (the path's weight times what the light would add,
      * in units of white) is below this adds nothing an image can show, and its shadow ray is not
@@ -52,7 +42,7 @@ final class Integrator {
         // through glass, are made once here so that they are resolved before the JIT compiles the
         // methods that hold them (every site of one method shares the class's resolved entry). C2
         // compiles a call it has not seen resolved as a trap: cold renders (with the start-up cache)
-        // deoptimized trace at a still life's first mirror and shadowTransmittance at glass's
+        // deoptimized trace at a still life's first mirror and the shadow walk at glass's
         // first crossing, every time, each then run in slower code and compiled again.
         Rays.spawn(new Hit(), 0, 0, 1, new Ray());
         Fresnel.reflectance(1, 1, 1.5);
@@ -67,22 +57,15 @@ final class Integrator {
     private final Hit[] hits;
     private final Ray[] childRays;
     private final double[] radiance;
-    private final Hit shadowHit = new Hit();
-    private final Ray shadowRay = new Ray();
-    /**
-     * Per light, the opaque object that blocked this thread's last shadow ray to it (-1: none),
-     * tested first: neighbouring points are mostly shadowed by the same object, which then spares
-     * the search through the scene, and in a scene with glass the walk through every glass surface
-     * on the way (a shadow cache, as POV-Ray keeps one per light).
-     */
-    private final int[] lastOccluder;
+    private final ShadowRays shadows;
+    private final int lightCount;
     /** Where this sample's shadow rays go on each light, and what camera and specular rays see of them. */
     private final LightSampler lightSampler;
     private final Emitters emitters;
     /** The current sample's 2D point in [0, 1)^2 for its light samples; set by the caller. */
     double lightU = 0.5, lightV = 0.5;
-    /** The direct light found by {@link #direct}, and the transmittance by {@link #shadowTransmittance}. */
-    private double directR, directG, directB, throughR, throughG, throughB;
+    /** The direct light found by {@link #direct}. */
+    private double directR, directG, directB;
     long rays;
     /** Where the rays of the pixel being traced are recorded (null: nowhere), and that pixel's index. */
     PixelPaths paths;
@@ -96,9 +79,6 @@ final class Integrator {
     double coneSpread;
     /** Looks textures up at textured hits only: untextured shading never touches it. */
     private final TextureLookup textures = new TextureLookup();
-
-    /** What the current pixel's camera rays and their shadow rays can meet; set by the caller. */
-    final PixelCandidates candidates;
 
     /** Tracing every branch at glass (no roulette): each ray's radiance is a deterministic function of it. */
     Integrator(Scene scene, int maxDepth, double minPathWeight) {
@@ -117,9 +97,8 @@ final class Integrator {
             childRays[i] = new Ray();
         }
         this.radiance = new double[3 * (maxDepth + 1)];
-        this.lastOccluder = new int[scene.lights().size()];
-        Arrays.fill(lastOccluder, -1);
-        this.candidates = new PixelCandidates(scene);
+        this.lightCount = scene.lights().size();
+        this.shadows = new ShadowRays(scene, minPathWeight);
         this.lightSampler = new LightSampler(scene.lights());
         this.emitters = new Emitters(scene.lights());
     }
@@ -142,22 +121,10 @@ final class Integrator {
      * throughput so far (1 for a camera ray). Allocates nothing: rays and hits are reused per depth.
      */
     void trace(Ray ray, int depth, double weight) {
-        trace(ray, depth, weight, -1);
-    }
-
-    /**
-     * {@link #trace(Ray, int, double)} for a ray that most likely ends on object {@code likely}
-     * (-1: none): one refracted into a glass object, or reflected inside it, leaves it next, and
-     * testing it first lets the search skip everything beyond.
-     */
-    private void trace(Ray ray, int depth, double weight, int likely) {
         rays++;
         int out = 3 * depth;
         Hit hit = hits[depth];
-        boolean found = depth == 0 && candidates.cameraCount >= 0
-                ? scene.intersectNearFirst(candidates.camera, candidates.cameraNear, candidates.cameraCount, ray,
-                        Double.POSITIVE_INFINITY, hit)
-                : scene.intersect(ray, Double.POSITIVE_INFINITY, hit, likely);
+        boolean found = scene.intersect(ray, Double.POSITIVE_INFINITY, hit);
         if (emitters.any() && emitters.nearest(ray, found ? hit.t : Double.POSITIVE_INFINITY)) {
             radiance[out] = emitters.r; radiance[out + 1] = emitters.g; radiance[out + 2] = emitters.b;
             return;
@@ -200,7 +167,7 @@ final class Integrator {
         boolean front = hit.gx * dx + hit.gy * dy + hit.gz * dz < 0;
         double sx = front ? hit.nx : -hit.nx, sy = front ? hit.ny : -hit.ny, sz = front ? hit.nz : -hit.nz;
 
-        direct(m, cr, cg, cb, hit, sx, sy, sz, -dx, -dy, -dz, front, depth == 0, weight);
+        direct(m, cr, cg, cb, hit, sx, sy, sz, -dx, -dy, -dz, front, weight);
         double r = directR, g = directG, b = directB;
         if (depth < maxDepth) {
             double cosView = -(sx * dx + sy * dy + sz * dz);
@@ -264,7 +231,7 @@ final class Integrator {
      * that could add only a {@link #NEGLIGIBLE_LIGHT} share to a path of this weight is not looked for.
      */
     private void direct(Material m, double cr, double cg, double cb, Hit hit, double nx, double ny, double nz,
-                        double vx, double vy, double vz, boolean front, boolean cameraHit, double weight) {
+                        double vx, double vy, double vz, boolean front, double weight) {
         double kd = m.diffuse(), ks = m.specular();
         if (m.kind() == MaterialKind.GLASS && !front) {
             ks = 0;
@@ -280,7 +247,7 @@ final class Integrator {
         double r = ar * scene.ambient(), g = ag * scene.ambient(), b = ab * scene.ambient();
         double aMax = Math.max(ar, Math.max(ag, ab)), sMax = Math.max(sr, Math.max(sg, sb));
         LightSampler light = lightSampler;
-        for (int i = 0; i < lastOccluder.length; i++) {
+        for (int i = 0; i < lightCount; i++) {
             if (!light.sample(i, hit.px, hit.py, hit.pz, lightU, lightV)) {
                 continue;
             }
@@ -300,15 +267,17 @@ final class Integrator {
             if (highlightDecides && diffuseShare + share * sMax * highlight < NEGLIGIBLE_LIGHT) {
                 continue;
             }
-            if (!shadowTransmittance(hit, light.tx, light.ty, light.tz, i, cameraHit && light.isPoint(i))) {
+            boolean reached = shadows.reach(i, hit, light.tx, light.ty, light.tz);
+            rays += shadows.traced;
+            if (!reached) {
                 continue;
             }
             if (!highlightDecides && ks > 0) {
                 highlight = highlight(nx, ny, nz, lx, ly, lz, vx, vy, vz, m.shininess());
             }
-            er *= throughR;
-            eg *= throughG;
-            eb *= throughB;
+            er *= shadows.throughR;
+            eg *= shadows.throughG;
+            eb *= shadows.throughB;
             if (kd > 0) {
                 r += ar * er * cos;
                 g += ag * eg * cos;
@@ -332,70 +301,6 @@ final class Integrator {
         double hLen = Math.sqrt(hx * hx + hy * hy + hz * hz);
         double cosH = hLen > 0 ? (nx * hx + ny * hy + nz * hz) / hLen : 0;
         return cosH > 0 ? Math.pow(cosH, shininess) : 0;
-    }
-
-    /**
-     * What fraction of a light reaches the hit point, into throughR/G/B: 0 behind anything opaque,
-     * less through glass. Returns false when nothing arrives. An any-hit search decides first:
-     * nothing on the way, or an opaque object, settles it; only when it meets glass does the walk
-     * from surface to surface follow, which finds the same opaque object or multiplies the glass's
-     * transmittance (the same pixels to the bit, and glass-mirrors 4% faster at 16 samples). Only
-     * rays to point lights use the pixel's list ({@code listed}) and the light's buffer.
-     */
-    private boolean shadowTransmittance(Hit from, double tx, double ty, double tz, int lightIndex, boolean listed) {
-        Ray ray = Rays.spawnTowards(from, tx, ty, tz, shadowRay);
-        double dist = distance(ray, tx, ty, tz);
-        rays++;
-        throughR = throughG = throughB = 1;
-        int last = lastOccluder[lightIndex];
-        if (last >= 0 && scene.occludes(last, ray, dist * SHADOW_END)) {
-            return false; // an opaque object on the way: nothing arrives, whatever glass is crossed too
-        }
-        int among = listed ? candidates.shadowCount(lightIndex) : -1;
-        int occluder = among >= 0 ? scene.occluderAmong(candidates.shadow(lightIndex), among, ray, dist * SHADOW_END)
-                : lightSampler.isPoint(lightIndex) ? scene.occluderTowards(lightIndex, ray, dist * SHADOW_END)
-                : scene.occluder(ray, dist * SHADOW_END);
-        if (occluder < 0 || scene.material(occluder).kind() != MaterialKind.GLASS) {
-            // nothing on the way, or something opaque: no walk through glass needed
-            lastOccluder[lightIndex] = occluder;
-            return occluder < 0;
-        }
-        double r = 1, g = 1, b = 1;
-        int inside = -1; // the glass object the ray has entered, which it most likely leaves next
-        for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {
-            if (!scene.intersect(ray, dist * SHADOW_END, shadowHit, inside)) {
-                throughR = r;
-                throughG = g;
-                throughB = b;
-                return true;
-            }
-            Material m = scene.material(shadowHit.primitive);
-            if (m.kind() != MaterialKind.GLASS) {
-                lastOccluder[lightIndex] = shadowHit.primitive;
-                return false;
-            }
-            double cos = shadowHit.nx * ray.dx + shadowHit.ny * ray.dy + shadowHit.nz * ray.dz;
-            boolean entering = shadowHit.gx * ray.dx + shadowHit.gy * ray.dy + shadowHit.gz * ray.dz < 0;
-            inside = entering ? shadowHit.primitive : -1;
-            // |cos|: a smooth mesh's shading normal may lean past the side its triangle is crossed from
-            double transmitted = 1 - (entering ? Fresnel.reflectance(Math.abs(cos), 1, m.ior())
-                    : Fresnel.reflectance(Math.abs(cos), m.ior(), 1));
-            r *= transmitted;
-            g *= transmitted;
-            b *= transmitted;
-            if (entering) {
-                r *= m.color().r();
-                g *= m.color().g();
-                b *= m.color().b();
-            }
-            if (Math.max(r, Math.max(g, b)) <= minPathWeight) {
-                return false;
-            }
-            ray = Rays.spawnTowards(shadowHit, tx, ty, tz, shadowRay);
-            dist = distance(ray, tx, ty, tz);
-            rays++;
-        }
-        return false;
     }
 
     /**
@@ -432,8 +337,7 @@ final class Integrator {
         double countR = branchCount(wr);
         if (countR > 0) {
             double rx = dx + 2 * cosI * nx, ry = dy + 2 * cosI * ny, rz = dz + 2 * cosI * nz;
-            // reflected inside the object (from its back face), the ray meets it again
-            trace(Rays.spawn(hit, rx, ry, rz, childRays[depth]), depth + 1, wr * countR, front ? -1 : hit.primitive);
+            trace(Rays.spawn(hit, rx, ry, rz, childRays[depth]), depth + 1, wr * countR);
             double kr = reflectance * countR;
             r = radiance[child] * kr;
             g = radiance[child + 1] * kr;
@@ -446,8 +350,7 @@ final class Integrator {
             if (countT > 0) {
                 double c = eta * cosI - Math.sqrt(k);
                 double tx = eta * dx + c * nx, ty = eta * dy + c * ny, tz = eta * dz + c * nz;
-                // refracted into the object, the ray leaves it next
-                trace(Rays.spawn(hit, tx, ty, tz, childRays[depth]), depth + 1, wt * countT, front ? hit.primitive : -1);
+                trace(Rays.spawn(hit, tx, ty, tz, childRays[depth]), depth + 1, wt * countT);
                 double kt = (1 - reflectance) * countT;
                 r += radiance[child] * tr * kt;
                 g += radiance[child + 1] * tg * kt;

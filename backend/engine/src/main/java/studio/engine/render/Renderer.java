@@ -149,15 +149,6 @@ public final class Renderer {
     }
 
     /**
-     * Whether a render of this scene lists, for each pixel, the few objects its camera rays and
-     * their shadow rays can meet ({@code PixelCandidates}): scenes searched through a tree of enough
-     * objects.
-     */
-    public static boolean listsPixelCandidates(Scene scene) {
-        return PixelCandidates.pay(scene);
-    }
-
-    /**
      * {@link RenderSettings#TILE_SIZE}, or half of it when that would leave fewer than
      * {@value #TILES_PER_THREAD} tiles per thread: with few tiles, the one that holds most of the work
      * (the edges, under adaptive sampling) would finish alone while the other threads wait.

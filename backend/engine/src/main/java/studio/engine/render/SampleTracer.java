@@ -1,8 +1,9 @@
 package studio.engine.render;
 
 import studio.engine.camera.Camera;
-import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Ray;
+import studio.engine.geometry.RayBundle;
+import studio.engine.math.Vec3;
 import studio.engine.sampler.LightPoints;
 import studio.engine.scene.Scene;
 
@@ -16,19 +17,18 @@ import studio.engine.scene.Scene;
 final class SampleTracer {
 
     /**
-     * A call tracing at least this many samples first lists the objects their rays can meet
-     * ({@link PixelCandidates}); fewer would not repay the search.
+     * A call tracing at least this many samples sends its camera rays as a {@link RayBundle}, for
+     * the scene to list what they can meet once; fewer would not repay the listing.
      */
-    static final int CANDIDATES_FROM = 4;
+    static final int BUNDLE_FROM = 4;
     /**
-     * Pixels of a row listed together: one pyramid over runs of this many pixels (from a column
-     * that is a multiple of it), its lists kept while the pixels traced stay in the run. A run's
-     * lists hold those of each of its pixels, so the pixels are the same to the bit; the rays test
-     * a few more objects each, and the pyramids' searches, which took a third of the 10,000 spheres'
-     * render, happen a quarter as often. Warm, 800x600, 16 jittered samples, 2 threads, medians of
-     * the last 8 of 16 renders in one JVM: one pixel 437 ms, runs of 2 379, of 4 327, of 8 344.
+     * Pixels of a row bundled together: one pyramid over runs of this many pixels (from a column
+     * that is a multiple of it), kept while the pixels traced stay in the run. The rays test a few
+     * more objects each, and the listings, which took a third of 10,000 spheres' render pixel by
+     * pixel, happen a quarter as often (warm, 800x600, 16 samples, 2 threads: one pixel 437 ms,
+     * runs of 2 379, of 4 327, of 8 344).
      */
-    static final int LIST_RUN = 4;
+    static final int RUN = 4;
     /**
      * A sample's texture footprint: this share of its cell of the pixel (the pixel over the square
      * root of its samples). The sampler's stratification already averages across cells; the
@@ -44,12 +44,10 @@ final class SampleTracer {
     private final Camera camera;
     private final StopSignal stop;
     private final Ray cameraRay = new Ray();
-    private final Frustum frustum = new Frustum();
-    /** Whether pixels list what their rays can meet ({@link PixelCandidates#pay}). */
-    private boolean useCandidates;
+    /** The camera rays' bundle, and the row and first column of the run of pixels it holds (row -1: none). */
+    private final RayBundle bundle = new RayBundle();
+    private int bundledRow = -1, bundledFrom;
     private final int width, height;
-    /** The row and first column of the run of pixels whose lists {@link PixelCandidates} holds (row -1: none). */
-    private int listedRow = -1, listedFrom;
     private final double aspect;
     /** The radiance summed over the last call of {@link #trace}. */
     double sumR, sumG, sumB;
@@ -58,7 +56,6 @@ final class SampleTracer {
 
     SampleTracer(Scene scene, RenderSettings settings, StopSignal stop) {
         this.stop = stop;
-        useCandidates = PixelCandidates.pay(scene);
         integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight(),
                 new BranchRoulette(BranchRoulette.BELOW, settings.seed()));
         camera = scene.camera();
@@ -71,12 +68,6 @@ final class SampleTracer {
         aspect = (double) width / height;
     }
 
-    /** A pyramid holding every camera ray through pixels from .. from + LIST_RUN - 1 of row y (those inside the image). */
-    private Frustum cameraRays(int from, int y) {
-        int to = Math.min(width, from + LIST_RUN);
-        return camera.frustum(ndcX(from, 0), ndcX(to, 0), ndcY(y, 1), ndcY(y, 0), aspect, frustum);
-    }
-
     /** Normalised device x of a sample at offset dx in column x: -1 at the left edge, 1 at the right. */
     private double ndcX(int x, double dx) {
         return 2 * (x + dx) / width - 1;
@@ -85,17 +76,6 @@ final class SampleTracer {
     /** Normalised device y of a sample at offset dy in row y: 1 at the top edge, -1 at the bottom. */
     private double ndcY(int y, double dy) {
         return 1 - 2 * (y + dy) / height;
-    }
-
-    /** From now on every ray searches the whole scene (tests compare the two ways). */
-    SampleTracer withoutCandidates() {
-        useCandidates = false;
-        return this;
-    }
-
-    /** Whether the last {@link #trace} listed the objects its camera rays can hit. */
-    boolean listedCandidates() {
-        return integrator.candidates.cameraCount >= 0;
     }
 
     /** Records the rays of the next samples as pixel p's in {@code paths} (null: nowhere). */
@@ -128,15 +108,16 @@ final class SampleTracer {
      */
     long trace(int x, int y, double[] xs, double[] ys, int first, int count) {
         long bad = 0;
-        if (count >= CANDIDATES_FROM && useCandidates) {
-            if (y != listedRow || x < listedFrom || x >= listedFrom + LIST_RUN) {
-                listedRow = y;
-                listedFrom = x - x % LIST_RUN;
-                integrator.candidates.forCameraRaysIn(cameraRays(listedFrom, y));
-            }
-        } else {
-            integrator.candidates.none();
-            listedRow = -1;
+        boolean bundled = count >= BUNDLE_FROM;
+        if (!bundled) {
+            bundledRow = -1;
+        } else if (y != bundledRow || x < bundledFrom || x >= bundledFrom + RUN) {
+            bundledRow = y;
+            bundledFrom = x - x % RUN;
+            int to = Math.min(width, bundledFrom + RUN);
+            Vec3 eye = camera.position();
+            camera.frustum(ndcX(bundledFrom, 0), ndcX(to, 0), ndcY(y, 1), ndcY(y, 0), aspect,
+                    bundle.aim(eye.x(), eye.y(), eye.z()));
         }
         if (lightPoints != null) {
             lightPoints.start(x, y, first, count, xs, ys);
@@ -149,6 +130,7 @@ final class SampleTracer {
                 integrator.lightV = lightPoints.v(s);
             }
             Ray ray = camera.ray(ndcX(x, xs[s]), ndcY(y, ys[s]), aspect, cameraRay);
+            ray.bundle = bundled ? bundle : null;
             // Each sample starts with throughput 1: culling by the sample's share of the pixel
             // (1/N) would drop every weak reflection at high sample counts, a bias, not noise.
             integrator.roulette.startSample(x, y, s);

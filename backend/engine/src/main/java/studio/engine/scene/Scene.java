@@ -2,27 +2,33 @@ package studio.engine.scene;
 
 import java.util.List;
 
+import studio.engine.accel.ShapeLeaves;
 import studio.engine.camera.Camera;
-import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Shape;
 import studio.engine.light.Light;
 import studio.engine.material.Material;
+import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
+import studio.engine.math.Vec3;
 
 /**
  * Everything a render reads: camera, objects in declaration order, lights, background and ambient
- * term. Built once, then only read (by every worker thread at once).
+ * term. Built once, then only read (by every worker thread at once). Its objects form an
+ * aggregate ({@link ShapeSet}) that answers two questions, {@link #intersect} and
+ * {@link #occluded}; for shadow rays its opaque and its glass objects form one each.
  */
 public final class Scene {
 
     /** Hits whose distances differ by at most this fraction are a tie; the first-declared object wins. */
-    public static final double TIE = 1e-9;
+    public static final double TIE = ShapeLeaves.TIE;
 
     private final Camera camera;
     private final Shape[] shapes;
     private final ShapeSet geometry;
+    /** The opaque objects and the glass ones (null: no glass, and then {@link #opaque} is {@link #geometry}). */
+    private final ShapeSet opaque, glass;
     private final Material[] materials;
     private final List<Light> lights;
     private final Rgb background;
@@ -41,9 +47,26 @@ public final class Scene {
         }
         this.camera = camera;
         this.shapes = objects.stream().map(SceneObject::shape).toArray(Shape[]::new);
-        // light buffers for point lights only (null for a light with a size): see ShapeSet
-        this.geometry = ShapeSet.of(lights.stream().map(l -> l.soft() ? null : l.position()).toList(), shapes);
         this.materials = objects.stream().map(SceneObject::material).toArray(Material[]::new);
+        // light buffers for point lights only (null for a light with a size), where shadow rays go: see ShapeSet
+        List<Vec3> buffered = lights.stream().map(l -> l.soft() ? null : l.position()).toList();
+        boolean[] isGlass = new boolean[shapes.length], isOpaque = new boolean[shapes.length];
+        boolean anyGlass = false;
+        for (int i = 0; i < shapes.length; i++) {
+            isGlass[i] = materials[i].kind() == MaterialKind.GLASS;
+            isOpaque[i] = !isGlass[i];
+            anyGlass |= isGlass[i];
+        }
+        if (anyGlass) {
+            this.geometry = ShapeSet.of(shapes);
+            this.opaque = ShapeSet.of(buffered, shapes, isOpaque, false);
+            // a tree even for one object: most shadow rays miss the glass, and its box says so quickest
+            this.glass = ShapeSet.of(List.of(), shapes, isGlass, true);
+        } else {
+            this.geometry = ShapeSet.of(buffered, shapes);
+            this.opaque = geometry;
+            this.glass = null;
+        }
         this.lights = List.copyOf(lights);
         this.background = background;
         this.ambient = ambient;
@@ -51,46 +74,10 @@ public final class Scene {
 
     /**
      * The nearest hit with 0 &lt; t &lt; tMax, its primitive index set. Of hits within {@link #TIE}
-     * of each other the first-declared object wins, so coincident surfaces never speckle. Larger
-     * scenes search a BVH ({@link ShapeSet}).
+     * of each other the first-declared object wins, so coincident surfaces never speckle.
      */
     public boolean intersect(Ray ray, double tMax, Hit hit) {
         return geometry.intersect(ray, tMax, hit);
-    }
-
-    /** {@link #intersect(Ray, double, Hit)}, testing object {@code likely} first (-1: none); the same hit. */
-    public boolean intersect(Ray ray, double tMax, Hit hit, int likely) {
-        return geometry.intersect(ray, tMax, hit, likely);
-    }
-
-    /** Whether the scene's objects are searched through a BVH (more than {@link ShapeSet#LINEAR_MAX}), not one by one. */
-    public boolean searchesBvh() {
-        return geometry.usesBvh();
-    }
-
-    /** Into {@code out}, ascending: the objects rays inside the pyramid can meet; how many, or -1 (see {@link ShapeSet#candidates}). */
-    public int candidates(Frustum frustum, int[] out, int[] stack) {
-        return geometry.candidates(frustum, out, stack);
-    }
-
-    /** Orders a list from {@link #candidates} by distance from a point (see {@link ShapeSet#orderByDistance}). */
-    public void orderByDistance(int[] ids, int count, double px, double py, double pz, double[] near) {
-        geometry.orderByDistance(ids, count, px, py, pz, near);
-    }
-
-    /** {@link #intersect} for a unit-length ray that can hit only objects {@code ids[0 .. count-1]}, ordered from its origin. */
-    public boolean intersectNearFirst(int[] ids, double[] near, int count, Ray ray, double tMax, Hit hit) {
-        return geometry.intersectNearFirst(ids, near, count, ray, tMax, hit);
-    }
-
-    /** A box of where rays in the pyramid can hit objects {@code ids[0 .. count-1]}, or false (see {@link ShapeSet#boundsOf}). */
-    public boolean boundsOf(int[] ids, int count, Frustum cameraRays, double[] box) {
-        return geometry.boundsOf(ids, count, cameraRays, box);
-    }
-
-    /** {@link #occluder} for a ray that can meet only objects {@code ids[0 .. count-1]}, from {@link #candidates}. */
-    public int occluderAmong(int[] ids, int count, Ray ray, double tMax) {
-        return geometry.occluderAmong(ids, count, ray, tMax);
     }
 
     /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */
@@ -98,19 +85,18 @@ public final class Scene {
         return geometry.occluded(ray, tMax);
     }
 
-    /** The index of an object that lies on the ray with 0 &lt; t &lt; tMax, or -1 if none does. */
-    public int occluder(Ray ray, double tMax) {
-        return geometry.occluder(ray, tMax);
+    /**
+     * The scene's opaque objects, an aggregate of their own: a shadow ray is blocked exactly when
+     * it says so, and asks the glass ({@link #glass}) only when it is not. Hits report an object's
+     * index in the scene.
+     */
+    public ShapeSet opaque() {
+        return opaque;
     }
 
-    /** {@link #occluder} for a shadow ray towards light {@code light}: through its light buffer, if it has one. */
-    public int occluderTowards(int light, Ray ray, double tMax) {
-        return geometry.occluderTowards(light, ray, tMax);
-    }
-
-    /** Whether object i lies on the ray with 0 &lt; t &lt; tMax, tested as {@link #occluded} tests it. */
-    public boolean occludes(int i, Ray ray, double tMax) {
-        return geometry.occludes(i, ray, tMax);
+    /** The scene's glass objects, an aggregate of their own (see {@link #opaque}), or null: the scene has none. */
+    public ShapeSet glass() {
+        return glass;
     }
 
     public Camera camera() {
@@ -119,11 +105,6 @@ public final class Scene {
 
     public int objectCount() {
         return shapes.length;
-    }
-
-    /** How many objects are unbounded (planes), which every {@link #candidates} list holds. */
-    public int unboundedCount() {
-        return geometry.unboundedCount();
     }
 
     public Shape shape(int index) {

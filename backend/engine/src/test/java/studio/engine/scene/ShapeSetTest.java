@@ -12,13 +12,12 @@ import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 
-import studio.engine.accel.Bvh;
 import studio.engine.camera.Camera;
 import studio.engine.geometry.Box;
-import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Plane;
 import studio.engine.geometry.Ray;
+import studio.engine.geometry.RayBundle;
 import studio.engine.geometry.Rays;
 import studio.engine.geometry.Shape;
 import studio.engine.geometry.Sphere;
@@ -66,8 +65,8 @@ class ShapeSetTest {
     }
 
     @Test
-    @DisplayName("NUM-13: shadow rays through a scene's light buffers find an occluder exactly when the tree does, and it occludes")
-    void lightBuffersFindAnOccluderExactlyWhenTheTreeDoes() {
+    @DisplayName("NUM-13: shadow rays through a scene's light buffers are blocked exactly when the tree says so")
+    void lightBuffersAnswerOccludedExactlyAsTheTreeDoes() {
         Random random = new Random(13);
         // above, to the side, far below, and inside the scene's box (no buffer)
         List<Vec3> lights = List.of(new Vec3(2, 40, -3), new Vec3(-30, 4, 2), new Vec3(1, -60, 5), new Vec3(0.5, 0.5, 0.5));
@@ -100,12 +99,9 @@ class ShapeSetTest {
                     ray = new Ray(from.x(), from.y(), from.z(), d.x(), d.y(), d.z());
                     tMax = uniform(random, 0, 30);
                 }
-                int expected = plain.occluder(ray, tMax), found = lit.occluderTowards(light, ray, tMax);
-                assertEquals(expected >= 0, found >= 0, ray::toString);
-                if (found >= 0) {
-                    assertTrue(shapes[found].occluded(ray, tMax), "the occluder it names lies on the ray");
-                    blocked++;
-                }
+                boolean expected = plain.occluded(ray, tMax);
+                assertEquals(expected, lit.occluded(ray, tMax), ray::toString);
+                blocked += expected ? 1 : 0;
                 rays++;
             }
         }
@@ -133,13 +129,6 @@ class ShapeSetTest {
                 assertEquals(expected, actual, ray.toString());
                 assertEquals(expected, bvh.occluded(ray, tMax), "any-hit " + ray);
                 assertEquals(expected, linear.occluded(ray, tMax), "linear any-hit " + ray);
-                // the shadow cache's two questions: which shape blocks the ray, and does that one
-                int occluder = bvh.occluder(ray, tMax);
-                assertEquals(expected, occluder >= 0, "an occluder exactly when occluded " + ray);
-                if (expected) {
-                    assertTrue(bvh.occludes(occluder, ray, tMax), "the occluder named blocks the ray " + ray);
-                    assertTrue(linear.occludes(occluder, ray, tMax));
-                }
                 if (expected) {
                     hits++;
                     assertEquals(a.primitive, b.primitive, ray.toString());
@@ -147,18 +136,49 @@ class ShapeSetTest {
                     assertEquals(a.px, b.px, 0.0);
                     assertEquals(a.nx, b.nx, 0.0);
                 }
-                // the likely shape tested first, whether it is the winner or any other: the same hit
-                int likely = expected && random.nextBoolean() ? a.primitive : random.nextInt(shapes.length);
-                assertEquals(expected, bvh.intersect(ray, tMax, c, likely), "likely " + likely + ", " + ray);
-                if (expected) {
-                    assertEquals(a.primitive, c.primitive, "likely " + likely + ", " + ray);
-                    assertEquals(a.t, c.t, 0.0);
-                    assertEquals(a.px, c.px, 0.0);
-                    assertEquals(a.nx, c.nx, 0.0);
-                }
             }
         }
         assertTrue(hits > 6000, "rays that hit: " + hits);
+    }
+
+    @Test
+    void aSetOfSomeShapesFindsWhatTheLinearLoopOverThemFindsAndNamesThemByTheirSceneIndex() {
+        Random random = new Random(47);
+        int hits = 0;
+        for (int scene = 0; scene < 4; scene++) {
+            Shape[] shapes = randomScene(random, 30 + 30 * scene);
+            boolean[] members = new boolean[shapes.length];
+            List<Shape> chosen = new ArrayList<>();
+            List<Integer> index = new ArrayList<>();
+            for (int i = 0; i < shapes.length; i++) {
+                members[i] = random.nextInt(3) > 0;
+                if (members[i]) {
+                    chosen.add(shapes[i]);
+                    index.add(i);
+                }
+            }
+            ShapeSet some = ShapeSet.of(List.of(), shapes, members, false);
+            ShapeSet reference = ShapeSets.linear(chosen.toArray(Shape[]::new));
+            assertEquals(chosen.size(), some.size());
+            assertTrue(some.usesBvh());
+            Hit a = new Hit(), b = new Hit();
+            for (int k = 0; k < 1000; k++) {
+                Ray ray = randomRay(random, shapes);
+                double tMax = random.nextInt(4) == 0 ? uniform(random, 0, 40) : Double.POSITIVE_INFINITY;
+                boolean expected = reference.intersect(ray, tMax, a);
+                assertEquals(expected, some.intersect(ray, tMax, b), ray.toString());
+                assertEquals(expected, some.occluded(ray, tMax), "any-hit " + ray);
+                // whatever blocked the ray object last, a member or not, in range or not: the same answer
+                ray.blocker = random.nextInt(shapes.length + 4) - 2;
+                assertEquals(expected, some.occluded(ray, tMax), "any-hit after blocker " + ray.blocker + ", " + ray);
+                if (expected) {
+                    hits++;
+                    assertEquals((int) index.get(a.primitive), b.primitive, "named by its index in the scene");
+                    assertEquals(a.t, b.t, 0.0);
+                }
+            }
+        }
+        assertTrue(hits > 2000, "rays that hit: " + hits);
     }
 
     /** A ray from inside a random shape (a third of the time), or from anywhere in or around the scene. */
@@ -175,7 +195,7 @@ class ShapeSetTest {
     }
 
     @Test
-    @DisplayName("NUM-12 with a BVH and with a pixel's nearest-first list: the first-declared of coincident surfaces wins, in either declaration order")
+    @DisplayName("NUM-12 with a BVH and through a pixel's ray bundle: the first-declared of coincident surfaces wins, in either declaration order")
     void coincidentSurfacesNum12FirstDeclaredWinsThroughTheBvhInEitherOrder() {
         Plane plane = new Plane(Vec3.ZERO, new Vec3(0, 1, 0));
         Box box = new Box(new Vec3(0, -0.5, 0), new Vec3(2, 1, 2));
@@ -188,10 +208,8 @@ class ShapeSetTest {
             fillers.add(new Sphere(new Vec3(uniform(random, -8, 8), uniform(random, 4, 8), uniform(random, -8, -4)), 0.5));
         }
         Camera camera = new Camera(new Vec3(1.3, 1.7, 2.9), new Vec3(1, 0, 0), new Vec3(0, 1, 0), 60);
-        Hit hit = new Hit(), reference = new Hit(), listed = new Hit();
-        int[] ids = new int[32], stack = new int[Bvh.STACK_SIZE];
-        double[] near = new double[32];
-        Frustum pixel = new Frustum();
+        Hit hit = new Hit(), reference = new Hit(), bundled = new Hit();
+        RayBundle bundle = new RayBundle();
         Vec3 eye = camera.position();
         for (int order = 0; order < 8; order++) {
             // Coincident pairs (plane, box, sameBox) and (sphere, sameSphere) at shuffled positions among fillers.
@@ -211,20 +229,20 @@ class ShapeSetTest {
             for (int y = 0; y < 128; y++) {
                 for (int x = 0; x < 128; x++) {
                     Ray ray = camera.ray(2 * (x + 0.5) / 128 - 1, 1 - 2 * (y + 0.5) / 128, 1.0);
-                    boolean found = set.intersect(ray, Double.POSITIVE_INFINITY, hit,
-                            (x + y) % 3 == 0 ? -1 : (x * 7 + y) % shapes.length);
+                    boolean found = set.intersect(ray, Double.POSITIVE_INFINITY, hit);
                     assertEquals(linear.intersect(ray, Double.POSITIVE_INFINITY, reference), found);
-                    int n = set.candidates(camera.frustum(2.0 * x / 128 - 1, 2.0 * (x + 1) / 128 - 1,
-                            1 - 2.0 * (y + 1) / 128, 1 - 2.0 * y / 128, 1.0, pixel), ids, stack);
-                    assertTrue(n >= 0, "a pixel's list fits");
-                    set.orderByDistance(ids, n, eye.x(), eye.y(), eye.z(), near);
-                    assertEquals(found, set.intersectNearFirst(ids, near, n, ray, Double.POSITIVE_INFINITY, listed));
+                    camera.frustum(2.0 * x / 128 - 1, 2.0 * (x + 1) / 128 - 1, 1 - 2.0 * (y + 1) / 128,
+                            1 - 2.0 * y / 128, 1.0, bundle.aim(eye.x(), eye.y(), eye.z()));
+                    ray.bundle = bundle;
+                    assertEquals(found, set.intersect(ray, Double.POSITIVE_INFINITY, bundled), "through the pixel's bundle");
+                    assertTrue(bundle.count >= 0, "a pixel's list fits");
                     if (!found) {
                         continue;
                     }
                     assertEquals(reference.primitive, hit.primitive, "same winner as the linear loop");
-                    assertEquals(reference.primitive, listed.primitive, "the list's winner is the linear loop's");
-                    assertEquals(reference.t, listed.t, 0.0);
+                    assertEquals(reference.primitive, bundled.primitive, "the bundle's winner is the linear loop's");
+                    assertEquals(reference.t, hit.t, 0.0);
+                    assertEquals(reference.t, bundled.t, 0.0);
                     Shape winner = shapes[hit.primitive];
                     if (winner == plane || winner == box || winner == sameBox) {
                         if (Math.abs(hit.px) < 0.99 && Math.abs(hit.pz) < 0.99) {
@@ -244,7 +262,7 @@ class ShapeSetTest {
     /**
      * Shapes far apart, with here and there a neighbour that touches another's box or reaches
      * into it. Rays that enter a shape (spawned from its surface as the integrator
-     * spawns a refracted ray) or start deep inside it, asked with that shape as the likely one:
+     * spawns a refracted ray) or start deep inside it, carrying that shape as the one they start within:
      * where it stands apart the tree is not searched, and the hit is the full search's to the bit.
      */
     @Test
@@ -286,11 +304,16 @@ class ShapeSetTest {
                     }
                     Ray ray = k % 4 == 0 ? new Ray(target, randomUnit(random).times(uniform(random, 0.1, 10)))
                             : Rays.spawn(entry, toward.dx, toward.dy, toward.dz);
+                    if (k % 4 != 0) {
+                        assertEquals(i, ray.within, "a ray spawned into a shape starts within it");
+                    }
                     inside++;
                     double tMax = k % 3 == 0 ? uniform(random, 0, 5) : Double.POSITIVE_INFINITY;
                     boolean expected = linear.intersect(ray, tMax, a);
-                    assertEquals(expected, set.intersect(ray, tMax, b, -1), ray.toString());
-                    assertEquals(expected, set.intersect(ray, tMax, c, i), "likely " + i + ", " + ray);
+                    ray.within = -1;
+                    assertEquals(expected, set.intersect(ray, tMax, b), ray.toString());
+                    ray.within = i;
+                    assertEquals(expected, set.intersect(ray, tMax, c), "within " + i + ", " + ray);
                     if (expected) {
                         assertEquals(a.primitive, c.primitive, ray.toString());
                         assertEquals(b.primitive, c.primitive, ray.toString());
@@ -362,102 +385,5 @@ class ShapeSetTest {
         assertTrue(ShapeSet.of(planes).intersect(new Ray(0, 30, 0, 0, -1, 0), Double.POSITIVE_INFINITY, hit));
         assertEquals(19, hit.primitive);
         assertFalse(ShapeSet.of(planes).occluded(new Ray(0, 30, 0, 0, 1, 0), Double.POSITIVE_INFINITY));
-    }
-
-    @Test
-    void aPixelsRaysFindAmongItsCandidatesWhatTheWholeSceneGives() {
-        Random random = new Random(21);
-        Frustum cameraRays = new Frustum(), shadowRays = new Frustum();
-        int[] ids = new int[16], nearFirst = new int[16], shadowIds = new int[16], stack = new int[Bvh.STACK_SIZE];
-        double[] hitBox = new double[6], near = new double[16];
-        int listed = 0, hits = 0, shadowListed = 0, shadowed = 0, lit = 0;
-        Hit a = new Hit(), b = new Hit();
-        for (int scene = 0; scene < 8; scene++) {
-            Shape[] shapes = randomScene(random, 40 + 40 * scene);
-            if (scene % 2 == 1) {
-                // no planes: every pixel's hits are bounded, not only where it sees a plane's bounded part
-                shapes = java.util.Arrays.stream(shapes).filter(s -> !(s instanceof Plane)).toArray(Shape[]::new);
-            }
-            ShapeSet set = ShapeSets.bvh(shapes);
-            Vec3 light = randomPoint(random, 14);
-            for (int pixel = 0; pixel < 400; pixel++) {
-                Camera camera = new Camera(randomPoint(random, 15), randomPoint(random, 5), new Vec3(0, 1, 0), 60);
-                double size = Math.pow(10, uniform(random, -3.5, -1));
-                double x0 = uniform(random, -1, 1 - size), y0 = uniform(random, -1, 1 - size);
-                int n = set.candidates(camera.frustum(x0, x0 + size, y0, y0 + size, 1.5, cameraRays), ids, stack);
-                if (n < 0) {
-                    continue;
-                }
-                listed++;
-                for (int k = 1; k < n; k++) {
-                    assertTrue(ids[k - 1] < ids[k], "ascending, once each");
-                }
-                System.arraycopy(ids, 0, nearFirst, 0, n);
-                Vec3 eye = camera.position();
-                set.orderByDistance(nearFirst, n, eye.x(), eye.y(), eye.z(), near);
-                for (int k = 1; k < n; k++) {
-                    assertTrue(near[k - 1] <= near[k], "nearest first");
-                }
-                boolean bounded = set.boundsOf(ids, n, cameraRays, hitBox);
-                int m = bounded && shadowRays.overBox(light.x(), light.y(), light.z(), hitBox)
-                        ? set.candidates(shadowRays, shadowIds, stack) : -1;
-                shadowListed += m >= 0 ? 1 : 0;
-                for (int s = 0; s < 16; s++) {
-                    double x = x0 + size * (s < 4 ? s & 1 : random.nextDouble());
-                    double y = y0 + size * (s < 4 ? s >> 1 : random.nextDouble());
-                    Ray ray = camera.ray(x, y, 1.5);
-                    boolean expected = set.intersect(ray, Double.POSITIVE_INFINITY, a);
-                    assertEquals(expected, set.intersectNearFirst(nearFirst, near, n, ray, Double.POSITIVE_INFINITY, b), ray.toString());
-                    double tMax = uniform(random, 0, 30);
-                    assertEquals(set.occluded(ray, tMax), set.occluderAmong(ids, n, ray, tMax) >= 0, ray.toString());
-                    if (!expected) {
-                        continue;
-                    }
-                    hits++;
-                    assertEquals(a.primitive, b.primitive, ray.toString());
-                    assertEquals(a.t, b.t, 0.0);
-                    assertEquals(a.px, b.px, 0.0);
-                    if (m < 0) {
-                        continue;
-                    }
-                    assertTrue(a.px >= hitBox[0] && a.px <= hitBox[3] && a.py >= hitBox[1] && a.py <= hitBox[4]
-                            && a.pz >= hitBox[2] && a.pz <= hitBox[5], "the hit lies in the candidates' box");
-                    Ray shadow = Rays.spawnTowards(a, light.x(), light.y(), light.z());
-                    double dist = light.minus(new Vec3(shadow.ox, shadow.oy, shadow.oz)).length() * (1 - 1e-9);
-                    boolean blocked = set.occluded(shadow, dist);
-                    assertEquals(blocked, set.occluderAmong(shadowIds, m, shadow, dist) >= 0, shadow.toString());
-                    shadowed += blocked ? 1 : 0;
-                    lit += blocked ? 0 : 1;
-                }
-            }
-        }
-        assertTrue(listed > 2000 && hits > 4000, "pixels with lists " + listed + ", rays that hit " + hits);
-        assertTrue(shadowListed > 150 && shadowed > 500 && lit > 150,
-                "shadow lists " + shadowListed + ", blocked " + shadowed + ", lit " + lit);
-    }
-
-    @Test
-    void candidateListsAreShortAndSayWhenTheyWouldOverflow() {
-        Shape[] row = new Shape[100];
-        for (int i = 0; i < row.length; i++) {
-            row[i] = new Sphere(new Vec3(i, 0, 0), 0.3);
-        }
-        ShapeSet set = ShapeSet.of(row);
-        int[] ids = new int[16], stack = new int[Bvh.STACK_SIZE];
-        Frustum frustum = new Frustum();
-        // looking down at sphere 50 through a pixel a tenth of its size: it alone
-        Camera above = new Camera(new Vec3(50, 10, 0), new Vec3(50, 0, 0), new Vec3(0, 0, -1), 10);
-        assertEquals(1, set.candidates(above.frustum(-0.01, 0.01, -0.01, 0.01, 1, frustum), ids, stack));
-        assertEquals(50, ids[0]);
-        // looking along the row: all 100 lie in the pixel's pyramid, more than the list holds
-        Camera along = new Camera(new Vec3(-5, 0, 0), new Vec3(0, 0, 0), new Vec3(0, 1, 0), 10);
-        assertEquals(-1, set.candidates(along.frustum(-0.01, 0.01, -0.01, 0.01, 1, frustum), ids, stack));
-        // a linear set keeps its loop
-        assertEquals(-1, ShapeSet.of(row[0], row[1]).candidates(frustum, ids, stack));
-        assertFalse(set.boundsOf(ids, 0, frustum, new double[6]), "no candidates, no box");
-        ids[0] = 50;
-        assertTrue(set.boundsOf(ids, 1, above.frustum(-0.01, 0.01, -0.01, 0.01, 1, frustum), new double[6]));
-        frustum.overBox(50, 10, 0, new double[] {49, -1, -1, 51, 1, 1});
-        assertFalse(set.boundsOf(ids, 1, frustum, new double[6]), "a shadow pyramid (it has an end) bounds no hits");
     }
 }

@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.stream.IntStream;
 import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.BeforeEach;
@@ -18,7 +19,6 @@ import org.junit.jupiter.api.io.TempDir;
 import studio.server.scene.compiling.CompileRequest;
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.material.MaterialKind;
-import studio.engine.render.Renderer;
 import studio.engine.scene.Scene;
 import studio.engine.scene.ShapeSet;
 import studio.server.scene.compiling.CompiledScene;
@@ -125,9 +125,9 @@ class StudioLauncherTest {
     /**
      * The training run renders bin/training/'s scenes in one JVM ({@code studio.jar train}), each a
      * valid scene at 16 samples, one of each kind the engine treats apart, so the cache's profiles
-     * cover every kind's paths: a crowd of 64 objects or more (light buffers, pixel lists) with
-     * glass and a mesh among them, a still life that searches its tree without lists, glass among
-     * enough objects for lists, and a mesh searched one object after the other.
+     * cover every kind's paths: a crowd of 64 objects or more (light buffers) with glass and a mesh
+     * among them, a still life that searches its tree, glass among fewer objects than buffers
+     * need, and a mesh searched one object after the other.
      */
     @Test
     void theTrainingRunRendersOneSceneOfEachKind() throws Exception {
@@ -142,23 +142,26 @@ class StudioLauncherTest {
         assertThat(training).endsWith(files.toString());
 
         Scene crowd = compile(scenes.resolve("crowd.json"));
-        assertThat(crowd.objectCount() - crowd.unboundedCount()).isGreaterThanOrEqualTo(ShapeSet.LIGHT_BUFFER_MIN);
-        assertThat(Renderer.listsPixelCandidates(crowd)).isTrue();
+        assertThat(bounded(crowd)).isGreaterThanOrEqualTo(ShapeSet.LIGHT_BUFFER_MIN);
         assertThat(has(crowd, MaterialKind.GLASS)).as("glass in the crowd").isTrue();
         assertThat(hasMesh(crowd)).as("a mesh in the crowd").isTrue();
 
         Scene stillLife = compile(scenes.resolve("still-life.json"));
-        assertThat(stillLife.searchesBvh()).isTrue();
-        assertThat(Renderer.listsPixelCandidates(stillLife)).isFalse();
+        assertThat(stillLife.objectCount()).as("searched through its tree").isGreaterThan(ShapeSet.LINEAR_MAX);
 
         Scene glass = compile(scenes.resolve("glass.json"));
         assertThat(has(glass, MaterialKind.GLASS)).as("glass").isTrue();
-        assertThat(Renderer.listsPixelCandidates(glass)).isTrue();
-        assertThat(glass.objectCount() - glass.unboundedCount()).isLessThan(ShapeSet.LIGHT_BUFFER_MIN);
+        assertThat(glass.objectCount()).isGreaterThan(ShapeSet.LINEAR_MAX);
+        assertThat(bounded(glass)).isLessThan(ShapeSet.LIGHT_BUFFER_MIN);
 
         Scene knot = compile(scenes.resolve("knot.json"));
-        assertThat(knot.searchesBvh()).as("searched one object after the other").isFalse();
+        assertThat(knot.objectCount()).as("searched one object after the other").isLessThanOrEqualTo(ShapeSet.LINEAR_MAX);
         assertThat(hasMesh(knot)).isTrue();
+    }
+
+    /** How many of the scene's objects have bounds (all but planes). */
+    private static long bounded(Scene scene) {
+        return IntStream.range(0, scene.objectCount()).filter(i -> scene.shape(i).bounds().isBounded()).count();
     }
 
     private static Scene compile(Path scene) throws IOException {

@@ -1,0 +1,110 @@
+package studio.engine.render;
+
+import studio.engine.geometry.Hit;
+import studio.engine.geometry.Ray;
+import studio.engine.geometry.Rays;
+import studio.engine.material.Fresnel;
+import studio.engine.material.Material;
+import studio.engine.scene.Scene;
+import studio.engine.scene.ShapeSet;
+
+/**
+ * Shadow rays for the {@link Integrator}: what fraction of a light reaches a point. A shadow ray
+ * passes through glass surfaces, losing the Fresnel reflectance at each and taking the glass's
+ * tint on the way in, so glass casts a lighter, tinted shadow. The light is assumed to go straight
+ * through (no caustic focusing): a ray tracer that traces from the eye cannot find the bent path
+ * to a point light, and a black shadow under clear glass looks more wrong than a light one.
+ *
+ * <p>One instance per worker thread, beside its integrator: it owns its hit record and ray.
+ */
+final class ShadowRays {
+
+    /** At most this many glass surfaces are crossed by one shadow ray before it counts as blocked. */
+    private static final int MAX_SHADOW_CROSSINGS = 32;
+    /** A shadow ray is blocked only by hits closer than this fraction of the light's distance. */
+    private static final double SHADOW_END = 1 - 1e-9;
+
+    static {
+        // resolved before the JIT compiles reach, as Integrator's static block explains: a cold
+        // render otherwise deoptimizes reach at glass's first crossing
+        Fresnel.reflectance(1, 1, 1.5);
+    }
+
+    private final Scene scene;
+    private final double minPathWeight;
+    /** The scene's opaque objects, and its glass ones (null: none). */
+    private final ShapeSet opaque, glass;
+    private final Hit shadowHit = new Hit();
+    /** Per light, the ray object of its shadow rays, which keeps what blocked the last one ({@link Ray#blocker}). */
+    private final Ray[] shadowRays;
+    /** The transmittance found by the last {@link #reach}, and how many rays it traced. */
+    double throughR, throughG, throughB;
+    int traced;
+
+    ShadowRays(Scene scene, double minPathWeight) {
+        this.scene = scene;
+        this.minPathWeight = minPathWeight;
+        this.opaque = scene.opaque();
+        this.glass = scene.glass();
+        this.shadowRays = new Ray[scene.lights().size()];
+        for (int i = 0; i < shadowRays.length; i++) {
+            shadowRays[i] = new Ray();
+        }
+    }
+
+    /**
+     * What fraction of a light reaches the hit point, into throughR/G/B: 0 behind anything opaque,
+     * less through glass. Returns false when nothing arrives. The opaque objects' any-hit question
+     * decides first; a ray it lets through walks the glass objects surface by surface, through
+     * their closest-hit question, multiplying their transmittance (the scene's own aggregate, with
+     * glass in it, would make every blocked ray walk: glass-pattern about 1.5 times as long).
+     */
+    boolean reach(int light, Hit from, double tx, double ty, double tz) {
+        Ray shadowRay = shadowRays[light];
+        Ray ray = Rays.spawnTowards(from, tx, ty, tz, shadowRay);
+        double dist = distance(ray, tx, ty, tz);
+        traced = 1;
+        throughR = throughG = throughB = 1;
+        if (opaque.occluded(ray, dist * SHADOW_END)) {
+            return false;
+        }
+        if (glass == null) {
+            return true;
+        }
+        double r = 1, g = 1, b = 1;
+        for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {
+            if (!glass.intersect(ray, dist * SHADOW_END, shadowHit)) {
+                throughR = r;
+                throughG = g;
+                throughB = b;
+                return true;
+            }
+            Material m = scene.material(shadowHit.primitive);
+            double cos = shadowHit.nx * ray.dx + shadowHit.ny * ray.dy + shadowHit.nz * ray.dz;
+            boolean entering = shadowHit.gx * ray.dx + shadowHit.gy * ray.dy + shadowHit.gz * ray.dz < 0;
+            // |cos|: a smooth mesh's shading normal may lean past the side its triangle is crossed from
+            double transmitted = 1 - (entering ? Fresnel.reflectance(Math.abs(cos), 1, m.ior())
+                    : Fresnel.reflectance(Math.abs(cos), m.ior(), 1));
+            r *= transmitted;
+            g *= transmitted;
+            b *= transmitted;
+            if (entering) {
+                r *= m.color().r();
+                g *= m.color().g();
+                b *= m.color().b();
+            }
+            if (Math.max(r, Math.max(g, b)) <= minPathWeight) {
+                return false;
+            }
+            ray = Rays.spawnTowards(shadowHit, tx, ty, tz, shadowRay);
+            dist = distance(ray, tx, ty, tz);
+            traced++;
+        }
+        return false;
+    }
+
+    private static double distance(Ray ray, double tx, double ty, double tz) {
+        double x = tx - ray.ox, y = ty - ray.oy, z = tz - ray.oz;
+        return Math.sqrt(x * x + y * y + z * z);
+    }
+}
