@@ -1,7 +1,7 @@
 import { act, render, screen, within } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { fakeSockets } from '../live/fakes';
+import { fakeSockets } from '../test/liveFakes';
 import type { Scene } from '../model/types';
 import { recordingContext } from '../test/renderFakes';
 import { useSceneStore } from '../store/sceneStore';
