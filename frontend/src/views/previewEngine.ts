@@ -165,7 +165,7 @@ export class PreviewEngine {
         this.renderer.shadowMap.needsUpdate = true;
         this.content.takeReflections(this.renderer, this.scene, this.handles.helpers());
       }
-      this.renderer.render(this.scene, this.mode === 'camera' ? this.renderCamera : this.orbitCamera);
+      this.renderer.render(this.scene, this.mode === 'orbit' ? this.orbitCamera : this.renderCamera);
     });
   }
 
