@@ -6,7 +6,7 @@
 import { newAreaLight, newLight, newMesh, newObject, resolveLight, resolveObject, resolveScene, SAMPLE_MESH_OBJ, sceneLights, SCENE_DEFAULTS } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, parseObj, type Bounds } from './obj';
-import { KIND_NAMES, uniqueName } from './naming';
+import { copyName, KIND_NAMES, uniqueName, withName } from './naming';
 import { floorHeight, placeOnFloor } from './placement';
 import { roundNumber } from './rounding';
 import { objectAnchor } from './projection';
@@ -150,7 +150,7 @@ export function duplicateObject(scene: Scene, index: number): Scene {
   const original = scene.objects[index];
   if (!original) return scene;
   const objects = [...scene.objects];
-  objects.splice(index + 1, 0, copyAside(original));
+  objects.splice(index + 1, 0, withName(copyAside(original), copyName(scene, original.name, original.type)));
   return { ...scene, objects };
 }
 
@@ -171,7 +171,7 @@ export function duplicateLight(scene: Scene, index: number): Scene {
   const original = lights[index];
   if (!original) return scene;
   const next = [...lights];
-  next.splice(index + 1, 0, lightAside(original));
+  next.splice(index + 1, 0, withName(lightAside(original), copyName(scene, original.name, original.type)));
   return { ...scene, lights: next };
 }
 

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { addAreaLight, addLight, addModel, addObject } from './edits';
+import { addAreaLight, addLight, addModel, addObject, duplicateLight, duplicateObject } from './edits';
+import { duplicateItems } from './groupEdits';
 import { uniqueName } from './naming';
 import type { Scene } from './types';
 
@@ -28,5 +29,22 @@ describe('names of new things', () => {
     expect(new Set(names).size).toBe(names.length);
     expect(scene.objects.map((o) => o.name)).toEqual(['Sphere 1', 'Box 2', 'Sphere 3', 'Plane 4', 'Mesh 5', 'duck', 'duck 2']);
     expect(scene.lights!.map((l) => ('name' in l ? l.name : undefined))).toEqual([undefined, 'Light 2', 'Area light 3', 'Light 4']);
+  });
+});
+
+describe('names of copies', () => {
+  it('number a duplicate apart from everything, a multi-selection’s copies apart from each other too', () => {
+    let scene: Scene = { objects: [] };
+    scene = addObject(addObject(scene, 'sphere'), 'box');
+    scene = { ...scene, objects: [...scene.objects, { type: 'sphere', name: 'ball' }, { type: 'sphere' }] };
+    scene = addLight(scene);
+    expect(duplicateObject(scene, 0).objects[1].name).toBe('Sphere 5');
+    expect(duplicateObject(scene, 2).objects[3].name).toBe('ball 2');
+    expect(duplicateObject(scene, 3).objects[4]).not.toHaveProperty('name'); // unnamed stays unnamed
+    expect((duplicateLight(scene, 1).lights![2] as { name?: string }).name).toBe('Light 3');
+    const { scene: copied } = duplicateItems(scene, [{ kind: 'object', index: 0 }, { kind: 'object', index: 2 }, { kind: 'object', index: 1 }]);
+    expect(copied.objects.slice(4).map((o) => o.name)).toEqual(['Sphere 5', 'ball 2', 'Box 7']);
+    const names = copied.objects.map((o) => o.name).filter(Boolean);
+    expect(new Set(names).size).toBe(names.length);
   });
 });

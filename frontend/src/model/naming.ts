@@ -33,3 +33,21 @@ export function uniqueName(scene: Scene, base: string, numbered = true, already 
     if (!taken.has(name)) return name;
   }
 }
+
+/**
+ * A copy's name (Duplicate, a multi-selection's duplicate): the original's stem with a number no
+ * other object or light of `scene` has (`Sphere 3` copied beside four objects: `Sphere 5`; `ball`:
+ * `ball 2`); none when the original has none.
+ */
+export function copyName(scene: Scene, name: string | undefined, kind: keyof typeof KIND_NAMES | 'point' | 'area'): string | undefined {
+  if (!name) return undefined;
+  const stem = name.replace(/ \d+$/, '');
+  const kindName = kind === 'point' ? 'Light' : kind === 'area' ? 'Area light' : KIND_NAMES[kind];
+  if (stem === kindName) return uniqueName(scene, stem, true, kind === 'point' || kind === 'area' ? sceneLights(scene).length : scene.objects.length);
+  return uniqueName(scene, stem, false);
+}
+
+/** `item` with `name`, or as it is when there is none (no `name: undefined` in the file). */
+export function withName<T extends object>(item: T, name: string | undefined): T {
+  return name === undefined ? item : { ...item, name };
+}
