@@ -280,6 +280,22 @@ try {
       expect(render && render.y >= 0 && render.y + render.height <= height, `Render is out of reach at ${width}x${height}`);
       await page.screenshot({ path: `${out}stage-${width}x${height}.png` });
     }
+    // at 1024x768 with the 2D views shown, the preview's header stays inside its panel
+    await page.setViewportSize({ width: 1024, height: 768 });
+    const views = page.getByRole('button', { name: '2D views' });
+    if ((await views.getAttribute('aria-pressed')) !== 'true') await views.click();
+    await page.getByRole('tab', { name: '3D preview' }).click();
+    await page.getByRole('button', { name: 'Orbit view' }).click();
+    const panel = await page.getByRole('region', { name: '3D preview' }).boundingBox();
+    for (const name of ['Ray traced', 'Camera view', 'Reset view', 'Camera from this view']) {
+      const box = await page.getByRole('button', { name, exact: true }).boundingBox();
+      expect(box && box.x >= panel.x && box.x + box.width <= panel.x + panel.width + 0.5 && box.y + box.height <= 768,
+        `at 1024x768 with the 2D views "${name}" is not inside the preview (${JSON.stringify(box)} in ${JSON.stringify(panel)})`);
+    }
+    await page.screenshot({ path: `${out}preview-header-1024x768.png` });
+    await page.getByRole('button', { name: 'Camera view' }).click();
+    // the 2D views stay shown (as chosen, and as the later steps at 1440 pixels expect them)
+    await page.getByRole('tab', { name: 'Image' }).click();
     // at 1920x1080 the image fills the stage: drawn larger than its own 800x600
     await page.setViewportSize({ width: 1920, height: 1080 });
     const image = page.getByRole('img', { name: 'The render', exact: true });
@@ -547,6 +563,87 @@ try {
     await until(async () => (await page.getByRole('button', { name: 'Orbit view' }).getAttribute('aria-pressed')) === 'true', 'F did not frame the selection in the orbit view');
     await page.screenshot({ path: `${out}frame-selection.png` });
     await page.getByRole('button', { name: 'Camera view' }).click();
+  });
+
+  await step('Ray traced: a click on the live image selects, the move handle drags it as the live image follows, arrow keys move it; an orbit drag from the floor selects nothing; Tab onto a glyph selects it', async () => {
+    await page.getByRole('button', { name: 'New', exact: true }).click();
+    await page.getByTestId('add-plane').click();
+    await page.getByTestId('add-sphere').click();
+    await page.keyboard.press('Escape');
+    const scene = await sceneOf(page);
+    const centre = scene.objects[1].center;
+    const names = scene.objects.map((o) => o.name);
+    expect(names.every((n) => typeof n === 'string' && n.length > 0) && new Set(names).size === names.length, `new objects are named ${JSON.stringify(names)}`);
+    await page.getByRole('button', { name: 'Ray traced' }).click();
+    const canvas = page.getByTestId('ray-traced-canvas');
+    const attribute = async (name) => canvas.getAttribute(name);
+    const current = async () => (await attribute('data-final')) === 'true'
+      && (await attribute('data-revision')) === (await attribute('data-sent-revision'));
+    await until(current, 'no final frame in the Ray traced view', 60000);
+    const at = await previewPixel(page, scene, centre);
+    await page.mouse.click(at.x, at.y);
+    const centerX = page.getByLabel('Center x');
+    await centerX.waitFor({ timeout: 10000 });
+    expect(Number(await centerX.inputValue()) === centre[0], 'clicking the sphere on the live image did not select it');
+    await twoFrames(page);
+    // the handles are drawn over the live image: the overlay has opaque pixels where the sphere is
+    const drawn = await page.getByTestId('preview-3d').locator('canvas').evaluate((c) => {
+      const copy = document.createElement('canvas');
+      copy.width = c.width;
+      copy.height = c.height;
+      const g = copy.getContext('2d');
+      g.drawImage(c, 0, 0);
+      const data = g.getImageData(0, 0, c.width, c.height).data;
+      let opaque = 0;
+      for (let i = 3; i < data.length; i += 4) if (data[i] > 0) opaque++;
+      return { opaque, all: data.length / 4 };
+    });
+    expect(drawn.opaque > 50 && drawn.opaque < drawn.all * 0.5, `the handles over the live image: ${JSON.stringify(drawn)} opaque pixels`);
+    await page.screenshot({ path: `${out}ray-traced-handles.png` });
+
+    // the move handle over the live image: frames of the transient position come during the drag
+    const revisionBefore = Number(await attribute('data-revision'));
+    await page.mouse.move(at.x, at.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 5; i++) await page.mouse.move(at.x + 8 * i, at.y);
+    await until(async () => Number(await attribute('data-sent-revision')) > revisionBefore, 'the live view was sent nothing during the handle drag', 10000);
+    for (let i = 6; i <= 10; i++) await page.mouse.move(at.x + 8 * i, at.y);
+    await page.mouse.up();
+    await until(async () => Number(await centerX.inputValue()) > centre[0] + 0.3, async () => `the move handle over the live image did not move the sphere: x ${await centerX.inputValue()}`);
+    await until(current, 'no final frame of the dropped position', 60000);
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await until(async () => Number(await centerX.inputValue()) === centre[0], 'one undo did not take the handle drag over the live image back');
+
+    // arrow keys with the live view focused (the click focused it): one grid step along a floor axis
+    const before = (await sceneOf(page)).objects[1].center;
+    await page.getByRole('button', { name: 'Ray traced' }).click();
+    await page.getByRole('img', { name: /The scene in 3D/ }).focus();
+    await page.keyboard.press('ArrowRight');
+    await until(async () => Number(await centerX.inputValue()) !== before[0], 'ArrowRight in the Ray traced view did not move the sphere');
+    const grid = Number(await page.getByLabel('Grid size in metres').inputValue());
+    const step = Math.round((Number(await centerX.inputValue()) - before[0]) * 1e9) / 1e9;
+    expect(step === grid, `ArrowRight moved x by ${step}, not one grid step (${grid})`);
+
+    // an orbit drag that starts on the floor does not select the floor
+    await page.getByRole('button', { name: 'Orbit view' }).click();
+    await page.getByRole('button', { name: 'Reset view' }).click();
+    await page.keyboard.press('Escape');
+    await centerX.waitFor({ state: 'detached' });
+    const floor = await previewPixel(page, scene, [centre[0] + 1.5, 0, centre[2] + 1]);
+    await page.mouse.move(floor.x, floor.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 8; i++) await page.mouse.move(floor.x + 10 * i, floor.y + 3 * i);
+    for (let i = 7; i >= 0; i--) await page.mouse.move(floor.x + 10 * i, floor.y + 3 * i);
+    await page.mouse.up();
+    await twoFrames(page);
+    expect(await page.getByTestId('inspector-object').count() === 0, 'an orbit drag from the floor selected the floor');
+    await page.getByRole('button', { name: 'Camera view' }).click();
+
+    // Tab onto a glyph in a plan view selects it
+    const views = page.getByRole('button', { name: '2D views' });
+    if ((await views.getAttribute('aria-pressed')) !== 'true') await views.click();
+    await page.getByTestId('top-view').getByTestId('object-1').focus();
+    await centerX.waitFor({ timeout: 5000 });
   });
 
   await step('the preview shows what the render will: shadows, a mirror reflecting the scene, glass visible; extreme values leave the rest of the picture', async () => {

@@ -299,14 +299,14 @@ describe('App', () => {
     await user.click(screen.getByRole('button', { name: 'Dismiss' }));
     await user.upload(screen.getByTestId('add-mesh'), new File([obj], 'grid.obj'));
     const index = STARTER_SCENE.objects.length;
-    await waitFor(() => expect(store().scene.objects[index]).toEqual({ type: 'mesh', asset: id, position: expect.any(Array), scale: 4, rotation: [0, 0, 0], material: { type: 'plastic', color: '#4f8fd6' } }));
+    await waitFor(() => expect(store().scene.objects[index]).toEqual({ type: 'mesh', name: 'grid', asset: id, position: expect.any(Array), scale: 4, rotation: [0, 0, 0], material: { type: 'plastic', color: '#4f8fd6' } }));
     expect(uploaded).toEqual(['model/obj']);
     expect(screen.getByTestId('import-progress')).toHaveTextContent('grid.obj: 200 triangles added as a mesh.');
     expect((store().scene.objects[index] as { position: number[] }).position[1]).toBe(0); // a flat grid lies on the floor
     expect(screen.queryByRole('alert')).toBeNull();
     expect(store().selection).toEqual({ kind: 'object', index });
     expect(store().past).toHaveLength(1);
-    expect(screen.getByRole('heading', { name: `Mesh ${index + 1}` })).toBeInTheDocument();
+    expect(screen.getByRole('heading', { name: 'Mesh "grid"' })).toBeInTheDocument();
     expect(screen.getByTestId('mesh-source')).toHaveTextContent(`uploaded OBJ ${id.slice(0, 15)}…, 200 triangles`);
     expect(within(screen.getByTestId('side-view')).getByTestId(`object-${index}`)).toHaveAttribute('data-selected', 'true');
     await user.click(screen.getByRole('button', { name: 'Undo' }));

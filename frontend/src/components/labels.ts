@@ -1,9 +1,10 @@
 /** Display names and tooltips shared by the inspector, the outline, the toolbar and the views. */
 import type { MeshState } from '../model/meshCache';
 import { idNumber, idOf } from '../model/identity';
+import { KIND_NAMES } from '../model/naming';
 import type { Light, LightType, MaterialType, ObjectType, Scene, SceneObject } from '../model/types';
 
-export const OBJECT_LABELS: Record<ObjectType, string> = { sphere: 'Sphere', box: 'Box', plane: 'Plane', mesh: 'Mesh', gltf: 'glTF model' };
+export const OBJECT_LABELS: Record<ObjectType, string> = KIND_NAMES;
 
 export const OBJECT_HINTS: Record<ObjectType, string> = {
   sphere: 'A sphere: centre and radius',
@@ -62,10 +63,14 @@ export function nameOf(item: SceneObject | Light): string | undefined {
   return 'name' in item ? item.name : undefined;
 }
 
-/** An object's or light's label: its name in quotes after its kind, or its kind and id number. */
+/**
+ * An object's or light's label: its name in quotes after its kind, or its kind and id number; a name
+ * the editor gave it (`Sphere 3`) as it is.
+ */
 export function labelOf(item: SceneObject | Light, index: number): string {
   const kind = item.type === 'point' || item.type === 'area' ? LIGHT_LABELS[item.type] : OBJECT_LABELS[item.type];
   const name = nameOf(item);
+  if (name && new RegExp(`^${kind} \\d+$`).test(name)) return name;
   if (name) return `${kind} "${name}"`;
   return `${kind} ${idNumber(idOf(item)) ?? index + 1}`;
 }

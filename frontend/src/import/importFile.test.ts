@@ -54,7 +54,7 @@ describe('importFile', () => {
     const id = await assetIdOf(new Blob([TETRAHEDRON_OBJ]));
     expect(calls).toEqual(['hash', 'head', 'upload model/obj', 'keep model/obj']);
     expect(phases).toEqual(['hashing 0', 'hashing 1', 'reading 0', 'reading 1', 'uploading 0', 'uploading 1']);
-    expect(target.added).toEqual([{ model: { type: 'mesh', asset: id, scale: 2, material: { type: 'plastic', color: '#4f8fd6' } }, bounds: { min: [0, 0, 0], max: [1, 1, 1] } }]);
+    expect(target.added).toEqual([{ model: { type: 'mesh', name: 'tetra', asset: id, scale: 2, material: { type: 'plastic', color: '#4f8fd6' } }, bounds: { min: [0, 0, 0], max: [1, 1, 1] } }]);
     expect(target.put).toEqual([id]);
     expect(message).toBe('tetra.obj: 4 triangles added as a mesh.');
   });
@@ -77,7 +77,7 @@ describe('importFile', () => {
     const { deps, target, calls } = fakes(true);
     await importFile(file('glb bytes', 'duck.glb'), deps, target, () => undefined);
     expect(calls).toEqual(['hash', 'head', 'keep model/gltf-binary']);
-    expect(target.added).toEqual([{ model: { type: 'gltf', asset: expect.stringMatching(/^sha256-/) }, bounds: { min: [-1, 0, -1], max: [1, 2, 1] } }]);
+    expect(target.added).toEqual([{ model: { type: 'gltf', name: 'duck', asset: expect.stringMatching(/^sha256-/) }, bounds: { min: [-1, 0, -1], max: [1, 2, 1] } }]);
   });
 
   it('puts an image on the selected object’s material as its texture, and says an object must be selected', async () => {

@@ -119,14 +119,21 @@ async function sendToServer(file: File, id: string, plan: ImportPlan, deps: Impo
   }
 }
 
+/** A file's name without its folder and extension (`teapot` of `models/teapot.obj`), the new object's name. */
+export function fileStem(fileName: string): string {
+  const base = fileName.replace(/^.*[\\/]/, '');
+  const dot = base.lastIndexOf('.');
+  return (dot > 0 ? base.slice(0, dot) : base).slice(0, 200);
+}
+
 function place(name: string, id: string, plan: ImportPlan, parsed: ParsedObj | null, bounds: Bounds | undefined, textured: number, target: ImportTarget): string {
   if (plan.kind === 'obj') {
     target.putMesh(id, parsed!);
-    target.addModel({ type: 'mesh', asset: id, scale: scaleToFit(parsed!), material: { type: 'plastic', color: '#4f8fd6' } }, bounds);
+    target.addModel({ type: 'mesh', name: fileStem(name), asset: id, scale: scaleToFit(parsed!), material: { type: 'plastic', color: '#4f8fd6' } }, bounds);
     return `${name}: ${parsed!.triangleCount.toLocaleString('en')} triangles added as a mesh.`;
   }
   if (plan.kind === 'gltf') {
-    target.addModel({ type: 'gltf', asset: id }, bounds);
+    target.addModel({ type: 'gltf', name: fileStem(name), asset: id }, bounds);
     return `${name}: added as a glTF model.`;
   }
   const object = target.scene().objects[textured];

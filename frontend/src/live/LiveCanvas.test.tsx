@@ -1,7 +1,7 @@
 import { render, screen } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { describe, expect, it, vi } from 'vitest';
-import { frameHeader } from './fakes';
+import { frameHeader } from '../test/liveFakes';
 import { LiveCanvas } from './LiveCanvas';
 import type { LiveConnection } from './liveSession';
 import type { FrameHeader } from './protocol';

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { describeFrame } from './describeFrame';
-import { frameHeader } from './fakes';
+import { frameHeader } from '../test/liveFakes';
 
 describe('describeFrame', () => {
   it('gives a refining frame its pass, samples, size and time', () => {

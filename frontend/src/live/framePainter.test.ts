@@ -1,6 +1,6 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { recordingContext } from '../test/renderFakes';
-import { encodeFrame, frameHeader } from './fakes';
+import { encodeFrame, frameHeader } from '../test/liveFakes';
 import { decodeImage, drawFrame, type DecodedImage } from './framePainter';
 import { decodeFrame } from './protocol';
 

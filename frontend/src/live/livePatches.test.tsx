@@ -1,7 +1,7 @@
 import { act, renderHook } from '@testing-library/react';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { recordingContext } from '../test/renderFakes';
-import { fakeSockets, instantDecoder } from './fakes';
+import { fakeSockets, instantDecoder } from '../test/liveFakes';
 import type { PatchMessage, RevisionMessage } from './protocol';
 import { useLivePreview, type LivePreviewOptions } from './useLivePreview';
 

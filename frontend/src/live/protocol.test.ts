@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { encodeFrame, frameHeader } from './fakes';
+import { encodeFrame, frameHeader } from '../test/liveFakes';
 import { decodeFrame, decodeProblem, encodeNext, encodeRevision, FrameError, isSameOrNewer, previewUrl } from './protocol';
 
 /** A message of raw bytes. */

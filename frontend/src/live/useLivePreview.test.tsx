@@ -1,7 +1,7 @@
 import { act, renderHook } from '@testing-library/react';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { recordingContext } from '../test/renderFakes';
-import { fakeSockets, instantDecoder, manualDecoder } from './fakes';
+import { fakeSockets, instantDecoder, manualDecoder } from '../test/liveFakes';
 import type { ImageDecoder } from './framePainter';
 import { RETRY_DELAYS } from './liveSession';
 import { useLivePreview, type LivePreviewOptions } from './useLivePreview';

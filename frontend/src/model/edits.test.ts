@@ -50,7 +50,7 @@ describe('edits', () => {
     const scene: Scene = { camera: { position: [1, 2, 7], lookAt: [1, 0.5, -1] }, objects: [{ type: 'plane', point: [0, 0.25, 0] }] };
     const one = addAreaLight(scene);
     expect(one.lights).toHaveLength(2); // the default light is written out beside it
-    expect(one.lights![1]).toEqual({ type: 'area', position: [1, 3.5, 0], size: [1, 1], lookAt: [1, 0.25, 0], color: '#ffffff', intensity: 1, falloff: false, twoSided: false });
+    expect(one.lights![1]).toEqual({ type: 'area', name: 'Area light 2', position: [1, 3.5, 0], size: [1, 1], lookAt: [1, 0.25, 0], color: '#ffffff', intensity: 1, falloff: false, twoSided: false });
     const two = addAreaLight(addLight(one));
     expect(two.lights![3]).toMatchObject({ position: [3, 3.5, 0], lookAt: [3, 0.25, 0] });
     // its aim is never the camera's target, so both crosshairs can be grabbed in the plan views

@@ -6,6 +6,7 @@
 import { newAreaLight, newLight, newMesh, newObject, resolveLight, resolveObject, resolveScene, SAMPLE_MESH_OBJ, sceneLights, SCENE_DEFAULTS } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, parseObj, type Bounds } from './obj';
+import { copyName, KIND_NAMES, uniqueName, withName } from './naming';
 import { floorHeight, placeOnFloor } from './placement';
 import { roundNumber } from './rounding';
 import { objectAnchor } from './projection';
@@ -42,6 +43,7 @@ export const DUPLICATE_OFFSET: Vec3 = [0.5, 0, 0.5];
 export function addObject(scene: Scene, kind: AddableType, meshes: MeshLookup = NO_MESHES): Scene {
   if (kind === 'mesh') return addMesh(scene, SAMPLE_MESH_OBJ, 1, meshes);
   const object = newObject(kind);
+  object.name = uniqueName(scene, KIND_NAMES[kind], true, scene.objects.length);
   if (object.type === 'sphere') object.center = placeOnFloor(scene, object.radius!, object.radius!, meshes);
   if (object.type === 'box') object.center = placeOnFloor(scene, length(object.size!) / 2, object.size![1] / 2, meshes);
   return { ...scene, objects: [...scene.objects, object] };
@@ -53,6 +55,7 @@ export function addObject(scene: Scene, kind: AddableType, meshes: MeshLookup = 
  */
 export function addMesh(scene: Scene, obj: string, scale: number, meshes: MeshLookup = NO_MESHES): Scene {
   const mesh = newMesh(obj, scale);
+  mesh.name = uniqueName(scene, KIND_NAMES.mesh, true, scene.objects.length);
   let parsed;
   try {
     parsed = parseObj(obj);
@@ -74,7 +77,8 @@ export function addMesh(scene: Scene, obj: string, scale: number, meshes: MeshLo
  */
 export function addModel(scene: Scene, model: PlacedModel, bounds?: Bounds, meshes: MeshLookup = NO_MESHES): Scene {
   const factor = model.scale ?? 1;
-  const placed: PlacedModel = { ...model, position: [0, 0, 0], scale: factor, rotation: [0, 0, 0] };
+  const name = model.name ? uniqueName(scene, model.name, false) : uniqueName(scene, KIND_NAMES[model.type], true, scene.objects.length);
+  const placed: PlacedModel = { ...model, name, position: [0, 0, 0], scale: factor, rotation: [0, 0, 0] };
   if (!bounds) {
     placed.position = placeOnFloor(scene, 0.5, 0, meshes);
     return { ...scene, objects: [...scene.objects, placed] };
@@ -106,7 +110,7 @@ export function setMeshAsset(scene: Scene, index: number, asset: string): Scene 
 }
 
 export function addLight(scene: Scene): Scene {
-  const light = newLight();
+  const light = { ...newLight(), name: uniqueName(scene, 'Light', true, sceneLights(scene).length) };
   const lights = sceneLights(scene);
   if (lights.length > 0) light.position = add(light.position!, [-2 * lights.length, 0, 0]);
   return { ...scene, lights: [...lights, light] };
@@ -130,7 +134,7 @@ export function addAreaLight(scene: Scene): Scene {
   const floor = floorHeight(scene);
   const aim = add(target, [step[0] + 2 * others, 0, step[2]]).map(roundNumber) as Vec3;
   aim[1] = floor;
-  const light = newAreaLight([aim[0], Math.max(target[1], floor) + AREA_LIGHT_HEIGHT, aim[2]], aim);
+  const light = { ...newAreaLight([aim[0], Math.max(target[1], floor) + AREA_LIGHT_HEIGHT, aim[2]], aim), name: uniqueName(scene, 'Area light', true, lights.length) };
   return { ...scene, lights: [...lights, light] };
 }
 
@@ -146,7 +150,7 @@ export function duplicateObject(scene: Scene, index: number): Scene {
   const original = scene.objects[index];
   if (!original) return scene;
   const objects = [...scene.objects];
-  objects.splice(index + 1, 0, copyAside(original));
+  objects.splice(index + 1, 0, withName(copyAside(original), copyName(scene, original.name, original.type)));
   return { ...scene, objects };
 }
 
@@ -167,7 +171,7 @@ export function duplicateLight(scene: Scene, index: number): Scene {
   const original = lights[index];
   if (!original) return scene;
   const next = [...lights];
-  next.splice(index + 1, 0, lightAside(original));
+  next.splice(index + 1, 0, withName(lightAside(original), copyName(scene, original.name, original.type)));
   return { ...scene, lights: next };
 }
 

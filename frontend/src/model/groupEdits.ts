@@ -2,6 +2,7 @@
  * Edits of a multi-selection (objects and lights together): move, delete and duplicate them all in
  * one scene change, which the store makes one undo step. Pure, like the single edits in edits.ts.
  */
+import { copyName, withName } from './naming';
 import { sceneLights } from './defaults';
 import { copyAside, lightAside, nudgeTarget } from './edits';
 import type { SceneItem } from './selection';
@@ -29,8 +30,10 @@ export function duplicateItems(scene: Scene, items: readonly SceneItem[]): { sce
   const lights = sceneLights(scene);
   const objectCopies = [...indices(items, 'object')].filter((i) => scene.objects[i]).map((i) => copyAside(scene.objects[i]));
   const lightCopies = [...indices(items, 'light')].filter((i) => lights[i]).map((i) => lightAside(lights[i]));
-  const next: Scene = { ...scene, objects: [...scene.objects, ...objectCopies] };
-  if (lightCopies.length > 0) next.lights = [...lights, ...lightCopies];
+  const next: Scene = { ...scene, objects: [...scene.objects] };
+  // each copy named apart from the scene and from the copies before it
+  for (const copy of objectCopies) next.objects.push(withName(copy, copyName(next, copy.name, copy.type)));
+  for (const copy of lightCopies) next.lights = [...sceneLights(next), withName(copy, copyName(next, copy.name, copy.type))];
   const copies: SceneItem[] = [
     ...objectCopies.map((_, k) => ({ kind: 'object' as const, index: scene.objects.length + k })),
     ...lightCopies.map((_, k) => ({ kind: 'light' as const, index: lights.length + k })),

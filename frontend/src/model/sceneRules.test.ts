@@ -34,6 +34,24 @@ describe('schemaProblems', () => {
     expect(schemaProblems({ image: { width: 4096, height: 1 }, camera: { fov: 179.9 }, objects: [{ type: 'sphere', radius: 1e-9 }] })).toEqual([]);
     expect(schemaProblems({ camera: { fov: 180 }, objects: [] })).toEqual([{ path: 'camera.fov', message: 'must be less than 180' }]);
   });
+
+  it('bounds every coordinate by the server’s 1e12 metres, in its words', () => {
+    const scene: Scene = {
+      camera: { position: [0, 0, 1e12], lookAt: [0, -2e12, 0] },
+      lights: [{ type: 'point', position: [1e300, 0, 0] }],
+      objects: [
+        { type: 'sphere', center: [0, 0, -1e12] },
+        { type: 'plane', point: [0, 1.5e12, 0] },
+        { type: 'mesh', obj: 'v 0 0 0', position: [0, 0, -1e13] },
+      ],
+    };
+    expect(schemaProblems(scene)).toEqual([
+      { path: 'camera.lookAt[1]', message: 'must be greater than or equal to -1e12' },
+      { path: 'lights[0].position[0]', message: 'must be less than or equal to 1e12' },
+      { path: 'objects[1].point[1]', message: 'must be less than or equal to 1e12' },
+      { path: 'objects[2].position[2]', message: 'must be greater than or equal to -1e12' },
+    ]);
+  });
 });
 
 describe('cameraProblems', () => {

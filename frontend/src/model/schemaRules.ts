@@ -34,12 +34,17 @@ function resolve(rule: Rule | undefined, value: unknown): Rule | undefined {
 }
 
 
+/** A bound as the server's message writes it: `4096`, `0.5`, and from a million on `1e6`, `1e12`, `-1e12`. */
+export function boundText(n: number): string {
+  return Math.abs(n) >= 1e6 ? n.toExponential().replace('e+', 'e') : String(n);
+}
+
 function checkNumber(rule: Rule, value: number, path: string, out: Problem[]): void {
   if (rule.type === 'integer' && !Number.isInteger(value)) out.push({ path, message: 'must be a whole number' });
-  if (isNumber(rule.exclusiveMinimum) && value <= rule.exclusiveMinimum) out.push({ path, message: `must be greater than ${rule.exclusiveMinimum}` });
-  if (isNumber(rule.minimum) && value < rule.minimum) out.push({ path, message: `must be greater than or equal to ${rule.minimum}` });
-  if (isNumber(rule.exclusiveMaximum) && value >= rule.exclusiveMaximum) out.push({ path, message: `must be less than ${rule.exclusiveMaximum}` });
-  if (isNumber(rule.maximum) && value > rule.maximum) out.push({ path, message: `must be less than or equal to ${rule.maximum}` });
+  if (isNumber(rule.exclusiveMinimum) && value <= rule.exclusiveMinimum) out.push({ path, message: `must be greater than ${boundText(rule.exclusiveMinimum)}` });
+  if (isNumber(rule.minimum) && value < rule.minimum) out.push({ path, message: `must be greater than or equal to ${boundText(rule.minimum)}` });
+  if (isNumber(rule.exclusiveMaximum) && value >= rule.exclusiveMaximum) out.push({ path, message: `must be less than ${boundText(rule.exclusiveMaximum)}` });
+  if (isNumber(rule.maximum) && value > rule.maximum) out.push({ path, message: `must be less than or equal to ${boundText(rule.maximum)}` });
 }
 
 function walk(rule: Rule | undefined, value: unknown, path: string, out: Problem[]): void {

@@ -166,6 +166,25 @@ describe('keyboard in the views', () => {
     expect(store().scene.lights?.[0].position).toEqual([2, 5.5, -1]);
     expect(store().past).toHaveLength(3);
   });
+
+  it('selects a glyph that Tab focuses, and leaves a press its own choice', () => {
+    resetSceneStore(SCENE);
+    render(<TopView />);
+    const view = screen.getByTestId('top-view');
+    act(() => within(view).getByTestId('object-1').focus());
+    expect(store().selection).toEqual({ kind: 'object', index: 1 });
+    act(() => within(view).getByTestId('light-0').focus());
+    expect(store().selection).toEqual({ kind: 'light', index: 0 });
+    expect(store().past).toHaveLength(0); // selecting is no edit
+    // a Shift-press takes the light out of a selection of two; the focus it gives does not put it back
+    act(() => store().toggleSelect({ kind: 'object', index: 0 }));
+    const light = within(view).getByTestId('light-0');
+    fireEvent.pointerDown(light, { button: 0, pointerId: 1, shiftKey: true });
+    act(() => within(view).getByTestId('object-1').focus());
+    act(() => light.focus());
+    fireEvent.pointerUp(light, { button: 0, pointerId: 1, shiftKey: true });
+    expect(store().selection).toEqual({ kind: 'object', index: 0 });
+  });
 });
 
 describe('meshes in the views', () => {

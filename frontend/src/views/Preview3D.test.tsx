@@ -1,7 +1,7 @@
 import { act, render, screen, within } from '@testing-library/react';
 import userEvent from '@testing-library/user-event';
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { fakeSockets } from '../live/fakes';
+import { fakeSockets } from '../test/liveFakes';
 import type { Scene } from '../model/types';
 import { recordingContext } from '../test/renderFakes';
 import { useSceneStore } from '../store/sceneStore';
@@ -67,7 +67,11 @@ describe('Preview3D', () => {
     act(() => screen.getByRole('button', { name: 'Ray traced' }).click());
     expect(screen.getByRole('button', { name: 'Ray traced' })).toHaveAttribute('aria-pressed', 'true');
     expect(screen.getByTestId('ray-traced-view')).toBeInTheDocument();
-    expect(screen.getByTestId('preview-3d')).not.toBeVisible();
+    // the three.js view stays, as the handles' transparent layer over the live image
+    expect(screen.getByTestId('preview-3d')).toHaveAttribute('data-mode', 'raytraced');
+    expect(screen.getByTestId('preview-3d')).toHaveClass('is-overlay');
+    expect(screen.getByRole('group', { name: '3D handles' })).toBeInTheDocument();
+    expect(screen.queryByRole('note')).toBeNull(); // no WebGL here: nothing to say over the image
     expect(sockets.opened).toHaveLength(1);
 
     rerender(<Preview3D shown={false} onFieldErrors={onFieldErrors} socketFactory={sockets.factory} />); // the JSON tab

@@ -7,6 +7,7 @@ import { sceneToThree } from '../model/toThree';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
 import { handleCallbacks, handlesFor, selectionBall } from './previewSelection';
 import { PreviewEngine, type PreviewMode } from './previewEngine';
+import { nudgeSelection, nudgeStep } from './viewNudge';
 
 /** What the preview shows: one of the three.js cameras, or the server's ray-traced frames. */
 export type PreviewView = PreviewMode | 'raytraced';
@@ -26,9 +27,10 @@ export interface Preview3DProps {
  * up, vertical fov, aspect = image width / height, letterboxed); "Orbit view" lets you look
  * around with the mouse and shows the render camera's frustum. Frames are drawn on demand: the
  * store is followed by a subscription, never by per-frame React state. "Ray traced" shows the
- * server's live render instead (its socket open only while that view is shown); the three.js
- * scene is not updated meanwhile. A click selects what is under it; the selection carries move,
- * rotate or scale handles (W, E, R), one drag being one undo step; F frames the selection.
+ * server's live render instead (its socket open only while that view is shown), with the same
+ * picking and handles over it (through the render camera, as the Camera view). A click selects
+ * what is under it; the selection carries move, rotate or scale handles (W, E, R), one drag being
+ * one undo step that the live image follows; F frames the selection (in the orbit view).
  */
 export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Preview3DProps) {
   const host = useRef<HTMLDivElement>(null);
@@ -50,8 +52,17 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
     }
     engine.current = preview;
     element.appendChild(preview.canvas);
+    // focusable, so that the arrow keys move the selection here as in the plan views
+    preview.canvas.tabIndex = 0;
+    preview.canvas.setAttribute('role', 'img');
+    preview.canvas.setAttribute('aria-label', 'The scene in 3D: click to select, arrow keys move the selection (Shift+Up and Down: up and down)');
+    const onKeyDown = (event: KeyboardEvent) => {
+      const { forward, right } = preview.viewAxes();
+      const by = nudgeStep(event.key, event.shiftKey, forward, right, useSceneStore.getState().gridSize);
+      if (by && !event.ctrlKey && !event.metaKey && !event.altKey && nudgeSelection(by)) event.preventDefault();
+    };
+    preview.canvas.addEventListener('keydown', onKeyDown);
     const update = () => {
-      if (viewRef.current === 'raytraced') return;
       const state = useSceneStore.getState();
       const scene = selectDisplayScene(state);
       preview.update(sceneToThree(scene, state.selection, (mesh) => meshCache.get(mesh), state.selectedItems));
@@ -78,17 +89,16 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
       unsubscribe();
       unsubscribeMeshes();
       observer?.disconnect();
+      preview.canvas.removeEventListener('keydown', onKeyDown);
       preview.dispose();
       engine.current = null;
     };
   }, []);
 
   useEffect(() => {
-    const was = viewRef.current;
     viewRef.current = view;
-    if (view === 'raytraced') return;
-    if (was === 'raytraced') push.current(); // the scene may have changed while it was not followed
-    engine.current?.setMode(view);
+    // over the live image, the engine draws only the handles, through the render camera
+    engine.current?.setMode(view === 'raytraced' ? 'overlay' : view);
   }, [view]);
 
   const viewButton = (id: PreviewView, label: string, title: string) => (
@@ -101,7 +111,7 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
     <section className="preview3d" aria-label="3D preview">
       <header className="panel-header">
         <h2>3D preview</h2>
-        {view !== 'raytraced' && <HandleModes />}
+        <HandleModes />
         <div className="segmented" role="group" aria-label="Preview camera">
           {viewButton('camera', 'Camera view', 'See exactly what the render camera frames')}
           {viewButton('orbit', 'Orbit view', 'Look around freely: drag to orbit, wheel to zoom, right-drag to pan')}
@@ -126,13 +136,15 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
           </>
         )}
       </header>
-      {view === 'raytraced' && shown && <RayTracedView onFieldErrors={onFieldErrors} socketFactory={socketFactory} />}
-      <div className="preview3d__viewport" ref={host} data-testid="preview-3d" data-mode={view} hidden={view === 'raytraced'}>
-        {failure && (
-          <p className="preview3d__failure" role="note">
-            The 3D preview needs WebGL, which this browser does not offer ({failure}). The top and side views and rendering still work.
-          </p>
-        )}
+      <div className="preview3d__stage">
+        {view === 'raytraced' && shown && <RayTracedView onFieldErrors={onFieldErrors} socketFactory={socketFactory} />}
+        <div className={view === 'raytraced' ? 'preview3d__viewport is-overlay' : 'preview3d__viewport'} ref={host} data-testid="preview-3d" data-mode={view}>
+          {failure && view !== 'raytraced' && (
+            <p className="preview3d__failure" role="note">
+              The 3D preview needs WebGL, which this browser does not offer ({failure}). The top and side views and rendering still work.
+            </p>
+          )}
+        </div>
       </div>
     </section>
   );

@@ -3,7 +3,7 @@
  * and an orbit camera, shows the scene's content ({@link PreviewContent}), and draws one frame
  * only when asked (scene change, resize, orbit movement).
  */
-import { BasicShadowMap, Color, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import { BasicShadowMap, Color, PerspectiveCamera, Scene, Vector3, WebGLRenderer } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { frameBall, type GizmoMode, type GizmoPose } from '../model/gizmo';
 import type { Vec3 } from '../model/types';
@@ -11,7 +11,12 @@ import { applyRenderCamera, letterbox, type ThreeSceneDescriptor } from '../mode
 import { PreviewContent } from './previewContent';
 import { PreviewHandles, type HandleCallbacks } from './previewHandles';
 
-export type PreviewMode = 'camera' | 'orbit';
+/**
+ * What the engine draws: the scene through the render camera or the orbit camera, or (`overlay`)
+ * only the handles, on a transparent canvas through the render camera, over the live ray-traced
+ * image; its picking still finds the scene's objects (hidden, not removed).
+ */
+export type PreviewMode = 'camera' | 'orbit' | 'overlay';
 
 /**
  * OrbitControls' speeds, below its defaults (1, 1, 1): with them a drag across the view turned it
@@ -43,8 +48,9 @@ export class PreviewEngine {
   /** Throws when WebGL 2 is not available. */
   constructor(callbacks: Pick<HandleCallbacks, 'onPick' | 'onPose' | 'onRelease'> = { onPick: () => {}, onPose: () => {}, onRelease: () => {} }) {
     if (!webgl2Available()) throw new Error('WebGL 2 is not available');
-    // preserveDrawingBuffer: the picture can be read back (the browser test checks its shadows)
-    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    // preserveDrawingBuffer: the picture can be read back (the browser test checks its shadows);
+    // alpha: over the live image only the handles are opaque
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
     this.renderer.setPixelRatio(Math.min(2, globalThis.devicePixelRatio || 1));
     this.canvas = this.renderer.domElement;
     this.scene.add(this.content.root);
@@ -109,6 +115,8 @@ export class PreviewEngine {
     this.mode = mode;
     this.controls.enabled = mode === 'orbit';
     this.handles.setCamera(mode === 'orbit' ? this.orbitCamera : this.renderCamera);
+    this.content.root.visible = mode !== 'overlay';
+    this.scene.background = mode === 'overlay' ? null : this.background;
     if (mode === 'orbit' && !this.orbitPlaced) this.resetOrbit();
     if (this.last) this.update(this.last);
   }
@@ -122,6 +130,15 @@ export class PreviewEngine {
     };
   }
 
+  /** Where the camera shown looks (`forward`) and its right, in world coordinates (the arrow keys' axes). */
+  viewAxes(): { forward: Vec3; right: Vec3 } {
+    const camera = this.mode === 'orbit' ? this.orbitCamera : this.renderCamera;
+    camera.updateMatrixWorld();
+    const forward = camera.getWorldDirection(new Vector3());
+    const right = new Vector3().crossVectors(forward, camera.up).normalize();
+    return { forward: forward.toArray() as Vec3, right: right.toArray() as Vec3 };
+  }
+
   /** Puts the orbit camera back where the render camera is, looking at its target. */
   resetOrbit(): void {
     if (!this.last) return;
@@ -133,7 +150,7 @@ export class PreviewEngine {
     this.requestRender();
   }
 
-  /** The container's size; in camera mode the canvas is letterboxed to the image aspect. */
+  /** The container's size; in camera and overlay mode the canvas is letterboxed to the image aspect. */
   resize(width: number, height: number): void {
     this.size = { width: Math.max(1, width), height: Math.max(1, height) };
     this.layout();
@@ -143,12 +160,12 @@ export class PreviewEngine {
     if (this.frame) return;
     this.frame = requestAnimationFrame(() => {
       this.frame = 0;
-      if (this.stale) {
+      if (this.stale && this.mode !== 'overlay') {
         this.stale = false;
         this.renderer.shadowMap.needsUpdate = true;
         this.content.takeReflections(this.renderer, this.scene, this.handles.helpers());
       }
-      this.renderer.render(this.scene, this.mode === 'camera' ? this.renderCamera : this.orbitCamera);
+      this.renderer.render(this.scene, this.mode === 'orbit' ? this.orbitCamera : this.renderCamera);
     });
   }
 
@@ -164,7 +181,7 @@ export class PreviewEngine {
 
   private layout(): void {
     const { width, height } = this.size;
-    const box = this.mode === 'camera' && this.last ? letterbox(width, height, this.last.camera.aspect) : { width, height, left: 0, top: 0 };
+    const box = this.mode !== 'orbit' && this.last ? letterbox(width, height, this.last.camera.aspect) : { width, height, left: 0, top: 0 };
     this.renderer.setSize(Math.max(1, Math.floor(box.width)), Math.max(1, Math.floor(box.height)));
     this.canvas.style.left = `${box.left}px`;
     this.canvas.style.top = `${box.top}px`;

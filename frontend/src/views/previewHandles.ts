@@ -31,7 +31,8 @@ export class PreviewHandles {
   private readonly controls: TransformControls;
   private readonly stand = new Object3D();
   private readonly raycaster = new Raycaster();
-  private press: { x: number; y: number } | null = null;
+  /** Where the left button went down; `moved` once the pointer went further than a click may. */
+  private press: { x: number; y: number; moved: boolean } | null = null;
   private handled = false;
 
   constructor(
@@ -54,6 +55,7 @@ export class PreviewHandles {
       else callbacks.onRelease();
     });
     canvas.addEventListener('pointerdown', this.onDown);
+    canvas.addEventListener('pointermove', this.onMove);
     canvas.addEventListener('pointerup', this.onUp);
   }
 
@@ -96,6 +98,7 @@ export class PreviewHandles {
 
   dispose(): void {
     this.canvas.removeEventListener('pointerdown', this.onDown);
+    this.canvas.removeEventListener('pointermove', this.onMove);
     this.canvas.removeEventListener('pointerup', this.onUp);
     this.controls.detach();
     this.controls.getHelper().removeFromParent();
@@ -115,13 +118,18 @@ export class PreviewHandles {
   private readonly onDown = (event: PointerEvent) => {
     // TransformControls hears the press first: on a handle it is already dragging
     this.handled = this.controls.dragging;
-    this.press = event.button === 0 ? { x: event.clientX, y: event.clientY } : null;
+    this.press = event.button === 0 ? { x: event.clientX, y: event.clientY, moved: false } : null;
+  };
+
+  // an orbit drag that comes back to where it started is still a drag, not a click
+  private readonly onMove = (event: PointerEvent) => {
+    if (this.press && Math.hypot(event.clientX - this.press.x, event.clientY - this.press.y) > CLICK_SLOP) this.press.moved = true;
   };
 
   private readonly onUp = (event: PointerEvent) => {
     const press = this.press;
     this.press = null;
-    if (!press || this.handled || Math.hypot(event.clientX - press.x, event.clientY - press.y) > CLICK_SLOP) return;
+    if (!press || this.handled || press.moved || Math.hypot(event.clientX - press.x, event.clientY - press.y) > CLICK_SLOP) return;
     this.callbacks.onPick(this.pick(event.clientX, event.clientY), event.shiftKey || event.ctrlKey || event.metaKey);
   };
 

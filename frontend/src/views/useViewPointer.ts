@@ -1,8 +1,8 @@
-import { useCallback, useEffect, useLayoutEffect, useRef, useState, type KeyboardEvent as ReactKeyboardEvent, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
+import { useCallback, useEffect, useLayoutEffect, useRef, useState, type FocusEvent as ReactFocusEvent, type KeyboardEvent as ReactKeyboardEvent, type PointerEvent as ReactPointerEvent, type RefObject } from 'react';
 import { nudgeTarget, positionOf } from '../model/edits';
 import { panBy, pixelStep, snapToGrid, svgToWorld, VIEW_AXES, worldToSvg, zoomAbout, type Vec2, type ViewKind, type ViewTransform } from '../model/projection';
 import { itemsInRect } from '../model/boxSelect';
-import { inItems, type DragTarget } from '../model/selection';
+import { inItems, sameSelection, type DragTarget } from '../model/selection';
 import type { Vec3 } from '../model/types';
 import { useSceneStore } from '../store/sceneStore';
 
@@ -45,6 +45,8 @@ export function parseTarget(value: string | undefined): DragTarget | null {
  */
 export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement | null>, t: ViewTransform) {
   const gesture = useRef<Gesture | null>(null);
+  /** True between a press and its release (focus a press gives is not a keyboard selection). */
+  const pressed = useRef(false);
   const view = useRef(t);
   useLayoutEffect(() => {
     view.current = t;
@@ -73,6 +75,7 @@ export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement |
   }, [kind, svgRef, local]);
 
   const onPointerDown = (event: ReactPointerEvent<SVGSVGElement>) => {
+    pressed.current = true;
     if (gesture.current || (event.button !== 0 && event.button !== 1)) return;
     const store = useSceneStore.getState();
     const hit = (event.target as Element).closest?.('[data-target]') as SVGElement | null;
@@ -182,14 +185,33 @@ export function useViewPointer(kind: ViewKind, svgRef: RefObject<SVGSVGElement |
     event.preventDefault();
   };
 
+  /**
+   * Focus reaching a glyph from the keyboard (Tab) selects it, as a click does; focus a press gives
+   * is left to the press (a Shift-click that takes a glyph out of the selection keeps it out).
+   */
+  const onFocus = (event: ReactFocusEvent<SVGSVGElement>) => {
+    if (pressed.current) return;
+    const target = parseTarget(((event.target as Element).closest?.('[data-target]') as SVGElement | null)?.dataset.target);
+    const store = useSceneStore.getState();
+    if (!target || sameSelection(store.selection, target) || inItems(store.selectedItems, target)) return;
+    store.select(target);
+  };
+
   return {
     marquee,
     handlers: {
       onKeyDown,
+      onFocus,
       onPointerDown,
       onPointerMove,
-      onPointerUp: (event: ReactPointerEvent<SVGSVGElement>) => finish(event, false),
-      onPointerCancel: (event: ReactPointerEvent<SVGSVGElement>) => finish(event, true),
+      onPointerUp: (event: ReactPointerEvent<SVGSVGElement>) => {
+        pressed.current = false;
+        finish(event, false);
+      },
+      onPointerCancel: (event: ReactPointerEvent<SVGSVGElement>) => {
+        pressed.current = false;
+        finish(event, true);
+      },
     },
   };
 }

@@ -93,6 +93,8 @@ class SceneContractAgreementTest {
     /** Valid scenes at the edges of the rules. */
     static Stream<Arguments> edgeScenes() {
         return Stream.of(
+                edge("coordinates at the bound", "{'camera':{'position':[1e12,0,0],'lookAt':[-1e12,0,0]},"
+                        + "'lights':[{'type':'point','position':[0,1e12,0]}],'objects':[{'type':'sphere','center':[0,0,-1e12]}]}"),
                 edge("every limit reached", "{'image':{'width':1024,'height':1024},'render':{'samples':16,'maxDepth':16},"
                         + "'lights':[" + repeat("{'type':'point'}", 8) + "],'objects':[" + repeat("{'type':'sphere'}", 30)
                         + "]}"),
@@ -134,6 +136,11 @@ class SceneContractAgreementTest {
         return Stream.of(
                 // structure and required fields
                 invalid("not an object", "['objects']", ""),
+                // coordinates: at most 1e12 m from the origin (Coordinates), infinity included
+                invalid("a coordinate beyond 1e12", object("{'type':'sphere','center':[0,1e300,0]}"), "objects[0].center[1]"),
+                invalid("a camera target below -1e12", "{'camera':{'lookAt':[0,0,-2e12]},'objects':[]}", "camera.lookAt[2]"),
+                invalid("a number beyond double range (1e400)", object("{'type':'sphere','center':[0,1e400,0]}"),
+                        "objects[0].center[1]"),
                 invalid("objects missing", "{'name':'x'}", "objects"),
                 invalid("objects not an array", "{'objects':{'type':'sphere'}}", "objects"),
                 invalid("an object that is null", "{'objects':[null]}", "objects[0]"),
@@ -259,8 +266,6 @@ class SceneContractAgreementTest {
                 invalid("more triangles than the limit, all meshes together", "{'objects':["
                         + "{'type':'mesh','obj':'" + fan(2600) + "'},{'type':'mesh','obj':'" + fan(2600) + "'}]}",
                         "objects[1].obj"),
-                invalid("a number beyond double range (1e400)", object("{'type':'sphere','center':[0,1e400,0]}"),
-                        "objects[0].center[1]"),
                 invalid("a whole number written with a fraction part (64.0)", "{'image':{'width':64.0},'objects':[]}",
                         "image.width"),
                 invalid("width x height x samples over the render budget, each within its limit",

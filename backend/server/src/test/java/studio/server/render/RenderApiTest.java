@@ -219,6 +219,22 @@ class RenderApiTest {
     }
 
     @Test
+    void coordinatesBeyondTheBoundGive400NamingTheField() throws Exception {
+        Map<String, Map<String, Object>> bad = Map.of(
+                "objects[0].center[0]", Map.of("objects", List.of(Map.of("type", "sphere", "center", List.of(1e300, 0, 0)))),
+                "camera.lookAt[2]", Map.of("camera", Map.of("lookAt", List.of(0, 0, -2e12))),
+                "lights[0].position[1]", Map.of("lights", List.of(Map.of("type", "point", "position", List.of(0, 1.5e12, 0)))));
+        for (Map.Entry<String, Map<String, Object>> e : bad.entrySet()) {
+            AsyncMvc.perform(mvc, post("/api/render").contentType(MediaType.APPLICATION_JSON).content(tinyWith(e.getValue())))
+                    .andExpect(status().isBadRequest())
+                    .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                    .andExpect(jsonPath("$.errors.length()").value(1))
+                    .andExpect(jsonPath("$.errors[0].field").value(e.getKey()))
+                    .andExpect(jsonPath("$.errors[0].message").value(containsString("1e12")));
+        }
+    }
+
+    @Test
     void badSoftLightFieldsGive400NamingTheField() throws Exception {
         Map<String, Map<String, Object>> bad = Map.of(
                 "lights[0].radius", Map.of("type", "point", "radius", -1),

@@ -8,6 +8,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
 import org.hibernate.validator.constraints.CodePointLength;
 
 import jakarta.validation.constraints.DecimalMax;
+import jakarta.validation.constraints.DecimalMin;
 import jakarta.validation.constraints.NotNull;
 import jakarta.validation.constraints.Pattern;
 import jakarta.validation.constraints.Positive;
@@ -24,7 +25,7 @@ public sealed interface LightDto {
      * A {@code radius} above 0 (metres) makes it a sphere of light, with soft shadows.
      */
     record Point(
-            @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
+            @Vector List<@NotNull(message = "must be a number") @DecimalMin(Coordinates.MIN) @DecimalMax(Coordinates.MAX) @Finite Double> position,
             @Pattern(regexp = SceneDto.COLOR, message = SceneDto.COLOR_MESSAGE) String color,
             @PositiveOrZero @DecimalMax("1e6") @Finite Double intensity,
             Boolean falloff,
@@ -39,9 +40,9 @@ public sealed interface LightDto {
      * a point on its axis as a point light would, and less by the cosine away from its axis.
      */
     record Area(
-            @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
+            @Vector List<@NotNull(message = "must be a number") @DecimalMin(Coordinates.MIN) @DecimalMax(Coordinates.MAX) @Finite Double> position,
             @Pair List<@NotNull(message = "must be a number") @Positive @DecimalMax("1e6") @Finite Double> size,
-            @Vector List<@NotNull(message = "must be a number") @Finite Double> lookAt,
+            @Vector List<@NotNull(message = "must be a number") @DecimalMin(Coordinates.MIN) @DecimalMax(Coordinates.MAX) @Finite Double> lookAt,
             @Pattern(regexp = SceneDto.COLOR, message = SceneDto.COLOR_MESSAGE) String color,
             @PositiveOrZero @DecimalMax("1e6") @Finite Double intensity,
             Boolean falloff,

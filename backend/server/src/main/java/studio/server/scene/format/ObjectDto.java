@@ -8,6 +8,8 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
 import org.hibernate.validator.constraints.CodePointLength;
 
 import jakarta.validation.Valid;
+import jakarta.validation.constraints.DecimalMax;
+import jakarta.validation.constraints.DecimalMin;
 import jakarta.validation.constraints.NotNull;
 import jakarta.validation.constraints.Pattern;
 import jakarta.validation.constraints.Positive;
@@ -29,7 +31,7 @@ public sealed interface ObjectDto {
     MaterialDto material();
 
     record Sphere(
-            @Vector List<@NotNull(message = "must be a number") @Finite Double> center,
+            @Vector List<@NotNull(message = "must be a number") @DecimalMin(Coordinates.MIN) @DecimalMax(Coordinates.MAX) @Finite Double> center,
             @Positive @Finite Double radius,
             @Valid MaterialDto material,
             @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
@@ -37,7 +39,7 @@ public sealed interface ObjectDto {
 
     /** A box: centre, full size along its own axes, rotation in degrees about x, y, z (order XYZ, as three.js). */
     record Box(
-            @Vector List<@NotNull(message = "must be a number") @Finite Double> center,
+            @Vector List<@NotNull(message = "must be a number") @DecimalMin(Coordinates.MIN) @DecimalMax(Coordinates.MAX) @Finite Double> center,
             @Vector List<@NotNull(message = "must be a number") @Positive @Finite Double> size,
             @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
             @Valid MaterialDto material,
@@ -46,7 +48,7 @@ public sealed interface ObjectDto {
 
     /** An infinite plane through {@code point} with the given normal (need not be unit length). */
     record Plane(
-            @Vector List<@NotNull(message = "must be a number") @Finite Double> point,
+            @Vector List<@NotNull(message = "must be a number") @DecimalMin(Coordinates.MIN) @DecimalMax(Coordinates.MAX) @Finite Double> point,
             @Vector @NonZeroVector List<@NotNull(message = "must be a number") @Finite Double> normal,
             @Valid MaterialDto material,
             @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {
@@ -63,7 +65,7 @@ public sealed interface ObjectDto {
             String obj,
             @Pattern(regexp = MeshFileNames.RULE, message = MeshFileNames.MESSAGE) String file,
             @Pattern(regexp = AssetIds.RULE, message = AssetIds.MESSAGE) String asset,
-            @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
+            @Vector List<@NotNull(message = "must be a number") @DecimalMin(Coordinates.MIN) @DecimalMax(Coordinates.MAX) @Finite Double> position,
             @Positive @Finite Double scale,
             @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
             @Valid MaterialDto material,
@@ -80,7 +82,7 @@ public sealed interface ObjectDto {
     record Gltf(
             @Pattern(regexp = GltfFileNames.RULE, message = GltfFileNames.MESSAGE) String file,
             @Pattern(regexp = AssetIds.RULE, message = AssetIds.MESSAGE) String asset,
-            @Vector List<@NotNull(message = "must be a number") @Finite Double> position,
+            @Vector List<@NotNull(message = "must be a number") @DecimalMin(Coordinates.MIN) @DecimalMax(Coordinates.MAX) @Finite Double> position,
             @Positive @Finite Double scale,
             @Vector List<@NotNull(message = "must be a number") @Finite Double> rotation,
             @CodePointLength(max = 200, message = "must be at most 200 characters") String name) implements ObjectDto {

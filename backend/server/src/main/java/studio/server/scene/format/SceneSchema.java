@@ -224,8 +224,12 @@ public final class SceneSchema {
 
     private static Number number(String decimal) {
         BigDecimal value = new BigDecimal(decimal);
-        return value.scale() <= 0 && value.abs().compareTo(BigDecimal.valueOf(Integer.MAX_VALUE)) < 0
-                ? (Number) value.intValueExact() : (Number) value.doubleValue();
+        if (value.stripTrailingZeros().scale() <= 0 && value.abs().compareTo(BigDecimal.valueOf(Integer.MAX_VALUE)) < 0) {
+            return value.intValueExact();
+        }
+        // a whole bound past int (the coordinates' 1e12) as a whole number, as the OpenAPI document writes it
+        return value.stripTrailingZeros().scale() <= 0 && value.abs().compareTo(BigDecimal.valueOf(Long.MAX_VALUE)) < 0
+                ? (Number) value.longValueExact() : (Number) value.doubleValue();
     }
 
     private static <A extends Annotation> A annotation(AnnotatedElement element, Class<A> type) {

@@ -46,9 +46,17 @@ final class SceneConstraints {
                     new FieldRule.Finite())),
             entry("SceneDto.camera", List.of()),
             entry("CameraDto.position", List.of(new FieldRule.Vector())),
-            entry("CameraDto.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("CameraDto.position[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("CameraDto.lookAt", List.of(new FieldRule.Vector())),
-            entry("CameraDto.lookAt[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("CameraDto.lookAt[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("CameraDto.up", List.of(new FieldRule.Vector(), new FieldRule.NonZeroVector())),
             entry("CameraDto.up[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
             entry("CameraDto.fov", List.of(
@@ -72,7 +80,11 @@ final class SceneConstraints {
             entry("SceneDto.lights", List.of()),
             entry("SceneDto.lights[]", List.of(new FieldRule.NotNull())),
             entry("LightDto.Point.position", List.of(new FieldRule.Vector())),
-            entry("LightDto.Point.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("LightDto.Point.position[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("LightDto.Point.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
             entry("LightDto.Point.intensity", List.of(
                     new FieldRule.PositiveOrZero(),
@@ -85,7 +97,11 @@ final class SceneConstraints {
                     new FieldRule.Finite())),
             entry("LightDto.Point.name", List.of(new FieldRule.CodePointLength(0, 200))),
             entry("LightDto.Area.position", List.of(new FieldRule.Vector())),
-            entry("LightDto.Area.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("LightDto.Area.position[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("LightDto.Area.size", List.of(new FieldRule.Pair())),
             entry("LightDto.Area.size[]", List.of(
                     new FieldRule.NotNull(),
@@ -93,7 +109,11 @@ final class SceneConstraints {
                     new FieldRule.DecimalMax("1e6", true),
                     new FieldRule.Finite())),
             entry("LightDto.Area.lookAt", List.of(new FieldRule.Vector())),
-            entry("LightDto.Area.lookAt[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("LightDto.Area.lookAt[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("LightDto.Area.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
             entry("LightDto.Area.intensity", List.of(
                     new FieldRule.PositiveOrZero(),
@@ -105,7 +125,11 @@ final class SceneConstraints {
             entry("SceneDto.objects", List.of(new FieldRule.NotNull())),
             entry("SceneDto.objects[]", List.of(new FieldRule.NotNull())),
             entry("ObjectDto.Sphere.center", List.of(new FieldRule.Vector())),
-            entry("ObjectDto.Sphere.center[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Sphere.center[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("ObjectDto.Sphere.radius", List.of(new FieldRule.Positive(), new FieldRule.Finite())),
             entry("ObjectDto.Sphere.material", List.of()),
             entry("MaterialDto.Flat.color", List.of(new FieldRule.Pattern("#[0-9a-fA-F]{6}"))),
@@ -183,7 +207,11 @@ final class SceneConstraints {
             entry("MaterialDto.Glass.texture", List.of()),
             entry("ObjectDto.Sphere.name", List.of(new FieldRule.CodePointLength(0, 200))),
             entry("ObjectDto.Box.center", List.of(new FieldRule.Vector())),
-            entry("ObjectDto.Box.center[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Box.center[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("ObjectDto.Box.size", List.of(new FieldRule.Vector())),
             entry("ObjectDto.Box.size[]", List.of(
                     new FieldRule.NotNull(),
@@ -194,7 +222,11 @@ final class SceneConstraints {
             entry("ObjectDto.Box.material", List.of()),
             entry("ObjectDto.Box.name", List.of(new FieldRule.CodePointLength(0, 200))),
             entry("ObjectDto.Plane.point", List.of(new FieldRule.Vector())),
-            entry("ObjectDto.Plane.point[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Plane.point[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("ObjectDto.Plane.normal", List.of(new FieldRule.Vector(), new FieldRule.NonZeroVector())),
             entry("ObjectDto.Plane.normal[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
             entry("ObjectDto.Plane.material", List.of()),
@@ -204,7 +236,11 @@ final class SceneConstraints {
                     new FieldRule.Pattern("(?!.*\\.\\.)(?!.*/\\.)(?!.*//)[A-Za-z0-9_-][A-Za-z0-9._/-]*\\.obj"))),
             entry("ObjectDto.Mesh.asset", List.of(new FieldRule.Pattern("sha256-[0-9a-f]{64}"))),
             entry("ObjectDto.Mesh.position", List.of(new FieldRule.Vector())),
-            entry("ObjectDto.Mesh.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Mesh.position[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("ObjectDto.Mesh.scale", List.of(new FieldRule.Positive(), new FieldRule.Finite())),
             entry("ObjectDto.Mesh.rotation", List.of(new FieldRule.Vector())),
             entry("ObjectDto.Mesh.rotation[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
@@ -214,7 +250,11 @@ final class SceneConstraints {
                     new FieldRule.Pattern("(?!.*\\.\\.)(?!.*/\\.)(?!.*//)[A-Za-z0-9_-][A-Za-z0-9._/-]*\\.(glb|gltf)"))),
             entry("ObjectDto.Gltf.asset", List.of(new FieldRule.Pattern("sha256-[0-9a-f]{64}"))),
             entry("ObjectDto.Gltf.position", List.of(new FieldRule.Vector())),
-            entry("ObjectDto.Gltf.position[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),
+            entry("ObjectDto.Gltf.position[]", List.of(
+                    new FieldRule.NotNull(),
+                    new FieldRule.DecimalMin("-1e12", true),
+                    new FieldRule.DecimalMax("1e12", true),
+                    new FieldRule.Finite())),
             entry("ObjectDto.Gltf.scale", List.of(new FieldRule.Positive(), new FieldRule.Finite())),
             entry("ObjectDto.Gltf.rotation", List.of(new FieldRule.Vector())),
             entry("ObjectDto.Gltf.rotation[]", List.of(new FieldRule.NotNull(), new FieldRule.Finite())),

@@ -49,7 +49,8 @@ class SceneConstraintsTest {
         assertThat(source.rules()).containsEntry("ObjectDto.Sphere.radius",
                 List.of(new FieldRule.Positive(), new FieldRule.Finite()));
         assertThat(source.rules()).containsEntry("ObjectDto.Sphere.center[]",
-                List.of(new FieldRule.NotNull(), new FieldRule.Finite()));
+                List.of(new FieldRule.NotNull(), new FieldRule.DecimalMin("-1e12", true),
+                        new FieldRule.DecimalMax("1e12", true), new FieldRule.Finite()));
         assertThat(source.subtypes()).containsKey(studio.server.scene.format.ObjectDto.class);
         assertThat(source.rules().size()).isGreaterThan(40);
     }

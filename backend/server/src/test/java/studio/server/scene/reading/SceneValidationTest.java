@@ -136,13 +136,32 @@ public class SceneValidationTest {
         List<FieldProblem> problems = problems(withObject("{'type':'sphere','center':[0,0,1e400],'radius':1e400}"));
         assertThat(problems).containsExactly(
                 new FieldProblem("objects[0].center[2]", "must be a finite number"),
+                new FieldProblem("objects[0].center[2]", "must be less than or equal to 1e12"),
                 new FieldProblem("objects[0].radius", "must be a finite number"));
     }
 
     @Test
+    void boundsEveryCoordinateByTheEnginesTestedRange() {
+        assertOnlyProblem(withObject("{'type':'sphere','center':[0,0,1e300]}"), "objects[0].center[2]",
+                "must be less than or equal to 1e12");
+        assertOnlyProblem(withObject("{'type':'plane','point':[-1.000001e12,0,0]}"), "objects[0].point[0]",
+                "must be greater than or equal to -1e12");
+        assertOnlyProblem(withObject("{'type':'gltf','asset':'sha256-" + "0".repeat(64) + "','position':[0,2e12,0]}"),
+                "objects[0].position[1]", "must be less than or equal to 1e12");
+        assertOnlyProblem("{'camera':{'position':[0,0,5e12]},'objects':[]}", "camera.position[2]",
+                "must be less than or equal to 1e12");
+        assertOnlyProblem("{'lights':[{'type':'area','lookAt':[0,-3e12,0]}],'objects':[]}", "lights[0].lookAt[1]",
+                "must be greater than or equal to -1e12");
+        assertThatCode(() -> READER.read(json(withObject("{'type':'sphere','center':[1e12,-1e12,0]}"))))
+                .doesNotThrowAnyException();
+    }
+
+    @Test
     void rejectsNegativeInfinityInCamera() {
-        assertOnlyProblem("{'camera':{'position':[-1e999,0,0]},'objects':[]}", "camera.position[0]",
-                "must be a finite number");
+        // infinity is also beyond the coordinates' bound, and both are said
+        assertThat(problems("{'camera':{'position':[-1e999,0,0]},'objects':[]}")).containsExactly(
+                new FieldProblem("camera.position[0]", "must be a finite number"),
+                new FieldProblem("camera.position[0]", "must be greater than or equal to -1e12"));
     }
 
     @Test

@@ -8,6 +8,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
+import studio.server.scene.format.FieldProblem;
+
 /** The bad forms of a point light's radius and of an area light's fields, each named by its JSON path (issue 46). */
 class SoftLightFormatTest {
 
@@ -64,7 +66,11 @@ class SoftLightFormatTest {
     void rejectsALookAtThatIsNotThreeFiniteNumbers() {
         assertOnlyProblem(light("'type':'area','lookAt':[0,1]"), "lights[1].lookAt",
                 "must be an array of three numbers [x, y, z]");
-        assertOnlyProblem(light("'type':'area','lookAt':[0,-1e999,0]"), "lights[1].lookAt[1]", "must be a finite number");
+        // infinity is also below the coordinates' bound, and both are said
+        assertThat(problems(light("'type':'area','lookAt':[0,-1e999,0]")))
+                .extracting(FieldProblem::toString)
+                .containsExactly("lights[1].lookAt[1]: must be a finite number",
+                        "lights[1].lookAt[1]: must be greater than or equal to -1e12");
     }
 
     @Test

@@ -2,10 +2,10 @@
  * Test doubles for the live view: a WebSocket the test drives, a frame encoder as the server
  * writes frames, and image decoders. Only tests import this file.
  */
-import type { DecodedImage, ImageDecoder } from './framePainter';
-import type { SocketFactory, SocketLike } from './liveSession';
-import { applyPatch } from '../test/applyPatch';
-import type { FrameHeader, PatchMessage, RevisionMessage } from './protocol';
+import type { DecodedImage, ImageDecoder } from '../live/framePainter';
+import type { SocketFactory, SocketLike } from '../live/liveSession';
+import { applyPatch } from './applyPatch';
+import type { FrameHeader, PatchMessage, RevisionMessage } from '../live/protocol';
 
 /** A frame header with plausible values for what a test does not set. */
 export function frameHeader(overrides: Partial<FrameHeader> = {}): FrameHeader {
