@@ -71,10 +71,29 @@ class ClusterConfiguration {
                            SceneCompiler compiler, MemoryBudget memory, StudioProperties properties) {
         int threads = properties.renderThreads() > 0 ? properties.renderThreads()
                 : Runtime.getRuntime().availableProcessors();
-        ClusterData data = new ClusterData(member, new Seal(secret, registry.getIfAvailable(SimpleMeterRegistry::new)));
+        Seal seal = new Seal(secret, registry.getIfAvailable(SimpleMeterRegistry::new));
+        warmUp(seal);
+        ClusterData data = new ClusterData(member, seal);
         TileWorkers workers = new TileWorkers(data, new JobScenes(data.scenes(), compiler, memory), threads);
         return new ClusterJobs(compiler, workers, properties.renderThreads());
     }
+
+    /**
+     * Seals and opens {@value #WARM_UP_VALUES} tile-sized values on a background thread at start-up:
+     * about 0.8 s of CPU once, which each member otherwise spent in its first jobs' tiles (the
+     * per-thread CPU of two pinned members, docs/cluster.md, "What the seal costs").
+     */
+    private static void warmUp(Seal seal) {
+        Thread thread = new Thread(() -> seal.warmUp(WARM_UP_VALUES, WARM_UP_BYTES), "seal-warm-up");
+        thread.setDaemon(true);
+        thread.setPriority(Thread.MIN_PRIORITY);
+        thread.start();
+    }
+
+    /** Values sealed and opened at start-up: past the two rounds of 180 a fresh JVM needs to compile AES-GCM. */
+    static final int WARM_UP_VALUES = 400;
+    /** A 64x64 tile's result, encoded: what the seal handles most, by far. */
+    static final int WARM_UP_BYTES = 98_386;
 
     @Bean
     ClusterHealth clusterHealthIndicator(ObjectProvider<HazelcastInstance> member) {

@@ -37,6 +37,8 @@ final class Seal {
     private static final byte VERSION = 1;
     private static final int NONCE = 12, TAG_BITS = 128, OVERHEAD = 1 + NONCE + TAG_BITS / 8;
     private static final String AES_GCM = "AES/GCM/NoPadding";
+    /** The family, and structure, of the values {@link #warmUp} seals: no value in the cluster has it. */
+    static final String WARM_UP = "studio-seal-warm-up";
 
     private final ClusterSecret secret;
     private final MeterRegistry registry;
@@ -87,6 +89,19 @@ final class Seal {
             return null;
         } catch (GeneralSecurityException e) {
             throw new IllegalStateException("could not open a value of " + name, e);
+        }
+    }
+
+    /**
+     * Seals and opens {@code values} values of {@code bytes} bytes each (under a key of their own
+     * family, read by no one), so that the JIT compiles AES-GCM's intrinsics before the first job:
+     * a fresh JVM on one core spent 2.9 ms, then 1.3 ms, per tile result sealed and opened in its
+     * first two 180-tile rounds, 0.07 ms after ({@code docs/cluster.md}, "What the seal costs").
+     */
+    void warmUp(int values, int bytes) {
+        byte[] plain = new byte[bytes];
+        for (int i = 0; i < values; i++) {
+            open(WARM_UP, WARM_UP, i, seal(WARM_UP, WARM_UP, i, plain));
         }
     }
 

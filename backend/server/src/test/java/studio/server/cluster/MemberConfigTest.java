@@ -19,13 +19,15 @@ class MemberConfigTest {
 
     @Test
     void aMemberListJoinsOverTcpOnly() {
-        JoinConfig join = MemberConfig.of(new ClusterProperties(5701, List.of("a:5701", "b:5701"), "n", "", TestMember.SECRET))
-                .getAdvancedNetworkConfig().getJoin();
+        Config config = MemberConfig.of(new ClusterProperties(5701, List.of("a:5701", "b:5701"), "n", "",
+                TestMember.SECRET));
+        JoinConfig join = config.getAdvancedNetworkConfig().getJoin();
         assertThat(join.getTcpIpConfig().isEnabled()).isTrue();
         assertThat(join.getTcpIpConfig().getMembers()).containsExactly("a:5701", "b:5701");
         assertThat(join.getKubernetesConfig().isEnabled()).isFalse();
         assertThat(join.getMulticastConfig().isEnabled()).isFalse();
         assertThat(join.getAutoDetectionConfig().isEnabled()).isFalse();
+        assertThat(config.getMetricsConfig().isEnabled()).as("Hazelcast's own metrics, read by no one").isFalse();
     }
 
     @Test

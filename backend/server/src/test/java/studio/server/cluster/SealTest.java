@@ -38,6 +38,16 @@ class SealTest {
     }
 
     @Test
+    void theWarmUpRejectsNothingAndItsValuesOpenNowhereElse() {
+        seal.warmUp(3, 1_000);
+        assertThat(rejected(Seal.WARM_UP)).isZero();
+        byte[] warm = seal.seal(Seal.WARM_UP, Seal.WARM_UP, 0, plain);
+        assertThat(seal.open("studio-tiles", Seal.WARM_UP, 0, warm)).isNull();
+        byte[] sealed = seal.seal("studio-tiles", "studio-tiles-j1", 3, plain);
+        assertThat(seal.open("studio-tiles", "studio-tiles-j1", 3, sealed)).isEqualTo(plain);
+    }
+
+    @Test
     void aValueReplayedUnderAnotherKeyOrJobDoesNotOpenAndIsCounted() {
         byte[] sealed = seal.seal("studio-tiles", "studio-tiles-j1", 3, plain);
         assertThat(seal.open("studio-tiles", "studio-tiles-j1", 4, sealed)).isNull();
