@@ -5,6 +5,7 @@ import studio.engine.geometry.Ray;
 import studio.engine.geometry.Rays;
 import studio.engine.material.Fresnel;
 import studio.engine.material.Material;
+import studio.engine.material.MaterialKind;
 import studio.engine.scene.Scene;
 import studio.engine.scene.ShapeSet;
 
@@ -34,6 +35,8 @@ final class ShadowRays {
     private final double minPathWeight;
     /** The scene's opaque objects, and its glass ones (null: none). */
     private final ShapeSet opaque, glass;
+    /** Per object, whether it is glass. */
+    private final boolean[] isGlass;
     private final Hit shadowHit = new Hit();
     /** Per light, the ray object of its shadow rays, which keeps what blocked the last one ({@link Ray#blocker}). */
     private final Ray[] shadowRays;
@@ -46,6 +49,10 @@ final class ShadowRays {
         this.minPathWeight = minPathWeight;
         this.opaque = scene.opaque();
         this.glass = scene.glass();
+        this.isGlass = new boolean[scene.objectCount()];
+        for (int i = 0; i < isGlass.length; i++) {
+            isGlass[i] = scene.material(i).kind() == MaterialKind.GLASS;
+        }
         this.shadowRays = new Ray[scene.lights().size()];
         for (int i = 0; i < shadowRays.length; i++) {
             shadowRays[i] = new Ray();
@@ -54,10 +61,15 @@ final class ShadowRays {
 
     /**
      * What fraction of a light reaches the hit point, into throughR/G/B: 0 behind anything opaque,
-     * less through glass. Returns false when nothing arrives. The opaque objects' any-hit question
-     * decides first; a ray it lets through walks the glass objects surface by surface, through
-     * their closest-hit question, multiplying their transmittance (the scene's own aggregate, with
-     * glass in it, would make every blocked ray walk: glass-pattern about 1.5 times as long).
+     * less through glass. Returns false when nothing arrives. In a scene with glass the scene's
+     * any-hit question decides first: nothing on the way, or an opaque object ({@link Ray#blocker}),
+     * settles it in one question, as most shadow rays are (asking the opaque objects, then the glass,
+     * for every ray took six-materials 1.08 times as long, and glass-pattern, where more rays meet
+     * glass, about 0.95; warm renders, one thread, alternated).
+     * Only a ray that meets glass asks the opaque objects, and then walks the glass objects surface
+     * by surface, through their closest-hit question, multiplying their transmittance (the scene's
+     * own closest-hit walk, with opaque objects in it, would make every blocked ray walk:
+     * glass-pattern about 1.5 times as long).
      */
     boolean reach(int light, Hit from, double tx, double ty, double tz) {
         Ray shadowRay = shadowRays[light];
@@ -65,11 +77,14 @@ final class ShadowRays {
         double dist = distance(ray, tx, ty, tz);
         traced = 1;
         throughR = throughG = throughB = 1;
-        if (opaque.occluded(ray, dist * SHADOW_END)) {
-            return false;
-        }
         if (glass == null) {
+            return !opaque.occluded(ray, dist * SHADOW_END);
+        }
+        if (!scene.occluded(ray, dist * SHADOW_END)) {
             return true;
+        }
+        if (!isGlass[ray.blocker] || opaque.occluded(ray, dist * SHADOW_END)) {
+            return false;
         }
         double r = 1, g = 1, b = 1;
         for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {

@@ -1,6 +1,7 @@
 package studio.engine.scene;
 
 import studio.engine.accel.Aabb;
+import studio.engine.accel.PlaneLeaves;
 import studio.engine.accel.ShapeLeaves;
 import studio.engine.accel.Traversal;
 import studio.engine.geometry.Hit;
@@ -35,12 +36,13 @@ final class BundleSearch {
     private static final double NEAR_SHRINK = 1 - 1e-7;
 
     private final Traversal tree;
-    private final ShapeLeaves bounded, planes;
+    private final ShapeLeaves bounded;
+    private final PlaneLeaves planes;
     private final int[] planeIndex, slotShapes;
     private final double[] slotBoxes;
     private final double magnitude;
 
-    BundleSearch(Traversal tree, ShapeLeaves bounded, int[] slotShapes, double[] slotBoxes, ShapeLeaves planes,
+    BundleSearch(Traversal tree, ShapeLeaves bounded, int[] slotShapes, double[] slotBoxes, PlaneLeaves planes,
                  int[] planeIndex, double magnitude) {
         this.tree = tree;
         this.bounded = bounded;

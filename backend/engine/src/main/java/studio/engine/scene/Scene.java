@@ -58,7 +58,7 @@ public final class Scene {
             anyGlass |= isGlass[i];
         }
         if (anyGlass) {
-            this.geometry = ShapeSet.of(shapes);
+            this.geometry = ShapeSet.of(buffered, shapes);
             this.opaque = ShapeSet.of(buffered, shapes, isOpaque, false);
             // a tree even for one object: most shadow rays miss the glass, and its box says so quickest
             this.glass = ShapeSet.of(List.of(), shapes, isGlass, true);
@@ -87,8 +87,8 @@ public final class Scene {
 
     /**
      * The scene's opaque objects, an aggregate of their own: a shadow ray is blocked exactly when
-     * it says so, and asks the glass ({@link #glass}) only when it is not. Hits report an object's
-     * index in the scene.
+     * it says so; one that meets glass ({@link #occluded} names it) asks it, then the glass
+     * ({@link #glass}) when it is not blocked. Hits report an object's index in the scene.
      */
     public ShapeSet opaque() {
         return opaque;

@@ -5,6 +5,7 @@ import java.util.List;
 
 import studio.engine.accel.Aabb;
 import studio.engine.accel.Bvh;
+import studio.engine.accel.PlaneLeaves;
 import studio.engine.accel.ShapeLeaves;
 import studio.engine.accel.Traversal;
 import studio.engine.geometry.Hit;
@@ -50,9 +51,12 @@ public final class ShapeSet {
     private final int size;
     /** Per shape (by its index among all the shapes), whether it is in this set; null: all are. */
     private final boolean[] members;
-    /** Linear: every shape, slot = index. With a tree: the planes alone. */
+    /** Linear: every shape, slot = index. With a tree: none. */
     private final ShapeLeaves listed;
     private final int listedCount;
+    /** With a tree: the planes. Linear: none. */
+    private final PlaneLeaves planes;
+    private final int planeCount;
     /** The tree over the bounded shapes, or null (linear). */
     private final Traversal tree;
     private final ShapeLeaves bounded;
@@ -101,6 +105,8 @@ public final class ShapeSet {
             }
             listed = new ShapeLeaves(all, listedIndex);
             listedCount = memberCount;
+            planes = new PlaneLeaves(all, new int[0]);
+            planeCount = 0;
             tree = null;
             bounded = null;
             nodeBounds = null;
@@ -148,12 +154,14 @@ public final class ShapeSet {
         }
         slotApart = new byte[boundedCount];
         apartMargin = Math.max(APART_MARGIN * largest, Double.MIN_NORMAL);
-        listed = new ShapeLeaves(all, unboundedIndex);
-        listedCount = unboundedIndex.length;
+        listed = new ShapeLeaves(all, new int[0]);
+        listedCount = 0;
+        planes = new PlaneLeaves(all, unboundedIndex);
+        planeCount = unboundedIndex.length;
         bounded = new ShapeLeaves(all, slotShapes);
         tree = new Traversal(bvh.bounds(), bvh.nodes(), bounded);
         bundles = BundleSearch.pays(memberCount, unboundedIndex.length)
-                ? new BundleSearch(tree, bounded, slotShapes, slotBoxes, listed, unboundedIndex, largest) : null;
+                ? new BundleSearch(tree, bounded, slotShapes, slotBoxes, planes, unboundedIndex, largest) : null;
         int buffered = boundedCount >= LIGHT_BUFFER_MIN ? Math.min(lights.size(), LightBuffer.MAX_LIGHTS) : 0;
         lightBuffers = new LightBuffer[buffered];
         LightBuffer.Primitives slots = (slot, ray, tMax) -> bounded.any(slot, slot + 1, ray, tMax);
@@ -216,6 +224,7 @@ public final class ShapeSet {
         int slot = tree != null && likely >= 0 && likely < slotOfShape.length ? slotOfShape[likely] : -1;
         double cull = slot >= 0 ? bounded.nearest(slot, slot + 1, ray, tMax, tMax, hit) : tMax;
         cull = listed.nearest(0, listedCount, ray, tMax, cull, hit);
+        cull = planes.nearest(0, planeCount, ray, tMax, cull, hit);
         if (tree != null && !(slot >= 0 && hit.primitive != ShapeLeaves.NONE && alone(slot, ray, cull))) {
             tree.nearest(ray, tMax, cull, hit, hit.sceneStack, hit.sceneStackEntry);
         }
@@ -299,7 +308,8 @@ public final class ShapeSet {
         if (member && listed.blocks(last, ray, tMax)) {
             return true;
         }
-        boolean blocked = listed.any(0, listedCount, ray, tMax) || tree != null && blockedInTree(ray, tMax);
+        boolean blocked = listed.any(0, listedCount, ray, tMax) || planes.any(0, planeCount, ray, tMax)
+                || tree != null && blockedInTree(ray, tMax);
         if (!blocked) {
             ray.blocker = -1;
         }
