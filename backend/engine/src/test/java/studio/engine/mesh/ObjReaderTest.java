@@ -246,20 +246,64 @@ class ObjReaderTest {
             CountingGate gate = new CountingGate();
             long allocated = CountingGate.allocatedBy(() -> ObjReader.parse(text, Integer.MAX_VALUE, gate));
 
-            assertTrue(allocated <= gate.granted() + CountingGate.SLACK, allocated + " allocated, " + gate.granted()
-                    + " granted");
+            long numbers = numberParsing(text);
+            assertTrue(allocated <= gate.granted() + numbers + CountingGate.SLACK, allocated + " allocated, "
+                    + gate.granted() + " granted, " + numbers + " parsing the numbers");
             assertTrue(gate.granted() < 2 * allocated, "granted " + gate.granted() + " for " + allocated);
         }
     }
 
     @Test
     void aGateThatRefusesStopsTheReaderBeforeItAllocatesMore() {
-        String text = ObjWriter.toString(MeshShapes.torusKnot(2, 3, 400, 100));
-        CountingGate gate = new CountingGate(1 << 20);
+        String knot = ObjWriter.toString(MeshShapes.torusKnot(2, 3, 400, 100));
+        // faces alone (indices are read without allocating): only what the gate granted is allocated
+        String faces = "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + "f 1 2 3\n".repeat(300_000);
+        for (String text : new String[] {knot, faces}) {
+            CountingGate gate = new CountingGate(1 << 20);
 
-        long allocated = CountingGate.allocatedBy(() -> ObjReader.parse(text, Integer.MAX_VALUE, gate));
+            long allocated = CountingGate.allocatedBy(() -> ObjReader.parse(text, Integer.MAX_VALUE, gate));
 
-        assertTrue(allocated <= (1 << 20) + CountingGate.SLACK, "allocated " + allocated);
+            long numbers = numberParsing(text);
+            assertTrue(allocated <= (1 << 20) + numbers + CountingGate.SLACK, "allocated " + allocated + ", "
+                    + numbers + " parsing the numbers");
+        }
+    }
+
+    /**
+     * What the JDK's number parsing allocates for the text's numbers, as the reader calls it (a String
+     * of each token, then {@link Double#parseDouble}): short-lived, a token at a time, and not what the
+     * gate is asked for (it is asked for what the reader keeps).
+     */
+    private static long numberParsing(String text) {
+        char[] chars = text.toCharArray();
+        int[] starts = new int[chars.length / 2 + 1], ends = new int[starts.length];
+        int count = 0, lineStart = 0;
+        for (int i = 0; i <= chars.length; i++) {
+            if (i == chars.length || chars[i] == '\n') {
+                if (lineStart < chars.length && chars[lineStart] == 'v') {
+                    int j = lineStart;
+                    while (j < i && chars[j] != ' ') {
+                        j++;
+                    }
+                    while (j < i) {
+                        int start = ++j;
+                        while (j < i && chars[j] != ' ') {
+                            j++;
+                        }
+                        starts[count] = start;
+                        ends[count++] = j;
+                    }
+                }
+                lineStart = i + 1;
+            }
+        }
+        int n = count;
+        double[] sink = new double[1];
+        return CountingGate.allocatedBy(() -> {
+            for (int k = 0; k < n; k++) {
+                sink[0] += Double.parseDouble(new String(chars, starts[k], ends[k] - starts[k]));
+            }
+        });
     }
 
     @Test

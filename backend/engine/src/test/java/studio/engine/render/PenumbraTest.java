@@ -106,10 +106,11 @@ class PenumbraTest {
     }
 
     /**
-     * Light samples take the pixel sampler's strata: jittered beats random at 16 and at 64 samples
-     * (measured: below 0.5 and 0.51 of random's mean squared error; the shuffle pairs places in the pixel
-     * with places on the light at random, and that pairing's share of the error falls only as 1/N),
-     * and 64 samples beat 16 (3.2 times smaller).
+     * Under jittered the light samples are a multi-jittered pattern (jittered's cells, and one
+     * sample in each of N narrow columns, so the wall's edge, parallel to the light's side, cuts
+     * N strata): jittered beats random at 16 and at 64 samples (measured: 0.33 and 0.08 of random's
+     * mean squared error; with the pixel's own 4 x 4 and 8 x 8 points shuffled it was 0.37 and 0.51),
+     * and 64 samples beat 16 (20 times smaller; 3.2 before).
      */
     @Test
     void lightSamplesAreStratifiedLikeThePixelSamples() {
@@ -119,8 +120,8 @@ class PenumbraTest {
         double random64 = error(new RandomSampler(64), reference), jittered64 = error(new JitteredSampler(64), reference);
 
         assertTrue(jittered16 < 0.5 * random, "jittered " + jittered16 + " against random " + random);
-        assertTrue(jittered64 < 0.6 * random64, "jittered " + jittered64 + " against random " + random64 + " at 64");
-        assertTrue(jittered64 < jittered16 / 2.5, "64 samples " + jittered64 + " against 16: " + jittered16);
+        assertTrue(jittered64 < 0.2 * random64, "jittered " + jittered64 + " against random " + random64 + " at 64");
+        assertTrue(jittered64 < jittered16 / 8, "64 samples " + jittered64 + " against 16: " + jittered16);
     }
 
     @Test

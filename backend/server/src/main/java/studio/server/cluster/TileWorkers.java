@@ -15,6 +15,7 @@ import org.slf4j.LoggerFactory;
 import com.hazelcast.core.HazelcastInstance;
 
 import studio.engine.render.Film;
+import studio.engine.render.PixelLattice;
 import studio.engine.render.RenderCancelledException;
 import studio.engine.render.Renderer;
 import studio.engine.render.TileRect;
@@ -265,7 +266,7 @@ final class TileWorkers implements AutoCloseable {
                 TileRenderer worker = worker(task.jobId(), scene);
                 long rays = worker.rays(), samples = worker.samples();
                 Film film = Film.ofTile(tile);
-                long nonFinite = worker.render(film, tile);
+                long nonFinite = worker.render(film, tile, PixelLattice.ALL, null, null);
                 double[] rgb = new double[3 * tile.width() * tile.height()];
                 int i = 0;
                 for (int y = tile.y(); y < tile.y() + tile.height(); y++) {

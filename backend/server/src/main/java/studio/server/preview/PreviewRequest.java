@@ -22,6 +22,8 @@ import tools.jackson.core.json.JsonFactory;
  * so a large inline mesh is not copied through a tree); a patch is read as a Jackson tree
  * ({@link JsonPatch}, bounded).
  *
+ * <p>Streaming, not a Jackson tree: 3.5 ms a 10,000-sphere drag step against 14-15 (PreviewReadingBench).
+ *
  * @param revision the client's revision number, increasing within a session
  * @param scene    the scene's JSON
  * @param objects  where the elements of the scene's objects array lie in {@code scene}, found in the same

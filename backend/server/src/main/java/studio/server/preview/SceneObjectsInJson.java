@@ -11,6 +11,8 @@ import tools.jackson.core.json.JsonFactory;
 /**
  * Where each element of a scene's top-level {@code objects} array lies in the scene's JSON bytes,
  * found by one streaming pass that builds nothing.
+ *
+ * <p>Byte ranges, not Jackson trees compared: 3.5 ms a 10,000-sphere drag step against 14-15 (PreviewReadingBench).
  */
 final class SceneObjectsInJson {
 

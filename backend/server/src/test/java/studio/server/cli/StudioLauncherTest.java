@@ -39,15 +39,24 @@ class StudioLauncherTest {
     Path dir;
     private Path calls;
 
+    private static final String VECTOR_MODULES = "java.base jdk.incubator.vector jdk.jfr";
+
     @BeforeEach
     void standInJdk() throws IOException {
-        standInJdk("25.0.1");
+        standInJdk("25.0.1", VECTOR_MODULES);
     }
 
     private void standInJdk(String version) throws IOException {
+        standInJdk(version, VECTOR_MODULES);
+    }
+
+    /** A stand-in JDK whose release file gives this version and these modules (MODULES, as a JDK's). */
+    private void standInJdk(String version, String modules) throws IOException {
         Path bin = Files.createDirectories(dir.resolve("jdk/bin"));
-        Files.writeString(dir.resolve("jdk/release"), "JAVA_VERSION=\"" + version + "\"\n");
+        Files.writeString(dir.resolve("jdk/release"), "IMPLEMENTOR=\"Stand-in\"\nJAVA_VERSION=\"" + version
+                + "\"\nMODULES=\"" + modules + "\"\n");
         calls = dir.resolve("calls");
+        Files.deleteIfExists(calls); // a new JDK: only its calls count
         Path java = bin.resolve("java");
         // writes down its arguments; as `-Djarmode=tools -jar J extract --destination D` it makes D
         Files.writeString(java, """
@@ -243,25 +252,38 @@ class StudioLauncherTest {
     }
 
     /**
-     * A longer render runs without on-stack replacement unless its scene file names a mesh (or a glTF model), whose
-     * one-pass reading and tree building need it; a short one, on C1 alone, keeps it.
+     * The launcher never reads the scene: the same command line gets the same options whatever
+     * the file holds (a mesh, a glTF model, spheres) or whether it exists at all.
      */
     @Test
-    void aLongerRenderOfASceneWithoutMeshesRunsWithoutOnStackReplacement() throws Exception {
-        String noOsr = "-XX:-UseOnStackReplacement";
+    void theOptionsDependOnTheCommandLineAloneNotOnTheScenesText() throws Exception {
         Path spheres = Files.writeString(dir.resolve("spheres.json"),
                 "{\"objects\": [{\"type\": \"sphere\", \"radius\": 1}]}");
         Path mesh = Files.writeString(dir.resolve("mesh.json"),
                 "{\"objects\": [{\"type\" :\n \"mesh\", \"file\": \"knot.obj\"}]}");
-        assertThat(launched("render", spheres.toString(), "-o", "x.png", "--samples", "16")).contains(noOsr);
-        assertThat(launched("render", "--threads", "2", "-o", "x.png", spheres.toString())).contains(noOsr);
-        assertThat(launched("render", mesh.toString(), "--samples", "16")).doesNotContain(noOsr);
         Path model = Files.writeString(dir.resolve("model.json"),
                 "{\"objects\": [{\"type\": \"gltf\", \"file\": \"model.glb\"}]}");
-        assertThat(launched("render", model.toString(), "--samples", "16")).doesNotContain(noOsr);
-        assertThat(launched("render", spheres.toString(), "--width", "800", "--height", "600", "--samples", "1"))
+        Path missing = dir.resolve("missing.json");
+        for (String[] size : new String[][] {{"--samples", "16"}, {"--width", "800", "--height", "600", "--samples", "1"},
+                {"--threads", "2"}}) {
+            List<String> options = new ArrayList<>();
+            for (Path scene : new Path[] {spheres, mesh, model, missing}) {
+                List<String> args = new ArrayList<>(List.of("render", scene.toString(), "-o", "x.png"));
+                args.addAll(List.of(size));
+                options.add(launched(args.toArray(String[]::new)));
+            }
+            assertThat(options).as(String.join(" ", size)).containsOnly(options.get(0));
+        }
+    }
+
+    /** Every longer render runs without on-stack replacement; a short one, on C1 alone, and the service keep it. */
+    @Test
+    void aLongerRenderRunsWithoutOnStackReplacement() throws Exception {
+        String noOsr = "-XX:-UseOnStackReplacement";
+        assertThat(launched("render", "s.json", "-o", "x.png", "--samples", "16")).contains(noOsr);
+        assertThat(launched("render", "--threads", "2", "-o", "x.png", "s.json")).contains(noOsr);
+        assertThat(launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "1"))
                 .doesNotContain(noOsr);
-        assertThat(launched("render", dir.resolve("missing.json").toString())).doesNotContain(noOsr);
         assertThat(launched()).doesNotContain(noOsr);
     }
 
@@ -289,5 +311,31 @@ class StudioLauncherTest {
     void theServiceKeepsTheJvmsDefaults() throws Exception {
         assertThat(launched()).doesNotContain("-XX:+UseParallelGC", QUICK_COMPILER).contains("-XX:AOTCache=");
         assertThat(launched("--server.port=8081", "--samples", "1")).doesNotContain(QUICK_COMPILER);
+    }
+
+    /**
+     * A JDK of version 20 or newer with the Vector API's incubator module runs everything with it,
+     * the training run too (the cache keeps the module graph it was recorded with); JDK 17, and a
+     * runtime built without the module, run without it.
+     */
+    @Test
+    void aJdkWithTheVectorModuleRunsEveryJvmWithIt() throws Exception {
+        String module = "--add-modules jdk.incubator.vector";
+        List<String> calls = calls("render", "s.json", "--samples", "16");
+        String training = calls.stream().filter(c -> c.contains(" train ")).findFirst().orElseThrow();
+        assertThat(training).contains(module);
+        assertThat(calls.get(calls.size() - 1)).contains(module);
+        assertThat(launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "1")).contains(module);
+        assertThat(launched()).contains(module);
+        assertThat(dir.resolve("studio-cds/java")).content().contains(" aot vector");
+
+        standInJdk("17.0.15");
+        calls = calls("render", "s.json", "--samples", "16");
+        assertThat(calls).noneMatch(c -> c.contains("add-modules"));
+
+        standInJdk("25.0.1", "java.base jdk.jfr");
+        calls = calls("render", "s.json", "--samples", "16");
+        assertThat(calls).noneMatch(c -> c.contains("add-modules"));
+        assertThat(dir.resolve("studio-cds/java")).content().doesNotContain("vector");
     }
 }

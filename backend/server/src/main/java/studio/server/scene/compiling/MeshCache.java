@@ -4,9 +4,6 @@ import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
-import java.util.Iterator;
-import java.util.LinkedHashMap;
-import java.util.Map;
 
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.math.Vec3;
@@ -44,20 +41,18 @@ public final class MeshCache {
     record Placement(String digest, Vec3 position, double scale, Vec3 rotation) {
     }
 
-    private record Entry<T>(T value, MemoryBudget.Reservation memory) {
-    }
-
-    private final long maxTriangles;
-    private final MemoryBudget memory;
-    private final Map<String, Entry<MeshData>> parsed = new LinkedHashMap<>(16, 0.75f, true);
-    private final Map<String, Entry<GltfModel>> models = new LinkedHashMap<>(16, 0.75f, true);
-    private final Map<Placement, Entry<TriangleMesh>> built = new LinkedHashMap<>(16, 0.75f, true);
-    private long triangles;
+    private final LruEntries.Bound bound;
+    /** Made in this order, so built meshes are evicted before parsed ones, and those before models. */
+    private final LruEntries<Placement, TriangleMesh> built;
+    private final LruEntries<String, MeshData> parsed;
+    private final LruEntries<String, GltfModel> models;
 
     /** @param maxTriangles at most this many triangles kept, parsed and built together */
     public MeshCache(long maxTriangles, MemoryBudget memory) {
-        this.maxTriangles = maxTriangles;
-        this.memory = memory;
+        bound = new LruEntries.Bound(maxTriangles, memory);
+        built = bound.newMap();
+        parsed = bound.newMap();
+        models = bound.newMap();
     }
 
     /** Keeps nothing (the command line reads each mesh once). */
@@ -70,7 +65,7 @@ public final class MeshCache {
      * looks one up (the command line: hashing 7 MB of OBJ took 50-100 ms of a cold process).
      */
     String keyOf(String objText) {
-        return maxTriangles > 0 ? digest(objText) : null;
+        return bound.keepsAny() ? digest(objText) : null;
     }
 
     /**
@@ -78,12 +73,12 @@ public final class MeshCache {
      * text, so an asset and its text inline share entries); null in a cache that keeps nothing.
      */
     String keyOfAsset(String assetId) {
-        return maxTriangles > 0 ? assetId.substring(assetId.indexOf('-') + 1) : null;
+        return bound.keepsAny() ? assetId.substring(assetId.indexOf('-') + 1) : null;
     }
 
     /** The key of a model file's entries: its bytes' SHA-256 (as its asset id's); null in a cache that keeps nothing. */
     String keyOf(byte[] file) {
-        return maxTriangles > 0 ? digest(file) : null;
+        return bound.keepsAny() ? digest(file) : null;
     }
 
     /** The SHA-256 of an OBJ text. */
@@ -101,33 +96,24 @@ public final class MeshCache {
     }
 
     synchronized MeshData parsed(String digest) {
-        Entry<MeshData> entry = parsed.get(digest);
-        return entry != null ? entry.value() : null;
+        return parsed.get(digest);
     }
 
     synchronized void keepParsed(String digest, MeshData data) {
-        Entry<MeshData> entry = admit(data.triangleCount(), data);
-        if (entry != null) {
-            release(parsed.put(digest, entry));
-        }
+        parsed.keep(digest, data, data.triangleCount(), data.triangleCount() * BYTES_PER_TRIANGLE);
     }
 
     /** A glTF model read before, by its file's digest, or null. */
     synchronized GltfModel model(String digest) {
-        Entry<GltfModel> entry = models.get(digest);
-        return entry != null ? entry.value() : null;
+        return models.get(digest);
     }
 
     synchronized void keepModel(String digest, GltfModel model) {
-        Entry<GltfModel> entry = admit(model.triangleCount(), model);
-        if (entry != null) {
-            release(models.put(digest, entry));
-        }
+        models.keep(digest, model, model.triangleCount(), model.triangleCount() * BYTES_PER_TRIANGLE);
     }
 
     synchronized TriangleMesh built(Placement placement) {
-        Entry<TriangleMesh> entry = built.get(placement);
-        return entry != null ? entry.value() : null;
+        return built.get(placement);
     }
 
     /**
@@ -136,69 +122,25 @@ public final class MeshCache {
      * mesh the placement asks for without building its tree again.
      */
     synchronized TriangleMesh sameShape(Placement placement) {
-        TriangleMesh found = null;
-        for (Map.Entry<Placement, Entry<TriangleMesh>> kept : built.entrySet()) {
-            Placement at = kept.getKey();
+        TriangleMesh[] found = {null};
+        built.forEach((at, mesh) -> {
             if (at.digest().equals(placement.digest()) && at.scale() == placement.scale()
                     && at.rotation().equals(placement.rotation())) {
-                found = kept.getValue().value();
+                found[0] = mesh;
             }
-        }
-        return found;
+        });
+        return found[0];
     }
 
     synchronized void keepBuilt(Placement placement, TriangleMesh mesh) {
         if (mesh.triangleCount() < MIN_KEPT_TRIANGLES) {
             return; // built again in less time than looking it up costs: an entry per placement is not worth keeping
         }
-        Entry<TriangleMesh> entry = admit(mesh.triangleCount(), mesh);
-        if (entry != null) {
-            release(built.put(placement, entry));
-        }
+        built.keep(placement, mesh, mesh.triangleCount(), mesh.triangleCount() * BYTES_PER_TRIANGLE);
     }
 
     /** Triangles kept now. */
     synchronized long triangles() {
-        return triangles;
-    }
-
-    /** Makes room (least recently used first) and reserves the memory, or null if it cannot be kept. */
-    private <T> Entry<T> admit(int count, T value) {
-        if (count > maxTriangles) {
-            return null;
-        }
-        while (triangles + count > maxTriangles && evictOldest()) {
-            // evicting
-        }
-        MemoryBudget.Reservation reservation;
-        while ((reservation = memory.tryReserve(count * BYTES_PER_TRIANGLE)) == null) {
-            if (!evictOldest()) {
-                return null;
-            }
-        }
-        triangles += count;
-        return new Entry<>(value, reservation);
-    }
-
-    /** Drops the least recently used entry, built meshes before parsed ones and models; false if there is none. */
-    private boolean evictOldest() {
-        Map<?, ? extends Entry<?>> from = !built.isEmpty() ? built : !parsed.isEmpty() ? parsed : models;
-        Iterator<? extends Entry<?>> oldest = from.values().iterator();
-        if (!oldest.hasNext()) {
-            return false;
-        }
-        release(oldest.next());
-        oldest.remove();
-        return true;
-    }
-
-    private void release(Entry<?> entry) {
-        if (entry != null) {
-            int count = entry.value() instanceof MeshData data ? data.triangleCount()
-                    : entry.value() instanceof GltfModel model ? model.triangleCount()
-                    : ((TriangleMesh) entry.value()).triangleCount();
-            triangles -= count;
-            entry.memory().close();
-        }
+        return bound.size();
     }
 }

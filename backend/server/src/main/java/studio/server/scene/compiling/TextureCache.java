@@ -1,9 +1,5 @@
 package studio.server.scene.compiling;
 
-import java.util.Iterator;
-import java.util.LinkedHashMap;
-import java.util.Map;
-
 import studio.engine.texture.MipMap;
 import studio.server.system.MemoryBudget;
 
@@ -16,18 +12,13 @@ import studio.server.system.MemoryBudget;
  */
 public final class TextureCache {
 
-    private record Entry(MipMap image, MemoryBudget.Reservation memory) {
-    }
-
-    private final long maxBytes;
-    private final MemoryBudget memory;
-    private final Map<String, Entry> kept = new LinkedHashMap<>(16, 0.75f, true);
-    private long bytes;
+    private final LruEntries.Bound bound;
+    private final LruEntries<String, MipMap> kept;
 
     /** @param maxBytes at most this many bytes of mip-maps kept */
     public TextureCache(long maxBytes, MemoryBudget memory) {
-        this.maxBytes = maxBytes;
-        this.memory = memory;
+        bound = new LruEntries.Bound(maxBytes, memory);
+        kept = bound.newMap();
     }
 
     /** Keeps nothing (the command line reads each image once). */
@@ -37,51 +28,21 @@ public final class TextureCache {
 
     /** The key of an asset's entry: the hex SHA-256 its id carries; null in a cache that keeps nothing. */
     String keyOfAsset(String assetId) {
-        return maxBytes > 0 ? assetId.substring(assetId.indexOf('-') + 1) : null;
+        return bound.keepsAny() ? assetId.substring(assetId.indexOf('-') + 1) : null;
     }
 
     synchronized MipMap get(String key) {
-        Entry entry = key != null ? kept.get(key) : null;
-        return entry != null ? entry.image() : null;
+        return key != null ? kept.get(key) : null;
     }
 
     synchronized void keep(String key, MipMap image) {
-        long size = image.bytes();
-        if (key == null || size > maxBytes) {
-            return;
+        if (key != null) {
+            kept.keep(key, image, image.bytes(), image.bytes());
         }
-        while (bytes + size > maxBytes && evictOldest()) {
-            // evicting
-        }
-        MemoryBudget.Reservation reservation;
-        while ((reservation = memory.tryReserve(size)) == null) {
-            if (!evictOldest()) {
-                return;
-            }
-        }
-        bytes += size;
-        release(kept.put(key, new Entry(image, reservation)));
     }
 
     /** Bytes kept now. */
     synchronized long bytes() {
-        return bytes;
-    }
-
-    private boolean evictOldest() {
-        Iterator<Entry> oldest = kept.values().iterator();
-        if (!oldest.hasNext()) {
-            return false;
-        }
-        release(oldest.next());
-        oldest.remove();
-        return true;
-    }
-
-    private void release(Entry entry) {
-        if (entry != null) {
-            bytes -= entry.image().bytes();
-            entry.memory().close();
-        }
+        return bound.size();
     }
 }
