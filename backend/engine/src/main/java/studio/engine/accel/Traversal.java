@@ -23,13 +23,19 @@ import studio.engine.memory.MemoryGate;
  * binary one, so a scalar JVM keeps the binary walk (docs/speed.md). The float box test keeps every
  * node the double one keeps ({@link WideRay}), and the leaves decide ties by declaration order, not
  * by the order they are met, so both walks find the same hits and renders stay bit-identical.
- * {@link #slotsIn} always walks the binary tree.
+ * A tree of fewer than {@link #WIDE_MIN_SLOTS} leaf slots, and {@link #slotsIn} always, walk the binary tree.
  */
 public final class Traversal {
 
     /** Whether traversals of this JVM walk wide trees. */
     static final boolean WIDE = WideBoxTests.vectorized();
     private static final WideBoxTest BOXES = WideBoxTests.get();
+    /**
+     * Leaf slots a tree needs for its walk to go wide: in a tree of a few objects setting up the
+     * float ray costs more than the few double box tests it spares (the still life's 5 objects:
+     * 16.4 M rays/s a CPU second wide against 20.9 binary, {@code compare.sh} on JDK 25).
+     */
+    static final int WIDE_MIN_SLOTS = 16;
 
     private final double[] nodeBounds;
     private final int[] links;
@@ -52,7 +58,16 @@ public final class Traversal {
         this.links = links;
         this.nodeCount = links.length / 3;
         this.leaves = leaves;
-        this.wide = WIDE ? WideBvh.of(nodeBounds, links, memory) : null;
+        this.wide = WIDE && slots(links) >= WIDE_MIN_SLOTS ? WideBvh.of(nodeBounds, links, memory) : null;
+    }
+
+    /** The leaf slots of the tree with these links: the sum of its leaves' counts. */
+    private static int slots(int[] links) {
+        int slots = 0;
+        for (int o = 1; o < links.length; o += 3) {
+            slots += Math.max(links[o], 0);
+        }
+        return slots;
     }
 
     /** Whether this traversal walks a {@link WideBvh}. */

@@ -29,6 +29,9 @@ class TraversalWideTest {
         Bvh bvh = Bvh.build(boxes, n);
         Traversal traversal = new Traversal(bvh.bounds(), bvh.nodes(), new ShapeLeaves(spheres, bvh.primitives()));
         assertEquals(WideBoxTests.vectorized(), traversal.isWide());
+        Bvh small = Bvh.build(java.util.Arrays.copyOf(boxes, 6 * 5), 5);
+        assertFalse(new Traversal(small.bounds(), small.nodes(), new ShapeLeaves(spheres, small.primitives())).isWide(),
+                "a tree of a few nodes stays binary");
         Hit hit = new Hit();
         hit.primitive = ShapeLeaves.NONE;
         Ray ray = new Ray(-5, 0.5, 0.5, 1, 0, 0);
