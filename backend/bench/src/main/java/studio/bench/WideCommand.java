@@ -15,7 +15,7 @@ import studio.bench.jmh.RandomRays;
 import studio.bench.jmh.WideBvhBenchmark;
 import studio.engine.accel.BinaryWalk;
 import studio.engine.accel.Bvh;
-import studio.engine.accel.Leaves;
+import studio.engine.accel.Primitives;
 import studio.engine.accel.ScalarBoxTest;
 import studio.engine.accel.WideBoxTests;
 import studio.engine.accel.WideBvh;
@@ -77,7 +77,7 @@ public final class WideCommand {
 
     /** One process's rounds: prints "scene/walk/kind ns" a round. */
     private static void one(String scene, String walk, int rounds, PrintStream out) {
-        Leaves leaves = WideBvhBenchmark.leaves(scene);
+        Primitives leaves = WideBvhBenchmark.leaves(scene);
         Bvh bvh = Bvh.build(leaves.boxes(), leaves.count());
         BinaryWalk binary = walk.equals("binary") ? new BinaryWalk(bvh, leaves) : null;
         WideWalk wide = switch (walk) {

@@ -20,10 +20,10 @@ import studio.bench.ScalingScenes;
 import studio.engine.accel.Aabb;
 import studio.engine.accel.BinaryWalk;
 import studio.engine.accel.Bvh;
-import studio.engine.accel.Leaves;
+import studio.engine.accel.Primitives;
 import studio.engine.accel.ScalarBoxTest;
-import studio.engine.accel.SphereLeaves;
-import studio.engine.accel.TriangleLeaves;
+import studio.engine.accel.SpherePrimitives;
+import studio.engine.accel.TrianglePrimitives;
 import studio.engine.accel.WideBoxTests;
 import studio.engine.accel.WideBvh;
 import studio.engine.accel.WideWalk;
@@ -61,7 +61,7 @@ public class WideBvhBenchmark {
 
     @Setup
     public void setUp() {
-        Leaves leaves = leaves(scene);
+        Primitives leaves = leaves(scene);
         Bvh bvh = Bvh.build(leaves.boxes(), leaves.count());
         switch (tree) {
             case "binary" -> binary = new BinaryWalk(bvh, leaves);
@@ -78,7 +78,7 @@ public class WideBvhBenchmark {
     }
 
     /** The primitives of a scene: {@code spheres-10k} or {@code mesh-100k}. */
-    public static Leaves leaves(String scene) {
+    public static Primitives leaves(String scene) {
         if (scene.equals("spheres-10k")) {
             List<SceneObject> objects = ScalingScenes.spheres(10_000);
             double[] spheres = new double[4 * objects.size()];
@@ -89,11 +89,11 @@ public class WideBvhBenchmark {
                 spheres[4 * i + 2] = s.center().z();
                 spheres[4 * i + 3] = s.radius();
             }
-            return new SphereLeaves(spheres);
+            return new SpherePrimitives(spheres);
         }
         if (scene.equals("mesh-100k")) {
             TriangleMesh knot = ScalingScenes.placedKnot(MeshScene.mesh());
-            return new TriangleLeaves(knot.positions(), knot.indices());
+            return new TrianglePrimitives(knot.positions(), knot.indices());
         }
         throw new IllegalArgumentException(scene);
     }

@@ -3,6 +3,7 @@ package studio.engine.accel;
 import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
+import studio.engine.memory.MemoryGate;
 
 /**
  * The walk of a {@link Bvh}: the one closest-hit and the one any-hit traversal of the engine, for
@@ -14,35 +15,79 @@ import studio.engine.geometry.Ray;
  * distance has fallen below it since), and a child the ray misses is never pushed. Any hit: no
  * order and no stack; a missed node, or a finished leaf, escapes to the node after its subtree.
  *
- * <p>This class is where a wider tree goes: a later change that walks nodes of four boxes tested
- * at once replaces the node loops of {@link #nearest} and {@link #any} here and keeps the
- * {@link Leaves} calls, so neither the scene nor a mesh changes.
+ * <p>Where the Vector API box test is on ({@link WideBoxTests#vectorized}: JDK 20 or newer with
+ * {@code --add-modules jdk.incubator.vector} and the optimising compiler) both walks go through a
+ * {@link WideBvh} collapsed from the binary tree instead, four boxes tested at once, and the same
+ * {@link Leaves} calls: on JDK 25 the kernel benchmark ({@code studio-bench.jar kernel},
+ * one thread, rays a CPU second) ran 10,000 spheres 1.67 times and a 104,000-triangle mesh 1.25
+ * times as fast so, and {@code studio-bench.jar wide} found the scalar wide walk no faster than
+ * this binary one, so a scalar JVM keeps the binary walk (docs/speed.md). The float box test keeps every
+ * node the double one keeps ({@link WideRay}), and the leaves decide ties by declaration order, not
+ * by the order they are met, so both walks find the same hits and renders stay bit-identical.
+ * A tree of fewer than {@link #WIDE_MIN_SLOTS} leaf slots, and {@link #slotsIn} always, walk the binary tree.
  */
 public final class Traversal {
+
+    /** Whether traversals of this JVM walk wide trees. */
+    static final boolean WIDE = WideBoxTests.vectorized();
+    private static final WideBoxTest BOXES = WideBoxTests.get();
+    /**
+     * Leaf slots a tree needs for its walk to go wide: in a tree of a few objects setting up the
+     * float ray costs more than the few double box tests it spares (the still life's 5 objects:
+     * 16.4 M rays/s a CPU second wide against 20.9 binary, {@code compare.sh} on JDK 25).
+     */
+    static final int WIDE_MIN_SLOTS = 16;
 
     private final double[] nodeBounds;
     private final int[] links;
     private final int nodeCount;
     private final Leaves leaves;
+    /** The wide tree, or null when this JVM walks the binary one. */
+    private final WideBvh wide;
 
     /**
      * Walks the tree given by {@code nodeBounds} (six doubles a node) and {@code links} (three ints
      * a node, see {@link Bvh}), whose leaf slots {@code leaves} tests. The arrays are kept, not copied.
      */
     public Traversal(double[] nodeBounds, int[] links, Leaves leaves) {
+        this(nodeBounds, links, leaves, MemoryGate.UNLIMITED);
+    }
+
+    /** As above, asking {@code memory} before the wide tree's arrays where one is built. */
+    public Traversal(double[] nodeBounds, int[] links, Leaves leaves, MemoryGate memory) {
         this.nodeBounds = nodeBounds;
         this.links = links;
         this.nodeCount = links.length / 3;
         this.leaves = leaves;
+        this.wide = WIDE && slots(links) >= WIDE_MIN_SLOTS ? WideBvh.of(nodeBounds, links, memory) : null;
+    }
+
+    /** The leaf slots of the tree with these links: the sum of its leaves' counts. */
+    private static int slots(int[] links) {
+        int slots = 0;
+        for (int o = 1; o < links.length; o += 3) {
+            slots += Math.max(links[o], 0);
+        }
+        return slots;
+    }
+
+    /** Whether this traversal walks a {@link WideBvh}. */
+    public boolean isWide() {
+        return wide != null;
     }
 
     /**
      * Visits every leaf the ray may hold a winner in, nearest first, and lets the leaves test it:
      * starts with cull distance {@code cull} (at most {@code tMax}) and returns the last one.
      * {@code stack} and {@code stackEntry} need {@link Bvh#STACK_SIZE} entries each and are
-     * this walk's alone while it runs (a mesh inside the scene's walk uses a second pair).
+     * this walk's alone while it runs (a mesh inside the scene's walk uses a second pair), and so is
+     * {@code scratch}, which the wide walk uses instead (null where {@link WideScratch#ifUsed} is).
      */
-    public double nearest(Ray ray, double tMax, double cull, Hit hit, int[] stack, double[] stackEntry) {
+    public double nearest(Ray ray, double tMax, double cull, Hit hit, int[] stack, double[] stackEntry,
+                          WideScratch scratch) {
+        if (wide != null) {
+            return nearestWide(ray, tMax, cull, hit, scratch);
+        }
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
         boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
@@ -86,8 +131,14 @@ public final class Traversal {
         }
     }
 
-    /** Whether some leaf primitive lies on the ray with 0 &lt; t &lt; tMax. */
-    public boolean any(Ray ray, double tMax) {
+    /**
+     * Whether some leaf primitive lies on the ray with 0 &lt; t &lt; tMax. {@code scratch} is this
+     * walk's alone while it runs, as {@link #nearest}'s.
+     */
+    public boolean any(Ray ray, double tMax, WideScratch scratch) {
+        if (wide != null) {
+            return anyWide(ray, tMax, scratch);
+        }
         double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
         boolean nanFree = Slab.nanFree(ox, oy, oz, ix, iy, iz);
@@ -111,6 +162,89 @@ public final class Traversal {
             node = links[o + 2];
         }
         return false;
+    }
+
+    /**
+     * {@link #nearest} over the wide tree: each node's four boxes at once; the interior children met
+     * wait on the stack by entry distance, nearest on top, and one popped is skipped when the cull
+     * distance has fallen below its entry since; a leaf met is tested at once.
+     */
+    private double nearestWide(Ray ray, double tMax, double cull, Hit hit, WideScratch s) {
+        float[] boxes = wide.boxes();
+        int[] children = wide.children();
+        Leaves leaves = this.leaves;
+        WideRay r = s.ray.set(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz);
+        float[] entry = s.entry;
+        int[] stack = s.stack;
+        float[] stackEntry = s.stackEntry;
+        float limit = WideRay.limit(cull);
+        int sp = 0, node = 0;
+        while (true) {
+            int mask = BOXES.test(boxes, WideBvh.FLOATS * node, r, limit, entry);
+            int first = sp;
+            while (mask != 0) {
+                int k = Integer.numberOfTrailingZeros(mask);
+                mask &= mask - 1;
+                int link = children[WideBvh.WIDTH * node + k];
+                if (link >= 0) {
+                    // insert by entry distance, farthest deepest, so the nearest is popped first
+                    float e = entry[k];
+                    int i = sp++;
+                    while (i > first && stackEntry[i - 1] < e) {
+                        stack[i] = stack[i - 1];
+                        stackEntry[i] = stackEntry[i - 1];
+                        i--;
+                    }
+                    stack[i] = link;
+                    stackEntry[i] = e;
+                } else if (link != WideBvh.EMPTY) {
+                    int slot = WideBvh.leafFirst(link);
+                    double found = leaves.nearest(slot, slot + WideBvh.leafCount(link), ray, tMax, cull, hit);
+                    if (found != cull) {
+                        cull = found;
+                        limit = WideRay.limit(cull);
+                    }
+                }
+            }
+            do {
+                if (sp == 0) {
+                    return cull;
+                }
+                node = stack[--sp];
+            } while (stackEntry[sp] > limit);
+        }
+    }
+
+    /** {@link #any} over the wide tree: the children met are pushed in any order; the first hit ends it. */
+    private boolean anyWide(Ray ray, double tMax, WideScratch s) {
+        float[] boxes = wide.boxes();
+        int[] children = wide.children();
+        Leaves leaves = this.leaves;
+        WideRay r = s.ray.set(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz);
+        float[] entry = s.entry;
+        int[] stack = s.stack;
+        float limit = WideRay.limit(tMax);
+        int sp = 0, node = 0;
+        while (true) {
+            int mask = BOXES.test(boxes, WideBvh.FLOATS * node, r, limit, entry);
+            while (mask != 0) {
+                int k = Integer.numberOfTrailingZeros(mask);
+                mask &= mask - 1;
+                int link = children[WideBvh.WIDTH * node + k];
+                if (link >= 0) {
+                    stack[sp++] = link;
+                } else if (link != WideBvh.EMPTY) {
+                    int slot = WideBvh.leafFirst(link);
+                    if (leaves.any(slot, slot + WideBvh.leafCount(link), ray, tMax)) {
+                        return true;
+                    }
+                }
+            }
+            if (sp == 0) {
+                return false;
+            }
+            node = stack[--sp];
+        }
     }
 
     /**

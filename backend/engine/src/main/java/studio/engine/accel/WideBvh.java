@@ -58,6 +58,15 @@ public final class WideBvh {
         return new WideBvhCollapse(bvh, memory).collapse();
     }
 
+    /**
+     * Collapses the binary tree given by its node bounds and links (as {@link Bvh#bounds()} and
+     * {@link Bvh#nodes()}, e.g. a moved mesh's refitted boxes); the wide tree's
+     * {@link #primitives()} is null, its leaves naming slots only.
+     */
+    static WideBvh of(double[] nodeBounds, int[] links, MemoryGate memory) {
+        return new WideBvhCollapse(nodeBounds, links, null, memory).collapse();
+    }
+
     /** Child boxes, {@link #FLOATS} floats per node; read-only. */
     public float[] boxes() {
         return boxes;

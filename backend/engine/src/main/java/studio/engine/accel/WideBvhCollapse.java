@@ -13,6 +13,9 @@ import studio.engine.memory.MemoryGate;
  */
 final class WideBvhCollapse {
 
+    /** Leaf slots a wide link can name: 28 bits of first slot beside 3 of count. */
+    private static final int MAX_SLOTS = 1 << 28;
+
     private final double[] bounds;
     private final int[] links;
     private final int binaryNodes;
@@ -23,11 +26,16 @@ final class WideBvhCollapse {
     private int depth;
 
     WideBvhCollapse(Bvh bvh, MemoryGate memory) {
-        bounds = bvh.bounds();
-        links = bvh.nodes();
-        binaryNodes = bvh.nodeCount();
-        primitives = bvh.primitives();
-        if (primitives.length >= 1 << 28) {
+        this(bvh.bounds(), bvh.nodes(), bvh.primitives(), memory);
+    }
+
+    /** The binary tree as its node bounds and links ({@link Bvh}); {@code primitives} may be null (then so is the wide tree's). */
+    WideBvhCollapse(double[] bounds, int[] links, int[] primitives, MemoryGate memory) {
+        this.bounds = bounds;
+        this.links = links;
+        this.binaryNodes = links.length / 3;
+        this.primitives = primitives;
+        if (primitives != null && primitives.length >= MAX_SLOTS) {
             throw new IllegalArgumentException("a wide BVH holds fewer than 2^28 primitives; got " + primitives.length);
         }
         // a binary tree of n nodes has (n - 1) / 2 interior nodes, and each wide node takes at least
@@ -96,7 +104,7 @@ final class WideBvhCollapse {
         for (int k = 0; k < n; k++) {
             int child = lanes[k];
             children[WideBvh.WIDTH * index + k] = isLeafNode(child)
-                    ? WideBvh.leaf(links[3 * child], links[3 * child + 1]) : build(child, level + 1);
+                    ? leaf(links[3 * child], links[3 * child + 1]) : build(child, level + 1);
         }
         return index;
     }
@@ -110,5 +118,12 @@ final class WideBvhCollapse {
         int o = 6 * node;
         double x = bounds[o + 3] - bounds[o], y = bounds[o + 4] - bounds[o + 1], z = bounds[o + 5] - bounds[o + 2];
         return x * y + y * z + z * x;
+    }
+
+    private static int leaf(int first, int count) {
+        if (first + count > MAX_SLOTS) {
+            throw new IllegalArgumentException("a wide BVH holds fewer than 2^28 primitives; got " + (first + count));
+        }
+        return WideBvh.leaf(first, count);
     }
 }

@@ -1,6 +1,7 @@
 package studio.engine.geometry;
 
 import studio.engine.accel.Bvh;
+import studio.engine.accel.WideScratch;
 import studio.engine.math.Vec3;
 
 /**
@@ -41,6 +42,10 @@ public final class Hit {
     public final int[] shapeStack = new int[Bvh.STACK_SIZE];
     /** Where the ray enters each node on {@link #shapeStack}. */
     public final double[] shapeStackEntry = new double[Bvh.STACK_SIZE];
+    /** The scene's wide walk's working memory, where traversals walk wide trees (else null). */
+    public final WideScratch sceneWide = WideScratch.ifUsed();
+    /** A shape's wide walk's working memory, used while the scene's is in use (else null). */
+    public final WideScratch shapeWide = WideScratch.ifUsed();
 
     /** A hit on a surface whose shading normal is its geometric normal. */
     void set(double t, double px, double py, double pz, double nx, double ny, double nz,

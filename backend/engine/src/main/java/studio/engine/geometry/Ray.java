@@ -1,5 +1,6 @@
 package studio.engine.geometry;
 
+import studio.engine.accel.WideScratch;
 import studio.engine.math.Vec3;
 
 /**
@@ -32,9 +33,26 @@ public final class Ray {
     /** The ray in the triangle test's frame, set up on the first {@link #shear} after {@link #set}. */
     private final RayShear shear = new RayShear();
     private boolean sheared;
+    /** Working memory of the scene's and a shape's wide any-hit walks, made on first use (kept by {@link #set}). */
+    private WideScratch sceneWide, shapeWide;
 
     public Ray(double ox, double oy, double oz, double dx, double dy, double dz) {
         set(ox, oy, oz, dx, dy, dz);
+    }
+
+    /**
+     * The scene's wide any-hit walk's working memory (null where traversals walk binary trees,
+     * {@link WideScratch#ifUsed}); made on the first call, so a ray that never meets a tree carries none.
+     */
+    public WideScratch sceneWide() {
+        WideScratch s = sceneWide;
+        return s != null ? s : (sceneWide = WideScratch.ifUsed());
+    }
+
+    /** As {@link #sceneWide}, for a walk inside one shape (a mesh's) while the scene's is in use. */
+    public WideScratch shapeWide() {
+        WideScratch s = shapeWide;
+        return s != null ? s : (shapeWide = WideScratch.ifUsed());
     }
 
     /** A ray to be filled by {@link #set}. */

@@ -137,7 +137,7 @@ public final class TriangleMesh implements Shape {
         }
         this.nodeBounds = movable ? MeshPlacement.fitted(positions, sorted, nodeLinks, nodeCount) : bvh.bounds();
         this.leaves = new TriangleLeaves(positions, sorted);
-        this.traversal = new Traversal(nodeBounds, nodeLinks, leaves);
+        this.traversal = new Traversal(nodeBounds, nodeLinks, leaves, memory);
         this.bounds = MeshPlacement.rootBounds(nodeBounds);
         this.buildNanos = bvh.buildNanos();
         this.bvhDepth = bvh.depth();
@@ -237,7 +237,7 @@ public final class TriangleMesh implements Shape {
 
     @Override
     public boolean intersect(Ray ray, double tMax, Hit hit) {
-        double best = traversal.nearest(ray, tMax, tMax, hit, hit.shapeStack, hit.shapeStackEntry);
+        double best = traversal.nearest(ray, tMax, tMax, hit, hit.shapeStack, hit.shapeStackEntry, hit.shapeWide);
         if (!(best < tMax)) {
             return false;
         }
@@ -262,7 +262,7 @@ public final class TriangleMesh implements Shape {
                 }
             }
         }
-        return traversal.any(ray, tMax);
+        return traversal.any(ray, tMax, ray.shapeWide());
     }
 
     /** Whether triangle {@code tri} lies on the ray with 0 &lt; t &lt; tMax (a light buffer's test). */

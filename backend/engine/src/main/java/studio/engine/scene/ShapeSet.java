@@ -226,7 +226,7 @@ public final class ShapeSet {
         cull = listed.nearest(0, listedCount, ray, tMax, cull, hit);
         cull = planes.nearest(0, planeCount, ray, tMax, cull, hit);
         if (tree != null && !(slot >= 0 && hit.primitive != ShapeLeaves.NONE && alone(slot, ray, cull))) {
-            tree.nearest(ray, tMax, cull, hit, hit.sceneStack, hit.sceneStackEntry);
+            tree.nearest(ray, tMax, cull, hit, hit.sceneStack, hit.sceneStackEntry, hit.sceneWide);
         }
         return hit.primitive != ShapeLeaves.NONE;
     }
@@ -320,7 +320,7 @@ public final class ShapeSet {
     private boolean blockedInTree(Ray ray, double tMax) {
         LightBuffer buffer = bufferAtEnd(ray, tMax);
         int slot = buffer == null ? LightBuffer.UNDECIDED : buffer.occluder(ray, tMax);
-        return slot == LightBuffer.UNDECIDED ? tree.any(ray, tMax) : slot >= 0;
+        return slot == LightBuffer.UNDECIDED ? tree.any(ray, tMax, ray.sceneWide()) : slot >= 0;
     }
 
     /** The light buffer of the light the ray ends at, or null. */

@@ -5,19 +5,19 @@ import studio.engine.geometry.Ray;
 /**
  * The closest-hit and any-hit walks of a binary {@link Bvh}, as the engine's traversals do them
  * (the double {@link Slab} test, nearer child first, a missed node never pushed; any-hit by escape
- * indices), over any {@link Leaves}: the reference a {@link WideWalk} must agree with, and the
+ * indices), over any {@link Primitives}: the reference a {@link WideWalk} must agree with, and the
  * baseline of the wide BVH benchmark. One per thread.
  */
 public final class BinaryWalk {
 
     private final Bvh bvh;
-    private final Leaves leaves;
+    private final Primitives leaves;
     private final int[] stack = new int[Bvh.STACK_SIZE];
     private final double[] stackEntry = new double[Bvh.STACK_SIZE];
     /** The distance of the last {@link #closest} hit. */
     public double t;
 
-    public BinaryWalk(Bvh bvh, Leaves leaves) {
+    public BinaryWalk(Bvh bvh, Primitives leaves) {
         this.bvh = bvh;
         this.leaves = leaves;
     }

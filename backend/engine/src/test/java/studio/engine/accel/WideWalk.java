@@ -3,7 +3,7 @@ package studio.engine.accel;
 import studio.engine.geometry.Ray;
 
 /**
- * The closest-hit and any-hit walks of a {@link WideBvh}, over any {@link Leaves}: how the
+ * The closest-hit and any-hit walks of a {@link WideBvh}, over any {@link Primitives}: how the
  * engine's one traversal in this package uses the wide tree (see the report of issue 47's wide BVH
  * part). Each node's four boxes are tested at once by a {@link WideBoxTest}; a leaf met is tested
  * at once; the interior children met wait on a stack with their entry distances, the nearest on
@@ -13,7 +13,7 @@ import studio.engine.geometry.Ray;
 public final class WideWalk {
 
     private final WideBvh tree;
-    private final Leaves leaves;
+    private final Primitives leaves;
     private final WideBoxTest boxTest;
     private final WideRay wide = new WideRay();
     private final float[] entry = new float[WideBvh.WIDTH];
@@ -23,11 +23,11 @@ public final class WideWalk {
     public double t;
 
     /** A walk with this JVM's box test ({@link WideBoxTests#get}). */
-    public WideWalk(WideBvh tree, Leaves leaves) {
+    public WideWalk(WideBvh tree, Primitives leaves) {
         this(tree, leaves, WideBoxTests.get());
     }
 
-    public WideWalk(WideBvh tree, Leaves leaves, WideBoxTest boxTest) {
+    public WideWalk(WideBvh tree, Primitives leaves, WideBoxTest boxTest) {
         this.tree = tree;
         this.leaves = leaves;
         this.boxTest = boxTest;

@@ -34,7 +34,7 @@ class WideWalkTest {
                 }
                 spheres[4 * i + 3] = (random.nextBoolean() ? 1 : 0.1 + random.nextDouble()) * scale;
             }
-            assertAgree(new SphereLeaves(spheres), random, scale, shift);
+            assertAgree(new SpherePrimitives(spheres), random, scale, shift);
         }
     }
 
@@ -54,7 +54,7 @@ class WideWalkTest {
                 indices[3 * t + v] = 3 * t + v;
             }
         }
-        assertAgree(new TriangleLeaves(positions, indices), random, 1, 0);
+        assertAgree(new TrianglePrimitives(positions, indices), random, 1, 0);
     }
 
     /**
@@ -71,7 +71,7 @@ class WideWalkTest {
         for (int i = 0; i < 4 * n; i++) {
             spheres[i] = i % 4 == 3 ? 0.3 : random.nextDouble() * 40;
         }
-        SphereLeaves leaves = new SphereLeaves(spheres);
+        SpherePrimitives leaves = new SpherePrimitives(spheres);
         WideWalk walk = new WideWalk(WideBvh.of(Bvh.build(leaves.boxes(), n)), leaves);
         Ray[] rays = new Ray[1024];
         for (int i = 0; i < rays.length; i++) {
@@ -98,7 +98,7 @@ class WideWalkTest {
         return found;
     }
 
-    private static void assertAgree(Leaves leaves, Random random, double scale, double shift) {
+    private static void assertAgree(Primitives leaves, Random random, double scale, double shift) {
         Bvh bvh = Bvh.build(leaves.boxes(), leaves.count());
         WideBvh wide = WideBvh.of(bvh);
         BinaryWalk binary = new BinaryWalk(bvh, leaves);

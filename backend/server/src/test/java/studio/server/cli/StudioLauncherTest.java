@@ -314,28 +314,33 @@ class StudioLauncherTest {
     }
 
     /**
-     * A JDK of version 20 or newer with the Vector API's incubator module runs everything with it,
-     * the training run too (the cache keeps the module graph it was recorded with); JDK 17, and a
+     * A JDK of version 20 or newer with the Vector API's incubator module runs the service with it,
+     * the training run too, into a cache of its own (the cache keeps the module graph it was
+     * recorded with); renders, quick or longer, run without it from the plain cache; JDK 17, and a
      * runtime built without the module, run without it.
      */
     @Test
-    void aJdkWithTheVectorModuleRunsEveryJvmWithIt() throws Exception {
+    void aJdkWithTheVectorModuleRunsTheServiceWithItAndRendersWithout() throws Exception {
         String module = "--add-modules jdk.incubator.vector";
-        List<String> calls = calls("render", "s.json", "--samples", "16");
+        List<String> calls = calls();
         String training = calls.stream().filter(c -> c.contains(" train ")).findFirst().orElseThrow();
-        assertThat(training).contains(module);
-        assertThat(calls.get(calls.size() - 1)).contains(module);
-        assertThat(launched("render", "s.json", "--width", "800", "--height", "600", "--samples", "1")).contains(module);
-        assertThat(launched()).contains(module);
-        assertThat(dir.resolve("studio-cds/java")).content().contains(" aot vector");
+        assertThat(training).contains(module).contains("studio-cds-vector.tmp.");
+        assertThat(calls.get(calls.size() - 1)).contains(module).contains("studio-cds-vector/studio.jar");
+        assertThat(dir.resolve("studio-cds-vector/java")).content().contains(" aot vector");
+
+        for (String samples : List.of("1", "16")) {
+            int before = calls().size();
+            calls = calls("render", "s.json", "--width", "800", "--height", "600", "--samples", samples);
+            assertThat(calls.subList(before, calls.size())).as("a render and any training run")
+                    .isNotEmpty().noneMatch(c -> c.contains("add-modules"));
+            assertThat(jarOf(calls.get(calls.size() - 1))).endsWith("studio-cds/studio.jar");
+        }
+        assertThat(dir.resolve("studio-cds/java")).content().doesNotContain("vector");
 
         standInJdk("17.0.15");
-        calls = calls("render", "s.json", "--samples", "16");
-        assertThat(calls).noneMatch(c -> c.contains("add-modules"));
+        assertThat(calls()).noneMatch(c -> c.contains("add-modules"));
 
         standInJdk("25.0.1", "java.base jdk.jfr");
-        calls = calls("render", "s.json", "--samples", "16");
-        assertThat(calls).noneMatch(c -> c.contains("add-modules"));
-        assertThat(dir.resolve("studio-cds/java")).content().doesNotContain("vector");
+        assertThat(calls()).noneMatch(c -> c.contains("add-modules"));
     }
 }

@@ -4,15 +4,15 @@ import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Sphere;
 
-/** Spheres as {@link Leaves}, through the engine's sphere test ({@link Sphere#intersect}). */
-public final class SphereLeaves implements Leaves {
+/** Spheres as {@link Primitives}, through the engine's sphere test ({@link Sphere#intersect}). */
+public final class SpherePrimitives implements Primitives {
 
     private final double[] spheres;
     private final double[] boxes;
     private final Hit hit = new Hit();
 
     /** Spheres as (cx, cy, cz, radius) quadruples. */
-    public SphereLeaves(double[] spheres) {
+    public SpherePrimitives(double[] spheres) {
         this.spheres = spheres.clone();
         int n = spheres.length / 4;
         boxes = new double[6 * n];

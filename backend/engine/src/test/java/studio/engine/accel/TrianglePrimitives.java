@@ -3,17 +3,17 @@ package studio.engine.accel;
 import studio.engine.geometry.Ray;
 
 /**
- * Triangles as {@link Leaves}, with the Möller-Trumbore test in double: the same for the binary and
+ * Triangles as {@link Primitives}, with the Möller-Trumbore test in double: the same for the binary and
  * the wide walk, so comparing the two measures the trees, not the triangle test.
  */
-public final class TriangleLeaves implements Leaves {
+public final class TrianglePrimitives implements Primitives {
 
     private final double[] positions;
     private final int[] indices;
     private final double[] boxes;
 
     /** Vertices as (x, y, z) triples and triangles as vertex index triples. */
-    public TriangleLeaves(double[] positions, int[] indices) {
+    public TrianglePrimitives(double[] positions, int[] indices) {
         this.positions = positions;
         this.indices = indices;
         int n = indices.length / 3;
