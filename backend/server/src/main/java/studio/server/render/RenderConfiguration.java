@@ -8,13 +8,18 @@ import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.MemoryBudget;
 import studio.server.system.StudioProperties;
 
-/** The render budget every render runs within (its renders counted in the service's metrics), and the synchronous render service (POST /api/render). */
+/** The render budget every render runs within (its renders counted in the service's metrics), the synchronous render service (POST /api/render), and the start-up warm-up. */
 @Configuration(proxyBeanMethods = false)
 class RenderConfiguration {
 
     @Bean
     RenderBudget renderBudget(StudioProperties properties, MemoryBudget memory, MeterRegistry metrics) {
         return new RenderBudget(properties.limits().maxRenderTime(), memory, new RenderMetrics(metrics));
+    }
+
+    @Bean
+    RenderWarmUp renderWarmUp(SceneCompiler compiler, StudioProperties properties, RenderBudget budget) {
+        return new RenderWarmUp(compiler, budget, properties.renderThreads(), properties.warmUp());
     }
 
     @Bean(destroyMethod = "close")

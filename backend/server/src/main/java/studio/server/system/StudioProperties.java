@@ -16,11 +16,13 @@ import org.springframework.util.unit.DataSize;
  * @param renderThreads     worker threads per render, 0 for all cores
  * @param renderMemory      the heap that renders and request bodies may hold at once; 0 for half of the maximum
  *                          heap; beyond it 503 (a render) or 429 (a body)
+ * @param warmUp            at start-up, before the port opens, the longest the service may spend rendering
+ *                          its small training scenes, so that the first request runs compiled code; 0s for none
  */
 @ConfigurationProperties("studio")
 public record StudioProperties(@DefaultValue Limits limits, @DefaultValue Jobs jobs, @DefaultValue Assets assets,
                                @DefaultValue("2") int concurrentRenders, @DefaultValue("0") int renderThreads,
-                               @DefaultValue("0B") DataSize renderMemory) {
+                               @DefaultValue("0B") DataSize renderMemory, @DefaultValue("10s") Duration warmUp) {
 
     /**
      * Render jobs: how many run at once, how many wait, how long results are kept, and on shutdown

@@ -51,9 +51,14 @@ public interface MeshFiles {
 
     /** The meshes shipped in the jar under scenes/ (copied from scenes/ at build time). */
     static MeshFiles bundled() {
+        return onClasspath("scenes/");
+    }
+
+    /** Meshes in the jar under {@code folder} (ending in a slash), e.g. the start-up warm-up's {@code training/}. */
+    static MeshFiles onClasspath(String folder) {
         return file -> {
             requireName(file);
-            try (InputStream in = MeshFiles.class.getClassLoader().getResourceAsStream("scenes/" + file)) {
+            try (InputStream in = MeshFiles.class.getClassLoader().getResourceAsStream(folder + file)) {
                 if (in == null) {
                     throw new IllegalArgumentException("no mesh '" + file + "' ships with this server; send the "
                             + "OBJ text inline as \"obj\" instead");
