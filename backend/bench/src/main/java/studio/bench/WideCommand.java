@@ -13,20 +13,17 @@ import java.util.TreeMap;
 
 import studio.bench.jmh.RandomRays;
 import studio.bench.jmh.WideBvhBenchmark;
-import studio.engine.accel.BinaryWalk;
-import studio.engine.accel.Bvh;
-import studio.engine.accel.Primitives;
-import studio.engine.accel.ScalarBoxTest;
+import studio.engine.accel.Traversal;
 import studio.engine.accel.WideBoxTests;
-import studio.engine.accel.WideBvh;
-import studio.engine.accel.WideWalk;
+import studio.engine.accel.Walks;
 import studio.engine.geometry.Ray;
 
 /**
- * {@code java -jar studio-bench.jar wide [ROUNDS]}: the binary BVH walk against the wide one,
- * scalar and Vector API, in thread CPU time per ray (the machine may be busy: CPU time counts only
- * this thread's work). Each (scene, walk) runs in a process of its own (so the JIT sees one walk),
- * with the incubator module and {@code studio.vector=on}, twice in alternation; each process
+ * {@code java -jar studio-bench.jar wide [ROUNDS]}: the engine's traversal walking the binary BVH
+ * against it walking the wide one, scalar and Vector API, in thread CPU time per ray (the machine
+ * may be busy: CPU time counts only this thread's work). Each (scene, walk) runs in a process of
+ * its own (so the JIT sees one walk), with the incubator module and {@code studio.vector} on, or
+ * off for the scalar wide walk, twice in alternation; each process
  * measures ROUNDS rounds (default 6) of 8 x 16,384 random rays (those of {@link WideBvhBenchmark})
  * after two of warm-up; prints the median of the rounds in ns a ray.
  */
@@ -50,8 +47,9 @@ public final class WideCommand {
         for (int alternation = 0; alternation < 2; alternation++) {
             for (String scene : SCENES) {
                 for (String walk : WALKS) {
+                    String vector = "-D" + WideBoxTests.PROPERTY + (walk.equals("wide-scalar") ? "=off" : "=on");
                     Process process = new ProcessBuilder(java, "--add-modules", "jdk.incubator.vector",
-                            "-Dstudio.vector=on", "-cp", classPath, BenchMain.class.getName(), "wide", "one", scene, walk,
+                            vector, "-cp", classPath, BenchMain.class.getName(), "wide", "one", scene, walk,
                             Integer.toString(rounds)).redirectError(ProcessBuilder.Redirect.DISCARD).start();
                     try (BufferedReader reader = new BufferedReader(
                             new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
@@ -77,20 +75,9 @@ public final class WideCommand {
 
     /** One process's rounds: prints "scene/walk/kind ns" a round. */
     private static void one(String scene, String walk, int rounds, PrintStream out) {
-        Primitives leaves = WideBvhBenchmark.leaves(scene);
-        Bvh bvh = Bvh.build(leaves.boxes(), leaves.count());
-        BinaryWalk binary = walk.equals("binary") ? new BinaryWalk(bvh, leaves) : null;
-        WideWalk wide = switch (walk) {
-            case "wide-scalar" -> new WideWalk(WideBvh.of(bvh), leaves, new ScalarBoxTest());
-            case "wide-vector" -> {
-                if (!WideBoxTests.vectorized()) {
-                    throw new IllegalStateException("the Vector API box test is not in use");
-                }
-                yield new WideWalk(WideBvh.of(bvh), leaves, WideBoxTests.get());
-            }
-            default -> null;
-        };
-        Ray[] rays = RandomRays.toward(WideBvhBenchmark.bounds(leaves.boxes()), 4);
+        Walks walks = WideBvhBenchmark.walks(scene);
+        Traversal traversal = WideBvhBenchmark.walk(walks, walk);
+        Ray[] rays = RandomRays.toward(walks.bounds(), 4);
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         long sink = 0;
         for (int round = -2; round < rounds; round++) {
@@ -99,10 +86,9 @@ public final class WideCommand {
                 for (int rep = 0; rep < 8; rep++) {
                     for (Ray ray : rays) {
                         if (kind == 0) {
-                            sink += binary != null ? binary.closest(ray, Double.POSITIVE_INFINITY)
-                                    : wide.closest(ray, Double.POSITIVE_INFINITY);
+                            sink += Double.isNaN(walks.nearest(traversal, ray, Double.POSITIVE_INFINITY)) ? 0 : 1;
                         } else {
-                            sink += (binary != null ? binary.occluded(ray, 1.0) : wide.occluded(ray, 1.0)) ? 1 : 0;
+                            sink += walks.any(traversal, ray, 1.0) ? 1 : 0;
                         }
                     }
                 }

@@ -1,6 +1,5 @@
 package studio.bench.jmh;
 
-import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 import org.openjdk.jmh.annotations.Benchmark;
@@ -17,28 +16,23 @@ import org.openjdk.jmh.annotations.Warmup;
 
 import studio.bench.MeshScene;
 import studio.bench.ScalingScenes;
-import studio.engine.accel.Aabb;
-import studio.engine.accel.BinaryWalk;
-import studio.engine.accel.Bvh;
-import studio.engine.accel.Primitives;
-import studio.engine.accel.ScalarBoxTest;
-import studio.engine.accel.SpherePrimitives;
-import studio.engine.accel.TrianglePrimitives;
+import studio.engine.accel.Traversal;
+import studio.engine.accel.Walks;
 import studio.engine.accel.WideBoxTests;
 import studio.engine.accel.WideBvh;
-import studio.engine.accel.WideWalk;
 import studio.engine.geometry.Ray;
-import studio.engine.geometry.Sphere;
+import studio.engine.geometry.Shape;
 import studio.engine.geometry.TriangleMesh;
 import studio.engine.scene.SceneObject;
 
 /**
- * The binary BVH walk against the four-wide one ({@link WideBvh}) on the same primitives and rays,
- * the wide one with the scalar and with the Vector API box test: {@code spheres-10k}, the scaling
- * benchmark's 10,000 spheres, and {@code mesh-100k}, the 104,000-triangle torus knot (Möller-Trumbore
- * triangles, the same in every walk). Random rays as {@link BvhTraversalBenchmark}'s. The forks
- * run with the incubator module and {@code studio.vector=on}, so {@code wide-vector} is the Vector
- * API path on JDK 17 as on 25: {@code java -jar studio-bench.jar jmh WideBvhBenchmark}.
+ * The engine's traversal ({@link Traversal}) walking the binary BVH against it walking the
+ * four-wide one ({@link WideBvh}) on the same leaves and rays: {@code spheres-10k}, the scaling
+ * benchmark's 10,000 spheres, and {@code mesh-100k}, the 104,000-triangle torus knot, each through
+ * the engine's own leaf tests, the same in every walk. Random rays as {@link BvhTraversalBenchmark}'s.
+ * The forks run with the incubator module and {@code studio.vector=on}, so {@code wide} is the
+ * Vector API walk on JDK 17 as on 25: {@code java -jar studio-bench.jar jmh WideBvhBenchmark}; the
+ * scalar wide walk is {@link studio.bench.WideCommand}'s {@code wide-scalar}.
  */
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.NANOSECONDS)
@@ -51,75 +45,60 @@ public class WideBvhBenchmark {
     @Param({"spheres-10k", "mesh-100k"})
     public String scene;
 
-    @Param({"binary", "wide-scalar", "wide-vector"})
+    @Param({"binary", "wide"})
     public String tree;
 
-    private BinaryWalk binary;
-    private WideWalk wide;
+    private Walks walks;
+    private Traversal walk;
     private Ray[] rays;
     private int next;
 
     @Setup
     public void setUp() {
-        Primitives leaves = leaves(scene);
-        Bvh bvh = Bvh.build(leaves.boxes(), leaves.count());
-        switch (tree) {
-            case "binary" -> binary = new BinaryWalk(bvh, leaves);
-            case "wide-scalar" -> wide = new WideWalk(WideBvh.of(bvh), leaves, new ScalarBoxTest());
-            case "wide-vector" -> {
-                if (!WideBoxTests.vectorized()) {
-                    throw new IllegalStateException("the Vector API box test is not in use");
-                }
-                wide = new WideWalk(WideBvh.of(bvh), leaves, WideBoxTests.get());
-            }
-            default -> throw new IllegalArgumentException(tree);
-        }
-        rays = RandomRays.toward(bounds(leaves.boxes()), 4);
+        walks = walks(scene);
+        walk = walk(walks, tree);
+        rays = RandomRays.toward(walks.bounds(), 4);
     }
 
-    /** The primitives of a scene: {@code spheres-10k} or {@code mesh-100k}. */
-    public static Primitives leaves(String scene) {
+    /** The leaves and tree of a scene: {@code spheres-10k} or {@code mesh-100k}. */
+    public static Walks walks(String scene) {
         if (scene.equals("spheres-10k")) {
-            List<SceneObject> objects = ScalingScenes.spheres(10_000);
-            double[] spheres = new double[4 * objects.size()];
-            for (int i = 0; i < objects.size(); i++) {
-                Sphere s = (Sphere) objects.get(i).shape();
-                spheres[4 * i] = s.center().x();
-                spheres[4 * i + 1] = s.center().y();
-                spheres[4 * i + 2] = s.center().z();
-                spheres[4 * i + 3] = s.radius();
-            }
-            return new SpherePrimitives(spheres);
+            return Walks.ofShapes(ScalingScenes.spheres(10_000).stream().map(SceneObject::shape).toArray(Shape[]::new));
         }
         if (scene.equals("mesh-100k")) {
             TriangleMesh knot = ScalingScenes.placedKnot(MeshScene.mesh());
-            return new TrianglePrimitives(knot.positions(), knot.indices());
+            return Walks.ofTriangles(knot.positions(), knot.indices());
         }
         throw new IllegalArgumentException(scene);
     }
 
-    /** The union of primitive boxes (six doubles each). */
-    public static Aabb bounds(double[] boxes) {
-        double[] b = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE,
-                -Double.MAX_VALUE};
-        for (int i = 0; i < boxes.length; i += 6) {
-            for (int a = 0; a < 3; a++) {
-                b[a] = Math.min(b[a], boxes[i + a]);
-                b[a + 3] = Math.max(b[a + 3], boxes[i + a + 3]);
+    /**
+     * The traversal walking the tree as named: {@code binary}, or {@code wide} with this JVM's box
+     * test; {@code wide-scalar} and {@code wide-vector} are {@code wide} where that is this JVM's.
+     */
+    public static Traversal walk(Walks walks, String name) {
+        boolean vector = WideBoxTests.vectorized();
+        return switch (name) {
+            case "binary" -> walks.binary();
+            case "wide" -> walks.wide();
+            case "wide-scalar", "wide-vector" -> {
+                if (vector != name.equals("wide-vector")) {
+                    throw new IllegalStateException(name + " needs " + WideBoxTests.PROPERTY + "="
+                            + (vector ? "off" : "on") + ", this JVM's box test is " + WideBoxTests.get());
+                }
+                yield walks.wide();
             }
-        }
-        return new Aabb(b[0], b[1], b[2], b[3], b[4], b[5]);
+            default -> throw new IllegalArgumentException(name);
+        };
     }
 
     @Benchmark
-    public int closestHit() {
-        Ray ray = rays[next++ & RandomRays.MASK];
-        return binary != null ? binary.closest(ray, Double.POSITIVE_INFINITY) : wide.closest(ray, Double.POSITIVE_INFINITY);
+    public double closestHit() {
+        return walks.nearest(walk, rays[next++ & RandomRays.MASK], Double.POSITIVE_INFINITY);
     }
 
     @Benchmark
     public boolean anyHit() {
-        Ray ray = rays[next++ & RandomRays.MASK];
-        return binary != null ? binary.occluded(ray, 1.0) : wide.occluded(ray, 1.0);
+        return walks.any(walk, rays[next++ & RandomRays.MASK], 1.0);
     }
 }

@@ -55,11 +55,20 @@ public final class Traversal {
 
     /** As above, asking {@code memory} before the wide tree's arrays where one is built. */
     public Traversal(double[] nodeBounds, int[] links, Leaves leaves, MemoryGate memory) {
+        this(nodeBounds, links, leaves, memory, WIDE && slots(links) >= WIDE_MIN_SLOTS);
+    }
+
+    /**
+     * As above, walking the wide tree (with this JVM's box test) if {@code wide}, else the binary
+     * one, whatever this JVM would choose: the same hits either way, which the tests hold the two
+     * walks to, and the wide BVH benchmark times.
+     */
+    Traversal(double[] nodeBounds, int[] links, Leaves leaves, MemoryGate memory, boolean wide) {
         this.nodeBounds = nodeBounds;
         this.links = links;
         this.nodeCount = links.length / 3;
         this.leaves = leaves;
-        this.wide = WIDE && slots(links) >= WIDE_MIN_SLOTS ? WideBvh.of(nodeBounds, links, memory) : null;
+        this.wide = wide ? WideBvh.of(nodeBounds, links, memory) : null;
     }
 
     /** The leaf slots of the tree with these links: the sum of its leaves' counts. */
@@ -69,11 +78,6 @@ public final class Traversal {
             slots += Math.max(links[o], 0);
         }
         return slots;
-    }
-
-    /** Whether this traversal walks a {@link WideBvh}. */
-    public boolean isWide() {
-        return wide != null;
     }
 
     /**

@@ -208,11 +208,6 @@ public final class TriangleMesh implements Shape {
                 Arrays.copyOf(buffers, built));
     }
 
-    /** How many light buffers this mesh has. */
-    public int lightBufferCount() {
-        return lightBuffers.length;
-    }
-
     /**
      * This mesh with its position changed to {@code position}: the same mesh as the constructor
      * makes for the same data, scale, rotation and that position, made without building its BVH
@@ -268,28 +263,6 @@ public final class TriangleMesh implements Shape {
     /** Whether triangle {@code tri} lies on the ray with 0 &lt; t &lt; tMax (a light buffer's test). */
     boolean occludedBy(int tri, Ray ray, double tMax) {
         return leaves.any(tri, tri + 1, ray, tMax);
-    }
-
-    /**
-     * The nearest hit by testing every triangle, without the BVH: the reference the BVH is
-     * checked against (tests, robustness case NUM-06, docs/robustness.md).
-     */
-    boolean intersectEachTriangle(Ray ray, double tMax, Hit hit) {
-        RayShear f = ray.shear();
-        double best = tMax;
-        int bestTri = -1;
-        for (int tri = 0; tri < indices.length / 3; tri++) {
-            double t = leaves.distance(tri, f, best);
-            if (t == t) {
-                best = t;
-                bestTri = tri;
-            }
-        }
-        if (bestTri < 0) {
-            return false;
-        }
-        fill(bestTri, f, hit);
-        return true;
     }
 
     /** Fills the hit record for a triangle {@link TriangleLeaves#distance} accepted. */

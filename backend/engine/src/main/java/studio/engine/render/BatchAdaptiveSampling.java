@@ -53,7 +53,9 @@ final class BatchAdaptiveSampling implements TileSampling {
     }
 
     @Override
-    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except, PixelPaths paths) {
+    public long render(TileRequest request) {
+        Film film = request.film();
+        TileRect tile = request.tile();
         long bad = 0;
         for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
             for (int x = tile.x(); x < tile.x() + tile.width(); x++) {

@@ -19,7 +19,11 @@ final class FixedSampling implements TileSampling {
     }
 
     @Override
-    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except, PixelPaths paths) {
+    public long render(TileRequest request) {
+        Film film = request.film();
+        TileRect tile = request.tile();
+        PixelLattice pixels = request.pixels(), except = request.except();
+        PixelPaths paths = request.paths();
         long bad = 0;
         int step = pixels.step(), n = pixelSamples.samplesPerPixel();
         for (int y = pixels.first(tile.y()); y < tile.y() + tile.height(); y += step) {

@@ -98,7 +98,9 @@ final class ProgressiveSobolSampling implements TileSampling {
      * tile stops there if all base samples of its 3 x 3 neighbourhood agree, else walks on.
      */
     @Override
-    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except, PixelPaths paths) {
+    public long render(TileRequest request) {
+        Film film = request.film();
+        TileRect tile = request.tile();
         int x0 = Math.max(0, tile.x() - 1), y0 = Math.max(0, tile.y() - 1);
         int x1 = Math.min(width, tile.x() + tile.width() + 1), y1 = Math.min(height, tile.y() + tile.height() + 1);
         int stride = x1 - x0;

@@ -51,6 +51,11 @@ public record RenderRequest(Scene scene, RenderSettings settings, Film film, Pix
         return new RenderRequest(scene, settings, into, only, but, paths, listener, cancelled);
     }
 
+    /** This render's part in {@code tile}: its film, pixels and recorded rays there. */
+    public TileRequest tile(TileRect tile) {
+        return new TileRequest(film, tile, pixels, except, paths);
+    }
+
     /** The same render, leaving out the pixels {@code known} holds and recording the rays of the others there. */
     public RenderRequest recording(PixelPaths known) {
         return new RenderRequest(scene, settings, film, pixels, except, known, listener, cancelled);

@@ -106,7 +106,7 @@ public final class Renderer {
                         TileRenderer worker = workers.get();
                         long raysBefore = worker.rays(), samplesBefore = worker.samples();
                         long cpuBefore = THREADS.getCurrentThreadCpuTime();
-                        long bad = worker.render(film, tile, pixels, except, paths);
+                        long bad = worker.render(request.tile(tile));
                         cpuNanos.add(THREADS.getCurrentThreadCpuTime() - cpuBefore);
                         rays.add(worker.rays() - raysBefore);
                         samples.add(worker.samples() - samplesBefore);

@@ -35,18 +35,18 @@ public final class TileRenderer {
     }
 
     /**
-     * Renders the tile's pixels on {@code pixels}, not on {@code except} (null: none) and not known
-     * to {@code paths} (null: none) into the film, recording the rendered pixels' rays in
-     * {@code paths}; the film's other pixels are left as they are. A whole tile is
-     * {@code render(film, tile, PixelLattice.ALL, null, null)}.
+     * Renders what the request asks: the tile's pixels on its lattice, not on its {@code except}
+     * and not known to its {@code paths} into its film, recording the rendered pixels' rays in those
+     * paths; the film's other pixels are left as they are. A whole tile is
+     * {@code render(TileRequest.whole(film, tile))}.
      *
      * @return how many samples came out non-finite (dropped; the pixel is the mean of the others)
      * @throws IllegalArgumentException under adaptive sampling, which renders every pixel
      * @throws RenderCancelledException once this worker's render is stopped
      */
-    public long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except, PixelPaths paths) {
-        requireLattice(settings, pixels, except, paths);
-        return sampling.render(film, tile, pixels, except, paths);
+    public long render(TileRequest request) {
+        requireLattice(settings, request.pixels(), request.except(), request.paths());
+        return sampling.render(request);
     }
 
     /**

@@ -10,14 +10,14 @@ import studio.engine.sampler.SobolSampler;
 sealed interface TileSampling permits FixedSampling, BatchAdaptiveSampling, ProgressiveSobolSampling {
 
     /**
-     * Renders the tile's pixels on {@code pixels} and not on {@code except} (null: none) into
-     * the film; with {@code paths} (fixed sampling only; null: none), only the pixels not known
-     * there, recording their rays.
+     * Renders what the request asks into its film: the tile's pixels on its lattice and not on its
+     * {@code except}; with its {@code paths} (fixed sampling only), only the pixels not known there,
+     * recording their rays.
      *
      * @return how many samples came out non-finite
      * @throws RenderCancelledException once the render's stop signal is raised
      */
-    long render(Film film, TileRect tile, PixelLattice pixels, PixelLattice except, PixelPaths paths);
+    long render(TileRequest request);
 
     /** Camera samples taken so far. */
     long samples();

@@ -203,11 +203,6 @@ public final class ShapeSet {
         return size;
     }
 
-    /** Whether the bounded shapes are searched through a tree. */
-    boolean usesBvh() {
-        return tree != null;
-    }
-
     /**
      * The nearest hit with 0 &lt; t &lt; tMax under the tie rule; sets {@code hit.primitive} to the
      * shape's index. A bounded shape the ray starts into ({@link Ray#within}) is tested first, which
@@ -257,18 +252,13 @@ public final class ShapeSet {
      * further than the margin from every other bounded shape, far more than the rounding of any
      * intersection test (about 1e-15 of the coordinates), so none of them can report a hit on it.
      */
-    boolean standsApart(int slot) {
+    private boolean standsApart(int slot) {
         byte known = slotApart[slot];
         if (known == UNKNOWN) {
             known = nothingNear(slot) ? APART : NEAR;
             slotApart[slot] = known;
         }
         return known == APART;
-    }
-
-    /** Shape i's slot in the tree, or -1 (for tests). */
-    int slotOf(int i) {
-        return slotOfShape == null ? -1 : slotOfShape[i];
     }
 
     /** The tree searched for another slot whose box overlaps this slot's, widened by twice the margin. */
@@ -336,14 +326,5 @@ public final class ShapeSet {
             }
         }
         return null;
-    }
-
-    /** How many light buffers the set has (for tests). */
-    int lightBufferCount() {
-        int n = 0;
-        for (LightBuffer b : lightBuffers) {
-            n += b != null ? 1 : 0;
-        }
-        return n;
     }
 }

@@ -42,7 +42,7 @@ class LightBufferTest {
     void shadowRaysTowardsTheLightAreAnsweredAsTheTreeAnswersThem() {
         TriangleMesh plain = knot();
         TriangleMesh lit = plain.withLightBuffers(LIGHTS, MemoryGate.UNLIMITED);
-        assertEquals(4, lit.lightBufferCount());
+        assertBuffersFor(plain, LIGHTS, 4);
         Random random = new Random(13);
         Hit hit = new Hit();
         int[] decided = new int[2];
@@ -135,7 +135,7 @@ class LightBufferTest {
         TriangleMesh plain = new TriangleMesh(new MeshData(positions, indices, null));
         Vec3 light = new Vec3(0.013, 4, -0.021);
         TriangleMesh lit = plain.withLightBuffers(List.of(light), MemoryGate.UNLIMITED);
-        assertEquals(1, lit.lightBufferCount());
+        assertBuffersFor(plain, List.of(light), 1);
         LightBuffer buffer = buffer(lit, light);
         int rays = 0;
         for (int j = 0; j <= 4 * n; j++) {
@@ -164,7 +164,7 @@ class LightBufferTest {
         TriangleMesh plain = new TriangleMesh(square);
         Vec3 light = new Vec3(0.1, 1, -0.2);
         TriangleMesh lit = plain.withLightBuffers(List.of(light), MemoryGate.UNLIMITED);
-        assertEquals(1, lit.lightBufferCount());
+        assertBuffersFor(plain, List.of(light), 1);
         LightBuffer buffer = buffer(lit, light);
         int shadowed = 0, points = 0;
         for (int j = -20; j <= 20; j++) {
@@ -189,18 +189,58 @@ class LightBufferTest {
         assertNotNull(buffer(mesh, new Vec3(box.minX() - 0.1, 1.6, -0.2)), "a tenth from its face");
         assertNull(buffer(mesh, new Vec3(box.maxX() + 0.01, box.maxY() + 0.01, box.maxZ() + 0.01)),
                 "just off a corner, seeing the box across nearly a half-space");
-        TriangleMesh lit = mesh.withLightBuffers(List.of(new Vec3(0.3, 1.6, -0.2), new Vec3(-3, 6, 4)), MemoryGate.UNLIMITED);
-        assertEquals(1, lit.lightBufferCount());
+        assertBuffersFor(mesh, List.of(new Vec3(0.3, 1.6, -0.2), new Vec3(-3, 6, 4)), 1);
     }
 
+    /**
+     * A mesh keeps its buffers for the same lights; a moved copy keeps none of the old place's, and
+     * answers shadow rays as a mesh made at its new place; of five lights the first
+     * {@link LightBuffer#MAX_LIGHTS} get buffers.
+     */
     @Test
-    void aMeshKeepsItsBuffersForTheSameLightsAndAMovedOneHasNone() {
+    void aMeshKeepsItsBuffersForTheSameLightsAndAMovedOneAnswersForItsNewPlace() {
         TriangleMesh lit = knot().withLightBuffers(LIGHTS, MemoryGate.UNLIMITED);
         assertSame(lit, lit.withLightBuffers(List.copyOf(LIGHTS), MemoryGate.UNLIMITED));
-        assertEquals(0, lit.movedTo(new Vec3(1, 2, 3), MemoryGate.UNLIMITED).lightBufferCount());
-        assertEquals(LightBuffer.MAX_LIGHTS, knot().withLightBuffers(
+        Vec3 place = new Vec3(0.8, 1.9, 0.1);
+        TriangleMesh moved = lit.movedTo(place, MemoryGate.UNLIMITED);
+        TriangleMesh fresh = new TriangleMesh(MeshShapes.torusKnot(2, 3, 300, 16), place, 0.8, new Vec3(-20, 25, 15));
+        Random random = new Random(15);
+        int blocked = 0, changed = 0;
+        for (int i = 0; i < 20_000; i++) {
+            Vec3 light = LIGHTS.get(i % LIGHTS.size());
+            Vec3 from = new Vec3(uniform(random, -1.5, 2.5), uniform(random, 0, 3.5), uniform(random, -2, 2));
+            Ray ray = towards(from, light);
+            double tMax = from.minus(light).length() * SHADOW_END;
+            boolean expected = fresh.occluded(ray, tMax);
+            assertEquals(expected, moved.occluded(ray, tMax), () -> ray + " towards " + light);
+            blocked += expected ? 1 : 0;
+            changed += expected != lit.occluded(ray, tMax) ? 1 : 0;
+        }
+        assertTrue(blocked > 1000 && changed > 1000, blocked + " blocked, " + changed + " changed by the move");
+        assertBuffersFor(knot(),
                 List.of(new Vec3(-3, 6, 4), new Vec3(5, 4, -2), new Vec3(0, 9, 0), new Vec3(9, 0, 0), new Vec3(0, 0, 9)),
-                MemoryGate.UNLIMITED).lightBufferCount());
+                LightBuffer.MAX_LIGHTS);
+    }
+
+    /**
+     * Giving {@code mesh} buffers for these lights asks the gate for just what building one buffer
+     * for each of the first {@link LightBuffer#MAX_LIGHTS} of them asks, and {@code count} of those
+     * lights can have one (a light that cannot asks nothing).
+     */
+    private static void assertBuffersFor(TriangleMesh mesh, List<Vec3> lights, int count) {
+        CountingGate gate = new CountingGate();
+        mesh.withLightBuffers(lights, gate);
+        long each = 0;
+        int made = 0;
+        for (Vec3 light : lights.subList(0, Math.min(lights.size(), LightBuffer.MAX_LIGHTS))) {
+            CountingGate own = new CountingGate();
+            LightBuffer buffer = buffer(mesh, light, own);
+            made += buffer != null ? 1 : 0;
+            assertEquals(buffer != null, own.granted() > 0, () -> "memory asked for the buffer of " + light);
+            each += own.granted();
+        }
+        assertEquals(count, made, "lights that can have a buffer");
+        assertEquals(each, gate.granted(), "the mesh's buffers ask what those lights' buffers ask");
     }
 
     @Test

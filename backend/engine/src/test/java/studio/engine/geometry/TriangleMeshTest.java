@@ -37,13 +37,14 @@ class TriangleMeshTest {
     @DisplayName("NUM-06a: a triangle with a flat box renders the same with and without the BVH, and is not culled")
     void flatBoxedTriangleNum06aIsHitTheSameWithAndWithoutTheBvh() {
         TriangleMesh mesh = new TriangleMesh(triangles(-1, -1, -5, 1, -1, -5, 0, 1, -5));
+        EachTriangle withoutBvh = new EachTriangle(mesh);
         Hit viaBvh = new Hit(), direct = new Hit();
         int hits = 0;
         for (int i = 0; i <= 20; i++) {
             for (int j = 0; j <= 20; j++) {
                 Ray ray = new Ray(0, 0, 0, -0.15 + 0.015 * i, -0.15 + 0.015 * j, -1);
                 boolean a = mesh.intersect(ray, Double.POSITIVE_INFINITY, viaBvh);
-                boolean b = mesh.intersectEachTriangle(ray, Double.POSITIVE_INFINITY, direct);
+                boolean b = withoutBvh.intersect(ray, Double.POSITIVE_INFINITY, direct);
                 assertEquals(b, a, ray.toString());
                 if (a) {
                     hits++;
@@ -59,7 +60,7 @@ class TriangleMeshTest {
             for (int x = 0; x < 64; x++) {
                 Ray ray = camera.ray(2 * (x + 0.5) / 64 - 1, 1 - 2 * (y + 0.5) / 64, 1.0);
                 boolean a = mesh.intersect(ray, Double.POSITIVE_INFINITY, viaBvh);
-                assertEquals(mesh.intersectEachTriangle(ray, Double.POSITIVE_INFINITY, direct), a);
+                assertEquals(withoutBvh.intersect(ray, Double.POSITIVE_INFINITY, direct), a);
                 covered += a ? 1 : 0;
             }
         }
@@ -73,6 +74,7 @@ class TriangleMeshTest {
         MeshData quad = new MeshData(new double[] {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]},
                 new int[] {0, 1, 2, 0, 2, 3}, null);
         TriangleMesh mesh = new TriangleMesh(quad);
+        EachTriangle withoutBvh = new EachTriangle(mesh);
         double ox = 0.1, oy = 0.2, oz = 0.3;
         int n = 200_000, misses = 0, missesWithoutBvh = 0;
         Hit hit = new Hit();
@@ -83,7 +85,7 @@ class TriangleMeshTest {
             if (!mesh.intersect(ray, Double.POSITIVE_INFINITY, hit)) {
                 misses++;
             }
-            if (!mesh.intersectEachTriangle(ray, Double.POSITIVE_INFINITY, hit)) {
+            if (!withoutBvh.intersect(ray, Double.POSITIVE_INFINITY, hit)) {
                 missesWithoutBvh++;
             }
             if (!mesh.occluded(ray, Double.POSITIVE_INFINITY)) {
@@ -110,6 +112,7 @@ class TriangleMeshTest {
             }
         }
         TriangleMesh mesh = new TriangleMesh(triangles(xyz));
+        EachTriangle withoutBvh = new EachTriangle(mesh);
         Hit viaBvh = new Hit(), direct = new Hit();
         int found = 0;
         for (int i = 0; i < 10_000; i++) {
@@ -122,7 +125,7 @@ class TriangleMeshTest {
             double tMax = random.nextInt(4) == 0 ? uniform(random, 0, 30) : Double.POSITIVE_INFINITY;
 
             boolean a = mesh.intersect(ray, tMax, viaBvh);
-            boolean b = mesh.intersectEachTriangle(ray, tMax, direct);
+            boolean b = withoutBvh.intersect(ray, tMax, direct);
 
             assertEquals(b, a, ray.toString());
             assertEquals(b, mesh.occluded(ray, tMax), "any-hit for " + ray);

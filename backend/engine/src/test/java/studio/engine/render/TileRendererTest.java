@@ -53,7 +53,7 @@ class TileRendererTest {
             long samples = 0;
             for (int i = 0; i < tiles.size(); i++) {
                 TileRenderer worker = new TileRenderer(SCENE, settings); // a worker of its own for each tile
-                worker.render(apart, tiles.get(i), PixelLattice.ALL, null, null);
+                worker.render(TileRequest.whole(apart, tiles.get(i)));
                 samples += worker.samples();
             }
 
@@ -79,7 +79,7 @@ class TileRendererTest {
                 RenderResult whole = Renderer.render(RenderRequest.of(SCENE, settings)); // 16-pixel tiles
                 Film apart = new Film(70, 50);
                 for (TileRect tile : Renderer.tiles(70, 50, 24)) {
-                    new TileRenderer(SCENE, settings).render(apart, tile, PixelLattice.ALL, null, null);
+                    new TileRenderer(SCENE, settings).render(TileRequest.whole(apart, tile));
                 }
                 for (int y = 0; y < 50; y++) {
                     for (int x = 0; x < 70; x++) {
@@ -99,7 +99,7 @@ class TileRendererTest {
         RenderResult whole = Renderer.render(RenderRequest.of(SCENE, settings));
         for (TileRect tile : Renderer.tiles(70, 50, 16)) {
             Film own = Film.ofTile(tile);
-            new TileRenderer(SCENE, settings).render(own, tile, PixelLattice.ALL, null, null);
+            new TileRenderer(SCENE, settings).render(TileRequest.whole(own, tile));
             assertEquals(tile.width(), own.width());
             for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
                 for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
@@ -117,7 +117,7 @@ class TileRendererTest {
         TileRenderer worker = new TileRenderer(SCENE, settings);
         worker.stop();
         assertThrows(RenderCancelledException.class,
-                () -> worker.render(new Film(32, 32), new TileRect(0, 0, 32, 32), PixelLattice.ALL, null, null));
+                () -> worker.render(TileRequest.whole(new Film(32, 32), new TileRect(0, 0, 32, 32))));
         assertEquals(0, worker.samples());
     }
 }

@@ -18,6 +18,7 @@ import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
+import studio.engine.memory.CountingGate;
 import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.MeshShapes;
 import studio.engine.render.Film;
@@ -48,8 +49,12 @@ class MeshLightBuffersTest {
         List<SceneObject> objects = objects();
         assertSame(objects, MeshLightBuffers.forRender(objects, LIGHTS, 8 * 6_400 - 1, MemoryGate.UNLIMITED));
         assertSame(objects, MeshLightBuffers.forRender(objects, List.of(), 1 << 30, MemoryGate.UNLIMITED));
-        List<SceneObject> lit = MeshLightBuffers.forRender(objects, LIGHTS, 8 * 6_400, MemoryGate.UNLIMITED);
-        assertEquals(2, ((TriangleMesh) lit.get(0).shape()).lightBufferCount(), "the third light is inside its box");
+        CountingGate gate = new CountingGate(), two = new CountingGate();
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects, LIGHTS, 8 * 6_400, gate);
+        ((TriangleMesh) objects.get(0).shape()).withLightBuffers(
+                List.of(LIGHTS.get(0).position(), LIGHTS.get(1).position()), two);
+        assertTrue(two.granted() > 0);
+        assertEquals(two.granted(), gate.granted(), "the buffers of the first two lights: the third is inside the box");
         assertSame(objects.get(0).material(), lit.get(0).material());
         assertSame(objects.get(1), lit.get(1));
         assertSame(objects.get(2), lit.get(2));
@@ -60,8 +65,9 @@ class MeshLightBuffersTest {
         Camera camera = new Camera(new Vec3(0, 3.2, 7.5), new Vec3(0, 1.4, 0), new Vec3(0, 1, 0), 40);
         RenderSettings settings = new RenderSettings(160, 120, new JitteredSampler(4), 6, 2);
         Film plain = Renderer.render(RenderRequest.of(new Scene(camera, objects(), LIGHTS, new Rgb(0.1, 0.1, 0.12), 0.07), settings)).film();
-        List<SceneObject> lit = MeshLightBuffers.forRender(objects(), LIGHTS, settings.cameraSamples(), MemoryGate.UNLIMITED);
-        assertTrue(((TriangleMesh) lit.get(0).shape()).lightBufferCount() > 0);
+        CountingGate gate = new CountingGate();
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects(), LIGHTS, settings.cameraSamples(), gate);
+        assertTrue(gate.granted() > 0, "the mesh's buffers were made");
         Film buffered = Renderer.render(RenderRequest.of(new Scene(camera, lit, LIGHTS, new Rgb(0.1, 0.1, 0.12), 0.07), settings)).film();
         int differing = 0;
         for (int y = 0; y < 120; y++) {

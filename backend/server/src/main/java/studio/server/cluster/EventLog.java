@@ -30,10 +30,6 @@ final class EventLog {
         this.seal = seal;
     }
 
-    Ringbuffer<byte[]> raw() {
-        return events;
-    }
-
     void add(JobEvent event) {
         events.add(seal.seal(FAMILY, events.getName(), "", ClusterCodecs.EVENT.encode(event)));
     }

@@ -49,11 +49,6 @@ final class SealedMap<K, V> {
         return map.getName();
     }
 
-    /** The map's bytes as stored (tests, measurements). */
-    IMap<K, byte[]> raw() {
-        return map;
-    }
-
     V get(K key) {
         return open(key, () -> read.get(key));
     }

@@ -31,10 +31,6 @@ final class SealedQueue<V> {
         this.seal = seal;
     }
 
-    IQueue<byte[]> raw() {
-        return queue;
-    }
-
     boolean offer(V value) {
         return queue.offer(seal(value));
     }

@@ -15,11 +15,11 @@ import org.slf4j.LoggerFactory;
 import com.hazelcast.core.HazelcastInstance;
 
 import studio.engine.render.Film;
-import studio.engine.render.PixelLattice;
 import studio.engine.render.RenderCancelledException;
 import studio.engine.render.Renderer;
 import studio.engine.render.TileRect;
 import studio.engine.render.TileRenderer;
+import studio.engine.render.TileRequest;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.system.MemoryBusyException;
 
@@ -266,7 +266,7 @@ final class TileWorkers implements AutoCloseable {
                 TileRenderer worker = worker(task.jobId(), scene);
                 long rays = worker.rays(), samples = worker.samples();
                 Film film = Film.ofTile(tile);
-                long nonFinite = worker.render(film, tile, PixelLattice.ALL, null, null);
+                long nonFinite = worker.render(TileRequest.whole(film, tile));
                 double[] rgb = new double[3 * tile.width() * tile.height()];
                 int i = 0;
                 for (int y = tile.y(); y < tile.y() + tile.height(); y++) {

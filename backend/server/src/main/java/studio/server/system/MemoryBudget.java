@@ -67,11 +67,6 @@ public final class MemoryBudget {
         return reserved;
     }
 
-    /** Whether a reservation is waiting to grow. */
-    synchronized boolean hasWaiter() {
-        return waiter != null;
-    }
-
     /** What {@code asker} may take now: the rest of the budget, less what another, waiting reservation needs. */
     private long freeFor(Reservation asker) {
         return capacity - reserved - (waiter != null && waiter != asker ? waiterNeeds : 0);

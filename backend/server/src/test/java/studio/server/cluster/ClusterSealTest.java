@@ -61,7 +61,8 @@ class ClusterSealTest {
         Await.until("the job to run", ClusterJobsTest.WAIT_MILLIS,
                 () -> owner.jobs.status(id).state() == JobState.RUNNING);
 
-        IMap<Integer, byte[]> tiles = other.data.tiles(id).raw();
+        // written straight into the cluster's maps, as any process that joined it could
+        IMap<Integer, byte[]> tiles = other.hazelcast.getMap(ClusterMaps.tiles(id));
         int tileCount = ClusterJobsTest.TILES;
         double[] magenta = new double[3 * 32 * 32];
         for (int i = 0; i < magenta.length; i += 3) {
@@ -79,7 +80,7 @@ class ClusterSealTest {
         double[] notFinite = magenta.clone();
         notFinite[7] = Double.NaN;
         sealed.set(tileCount - 3, new TileResult(tileCount - 3, 0, notFinite, 1, 1, 0, "insider", null));
-        other.data.cancels().raw().set(id, "cancelled".getBytes(StandardCharsets.UTF_8));
+        other.hazelcast.<String, byte[]>getMap(ClusterMaps.CANCELS).set(id, "cancelled".getBytes(StandardCharsets.UTF_8));
 
         Await.until("job " + id + " to end", ClusterJobsTest.WAIT_MILLIS,
                 () -> other.jobs.status(id).state().isFinal());
@@ -97,8 +98,8 @@ class ClusterSealTest {
     void aValueThatDoesNotOpenReadsAsAbsent() throws Exception {
         members.add(new TestMember(name, P, P));
         TestMember member = members.get(0);
-        member.data.jobs().raw().set("forged", "{\"state\":\"done\"}".getBytes(StandardCharsets.UTF_8));
-        member.data.images().raw().set("forged", new byte[] {(byte) 0x89, 'P', 'N', 'G'});
+        member.hazelcast.<String, byte[]>getMap(ClusterMaps.JOBS).set("forged", "{\"state\":\"done\"}".getBytes(StandardCharsets.UTF_8));
+        member.hazelcast.<String, byte[]>getMap(ClusterMaps.IMAGES).set("forged", new byte[] {(byte) 0x89, 'P', 'N', 'G'});
 
         assertThat(member.cluster.status("forged", "")).isNull();
         assertThat(member.cluster.image("forged", "")).isNull(); // refused at its record, which does not open

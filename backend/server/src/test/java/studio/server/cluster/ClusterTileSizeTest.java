@@ -9,11 +9,11 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 import studio.server.scene.compiling.CompileRequest;
 import studio.engine.render.Film;
-import studio.engine.render.PixelLattice;
 import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.engine.render.TileRect;
 import studio.engine.render.TileRenderer;
+import studio.engine.render.TileRequest;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.examples.ExampleSceneFiles;
 
@@ -48,7 +48,7 @@ class ClusterTileSizeTest {
         TileRenderer worker = new TileRenderer(scene.scene(), scene.settings());
         for (TileRect tile : Renderer.tiles(width, height, ClusterJobs.LARGE_TILE)) {
             Film film = Film.ofTile(tile);
-            worker.render(film, tile, PixelLattice.ALL, null, null);
+            worker.render(TileRequest.whole(film, tile));
             for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
                 for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
                     for (int c = 0; c < 3; c++) {

@@ -3,6 +3,7 @@ package studio.server.scene.compiling;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.charset.StandardCharsets;
+import java.util.List;
 import java.util.Locale;
 
 import jakarta.validation.Validation;
@@ -13,6 +14,7 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
 import studio.engine.geometry.TriangleMesh;
+import studio.engine.math.Vec3;
 import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.MeshShapes;
 import studio.engine.mesh.ObjWriter;
@@ -47,27 +49,47 @@ class LightBufferMappingTest {
 
     @Test
     void aLongRenderGetsABufferPerLightAndAShortOneNone() throws Exception {
-        long[] lit = {0}, plain = {0};
-        assertThat(((TriangleMesh) map(160, 96, 2, bytes -> lit[0] += bytes).scene().shape(0)).lightBufferCount())
-                .isEqualTo(2);
-        assertThat(((TriangleMesh) map(40, 30, 4, bytes -> plain[0] += bytes).scene().shape(0)).lightBufferCount())
-                .isZero();
-        assertThat(lit[0]).as("with the buffers' memory").isGreaterThan(plain[0] + 2 * 3_840 * 8);
+        Asked lit = new Asked(true), plain = new Asked(true), buffers = new Asked(true);
+        TriangleMesh mesh = (TriangleMesh) map(40, 30, 4, plain).scene().shape(0);
+        map(160, 96, 2, lit);
+        mesh.withLightBuffers(List.of(new Vec3(-3, 6, 4), new Vec3(5, 4, -2)), buffers);
+        assertThat(plain.spared).as("a short render: no buffers").isZero();
+        assertThat(buffers.spared).as("a buffer per light").isGreaterThan(2 * 3_840 * 8);
+        assertThat(lit.spared).as("a long render: the buffers of both lights").isEqualTo(buffers.spared);
     }
 
     @Test
     void aMeshWhoseBuffersTheMemoryCannotSpareRendersWithout() throws Exception {
-        MemoryGate busy = new MemoryGate() {
-            @Override
-            public void reserve(long bytes) {
-                // the mesh itself is granted
-            }
+        Asked busy = new Asked(false); // the mesh itself is granted, nothing to spare for a speed-up
+        assertThat(map(160, 96, 2, busy).scene().shape(0)).isInstanceOf(TriangleMesh.class);
+        assertThat(busy.refused).as("the buffers were asked for").isPositive();
+        assertThat(busy.spared).isZero();
+    }
 
-            @Override
-            public boolean tryReserve(long bytes) {
-                return false; // nothing to spare for a speed-up
+    /** A gate that grants what it is asked to reserve and counts what it is asked to spare. */
+    private static final class Asked implements MemoryGate {
+
+        private final boolean spares;
+        long spared;
+        int refused;
+
+        Asked(boolean spares) {
+            this.spares = spares;
+        }
+
+        @Override
+        public void reserve(long bytes) {
+            // granted
+        }
+
+        @Override
+        public boolean tryReserve(long bytes) {
+            if (spares) {
+                spared += bytes;
+            } else {
+                refused++;
             }
-        };
-        assertThat(((TriangleMesh) map(160, 96, 2, busy).scene().shape(0)).lightBufferCount()).isZero();
+            return spares;
+        }
     }
 }
