@@ -27,7 +27,7 @@ import studio.server.scene.reading.SceneReader;
 
 /**
  * {@code studio-bench.jar accuracy [--out docs/bench] [--width W] [--height H] [--runs N] [--forks N]
- * [--reference-samples N] [--scenes scenes/bench] [--povray PATH | --no-povray]}: the
+ * [--thresholds T,T,...] [--reference-samples N] [--scenes scenes/bench] [--povray PATH | --no-povray]}: the
  * speed-against-accuracy benchmark of the samplers, and of POV-Ray beside them. Each scene is rendered
  * at its file's own image size, or at {@code --width} and {@code --height} where given. For each scene file
  * it renders a reference with many jittered samples, measures every available sampler (and adaptive
@@ -47,7 +47,7 @@ public final class BenchCommand {
 
     static final String USAGE = "usage: java -jar studio-bench.jar accuracy [--out docs/bench] [--width W --height H "
             + "(default: each scene file's own)] [--runs " + DEFAULT_RUNS + "] [--forks " + DEFAULT_FORKS
-            + "] [--reference-samples "
+            + "] [--thresholds 0.5,0.3,...,0.01] [--reference-samples "
             + DEFAULT_REFERENCE_SAMPLES + "] [--scenes scenes/bench] [--povray /usr/bin/povray | --no-povray]";
 
     private BenchCommand() {
@@ -96,7 +96,8 @@ public final class BenchCommand {
         }
 
         SpeedAccuracyBench bench = new SpeedAccuracyBench(
-                SpeedAccuracyBench.Config.defaults(options.runs, options.referenceSamples), err);
+                SpeedAccuracyBench.Config.defaults(options.runs, options.referenceSamples)
+                        .withThresholds(options.thresholds), err);
         PovrayAccuracy povray = null;
         if (options.povray != null && Files.isExecutable(options.povray)) {
             try {
@@ -228,6 +229,8 @@ public final class BenchCommand {
         Path timesOnly;
         /** POV-Ray's executable; null: leave POV-Ray out. */
         Path povray = Path.of("/usr/bin/povray");
+        /** The adaptive thresholds to measure; null: the defaults (0.5 to 0.01). */
+        List<Double> thresholds;
         boolean help;
 
         static Options parse(String[] args) {
@@ -246,6 +249,7 @@ public final class BenchCommand {
                     case "--reference-samples" -> o.referenceSamples = Args.positive(args, ++i, a);
                     case "--povray" -> o.povray = Path.of(Args.value(args, ++i, a));
                     case "--no-povray" -> o.povray = null;
+                    case "--thresholds" -> o.thresholds = thresholds(Args.value(args, ++i, a));
                     default -> throw new IllegalArgumentException("unknown argument " + a);
                 }
             }
@@ -262,8 +266,29 @@ public final class BenchCommand {
                 arguments.addAll(List.of("--height", height.toString()));
             }
             arguments.addAll(List.of("--runs", Integer.toString(runs)));
+            if (thresholds != null) {
+                arguments.addAll(List.of("--thresholds", String.join(",", thresholds.stream().map(String::valueOf).toList())));
+            }
             arguments.addAll(withPovray ? List.of("--povray", povray.toString()) : List.of("--no-povray"));
             return arguments;
+        }
+
+        /** A comma-separated list of thresholds, each finite and above 0. */
+        static List<Double> thresholds(String list) {
+            List<Double> values = new ArrayList<>();
+            for (String part : list.split(",")) {
+                double value;
+                try {
+                    value = Double.parseDouble(part.trim());
+                } catch (NumberFormatException e) {
+                    throw new IllegalArgumentException("--thresholds: '" + part + "' is not a number");
+                }
+                if (!(value > 0) || Double.isInfinite(value)) {
+                    throw new IllegalArgumentException("--thresholds: " + part + " must be above 0");
+                }
+                values.add(value);
+            }
+            return List.copyOf(values);
         }
 
         /** The image size given on the command line, as overrides of the scene files' fields, applied before validation. */

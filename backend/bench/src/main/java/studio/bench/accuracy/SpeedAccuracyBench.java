@@ -53,6 +53,12 @@ final class SpeedAccuracyBench {
                     List.of(0.5, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01), 256, SceneDefaults.ADAPTIVE,
                     List.of(1, 2, 4, 8, 16, 32, 64));
         }
+
+        /** These settings with {@code values} as the adaptive thresholds (null: as they are). */
+        Config withThresholds(List<Double> values) {
+            return values == null ? this : new Config(runs, referenceSamples, sampleCounts, values, adaptiveMaxSamples,
+                    defaultThreshold, defaultSampleCounts);
+        }
     }
 
     /** One scene's results: its rows and its reference image. */

@@ -156,6 +156,26 @@ class BenchCommandTest {
                 .containsExactly("--scenes", "s", "--width", "8", "--height", "6", "--runs", "2", "--no-povray");
     }
 
+    @Test
+    void thresholdsReplaceTheDefaultsAndReachEveryFork() {
+        BenchCommand.Options options = BenchCommand.Options.parse(new String[] {"--scenes", "s", "--thresholds", "0.01,0.005, 0.002"});
+
+        assertThat(options.thresholds).containsExactly(0.01, 0.005, 0.002);
+        assertThat(SpeedAccuracyBench.Config.defaults(1, 16).withThresholds(options.thresholds).thresholds())
+                .containsExactly(0.01, 0.005, 0.002);
+        assertThat(SpeedAccuracyBench.Config.defaults(1, 16).withThresholds(null).thresholds()).startsWith(0.5).endsWith(0.01);
+        assertThat(options.forkArguments(false)).containsExactly("--scenes", "s", "--runs", "2", "--thresholds",
+                "0.01,0.005,0.002", "--no-povray");
+    }
+
+    @Test
+    void refusesThresholdsThatAreNotPositiveNumbers() {
+        for (String bad : new String[] {"0.1,x", "0", "-0.01", "NaN", "Infinity", "0.1,,0.01"}) {
+            assertThat(run("--thresholds", bad)).as(bad).isEqualTo(BenchCommand.INVALID);
+            assertThat(err.toString(StandardCharsets.UTF_8)).contains("--thresholds");
+        }
+    }
+
     /** A bench scene file copied into {@code to} with its image size set to {@code width} x {@code height}. */
     private static void copyAtSize(String name, Path to, int width, int height) throws IOException {
         String json = Files.readString(BenchSceneFiles.dir().resolve(name));
