@@ -5,7 +5,7 @@ import studio.engine.geometry.Ray;
 /**
  * The closest-hit and any-hit walks of a {@link WideBvh}, over any {@link Primitives}: how the
  * engine's one traversal in this package uses the wide tree (see the report of issue 47's wide BVH
- * part). Each node's four boxes are tested at once by a {@link WideBoxTest}; a leaf met is tested
+ * part). Each node's eight boxes are tested at once by a {@link WideBoxTest}; a leaf met is tested
  * at once; the interior children met wait on a stack with their entry distances, the nearest on
  * top, and one popped is skipped if a hit nearer than its entry has been found since. One per
  * thread; allocates nothing.
