@@ -33,7 +33,7 @@ import studio.engine.geometry.TriangleMesh;
 import studio.engine.scene.SceneObject;
 
 /**
- * The binary BVH walk against the four-wide one ({@link WideBvh}) on the same primitives and rays,
+ * The binary BVH walk against the wide one ({@link WideBvh}) on the same primitives and rays,
  * the wide one with the scalar and with the Vector API box test: {@code spheres-10k}, the scaling
  * benchmark's 10,000 spheres, and {@code mesh-100k}, the 104,000-triangle torus knot (Möller-Trumbore
  * triangles, the same in every walk). Random rays as {@link BvhTraversalBenchmark}'s. The forks

@@ -19,8 +19,8 @@ import studio.engine.memory.MemoryGate;
  * {@code --add-modules jdk.incubator.vector} and the optimising compiler) both walks go through a
  * {@link WideBvh} collapsed from the binary tree instead, eight boxes tested at once, and the same
  * {@link Leaves} calls: on JDK 25 the kernel benchmark ({@code studio-bench.jar kernel},
- * one thread, rays a CPU second) ran 10,000 spheres 1.67 times and a 104,000-triangle mesh 1.25
- * times as fast so, and {@code studio-bench.jar wide} found the scalar wide walk no faster than
+ * one thread, rays a CPU second) ran 10,000 spheres 1.90 times and a 104,000-triangle mesh 1.37
+ * times as fast so, and {@code studio-bench.jar wide} found the scalar (four-)wide walk no faster than
  * this binary one, so a scalar JVM keeps the binary walk (docs/speed.md). The float box test keeps every
  * node the double one keeps ({@link WideRay}), and the leaves decide ties by declaration order, not
  * by the order they are met, so both walks find the same hits and renders stay bit-identical.
