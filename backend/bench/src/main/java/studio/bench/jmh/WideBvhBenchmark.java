@@ -27,7 +27,7 @@ import studio.engine.scene.SceneObject;
 
 /**
  * The engine's traversal ({@link Traversal}) walking the binary BVH against it walking the
- * four-wide one ({@link WideBvh}) on the same leaves and rays: {@code spheres-10k}, the scaling
+ * eight-wide one ({@link WideBvh}) on the same leaves and rays: {@code spheres-10k}, the scaling
  * benchmark's 10,000 spheres, and {@code mesh-100k}, the 104,000-triangle torus knot, each through
  * the engine's own leaf tests, the same in every walk. Random rays as {@link BvhTraversalBenchmark}'s.
  * The forks run with the incubator module and {@code studio.vector=on}, so {@code wide} is the

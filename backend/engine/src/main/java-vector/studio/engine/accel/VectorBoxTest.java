@@ -1,19 +1,18 @@
 package studio.engine.accel;
 
 import jdk.incubator.vector.FloatVector;
-import jdk.incubator.vector.VectorMask;
 import jdk.incubator.vector.VectorOperators;
 import jdk.incubator.vector.VectorSpecies;
 
 /**
- * {@link WideBoxTest} through the Vector API: a node's four lanes in one 128-bit float vector per
+ * {@link WideBoxTest} through the Vector API: a node's eight lanes in one 256-bit float vector per
  * bound, the same operations as {@link ScalarBoxTest} lane for lane (so the same bits), with the
  * NaN-ignoring comparisons as blends. Loaded only by {@link WideBoxTests}, by name; compiled apart
  * (src/main/java-vector, with the incubator module) so the rest of the engine builds for JDK 17.
  */
 final class VectorBoxTest implements WideBoxTest {
 
-    private static final VectorSpecies<Float> LANES = FloatVector.SPECIES_128;
+    private static final VectorSpecies<Float> LANES = FloatVector.SPECIES_256;
 
     VectorBoxTest() {
     }
@@ -21,30 +20,27 @@ final class VectorBoxTest implements WideBoxTest {
     @Override
     public int test(float[] boxes, int base, WideRay ray, float limit, float[] entry) {
         if (ray.acceptAll) {
-            entry[0] = entry[1] = entry[2] = entry[3] = 0;
-            return 0b1111;
+            return ScalarBoxTest.acceptAll(entry);
         }
-        float w = WideRay.FAR_WIDENING;
         FloatVector tNear = FloatVector.zero(LANES);
         FloatVector tFar = FloatVector.broadcast(LANES, limit);
 
         FloatVector near = FloatVector.fromArray(LANES, boxes, base + ray.nearX).sub(ray.nearOx).mul(ray.ix);
-        FloatVector far = FloatVector.fromArray(LANES, boxes, base + ray.farX).sub(ray.farOx).mul(ray.ix).mul(w);
+        FloatVector far = FloatVector.fromArray(LANES, boxes, base + ray.farX).sub(ray.farOx).mul(ray.ix).mul(WideRay.FAR_WIDENING);
         tNear = tNear.blend(near, near.compare(VectorOperators.GT, tNear));
         tFar = tFar.blend(far, far.compare(VectorOperators.LT, tFar));
 
         near = FloatVector.fromArray(LANES, boxes, base + ray.nearY).sub(ray.nearOy).mul(ray.iy);
-        far = FloatVector.fromArray(LANES, boxes, base + ray.farY).sub(ray.farOy).mul(ray.iy).mul(w);
+        far = FloatVector.fromArray(LANES, boxes, base + ray.farY).sub(ray.farOy).mul(ray.iy).mul(WideRay.FAR_WIDENING);
         tNear = tNear.blend(near, near.compare(VectorOperators.GT, tNear));
         tFar = tFar.blend(far, far.compare(VectorOperators.LT, tFar));
 
         near = FloatVector.fromArray(LANES, boxes, base + ray.nearZ).sub(ray.nearOz).mul(ray.iz);
-        far = FloatVector.fromArray(LANES, boxes, base + ray.farZ).sub(ray.farOz).mul(ray.iz).mul(w);
+        far = FloatVector.fromArray(LANES, boxes, base + ray.farZ).sub(ray.farOz).mul(ray.iz).mul(WideRay.FAR_WIDENING);
         tNear = tNear.blend(near, near.compare(VectorOperators.GT, tNear));
         tFar = tFar.blend(far, far.compare(VectorOperators.LT, tFar));
 
         tNear.intoArray(entry, 0);
-        VectorMask<Float> hit = tNear.compare(VectorOperators.LE, tFar);
-        return (int) hit.toLong();
+        return (int) tNear.compare(VectorOperators.LE, tFar).toLong();
     }
 }

@@ -1,5 +1,7 @@
 package studio.engine.accel;
 
+import java.util.Arrays;
+
 /**
  * {@link WideBoxTest} in plain Java, lane by lane: the path of every JVM without the Vector API,
  * and the reference the vector one is tested against. Each lane takes the same float operations in
@@ -11,8 +13,7 @@ public final class ScalarBoxTest implements WideBoxTest {
     @Override
     public int test(float[] boxes, int base, WideRay ray, float limit, float[] entry) {
         if (ray.acceptAll) {
-            entry[0] = entry[1] = entry[2] = entry[3] = 0;
-            return 0b1111;
+            return acceptAll(entry);
         }
         float ix = ray.ix, iy = ray.iy, iz = ray.iz, w = WideRay.FAR_WIDENING;
         float nox = ray.nearOx, noy = ray.nearOy, noz = ray.nearOz, fox = ray.farOx, foy = ray.farOy, foz = ray.farOz;
@@ -36,5 +37,11 @@ public final class ScalarBoxTest implements WideBoxTest {
             mask |= (tNear <= tFar ? 1 : 0) << k;
         }
         return mask;
+    }
+
+    /** The answer for a ray the float test cannot bound ({@link WideRay#acceptAll}): every lane, entered at 0. */
+    static int acceptAll(float[] entry) {
+        Arrays.fill(entry, 0, WideBvh.WIDTH, 0f);
+        return WideBvh.ALL_LANES;
     }
 }

@@ -17,10 +17,10 @@ import studio.engine.memory.MemoryGate;
  *
  * <p>Where the Vector API box test is on ({@link WideBoxTests#vectorized}: JDK 20 or newer with
  * {@code --add-modules jdk.incubator.vector} and the optimising compiler) both walks go through a
- * {@link WideBvh} collapsed from the binary tree instead, four boxes tested at once, and the same
+ * {@link WideBvh} collapsed from the binary tree instead, eight boxes tested at once, and the same
  * {@link Leaves} calls: on JDK 25 the kernel benchmark ({@code studio-bench.jar kernel},
- * one thread, rays a CPU second) ran 10,000 spheres 1.67 times and a 104,000-triangle mesh 1.25
- * times as fast so, and {@code studio-bench.jar wide} found the scalar wide walk no faster than
+ * one thread, rays a CPU second) ran 10,000 spheres 1.90 times and a 104,000-triangle mesh 1.37
+ * times as fast so, and {@code studio-bench.jar wide} found the scalar (four-)wide walk no faster than
  * this binary one, so a scalar JVM keeps the binary walk (docs/speed.md). The float box test keeps every
  * node the double one keeps ({@link WideRay}), and the leaves decide ties by declaration order, not
  * by the order they are met, so both walks find the same hits and renders stay bit-identical.
@@ -169,7 +169,7 @@ public final class Traversal {
     }
 
     /**
-     * {@link #nearest} over the wide tree: each node's four boxes at once; the interior children met
+     * {@link #nearest} over the wide tree: each node's eight boxes at once; the interior children met
      * wait on the stack by entry distance, nearest on top, and one popped is skipped when the cull
      * distance has fallen below its entry since; a leaf met is tested at once.
      */

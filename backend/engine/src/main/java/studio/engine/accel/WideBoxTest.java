@@ -1,7 +1,7 @@
 package studio.engine.accel;
 
 /**
- * The ray/box test of a {@link WideBvh} node: all four of its children's boxes against one
+ * The ray/box test of a {@link WideBvh} node: all eight of its children's boxes against one
  * {@link WideRay} at once. Two implementations give the same bits: {@link ScalarBoxTest} in plain
  * Java, and a Vector API one where the JVM has {@code jdk.incubator.vector}; {@link WideBoxTests}
  * picks one at start-up, as Lucene's {@code VectorizationProvider} does.
@@ -9,7 +9,7 @@ package studio.engine.accel;
 public interface WideBoxTest {
 
     /**
-     * Tests the four boxes of the node at {@code boxes[base .. base + 23]} ({@code base} =
+     * Tests the eight boxes of the node at {@code boxes[base .. base + 47]} ({@code base} =
      * {@link WideBvh#FLOATS} times the node's index): returns a mask with bit k set when the ray
      * meets lane k's box for some t in [0, limit], and writes lane k's entry distance (0 when the
      * ray starts inside) to {@code entry[k]} for every lane (meaningful for the set bits only).

@@ -3,16 +3,18 @@ package studio.engine.accel;
 import studio.engine.memory.MemoryGate;
 
 /**
- * A four-wide bounding volume hierarchy collapsed from a binary {@link Bvh} (pbrt-v4's and Embree's
- * wide BVH): each node holds the boxes of up to four children, in float and structure-of-arrays
- * form, so that one {@link WideBoxTest} tests all four with one ray in a few vector instructions.
+ * An eight-wide bounding volume hierarchy collapsed from a binary {@link Bvh} (Embree's BVH8): each
+ * node holds the boxes of up to eight children, in float and structure-of-arrays form, so that one
+ * {@link WideBoxTest} tests all eight with one ray in a few 256-bit vector instructions. Eight
+ * rather than four: the kernel benchmark ({@code studio-bench.jar kernel}, JDK 25) spent 0.88 of
+ * the CPU time on 10,000 spheres and 0.92-0.94 on the mesh with eight lanes than with four.
  *
- * <p>Node {@code i} keeps its children's boxes at {@code boxes()[24i .. 24i+23]}: minX of the four
- * lanes, then minY, minZ, maxX, maxY, maxZ (four floats each; offsets {@link #MIN_X} ..
+ * <p>Node {@code i} keeps its children's boxes at {@code boxes()[48i .. 48i+47]}: minX of the eight
+ * lanes, then minY, minZ, maxX, maxY, maxZ (eight floats each; offsets {@link #MIN_X} ..
  * {@link #MAX_Z}). Each box is the binary node's exact double box rounded outward to float
  * ({@link #floatBelow}, {@link #floatAbove}), so a float box test that is itself conservative
  * ({@link WideRay}) never drops a node the binary tree's double test keeps. Its links are
- * {@code children()[4i .. 4i+3]}, one per lane:
+ * {@code children()[8i .. 8i+7]}, one per lane:
  * <ul>
  *   <li>{@code >= 0}: an interior child, the index of its wide node;</li>
  *   <li>{@link #EMPTY}: no child (its box is empty, +inf to -inf, and no ray meets it);</li>
@@ -21,16 +23,19 @@ import studio.engine.memory.MemoryGate;
  *       double-precision ones and a traversal finds the same hits.</li>
  * </ul>
  * Node 0 is the root. A closest-hit traversal needs a stack of {@link #STACK_SIZE} entries: each
- * wide level pushes at most three children, and the tree is no deeper than the binary one.
+ * wide level pushes at most seven children, and the tree is no deeper than the binary one.
  */
 public final class WideBvh {
 
     /** Children per node. */
-    public static final int WIDTH = 4;
-    /** Floats per node: six bounds for each of the four lanes. */
+    public static final int WIDTH = 8;
+    /** Floats per node: six bounds for each of the lanes. */
     public static final int FLOATS = 6 * WIDTH;
     /** Offsets of a node's six bound arrays within its {@link #FLOATS} floats. */
-    public static final int MIN_X = 0, MIN_Y = 4, MIN_Z = 8, MAX_X = 12, MAX_Y = 16, MAX_Z = 20;
+    public static final int MIN_X = 0, MIN_Y = WIDTH, MIN_Z = 2 * WIDTH, MAX_X = 3 * WIDTH, MAX_Y = 4 * WIDTH,
+            MAX_Z = 5 * WIDTH;
+    /** The mask of a node test that keeps every lane. */
+    public static final int ALL_LANES = (1 << WIDTH) - 1;
     /** The link of an empty lane. */
     public static final int EMPTY = -1;
     /** Entries a closest-hit traversal stack needs. */
@@ -48,7 +53,7 @@ public final class WideBvh {
         this.depth = depth;
     }
 
-    /** Collapses {@code bvh} into four-wide nodes (see {@link WideBvhCollapse}). */
+    /** Collapses {@code bvh} into eight-wide nodes (see {@link WideBvhCollapse}). */
     public static WideBvh of(Bvh bvh) {
         return of(bvh, MemoryGate.UNLIMITED);
     }
@@ -72,7 +77,7 @@ public final class WideBvh {
         return boxes;
     }
 
-    /** Child links, four per node (see the class comment); read-only. */
+    /** Child links, eight per node (see the class comment); read-only. */
     public int[] children() {
         return children;
     }

@@ -6,7 +6,7 @@ import studio.engine.memory.MemoryGate;
 
 /**
  * Collapses a binary {@link Bvh} into a {@link WideBvh} top-down (pbrt-v4's and Embree's collapse):
- * a wide node starts from a binary node's two children and, while it has fewer than four, replaces
+ * a wide node starts from a binary node's two children and, while it has fewer than eight, replaces
  * the interior child of largest surface area by its two children; its leaves stay the binary
  * leaves, slot for slot. Each wide node thus stands for one to three binary levels, and the tree
  * has at most as many levels as the binary one.
@@ -95,8 +95,8 @@ final class WideBvhCollapse {
                 boxes[base + WideBvh.MAX_Z + k] = WideBvh.floatAbove(bounds[o + 5]);
             } else {
                 for (int a = 0; a < 3; a++) {
-                    boxes[base + WideBvh.MIN_X + 4 * a + k] = Float.POSITIVE_INFINITY;
-                    boxes[base + WideBvh.MAX_X + 4 * a + k] = Float.NEGATIVE_INFINITY;
+                    boxes[base + WideBvh.MIN_X + WideBvh.WIDTH * a + k] = Float.POSITIVE_INFINITY;
+                    boxes[base + WideBvh.MAX_X + WideBvh.WIDTH * a + k] = Float.NEGATIVE_INFINITY;
                 }
                 children[WideBvh.WIDTH * index + k] = WideBvh.EMPTY;
             }

@@ -2,7 +2,7 @@ package studio.engine.accel;
 
 /**
  * One thread's working memory for one level of a {@link Traversal}'s wide walk (the scene's tree,
- * or a mesh's inside it): the ray set up for the float box test, the four entry distances a node
+ * or a mesh's inside it): the ray set up for the float box test, the eight entry distances a node
  * test writes, and the stack of nodes waiting with their entry distances. Reused for every ray, so
  * the walk allocates nothing.
  */

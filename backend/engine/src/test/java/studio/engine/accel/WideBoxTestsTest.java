@@ -12,14 +12,14 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 /**
- * The four-box tests: conservative against the double {@link Slab} test (robustness cases NUM-04
+ * The eight-box tests: conservative against the double {@link Slab} test (robustness cases NUM-04
  * and NUM-06), the scalar and vector paths bit for bit the same, and the choice between them. The
  * build runs this class twice: as it is, and with the Vector API forced on.
  */
 class WideBoxTestsTest {
 
     private static final WideBoxTest SCALAR = new ScalarBoxTest();
-    private final float[] entry = new float[4];
+    private final float[] entry = new float[WideBvh.WIDTH];
     private final WideRay ray = new WideRay();
 
     @Test
@@ -45,21 +45,21 @@ class WideBoxTestsTest {
         assumeTrue(WideBoxTests.vectorized(), "the vector path runs in the build's vector-path execution");
         WideBoxTest vector = WideBoxTests.get();
         Random random = new Random(11);
-        float[] entryVector = new float[4];
+        float[] entryVector = new float[WideBvh.WIDTH];
         int hits = 0;
         for (int i = 0; i < 200_000; i++) {
-            double[][] boxes = new double[4][];
-            for (int k = 0; k < 4; k++) {
+            double[][] boxes = new double[WideBvh.WIDTH][];
+            for (int k = 0; k < WideBvh.WIDTH; k++) {
                 boxes[k] = randomBox(random);
             }
-            float[] node = node(boxes, random.nextInt(5) == 0 ? random.nextInt(4) : 4);
-            double[] r = randomRay(random, boxes[random.nextInt(4)]);
+            float[] node = node(boxes, random.nextInt(5) == 0 ? random.nextInt(WideBvh.WIDTH) : WideBvh.WIDTH);
+            double[] r = randomRay(random, boxes[random.nextInt(WideBvh.WIDTH)]);
             ray.set(r[0], r[1], r[2], r[3], r[4], r[5]);
             float limit = WideRay.limit(random.nextBoolean() ? Double.POSITIVE_INFINITY : random.nextDouble() * 30);
             int a = SCALAR.test(node, 0, ray, limit, entry);
             int b = vector.test(node, 0, ray, limit, entryVector);
             assertEquals(a, b, "mask of case " + i);
-            for (int k = 0; k < 4; k++) {
+            for (int k = 0; k < WideBvh.WIDTH; k++) {
                 assertEquals(Float.floatToRawIntBits(entry[k]), Float.floatToRawIntBits(entryVector[k]), "entry " + k);
             }
             hits += Integer.bitCount(a);
@@ -145,7 +145,7 @@ class WideBoxTestsTest {
         for (double[] r : new double[][] {{0, 0, -1, 1e-35, 0, 1}, {0, 0, -1, 1e31, 1, 1}, {1e31, 0, 0, 0, 0, 1}}) {
             ray.set(r[0], r[1], r[2], r[3], r[4], r[5]);
             assertTrue(ray.acceptAll);
-            assertEquals(0b1111, WideBoxTests.get().test(node, 0, ray, WideRay.limit(1), entry));
+            assertEquals(WideBvh.ALL_LANES, WideBoxTests.get().test(node, 0, ray, WideRay.limit(1), entry));
         }
         ray.set(0, 0, 0, 0, 0, 1);
         assertTrue(!ray.acceptAll, "zero components are handled exactly");
@@ -154,10 +154,10 @@ class WideBoxTestsTest {
     /** A node of the given boxes in its first {@code used} lanes, the rest empty. */
     static float[] node(double[][] boxes, int used) {
         float[] node = new float[WideBvh.FLOATS];
-        for (int k = 0; k < 4; k++) {
+        for (int k = 0; k < WideBvh.WIDTH; k++) {
             for (int a = 0; a < 3; a++) {
-                node[WideBvh.MIN_X + 4 * a + k] = k < used ? WideBvh.floatBelow(boxes[k][a]) : Float.POSITIVE_INFINITY;
-                node[WideBvh.MAX_X + 4 * a + k] = k < used ? WideBvh.floatAbove(boxes[k][a + 3]) : Float.NEGATIVE_INFINITY;
+                node[WideBvh.MIN_X + WideBvh.WIDTH * a + k] = k < used ? WideBvh.floatBelow(boxes[k][a]) : Float.POSITIVE_INFINITY;
+                node[WideBvh.MAX_X + WideBvh.WIDTH * a + k] = k < used ? WideBvh.floatAbove(boxes[k][a + 3]) : Float.NEGATIVE_INFINITY;
             }
         }
         return node;

@@ -47,7 +47,7 @@ class WideBvhTest {
         assertCollapsed(bvh, wide, boxes, 3);
         float[] b = wide.boxes();
         boolean negative = false, positive = false;
-        for (int k = 0; k < 4; k++) {
+        for (int k = 0; k < WideBvh.WIDTH; k++) {
             negative |= b[WideBvh.MIN_X + k] == Float.NEGATIVE_INFINITY;
             positive |= b[WideBvh.MAX_X + k] == Float.POSITIVE_INFINITY;
         }
@@ -128,8 +128,8 @@ class WideBvhTest {
             int link = wide.children()[WideBvh.WIDTH * node + k];
             if (link == WideBvh.EMPTY) {
                 for (int a = 0; a < 3; a++) {
-                    assertEquals(Float.POSITIVE_INFINITY, b[base + WideBvh.MIN_X + 4 * a + k]);
-                    assertEquals(Float.NEGATIVE_INFINITY, b[base + WideBvh.MAX_X + 4 * a + k]);
+                    assertEquals(Float.POSITIVE_INFINITY, b[base + WideBvh.MIN_X + WideBvh.WIDTH * a + k]);
+                    assertEquals(Float.NEGATIVE_INFINITY, b[base + WideBvh.MAX_X + WideBvh.WIDTH * a + k]);
                 }
                 continue;
             }
@@ -148,8 +148,8 @@ class WideBvhTest {
             }
             for (int p : under) {
                 for (int a = 0; a < 3; a++) {
-                    assertTrue(b[base + WideBvh.MIN_X + 4 * a + k] <= boxes[6 * p + a], "min contains primitive " + p);
-                    assertTrue(b[base + WideBvh.MAX_X + 4 * a + k] >= boxes[6 * p + a + 3], "max contains primitive " + p);
+                    assertTrue(b[base + WideBvh.MIN_X + WideBvh.WIDTH * a + k] <= boxes[6 * p + a], "min contains primitive " + p);
+                    assertTrue(b[base + WideBvh.MAX_X + WideBvh.WIDTH * a + k] >= boxes[6 * p + a + 3], "max contains primitive " + p);
                 }
             }
         }
