@@ -319,14 +319,6 @@ class RenderApiTest {
         assertRendersTinyScene();
     }
 
-    @Test
-    void getOnRenderGives405Problem() throws Exception {
-        mvc.perform(get("/api/render"))
-                .andExpect(status().isMethodNotAllowed())
-                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
-                .andExpect(jsonPath("$.status").value(405));
-    }
-
     // --- body size limit -------------------------------------------------------------------------
 
     /** A valid scene padded with spaces to {@code bytes} bytes. */
@@ -405,15 +397,6 @@ class RenderApiTest {
                 .andExpect(jsonPath("$.status").value("UP"))
                 .andExpect(jsonPath("$.details").doesNotExist());
         assertThat(context.getBeanNamesForType(com.hazelcast.core.HazelcastInstance.class)).isEmpty();
-    }
-
-    @Test
-    void publishesTheSceneSchemaWithThisServersLimits() throws Exception {
-        mvc.perform(get("/api/scene-schema"))
-                .andExpect(status().isOk())
-                .andExpect(jsonPath("$.required[0]").value("objects"))
-                .andExpect(jsonPath("$.$defs.SphereObject.properties.type.const").value("sphere"))
-                .andExpect(jsonPath("$.$defs.Image.properties.width.maximum").value(4096));
     }
 
     // --- the real server -------------------------------------------------------------------------

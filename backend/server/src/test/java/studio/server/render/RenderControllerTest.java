@@ -9,6 +9,7 @@ import static org.mockito.Mockito.mock;
 import static org.mockito.Mockito.never;
 import static org.mockito.Mockito.verify;
 import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.asyncDispatch;
+import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.get;
 import static org.springframework.test.web.servlet.request.MockMvcRequestBuilders.post;
 import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.content;
 import static org.springframework.test.web.servlet.result.MockMvcResultMatchers.header;
@@ -76,6 +77,15 @@ class RenderControllerTest {
                 .andExpect(header().string("X-Render-Millis", "42"))
                 .andExpect(header().string("X-Rays-Per-Second", "1234"))
                 .andExpect(header().string("X-Image-Size", "3x2"));
+    }
+
+    @Test
+    void getOnRenderGives405Problem() throws Exception {
+        mvc.perform(get("/api/render"))
+                .andExpect(status().isMethodNotAllowed())
+                .andExpect(content().contentType(MediaType.APPLICATION_PROBLEM_JSON))
+                .andExpect(jsonPath("$.status").value(405));
+        verify(renderService, never()).start(any(), any(), any());
     }
 
     @Test
