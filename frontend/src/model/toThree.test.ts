@@ -1,4 +1,4 @@
-import { BoxGeometry, Euler, Mesh, Quaternion, Vector3 } from 'three';
+import { BoxGeometry, BufferAttribute, BufferGeometry, Euler, Mesh, Quaternion, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import * as edits from './edits';
 import { carryIds, idOf } from './identity';
@@ -6,7 +6,7 @@ import { cameraFrame } from './projection';
 import { areaLuminance, flatShaded, letterbox, LIGHT_SCALE, makeRenderCamera, meshGeometry, planeSize, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
 import { MeshCache, type MeshLookup } from './meshCache';
 import { parseObj } from './obj';
-import { TETRAHEDRON_OBJ } from '../test/meshes';
+import { gridObj, TETRAHEDRON_OBJ } from '../test/meshes';
 import type { Scene, Vec3 } from './types';
 import { rotateXYZ } from './vec';
 
@@ -264,6 +264,18 @@ describe('meshes in the preview', () => {
     expect(g.getAttribute('position').array).toBe(parsed.positions);
     expect(g.getAttribute('normal')).toBeUndefined();
     expect(flatShaded(parsed)).toBe(true);
+  });
+
+  it('gives a mesh the bounding box three.js would compute, and a sphere holding every vertex, without walking them again', () => {
+    const parsed = parseObj(gridObj(7, 3));
+    const g = meshGeometry(parsed);
+    const computed = new BufferGeometry().setAttribute('position', new BufferAttribute(parsed.positions, 3));
+    computed.computeBoundingBox();
+    expect(g.boundingBox!.equals(computed.boundingBox!)).toBe(true);
+    const position = g.getAttribute('position');
+    const { center, radius } = g.boundingSphere!;
+    for (let i = 0; i < position.count; i++) expect(new Vector3().fromBufferAttribute(position, i).distanceTo(center)).toBeLessThanOrEqual(radius * (1 + 1e-12));
+    expect(meshGeometry(parsed).boundingBox).not.toBe(g.boundingBox); // each geometry its own, as three.js disposes them
   });
 
   it('shades smoothly with the OBJ’s normals, kept as they are', () => {
