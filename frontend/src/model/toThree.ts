@@ -3,7 +3,7 @@
  * objects, no React), plus the one helper that builds the render camera as a three.js
  * PerspectiveCamera. The preview component turns descriptors into meshes.
  */
-import { Box3, BufferAttribute, BufferGeometry, PerspectiveCamera, Sphere, Vector3 } from 'three';
+import { PerspectiveCamera, Vector3 } from 'three';
 import { resolveScene } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, type ParsedObj } from './obj';
@@ -72,7 +72,7 @@ export interface MeshDescriptor {
   index: number;
   /**
    * Shared unit geometry: sphere radius 1, box edge 1, plane 1x1 in its x-y plane (normal +z); or
-   * 'mesh': the triangles in `mesh`, in the OBJ's own coordinates (see {@link meshGeometry}).
+   * 'mesh': the triangles in `mesh`, in the OBJ's own coordinates (see `meshGeometry` in meshGeometry.ts).
    */
   geometry: 'sphere' | 'box' | 'plane' | 'mesh' | 'gltf';
   /**
@@ -255,48 +255,6 @@ function meshOf(o: ResolvedObject, id: string, index: number, selected: boolean,
 export function planeSize(far: number, fovDegrees: number, aspect: number): number {
   const tan = Math.tan((Math.min(Math.max(fovDegrees, 1), 179.99) / 2) * (Math.PI / 180));
   return 2 * far * (1 + tan * Math.max(1, aspect));
-}
-
-/**
- * A three.js geometry of a parsed OBJ, in its own coordinates, indexed as the OBJ shares its
- * corners. With the OBJ's vertex normals it is smooth, as the renderer shades it; without, it has
- * no normals and is drawn with a flat-shaded material ({@link flatShaded}): each triangle its face
- * normal, worked out per pixel, as the renderer shades a mesh without normals. Nothing is computed
- * per triangle here, and a 200,000-triangle OBJ uploads a quarter of what one vertex per corner
- * would. Its bounding box and sphere are set here in one tight pass over the coordinates, where
- * three.js took two passes of vector calls (21 ms of the first frame on 200,978 triangles, in a
- * trace of the browser test's import). The caller owns it and disposes it.
- */
-export function meshGeometry(parsed: ParsedObj): BufferGeometry {
-  const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new BufferAttribute(parsed.positions, 3));
-  geometry.setIndex(new BufferAttribute(parsed.indices, 1));
-  if (parsed.normals) geometry.setAttribute('normal', new BufferAttribute(parsed.normals, 3));
-  geometry.boundingBox = boxOf(parsed.positions);
-  geometry.boundingSphere = geometry.boundingBox.getBoundingSphere(new Sphere());
-  return geometry;
-}
-
-/** The box around x, y, z triples (empty for none). */
-function boxOf(positions: Float32Array): Box3 {
-  const box = new Box3();
-  let [x0, y0, z0, x1, y1, z1] = [Infinity, Infinity, Infinity, -Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < positions.length; i += 3) {
-    const x = positions[i], y = positions[i + 1], z = positions[i + 2];
-    if (x < x0) x0 = x;
-    if (x > x1) x1 = x;
-    if (y < y0) y0 = y;
-    if (y > y1) y1 = y;
-    if (z < z0) z0 = z;
-    if (z > z1) z1 = z;
-  }
-  if (positions.length > 0) box.set(new Vector3(x0, y0, z0), new Vector3(x1, y1, z1));
-  return box;
-}
-
-/** Whether a mesh is drawn flat (its material with `flatShading`): an OBJ without vertex normals. */
-export function flatShaded(parsed: ParsedObj): boolean {
-  return !parsed.normals;
 }
 
 const toRadians = (d: number) => (d * Math.PI) / 180;

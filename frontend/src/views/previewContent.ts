@@ -23,7 +23,8 @@ import {
   type WebGLRenderer,
 } from 'three';
 import type { DragTarget } from '../model/selection';
-import { applyRenderCamera, flatShaded, type MeshDescriptor, type ThreeSceneDescriptor } from '../model/toThree';
+import { flatShaded } from '../model/meshGeometry';
+import { applyRenderCamera, type MeshDescriptor, type ThreeSceneDescriptor } from '../model/toThree';
 import { MeshGeometryCache } from './previewGeometries';
 import { loadAssetBytes } from '../hooks/useMeshes';
 import { gltfModel } from './gltfModels';

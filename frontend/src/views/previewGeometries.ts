@@ -1,7 +1,7 @@
 /** three.js geometries of parsed meshes, one per parsed OBJ, disposed when no longer drawn. */
 import type { BufferGeometry } from 'three';
 import { FirstDraws } from './firstDraw';
-import { meshGeometry } from '../model/toThree';
+import { meshGeometry } from '../model/meshGeometry';
 import type { ParsedObj } from '../model/obj';
 
 /**
