@@ -4,7 +4,7 @@ import { describe, expect, it } from 'vitest';
 import { gridObj, TETRAHEDRON_OBJ } from '../test/meshes';
 import { SCENES_DIR } from '../test/scenes';
 import { meshBounds, ObjError, parseObj, scaleToFit } from './obj';
-import { meshGeometry } from './toThree';
+import { meshGeometry } from './meshGeometry';
 import type { Vec3 } from './types';
 
 const TRIANGLE = 'v 0 0 0\nv 1 0 0\nv 0 1 0\n';

@@ -1,12 +1,13 @@
-import { BoxGeometry, Euler, Mesh, Quaternion, Vector3 } from 'three';
+import { BoxGeometry, BufferAttribute, BufferGeometry, Euler, Mesh, Quaternion, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import * as edits from './edits';
 import { carryIds, idOf } from './identity';
 import { cameraFrame } from './projection';
-import { areaLuminance, letterbox, LIGHT_SCALE, makeRenderCamera, meshGeometry, planeSize, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
+import { flatShaded, meshGeometry } from './meshGeometry';
+import { areaLuminance, letterbox, LIGHT_SCALE, makeRenderCamera, planeSize, projectToPixel, quaternionFromZ, sceneToThree } from './toThree';
 import { MeshCache, type MeshLookup } from './meshCache';
 import { parseObj } from './obj';
-import { TETRAHEDRON_OBJ } from '../test/meshes';
+import { gridObj, TETRAHEDRON_OBJ } from '../test/meshes';
 import type { Scene, Vec3 } from './types';
 import { rotateXYZ } from './vec';
 
@@ -257,20 +258,25 @@ describe('meshes in the preview', () => {
     expect(sceneToThree(far, null, lookup).extent).toBeGreaterThan(2 * 500);
   });
 
-  it('shades flat without OBJ normals: each triangle its own corners and face normal', () => {
+  it('draws a mesh without OBJ normals as indexed, without normals, flat-shaded: nothing computed per triangle', () => {
     const parsed = parseObj(TETRAHEDRON_OBJ);
     const g = meshGeometry(parsed);
-    expect(g.index).toBeNull();
+    expect(Array.from(g.index!.array)).toEqual(Array.from(parsed.indices));
+    expect(g.getAttribute('position').array).toBe(parsed.positions);
+    expect(g.getAttribute('normal')).toBeUndefined();
+    expect(flatShaded(parsed)).toBe(true);
+  });
+
+  it('gives a mesh the bounding box three.js would compute, and a sphere holding every vertex, without walking them again', () => {
+    const parsed = parseObj(gridObj(7, 3));
+    const g = meshGeometry(parsed);
+    const computed = new BufferGeometry().setAttribute('position', new BufferAttribute(parsed.positions, 3));
+    computed.computeBoundingBox();
+    expect(g.boundingBox!.equals(computed.boundingBox!)).toBe(true);
     const position = g.getAttribute('position');
-    const normal = g.getAttribute('normal');
-    expect(position.count).toBe(3 * parsed.triangleCount);
-    for (let t = 0; t < parsed.triangleCount; t++) {
-      const [a, b, c] = [0, 1, 2].map((k) => new Vector3().fromBufferAttribute(position, 3 * t + k));
-      const face = new Vector3().crossVectors(b.clone().sub(a), c.clone().sub(a)).normalize();
-      for (let k = 0; k < 3; k++) expect(new Vector3().fromBufferAttribute(normal, 3 * t + k).distanceTo(face)).toBeLessThan(1e-6);
-    }
-    // The slanted face of the tetrahedron points away from the origin, along (1, 1, 1).
-    expect(new Vector3().fromBufferAttribute(normal, 9).toArray().map((x) => x * Math.sqrt(3))).toEqual([1, 1, 1].map((x) => expect.closeTo(x, 5)));
+    const { center, radius } = g.boundingSphere!;
+    for (let i = 0; i < position.count; i++) expect(new Vector3().fromBufferAttribute(position, i).distanceTo(center)).toBeLessThanOrEqual(radius * (1 + 1e-12));
+    expect(meshGeometry(parsed).boundingBox).not.toBe(g.boundingBox); // each geometry its own, as three.js disposes them
   });
 
   it('shades smoothly with the OBJ’s normals, kept as they are', () => {
@@ -278,6 +284,7 @@ describe('meshes in the preview', () => {
     const g = meshGeometry(parsed);
     expect(Array.from(g.index!.array)).toEqual([0, 1, 2]);
     expect(Array.from(g.getAttribute('normal').array)).toEqual(Array.from(parsed.normals!));
+    expect(flatShaded(parsed)).toBe(false);
   });
 
   describe('never shows what the render will not, and survives extreme values', () => {

@@ -3,7 +3,7 @@
  * objects, no React), plus the one helper that builds the render camera as a three.js
  * PerspectiveCamera. The preview component turns descriptors into meshes.
  */
-import { BufferAttribute, BufferGeometry, PerspectiveCamera, Vector3 } from 'three';
+import { PerspectiveCamera, Vector3 } from 'three';
 import { resolveScene } from './defaults';
 import { NO_MESHES, type MeshLookup } from './meshCache';
 import { meshBounds, type ParsedObj } from './obj';
@@ -72,7 +72,7 @@ export interface MeshDescriptor {
   index: number;
   /**
    * Shared unit geometry: sphere radius 1, box edge 1, plane 1x1 in its x-y plane (normal +z); or
-   * 'mesh': the triangles in `mesh`, in the OBJ's own coordinates (see {@link meshGeometry}).
+   * 'mesh': the triangles in `mesh`, in the OBJ's own coordinates (see `meshGeometry` in meshGeometry.ts).
    */
   geometry: 'sphere' | 'box' | 'plane' | 'mesh' | 'gltf';
   /**
@@ -255,26 +255,6 @@ function meshOf(o: ResolvedObject, id: string, index: number, selected: boolean,
 export function planeSize(far: number, fovDegrees: number, aspect: number): number {
   const tan = Math.tan((Math.min(Math.max(fovDegrees, 1), 179.99) / 2) * (Math.PI / 180));
   return 2 * far * (1 + tan * Math.max(1, aspect));
-}
-
-/**
- * A three.js geometry of a parsed OBJ, in its own coordinates. With the OBJ's vertex normals it is
- * indexed and smooth, as the renderer shades it; without, every triangle gets its own three corners
- * and its face normal (flat, as the renderer shades a mesh without normals). The caller owns it and
- * disposes it.
- */
-export function meshGeometry(parsed: ParsedObj): BufferGeometry {
-  const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new BufferAttribute(parsed.positions, 3));
-  geometry.setIndex(new BufferAttribute(parsed.indices, 1));
-  if (parsed.normals) {
-    geometry.setAttribute('normal', new BufferAttribute(parsed.normals, 3));
-    return geometry;
-  }
-  const flat = geometry.toNonIndexed();
-  geometry.dispose();
-  flat.computeVertexNormals();
-  return flat;
 }
 
 const toRadians = (d: number) => (d * Math.PI) / 180;

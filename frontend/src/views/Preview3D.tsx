@@ -2,6 +2,8 @@ import { useEffect, useRef, useState } from 'react';
 import { meshCache } from '../hooks/useMeshes';
 import type { SocketFactory } from '../live/liveSession';
 import { RayTracedView } from '../live/RayTracedView';
+import { DrawProgressNote } from './DrawProgressNote';
+import type { DrawProgress } from './firstDraw';
 import { HandleModes } from './HandleModes';
 import { sceneToThree } from '../model/toThree';
 import { selectDisplayScene, useSceneStore } from '../store/sceneStore';
@@ -37,6 +39,7 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
   const engine = useRef<PreviewEngine | null>(null);
   const [view, setView] = useState<PreviewView>('camera');
   const [failure, setFailure] = useState<string | null>(null);
+  const [drawing, setDrawing] = useState<DrawProgress | null>(null);
   const viewRef = useRef(view);
   const push = useRef(() => {});
 
@@ -51,6 +54,7 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
       return;
     }
     engine.current = preview;
+    preview.onDrawProgress = setDrawing;
     element.appendChild(preview.canvas);
     // focusable, so that the arrow keys move the selection here as in the plan views
     preview.canvas.tabIndex = 0;
@@ -139,6 +143,7 @@ export function Preview3D({ shown = true, onFieldErrors, socketFactory }: Previe
       <div className="preview3d__stage">
         {view === 'raytraced' && shown && <RayTracedView onFieldErrors={onFieldErrors} socketFactory={socketFactory} />}
         <div className={view === 'raytraced' ? 'preview3d__viewport is-overlay' : 'preview3d__viewport'} ref={host} data-testid="preview-3d" data-mode={view}>
+          {view !== 'raytraced' && <DrawProgressNote progress={drawing} />}
           {failure && view !== 'raytraced' && (
             <p className="preview3d__failure" role="note">
               The 3D preview needs WebGL, which this browser does not offer ({failure}). The top and side views and rendering still work.

@@ -23,6 +23,7 @@ import {
   type WebGLRenderer,
 } from 'three';
 import type { DragTarget } from '../model/selection';
+import { flatShaded } from '../model/meshGeometry';
 import { applyRenderCamera, type MeshDescriptor, type ThreeSceneDescriptor } from '../model/toThree';
 import { MeshGeometryCache } from './previewGeometries';
 import { loadAssetBytes } from '../hooks/useMeshes';
@@ -31,6 +32,7 @@ import { PreviewLights } from './previewLights';
 import { MaterialCache } from './previewMaterials';
 import { TextureCache } from './previewTextures';
 import { meshBuild, planMeshes, type MeshBuild } from './previewReconcile';
+import type { DrawProgress } from './firstDraw';
 import { ReflectionProbes } from './reflectionProbes';
 
 const SELECTED = 0x4ea1ff;
@@ -89,6 +91,21 @@ export class PreviewContent {
     this.showFrustum(frustum ? d : null);
   }
 
+  /** True while a large mesh just added is not yet drawn whole ({@link drawNextPart}). */
+  get growing(): boolean {
+    return this.meshGeometries.draws.active;
+  }
+
+  /** Draws the next part of each large mesh just added; true when one of them drew its first part. */
+  drawNextPart(): boolean {
+    return this.meshGeometries.draws.step();
+  }
+
+  /** How much of the large meshes just added is drawn, or null when each is whole. */
+  drawProgress(): DrawProgress | null {
+    return this.meshGeometries.draws.progress();
+  }
+
   /** Takes every reflection probe's cube map, with the helpers and `hide` (the handles) left out. */
   takeReflections(renderer: WebGLRenderer, scene: Scene, hide: Object3D[]): void {
     this.probes.update(renderer, scene, [...this.helpers, ...hide]);
@@ -131,8 +148,8 @@ export class PreviewContent {
 
   private materialOf(m: MeshDescriptor): Material {
     if (m.geometry === 'gltf') return this.hidden;
-    // Planes and meshes (which may be open) are seen from both sides.
-    return this.materials.get(m.material, m.geometry === 'plane' || m.geometry === 'mesh');
+    // Planes and meshes (which may be open) are seen from both sides; a mesh without normals is flat.
+    return this.materials.get(m.material, m.geometry === 'plane' || m.geometry === 'mesh', m.geometry === 'mesh' && flatShaded(m.mesh!));
   }
 
   /** Puts a mesh where `m` says, in its material (asked of the caches each time, which keeps them in use). */

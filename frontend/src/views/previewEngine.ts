@@ -8,8 +8,10 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { frameBall, type GizmoMode, type GizmoPose } from '../model/gizmo';
 import type { Vec3 } from '../model/types';
 import { applyRenderCamera, letterbox, type ThreeSceneDescriptor } from '../model/toThree';
+import type { DrawProgress } from './firstDraw';
 import { PreviewContent } from './previewContent';
 import { PreviewHandles, type HandleCallbacks } from './previewHandles';
+import { probeWebgl } from './webglSupport';
 
 /**
  * What the engine draws: the scene through the render camera or the orbit camera, or (`overlay`)
@@ -43,14 +45,22 @@ export class PreviewEngine {
   private frame = 0;
   /** The content changed since the shadow maps and reflections were last taken. */
   private stale = true;
+  /** The last frame drew a large new mesh's first part: this one takes the shadows ({@link requestRender}). */
+  private shadowsNext = false;
+  private progress: DrawProgress | null = null;
+
+  /** Told how much of a large mesh just added is drawn, and null once every one is whole. */
+  onDrawProgress: (progress: DrawProgress | null) => void = () => {};
   private readonly handles: PreviewHandles;
 
   /** Throws when WebGL 2 is not available. */
   constructor(callbacks: Pick<HandleCallbacks, 'onPick' | 'onPose' | 'onRelease'> = { onPick: () => {}, onPose: () => {}, onRelease: () => {} }) {
-    if (!webgl2Available()) throw new Error('WebGL 2 is not available');
+    const support = probeWebgl();
+    if (!support.webgl2) throw new Error('WebGL 2 is not available');
     // preserveDrawingBuffer: the picture can be read back (the browser test checks its shadows);
-    // alpha: over the live image only the handles are opaque
-    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
+    // alpha: over the live image only the handles are opaque; no multisampling in software WebGL,
+    // where it cost 0.12 s a frame on the 200,978-triangle mesh (docs/editor.md, the browser test)
+    this.renderer = new WebGLRenderer({ antialias: !support.software, preserveDrawingBuffer: true, alpha: true });
     this.renderer.setPixelRatio(Math.min(2, globalThis.devicePixelRatio || 1));
     this.canvas = this.renderer.domElement;
     this.scene.add(this.content.root);
@@ -160,13 +170,33 @@ export class PreviewEngine {
     if (this.frame) return;
     this.frame = requestAnimationFrame(() => {
       this.frame = 0;
-      if (this.stale && this.mode !== 'overlay') {
+      // A large new mesh comes in a step a frame: none of it (its shaders set up, its buffers
+      // uploaded), its first part (the shaders compiled in drawing it), the shadow maps of that part
+      // (theirs compiled), its other parts, then the shadow maps and reflections of the whole.
+      // Software WebGL holds the page for a whole frame, shader compiles included, and frames that
+      // both grew and took the shadows were the longest (docs/editor.md)
+      const shadowsNow = this.shadowsNext;
+      this.shadowsNext = false;
+      if (this.content.growing && !shadowsNow) {
+        this.shadowsNext = this.content.drawNextPart();
+        this.stale = true;
+      } else if (this.stale && this.mode !== 'overlay') {
         this.stale = false;
         this.renderer.shadowMap.needsUpdate = true;
         this.content.takeReflections(this.renderer, this.scene, this.handles.helpers());
       }
       this.renderer.render(this.scene, this.mode === 'orbit' ? this.orbitCamera : this.renderCamera);
+      this.tellProgress();
+      if (this.content.growing || (this.stale && this.mode !== 'overlay')) this.requestRender();
     });
+  }
+
+  /** Tells {@link onDrawProgress} when the share drawn of the large new meshes changed. */
+  private tellProgress(): void {
+    const now = this.content.drawProgress();
+    if (now?.drawn === this.progress?.drawn && now?.total === this.progress?.total) return;
+    this.progress = now;
+    this.onDrawProgress(now);
   }
 
   dispose(): void {
@@ -188,14 +218,5 @@ export class PreviewEngine {
     this.orbitCamera.aspect = box.width / Math.max(1, box.height);
     this.orbitCamera.updateProjectionMatrix();
     this.requestRender();
-  }
-}
-
-/** Probes for WebGL 2 without letting three.js log its own error. */
-function webgl2Available(): boolean {
-  try {
-    return !!document.createElement('canvas').getContext('webgl2');
-  } catch {
-    return false;
   }
 }

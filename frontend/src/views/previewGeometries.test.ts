@@ -1,6 +1,8 @@
 import { describe, expect, it, vi } from 'vitest';
 import { parseObj } from '../model/obj';
 import { TETRAHEDRON_OBJ } from '../test/meshes';
+import type { ParsedObj } from '../model/obj';
+import { DRAW_WHOLE_BELOW } from './firstDraw';
 import { MeshGeometryCache } from './previewGeometries';
 
 describe('MeshGeometryCache', () => {
@@ -23,5 +25,28 @@ describe('MeshGeometryCache', () => {
     expect(geometries.size).toBe(1);
     geometries.dispose();
     expect(disposedB).toHaveBeenCalledTimes(1);
+  });
+
+  it('starts a large mesh undrawn, to be drawn part by part, and a small one whole', () => {
+    const geometries = new MeshGeometryCache();
+    const triangles = DRAW_WHOLE_BELOW + 1;
+    const large: ParsedObj = { positions: new Float32Array(9), indices: new Uint32Array(3 * triangles), triangleCount: triangles };
+    const small = geometries.get(parseObj(TETRAHEDRON_OBJ));
+    expect(small.drawRange.count).toBe(Infinity);
+    expect(geometries.draws.active).toBe(false);
+    const g = geometries.get(large);
+    expect(g.drawRange.count).toBe(0);
+    expect(geometries.draws.progress()).toEqual({ drawn: 0, total: triangles });
+    while (geometries.draws.active) geometries.draws.step();
+    expect(g.drawRange.count).toBe(Infinity);
+  });
+
+  it('stops drawing a large mesh removed before it is whole', () => {
+    const geometries = new MeshGeometryCache();
+    const triangles = 2 * DRAW_WHOLE_BELOW;
+    geometries.get({ positions: new Float32Array(9), indices: new Uint32Array(3 * triangles), triangleCount: triangles });
+    geometries.sweep();
+    geometries.sweep(); // not asked for again: disposed
+    expect(geometries.draws.active).toBe(false);
   });
 });

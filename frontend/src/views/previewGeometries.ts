@@ -1,14 +1,18 @@
 /** three.js geometries of parsed meshes, one per parsed OBJ, disposed when no longer drawn. */
 import type { BufferGeometry } from 'three';
-import { meshGeometry } from '../model/toThree';
+import { FirstDraws } from './firstDraw';
+import { meshGeometry } from '../model/meshGeometry';
 import type { ParsedObj } from '../model/obj';
 
 /**
  * Keeps one geometry per parsed OBJ (the mesh cache hands out the same parse for as long as a
  * mesh's OBJ is unchanged, so moving or recolouring a mesh reuses its geometry); {@link sweep}
- * disposes those not asked for since the last sweep: a mesh removed, or given another OBJ.
+ * disposes those not asked for since the last sweep: a mesh removed, or given another OBJ. A large
+ * new geometry starts undrawn and grows part by part ({@link draws}, stepped by the preview's frames).
  */
 export class MeshGeometryCache {
+  /** The new large geometries not yet drawn whole. */
+  readonly draws = new FirstDraws<BufferGeometry>();
   private readonly live = new Map<ParsedObj, BufferGeometry>();
   private used = new Set<ParsedObj>();
 
@@ -17,6 +21,7 @@ export class MeshGeometryCache {
     let geometry = this.live.get(parsed);
     if (!geometry) {
       geometry = meshGeometry(parsed);
+      this.draws.start(geometry, parsed.triangleCount);
       this.live.set(parsed, geometry);
     }
     return geometry;
@@ -26,6 +31,7 @@ export class MeshGeometryCache {
   sweep(): void {
     for (const [parsed, geometry] of this.live) {
       if (!this.used.has(parsed)) {
+        this.draws.forget(geometry);
         geometry.dispose();
         this.live.delete(parsed);
       }
@@ -39,7 +45,10 @@ export class MeshGeometryCache {
   }
 
   dispose(): void {
-    for (const geometry of this.live.values()) geometry.dispose();
+    for (const geometry of this.live.values()) {
+      this.draws.forget(geometry);
+      geometry.dispose();
+    }
     this.live.clear();
   }
 }

@@ -14,10 +14,14 @@ import {
 import type { MaterialDescriptor } from '../model/toThree';
 import type { TextureCache } from './previewTextures';
 
-/** Builds the three.js material of a descriptor (colours are sRGB, converted to linear); `map` its texture, if any. */
-export function createMaterial(d: MaterialDescriptor, doubleSided: boolean, map: Texture | null = null): Material {
+/**
+ * Builds the three.js material of a descriptor (colours are sRGB, converted to linear); `map` its
+ * texture, if any; `flat`: each triangle shaded with its face normal (a mesh without normals).
+ */
+export function createMaterial(d: MaterialDescriptor, doubleSided: boolean, map: Texture | null = null, flat = false): Material {
   const material = untexturedMaterial(d, doubleSided);
   if (map) Object.assign(material, { map });
+  if (flat && !(material instanceof MeshBasicMaterial)) Object.assign(material, { flatShading: true });
   return material;
 }
 
@@ -62,12 +66,13 @@ export class MaterialCache {
   /** @param textures makes each textured material's texture (none: textures are left out) */
   constructor(private readonly textures: TextureCache | null = null) {}
 
-  get(d: MaterialDescriptor, doubleSided: boolean): Material {
-    const key = JSON.stringify([d, doubleSided]);
+  /** The material of `d`, seen from both sides with `doubleSided`, shaded per triangle with `flat`. */
+  get(d: MaterialDescriptor, doubleSided: boolean, flat = false): Material {
+    const key = JSON.stringify([d, doubleSided, flat]);
     this.used.add(key);
     let material = this.live.get(key);
     if (!material) {
-      material = createMaterial(d, doubleSided, d.texture && this.textures ? this.textures.create(d.texture) : null);
+      material = createMaterial(d, doubleSided, d.texture && this.textures ? this.textures.create(d.texture) : null, flat);
       this.live.set(key, material);
     }
     return material;
