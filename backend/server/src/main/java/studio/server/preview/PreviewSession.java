@@ -231,6 +231,21 @@ final class PreviewSession {
         return newest;
     }
 
+    /**
+     * The scene of a revision's final pass: with the meshes' light buffers its render pays for
+     * ({@link FinalPassScene}), kept for the next revision; without them (the same pixels) where
+     * their memory is not free.
+     */
+    private CompiledScene forFinalPass(CompiledScene scene) {
+        try (IntakeMemory memory = IntakeMemory.of(renderer.memory())) {
+            CompiledScene lit = FinalPassScene.of(scene, memory);
+            reuse.finalPass(scene, lit);
+            return lit;
+        } catch (ErrorResponseException e) {
+            return scene; // the memory is taken right now: the buffers only save time
+        }
+    }
+
     /** A revision read: its message, and its scene's tree if it was patched. */
     private record Read(PreviewRequest request, Message message, JsonNode patched) {
     }
@@ -272,6 +287,9 @@ final class PreviewSession {
                     return;
                 }
                 boolean intoKept = kept != null && !pass.last();
+                if (pass.last()) {
+                    scene = forFinalPass(scene);
+                }
                 byte[] frame;
                 try {
                     if (first || pass.except() == null) {

@@ -115,6 +115,17 @@ final class SceneReuse implements AutoCloseable {
         return new Revision(scene, origins);
     }
 
+    /**
+     * The kept revision's scene {@code was} becomes {@code is}, the same scene with its meshes' light
+     * buffers built for its final pass ({@link FinalPassScene}), so that the next revision keeps them.
+     */
+    void finalPass(CompiledScene was, CompiledScene is) {
+        Kept last = kept.get();
+        if (was != is && last != null && last.compiled() == was) {
+            kept.compareAndSet(last, new Kept(last.json(), last.objects(), last.width(), last.height(), is, last.memory()));
+        }
+    }
+
     /** Revisions assembled from a kept scene so far. */
     long reused() {
         return reused;
@@ -147,14 +158,18 @@ final class SceneReuse implements AutoCloseable {
             }
             objects.add(object);
         }
-        return assemble(frame, objects, memory);
+        return assemble(frame, scene, objects, memory);
     }
 
-    /** The scene of {@code frame} (its camera, lights and settings) with these objects. */
-    private static CompiledScene assemble(CompiledScene frame, List<SceneObject> objects, MemoryGate memory) {
+    /**
+     * The scene of {@code frame} (its camera, lights and settings) with these objects, its trees
+     * refitted from {@code last}'s where the objects are its own but a few ({@link Scene#reusing}).
+     */
+    private static CompiledScene assemble(CompiledScene frame, Scene last, List<SceneObject> objects, MemoryGate memory) {
         Scene scene = frame.scene();
-        List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), frame.settings().cameraSamples(), memory);
-        return new CompiledScene(new Scene(scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
+        // the light buffers of a mesh that pays for them only at the final pass's samples wait for it (FinalPassScene)
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), FinalPassScene.oneSamplePasses(frame), memory);
+        return new CompiledScene(Scene.reusing(last, scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
                 frame.settings(), frame.format(), frame.quality(), frame.fileStem());
     }
 
@@ -203,7 +218,7 @@ final class SceneReuse implements AutoCloseable {
             }
             assembled.add(object);
         }
-        return new Revision(assemble(last.compiled(), assembled, memory), origins);
+        return new Revision(assemble(last.compiled(), scene, assembled, memory), origins);
     }
 
     /**
