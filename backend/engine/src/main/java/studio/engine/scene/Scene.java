@@ -41,8 +41,8 @@ public final class Scene {
     /**
      * The scene the constructor builds from these parts, its aggregates' trees refitted from
      * {@code last}'s where it has as many objects and all but a few of its shapes are the very
-     * objects of {@code last}'s at the same places (a live view's next revision): the same hits, in
-     * some 0.1 ms where building the tree of 10,000 objects takes about 10 ({@link ShapeTree}).
+     * objects of {@code last}'s at the same places (a live view's next revision): the same hits,
+     * 10,001 objects in about 1.5 ms of CPU time instead of 11-13 ({@link ShapeTree}).
      */
     public static Scene reusing(Scene last, Camera camera, List<SceneObject> objects, List<? extends Light> lights,
                                 Rgb background, double ambient) {

@@ -158,6 +158,42 @@ class SceneReusingTest {
     }
 
     @Test
+    void shadowRaysThroughKeptBuffersAndChangedSlotsAllocateNothing() {
+        Random random = new Random(49);
+        List<SceneObject> objects = objects(random, 1000);
+        Scene last = fresh(objects);
+        move(objects, 0, 0.5, 0.8, 2);
+        move(objects, 5, -0.5, 1.8, 0);
+        Scene scene = reusing(last, objects);
+        assertEquals(2, scene.opaque().staleSlotCount());
+        Ray[] rays = new Ray[1024];
+        double[] lengths = new double[rays.length];
+        for (int i = 0; i < rays.length; i++) {
+            Vec3 from = new Vec3(-4 + 8 * random.nextDouble(), 0.01 + 3 * random.nextDouble(), -4 + 6 * random.nextDouble());
+            Vec3 toLight = LIGHTS.get(i % 2).position().minus(from);
+            rays[i] = new Ray(from, toLight.normalized());
+            lengths[i] = toLight.length() * (1 - 1e-9);
+        }
+        long blocked = shadows(scene, rays, lengths, 100_000); // warm-up: compiled before measuring
+        com.sun.management.ThreadMXBean threads =
+                (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long before = threads.getThreadAllocatedBytes(Thread.currentThread().getId());
+        blocked += shadows(scene, rays, lengths, 100_000);
+        long bytes = threads.getThreadAllocatedBytes(Thread.currentThread().getId()) - before;
+        assertTrue(blocked > 0);
+        assertTrue(bytes < 1024, "allocated " + bytes + " bytes over 100,000 shadow rays");
+    }
+
+    private static long shadows(Scene scene, Ray[] rays, double[] lengths, int calls) {
+        long blocked = 0;
+        for (int k = 0; k < calls; k++) {
+            int i = k % rays.length;
+            blocked += scene.opaque().occluded(rays[i], lengths[i]) ? 1 : 0;
+        }
+        return blocked;
+    }
+
+    @Test
     void changedLightsBuildTheBuffersAndAnUnchangedSceneSharesEverything() {
         Random random = new Random(48);
         List<SceneObject> objects = objects(random, 500);

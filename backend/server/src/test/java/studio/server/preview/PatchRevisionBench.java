@@ -60,6 +60,8 @@ public final class PatchRevisionBench {
         reuse.compile(request, MemoryGate.UNLIMITED, read);
         base.compiled();
         long[] patch = new long[ROUNDS], compile = new long[ROUNDS], whole = new long[ROUNDS], render = new long[ROUNDS];
+        long[] reusing = new long[ROUNDS];
+        Scene previous = null;
         long revision = 1;
         for (int i = 0; i < ROUNDS; i++) {
             String message = "{\"revision\": " + (revision + 1) + ", \"base\": " + revision + ", \"width\": " + WIDTH
@@ -82,6 +84,12 @@ public final class PatchRevisionBench {
             long t3 = cpu.getCurrentThreadCpuTime();
             new Scene(s.camera(), objects, s.lights(), s.background(), s.ambient());
             long t4 = cpu.getCurrentThreadCpuTime();
+            if (previous != null) {
+                Scene.reusing(previous, s.camera(), objects, s.lights(), s.background(), s.ambient());
+            }
+            reusing[i] = cpu.getCurrentThreadCpuTime() - t4;
+            previous = s;
+            t4 = cpu.getCurrentThreadCpuTime();
             RenderSettings one = compiled.settings();
             RenderSettings oneSample = new RenderSettings(WIDTH, HEIGHT, studio.engine.sampler.Sampler.of("jittered", 1),
                     one.maxDepth(), 2, one.seed(), one.minPathWeight(), 0);
@@ -98,6 +106,7 @@ public final class PatchRevisionBench {
         print("parse + apply the patch", patch);
         print("compile (read the object, assemble the scene)", compile);
         print("engine scene built in full (for comparison)", whole);
+        print("engine scene reusing the last one's (Scene.reusing)", reusing);
         print("one-sample frame 640x480, 2 threads, wall time", render);
         reuse.close();
         base.close();
