@@ -232,14 +232,14 @@ final class PreviewSession {
     }
 
     /**
-     * The scene of a revision's final pass: with the meshes' light buffers its render pays for
-     * ({@link FinalPassScene}), kept for the next revision; without them (the same pixels) where
-     * their memory is not free.
+     * The scene of a revision's passes after its first: with the meshes' light buffers its render
+     * pays for ({@link DeferredMeshBuffers}), kept for the next revision; without them (the same
+     * pixels) where their memory is not free.
      */
-    private CompiledScene forFinalPass(CompiledScene scene) {
+    private CompiledScene withMeshBuffers(CompiledScene scene) {
         try (IntakeMemory memory = IntakeMemory.of(renderer.memory())) {
-            CompiledScene lit = FinalPassScene.of(scene, memory);
-            reuse.finalPass(scene, lit);
+            CompiledScene lit = DeferredMeshBuffers.of(scene, memory);
+            reuse.withMeshBuffers(scene, lit);
             return lit;
         } catch (ErrorResponseException e) {
             return scene; // the memory is taken right now: the buffers only save time
@@ -287,8 +287,8 @@ final class PreviewSession {
                     return;
                 }
                 boolean intoKept = kept != null && !pass.last();
-                if (pass.last()) {
-                    scene = forFinalPass(scene);
+                if (pass.number() == 2) {
+                    scene = withMeshBuffers(scene);
                 }
                 byte[] frame;
                 try {

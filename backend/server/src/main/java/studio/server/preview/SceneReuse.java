@@ -117,9 +117,9 @@ final class SceneReuse implements AutoCloseable {
 
     /**
      * The kept revision's scene {@code was} becomes {@code is}, the same scene with its meshes' light
-     * buffers built for its final pass ({@link FinalPassScene}), so that the next revision keeps them.
+     * buffers built for its later passes ({@link DeferredMeshBuffers}), so that the next revision keeps them.
      */
-    void finalPass(CompiledScene was, CompiledScene is) {
+    void withMeshBuffers(CompiledScene was, CompiledScene is) {
         Kept last = kept.get();
         if (was != is && last != null && last.compiled() == was) {
             kept.compareAndSet(last, new Kept(last.json(), last.objects(), last.width(), last.height(), is, last.memory()));
@@ -167,8 +167,8 @@ final class SceneReuse implements AutoCloseable {
      */
     private static CompiledScene assemble(CompiledScene frame, Scene last, List<SceneObject> objects, MemoryGate memory) {
         Scene scene = frame.scene();
-        // the light buffers of a mesh that pays for them only at the final pass's samples wait for it (FinalPassScene)
-        List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), FinalPassScene.oneSamplePasses(frame), memory);
+        // a moved mesh's light buffers wait for the second pass (DeferredMeshBuffers)
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), DeferredMeshBuffers.firstPass(frame), memory);
         return new CompiledScene(Scene.reusing(last, scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
                 frame.settings(), frame.format(), frame.quality(), frame.fileStem());
     }

@@ -151,18 +151,18 @@ class PatchedTreeTest {
     }
 
     @Test
-    void aMovedMeshGetsItsLightBuffersAtTheFinalPassAndTheyChangeNoPixel() {
+    void aMovedMeshGetsItsLightBuffersAfterTheFirstPassAndTheyChangeNoPixel() {
         try (View view = new View(300)) {
             Scene moved = view.patch("[" + move(1, "position", 0.5, 1.2, 1.5) + "]");
             TriangleMesh mesh = (TriangleMesh) moved.shape(1);
-            assertThat(mesh.lightBufferCount()).as("the one-sample passes do without").isZero();
+            assertThat(mesh.lightBufferCount()).as("the first pass does without").isZero();
             CompiledScene compiled = new CompiledScene(moved, new RenderSettings(WIDTH, HEIGHT, Sampler.of("jittered", 64), 4, 1),
                     "png", 1, "view");
-            CompiledScene lit = FinalPassScene.of(compiled, MemoryGate.UNLIMITED);
+            CompiledScene lit = DeferredMeshBuffers.of(compiled, MemoryGate.UNLIMITED);
             assertThat(((TriangleMesh) lit.scene().shape(1)).lightBufferCount()).as("64 samples a pixel pay for them").isEqualTo(2);
             assertThat(lit.scene().shape(0)).isSameAs(moved.shape(0));
             assertThat(pixels(lit.scene())).isEqualTo(pixels(moved)).isEqualTo(pixels(view.readInFull()));
-            assertThat(FinalPassScene.of(lit, MemoryGate.UNLIMITED)).as("built once").isSameAs(lit);
+            assertThat(DeferredMeshBuffers.of(lit, MemoryGate.UNLIMITED)).as("built once").isSameAs(lit);
         }
     }
 
