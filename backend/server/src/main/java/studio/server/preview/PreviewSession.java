@@ -231,21 +231,6 @@ final class PreviewSession {
         return newest;
     }
 
-    /**
-     * The scene of a revision's passes after its first: with the meshes' light buffers its render
-     * pays for ({@link DeferredMeshBuffers}), kept for the next revision; without them (the same
-     * pixels) where their memory is not free.
-     */
-    private CompiledScene withMeshBuffers(CompiledScene scene) {
-        try (IntakeMemory memory = IntakeMemory.of(renderer.memory())) {
-            CompiledScene lit = DeferredMeshBuffers.of(scene, memory);
-            reuse.withMeshBuffers(scene, lit);
-            return lit;
-        } catch (ErrorResponseException e) {
-            return scene; // the memory is taken right now: the buffers only save time
-        }
-    }
-
     /** A revision read: its message, and its scene's tree if it was patched. */
     private record Read(PreviewRequest request, Message message, JsonNode patched) {
     }
@@ -287,9 +272,6 @@ final class PreviewSession {
                     return;
                 }
                 boolean intoKept = kept != null && !pass.last();
-                if (pass.number() == 2) {
-                    scene = withMeshBuffers(scene);
-                }
                 byte[] frame;
                 try {
                     if (first || pass.except() == null) {

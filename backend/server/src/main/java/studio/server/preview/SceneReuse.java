@@ -115,17 +115,6 @@ final class SceneReuse implements AutoCloseable {
         return new Revision(scene, origins);
     }
 
-    /**
-     * The kept revision's scene {@code was} becomes {@code is}, the same scene with its meshes' light
-     * buffers built for its later passes ({@link DeferredMeshBuffers}), so that the next revision keeps them.
-     */
-    void withMeshBuffers(CompiledScene was, CompiledScene is) {
-        Kept last = kept.get();
-        if (was != is && last != null && last.compiled() == was) {
-            kept.compareAndSet(last, new Kept(last.json(), last.objects(), last.width(), last.height(), is, last.memory()));
-        }
-    }
-
     /** Revisions assembled from a kept scene so far. */
     long reused() {
         return reused;
@@ -167,8 +156,7 @@ final class SceneReuse implements AutoCloseable {
      */
     private static CompiledScene assemble(CompiledScene frame, Scene last, List<SceneObject> objects, MemoryGate memory) {
         Scene scene = frame.scene();
-        // a moved mesh's light buffers wait for the second pass (DeferredMeshBuffers)
-        List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), DeferredMeshBuffers.firstPass(frame), memory);
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), frame.settings().cameraSamples(), memory);
         return new CompiledScene(Scene.reusing(last, scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
                 frame.settings(), frame.format(), frame.quality(), frame.fileStem());
     }

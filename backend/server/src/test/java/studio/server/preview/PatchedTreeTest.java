@@ -11,7 +11,6 @@ import java.util.function.Function;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
-import studio.engine.geometry.TriangleMesh;
 import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.MeshShapes;
 import studio.engine.mesh.ObjWriter;
@@ -147,22 +146,6 @@ class PatchedTreeTest {
             Scene moved = view.patch("[" + move(1, "position", 0.5, 1.2, 1.5) + "," + move(0, "center", -1, 0.7, 2.4) + "]");
             assertThat(view.reuse.reused()).isOne();
             assertThat(pixels(moved)).isEqualTo(pixels(view.readInFull()));
-        }
-    }
-
-    @Test
-    void aMovedMeshGetsItsLightBuffersAfterTheFirstPassAndTheyChangeNoPixel() {
-        try (View view = new View(300)) {
-            Scene moved = view.patch("[" + move(1, "position", 0.5, 1.2, 1.5) + "]");
-            TriangleMesh mesh = (TriangleMesh) moved.shape(1);
-            assertThat(mesh.lightBufferCount()).as("the first pass does without").isZero();
-            CompiledScene compiled = new CompiledScene(moved, new RenderSettings(WIDTH, HEIGHT, Sampler.of("jittered", 64), 4, 1),
-                    "png", 1, "view");
-            CompiledScene lit = DeferredMeshBuffers.of(compiled, MemoryGate.UNLIMITED);
-            assertThat(((TriangleMesh) lit.scene().shape(1)).lightBufferCount()).as("64 samples a pixel pay for them").isEqualTo(2);
-            assertThat(lit.scene().shape(0)).isSameAs(moved.shape(0));
-            assertThat(pixels(lit.scene())).isEqualTo(pixels(moved)).isEqualTo(pixels(view.readInFull()));
-            assertThat(DeferredMeshBuffers.of(lit, MemoryGate.UNLIMITED)).as("built once").isSameAs(lit);
         }
     }
 
