@@ -16,7 +16,7 @@ import studio.engine.geometry.Ray;
  */
 final class StaleSlots {
 
-    /** Most changed slots kept beside the buffers. */
+    /** Most changed slots kept beside the buffers: as many as a live view's revision reads alone ({@code SceneReuse.MAX_CHANGED}). */
     static final int MAX = 8;
 
     private StaleSlots() {
