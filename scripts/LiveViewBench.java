@@ -50,7 +50,9 @@ import javax.imageio.ImageIO;
  * editor sends) every later one is an RFC 6902 patch to the revision before it that replaces the
  * moved object's position, with {@code whole} the whole scene again; {@code both} measures each
  * scene both ways on views of their own, in an order that alternates from round to round
- * ({@code --rounds}), so that the two are compared on the same server in the same minutes.
+ * ({@code --rounds}), so that the two are compared on the same server in the same minutes. A mesh
+ * a scene names by {@code file} (an OBJ beside it) is sent inline, as {@code obj}, so that
+ * {@code --scenes} may name a folder of held-out scenes with their meshes in files.
  *
  * Per scene, on one WebSocket (an edit is a small move of one object, a new revision):
  * <ol>
@@ -178,7 +180,7 @@ public final class LiveViewBench {
         }
         for (Path file : files) {
             String name = file.getFileName().toString().replaceFirst("\\.json$", "");
-            scenes.add(BenchScene.of(name, Json.object(Json.parse(Files.readString(file))), w, h));
+            scenes.add(BenchScene.of(name, inlineFiles(Json.object(Json.parse(Files.readString(file))), file.getParent()), w, h));
         }
         scenes.add(BenchScene.of("spheres-10k", Generated.spheres(10_000), w, h));
         scenes.add(BenchScene.of("glass-mirrors", Generated.glassBetweenMirrors(), w, h));
@@ -192,6 +194,30 @@ public final class LiveViewBench {
             return one;
         }
         return scenes;
+    }
+
+    /**
+     * The scene with each mesh's {@code file} (an OBJ beside the scene, as the command line reads it)
+     * sent inline as {@code obj}, the server's form of it, so that held-out scenes with their meshes
+     * in files can be measured as they are.
+     */
+    static Map<String, Object> inlineFiles(Map<String, Object> scene, Path folder) throws IOException {
+        for (Object o : Json.list(scene.getOrDefault("objects", List.of()))) {
+            Map<String, Object> object = Json.object(o);
+            if ("mesh".equals(object.get("type")) && object.get("file") instanceof String file) {
+                Map<String, Object> inlined = new LinkedHashMap<>();
+                for (Map.Entry<String, Object> e : object.entrySet()) {
+                    if (e.getKey().equals("file")) {
+                        inlined.put("obj", Files.readString(folder.resolve(file)));
+                    } else {
+                        inlined.put(e.getKey(), e.getValue());
+                    }
+                }
+                object.clear();
+                object.putAll(inlined);
+            }
+        }
+        return scene;
     }
 
     private final Options options;

@@ -198,6 +198,42 @@ public final class LightBuffer {
         this.nearest = nearest;
     }
 
+    /** A copy of {@code from} (its lists shared) that tests its primitives with {@code primitives}. */
+    private LightBuffer(LightBuffer from, Primitives primitives) {
+        this.primitives = primitives;
+        this.lx = from.lx;
+        this.ly = from.ly;
+        this.lz = from.lz;
+        this.depthAxis = from.depthAxis;
+        this.uAxis = from.uAxis;
+        this.vAxis = from.vAxis;
+        this.side = from.side;
+        this.x0 = from.x0;
+        this.y0 = from.y0;
+        this.z0 = from.z0;
+        this.x1 = from.x1;
+        this.y1 = from.y1;
+        this.z1 = from.z1;
+        this.u0 = from.u0;
+        this.v0 = from.v0;
+        this.cellsPerU = from.cellsPerU;
+        this.cellsPerV = from.cellsPerV;
+        this.nu = from.nu;
+        this.nv = from.nv;
+        this.cellStart = from.cellStart;
+        this.listed = from.listed;
+        this.nearest = from.nearest;
+    }
+
+    /**
+     * This buffer, its lists shared, testing the listed primitives with {@code primitives}: for
+     * primitives that stand where these did when it was built, as a scene whose objects but a few
+     * are the same keeps it (the few are then tested beside it).
+     */
+    public LightBuffer testing(Primitives primitives) {
+        return new LightBuffer(this, primitives);
+    }
+
     /**
      * The buffer of a mesh's triangles (world positions {@code p}, 3 per vertex; vertex indices 3
      * per triangle, all inside {@code bounds}) for a light at {@code light}; null where the box does

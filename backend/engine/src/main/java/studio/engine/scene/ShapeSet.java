@@ -3,7 +3,6 @@ package studio.engine.scene;
 import java.util.Arrays;
 import java.util.List;
 
-import studio.engine.accel.Aabb;
 import studio.engine.accel.Bvh;
 import studio.engine.accel.PlaneLeaves;
 import studio.engine.accel.ShapeLeaves;
@@ -35,6 +34,10 @@ import studio.engine.memory.MemoryGate;
  * ({@link BundleSearch}), and a ray that starts into a shape tests it first ({@link Ray#within});
  * behind {@link #occluded}, the shape that last blocked the ray object is tested first
  * ({@link Ray#blocker}).
+ *
+ * <p>A set made from the last one ({@link #of(List, Shape[], ShapeSet)}: a live view's next
+ * revision, its shapes the last one's but a few) refits that one's tree ({@link ShapeTree}) and
+ * keeps its light buffers, testing the changed shapes beside them ({@link StaleSlots}).
  */
 public final class ShapeSet {
 
@@ -79,17 +82,35 @@ public final class ShapeSet {
     private final BundleSearch bundles;
     /** Per light, a light buffer over the tree's slots, or null. */
     private final LightBuffer[] lightBuffers;
+    /** The lights the set was made with (a null: one with a size). */
+    private final List<Vec3> lights;
+    /** The tree's slots, node boxes and planes (null: linear), which the next set may refit. */
+    private final ShapeTree shapeTree;
+    /**
+     * Slots whose shapes changed since the light buffers were built: the buffers may list them
+     * where they were, so a shadow ray the buffers find nothing on tests these too ({@link StaleSlots}).
+     */
+    private final int[] staleSlots;
 
     ShapeSet(Shape[] shapes, boolean useBvh, List<Vec3> lights) {
-        this(shapes, null, useBvh, lights);
+        this(shapes, null, useBvh, lights, null);
     }
 
-    /** Shapes i with {@code members[i]} (all if null), reporting hits by their index among all the shapes. */
-    private ShapeSet(Shape[] shapes, boolean[] members, boolean useBvh, List<Vec3> lights) {
+    /**
+     * Shapes i with {@code members[i]} (all if null), reporting hits by their index among all the
+     * shapes; with a tree refitted from {@code last}'s ({@link ShapeTree#refit}) where it has one over
+     * the same members and as many shapes, and its light buffers kept where its lights are these.
+     */
+    private ShapeSet(Shape[] shapes, boolean[] members, boolean useBvh, List<Vec3> lights, ShapeSet last) {
         Shape[] all = shapes.clone();
         this.members = members;
-        int memberCount = 0, boundedCount = 0;
-        for (int i = 0; i < all.length; i++) {
+        this.lights = lights;
+        // a refit keeps every shape bounded or not as it was, so the counts are the last set's
+        ShapeTree refitted = useBvh && last != null && last.shapeTree != null && Arrays.equals(members, last.members)
+                ? last.shapeTree.refit(all, members) : null;
+        int memberCount = refitted != null ? last.size : 0;
+        int boundedCount = refitted != null ? refitted.slotShapes.length : 0;
+        for (int i = 0; i < all.length && refitted == null; i++) {
             if (members == null || members[i]) {
                 memberCount++;
                 boundedCount += all[i].bounds().isBounded() ? 1 : 0;
@@ -107,6 +128,7 @@ public final class ShapeSet {
             listedCount = memberCount;
             planes = new PlaneLeaves(all, new int[0]);
             planeCount = 0;
+            shapeTree = null;
             tree = null;
             bounded = null;
             nodeBounds = null;
@@ -117,59 +139,44 @@ public final class ShapeSet {
             apartMargin = 0;
             bundles = null;
             lightBuffers = new LightBuffer[0];
+            staleSlots = new int[0];
             return;
         }
-        int[] boundedIndex = new int[boundedCount];
-        int[] unboundedIndex = new int[memberCount - boundedCount];
-        double[] boxes = new double[6 * boundedCount];
-        int b = 0, u = 0;
-        for (int i = 0; i < all.length; i++) {
-            if (members != null && !members[i]) {
-                continue;
-            }
-            Aabb box = all[i].bounds();
-            if (box.isBounded()) {
-                box.copyTo(boxes, 6 * b);
-                boundedIndex[b++] = i;
-            } else {
-                unboundedIndex[u++] = i;
-            }
-        }
-        Bvh bvh = Bvh.build(boxes, boundedCount);
-        int[] order = bvh.primitives();
-        int[] slotShapes = new int[boundedCount];
-        slotBoxes = new double[6 * boundedCount];
-        slotOfShape = new int[all.length];
-        Arrays.fill(slotOfShape, -1);
-        for (int slot = 0; slot < boundedCount; slot++) {
-            slotShapes[slot] = boundedIndex[order[slot]];
-            slotOfShape[slotShapes[slot]] = slot;
-            System.arraycopy(boxes, 6 * order[slot], slotBoxes, 6 * slot, 6);
-        }
-        nodeBounds = bvh.bounds();
-        nodeLinks = bvh.nodes();
-        double largest = 0;
-        for (int k = 0; k < 6; k++) {
-            largest = Math.max(largest, Math.abs(nodeBounds[k]));
-        }
+        shapeTree = refitted != null ? refitted : ShapeTree.build(all, members);
+        nodeBounds = shapeTree.nodeBounds;
+        nodeLinks = shapeTree.nodeLinks;
+        slotOfShape = shapeTree.slotOfShape;
+        slotBoxes = shapeTree.slotBoxes;
+        double largest = shapeTree.largest();
         slotApart = new byte[boundedCount];
         apartMargin = Math.max(APART_MARGIN * largest, Double.MIN_NORMAL);
         listed = new ShapeLeaves(all, new int[0]);
         listedCount = 0;
-        planes = new PlaneLeaves(all, unboundedIndex);
-        planeCount = unboundedIndex.length;
-        bounded = new ShapeLeaves(all, slotShapes);
-        tree = new Traversal(bvh.bounds(), bvh.nodes(), bounded);
-        bundles = BundleSearch.pays(memberCount, unboundedIndex.length)
-                ? new BundleSearch(tree, bounded, slotShapes, slotBoxes, planes, unboundedIndex, largest) : null;
+        planes = new PlaneLeaves(all, shapeTree.planeIndex);
+        planeCount = shapeTree.planeIndex.length;
+        bounded = new ShapeLeaves(all, shapeTree.slotShapes);
+        tree = new Traversal(nodeBounds, nodeLinks, bounded);
+        bundles = BundleSearch.pays(memberCount, planeCount) ? new BundleSearch(tree, bounded, shapeTree.slotShapes,
+                slotBoxes, planes, shapeTree.planeIndex, largest) : null;
+        LightBuffer.Primitives slots = (slot, ray, tMax) -> bounded.any(slot, slot + 1, ray, tMax);
+        int[] stale = refitted != null && last.lights.equals(this.lights)
+                ? StaleSlots.union(last.staleSlots, refitted.changedSlots) : null;
+        if (stale != null) {
+            staleSlots = stale;
+            lightBuffers = new LightBuffer[last.lightBuffers.length];
+            for (int i = 0; i < lightBuffers.length; i++) {
+                lightBuffers[i] = last.lightBuffers[i] == null ? null : last.lightBuffers[i].testing(slots);
+            }
+            return;
+        }
+        staleSlots = new int[0];
         int buffered = boundedCount >= LIGHT_BUFFER_MIN ? Math.min(lights.size(), LightBuffer.MAX_LIGHTS) : 0;
         lightBuffers = new LightBuffer[buffered];
-        LightBuffer.Primitives slots = (slot, ray, tMax) -> bounded.any(slot, slot + 1, ray, tMax);
         for (int i = 0; i < buffered; i++) {
             // null: a light with a size, whose shadow rays end all over it, so no one point's buffer serves
             lightBuffers[i] = lights.get(i) == null ? null
-                    : LightBuffer.ofBoxes(slotBoxes, boundedCount, bvh.rootBounds(), lights.get(i), slots,
-                            MemoryGate.UNLIMITED);
+                    : LightBuffer.ofBoxes(slotBoxes, boundedCount, shapeTree.rootBounds(), lights.get(i),
+                            slots, MemoryGate.UNLIMITED);
         }
     }
 
@@ -188,15 +195,29 @@ public final class ShapeSet {
     }
 
     /**
+     * As {@link #of(List, Shape...)}, reusing {@code last}'s tree (null: none) where the shapes are
+     * as many and all but a few the very objects of its set: the same answers, without building a
+     * tree ({@link ShapeTree}).
+     */
+    public static ShapeSet of(List<Vec3> lights, Shape[] shapes, ShapeSet last) {
+        return new ShapeSet(shapes, null, shapes.length > LINEAR_MAX, lights, last);
+    }
+
+    /**
      * Of the shapes, those i with {@code members[i]}, as {@link #of(List, Shape...)} makes a set of
      * them, or always through a tree if {@code tree}; hits report a shape's index among all the shapes.
      */
     public static ShapeSet of(List<Vec3> lights, Shape[] shapes, boolean[] members, boolean tree) {
+        return of(lights, shapes, members, tree, null);
+    }
+
+    /** As {@link #of(List, Shape[], boolean[], boolean)}, reusing {@code last}'s tree as {@link #of(List, Shape[], ShapeSet)} does. */
+    public static ShapeSet of(List<Vec3> lights, Shape[] shapes, boolean[] members, boolean tree, ShapeSet last) {
         int count = 0;
         for (boolean m : members) {
             count += m ? 1 : 0;
         }
-        return new ShapeSet(shapes, members.clone(), tree || count > LINEAR_MAX, lights);
+        return new ShapeSet(shapes, members.clone(), tree || count > LINEAR_MAX, lights, last);
     }
 
     public int size() {
@@ -310,7 +331,10 @@ public final class ShapeSet {
     private boolean blockedInTree(Ray ray, double tMax) {
         LightBuffer buffer = bufferAtEnd(ray, tMax);
         int slot = buffer == null ? LightBuffer.UNDECIDED : buffer.occluder(ray, tMax);
-        return slot == LightBuffer.UNDECIDED ? tree.any(ray, tMax, ray.sceneWide()) : slot >= 0;
+        if (slot == LightBuffer.NONE) {
+            return StaleSlots.block(staleSlots, bounded, ray, tMax);
+        }
+        return slot == LightBuffer.UNDECIDED ? tree.any(ray, tMax, ray.sceneWide()) : true;
     }
 
     /** The light buffer of the light the ray ends at, or null. */
@@ -326,5 +350,24 @@ public final class ShapeSet {
             }
         }
         return null;
+    }
+
+    /** Whether this set's tree has the nodes of {@code other}'s, refitted or the same (for tests). */
+    boolean sharesTreeWith(ShapeSet other) {
+        return shapeTree != null && other.shapeTree != null && shapeTree.nodeLinks == other.shapeTree.nodeLinks;
+    }
+
+    /** How many changed slots are tested beside the light buffers (for tests). */
+    int staleSlotCount() {
+        return staleSlots.length;
+    }
+
+    /** How many light buffers the set has (for tests). */
+    int lightBufferCount() {
+        int n = 0;
+        for (LightBuffer b : lightBuffers) {
+            n += b != null ? 1 : 0;
+        }
+        return n;
     }
 }

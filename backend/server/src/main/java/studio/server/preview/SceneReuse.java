@@ -147,14 +147,17 @@ final class SceneReuse implements AutoCloseable {
             }
             objects.add(object);
         }
-        return assemble(frame, objects, memory);
+        return assemble(frame, scene, objects, memory);
     }
 
-    /** The scene of {@code frame} (its camera, lights and settings) with these objects. */
-    private static CompiledScene assemble(CompiledScene frame, List<SceneObject> objects, MemoryGate memory) {
+    /**
+     * The scene of {@code frame} (its camera, lights and settings) with these objects, its trees
+     * refitted from {@code last}'s where the objects are its own but a few ({@link Scene#reusing}).
+     */
+    private static CompiledScene assemble(CompiledScene frame, Scene last, List<SceneObject> objects, MemoryGate memory) {
         Scene scene = frame.scene();
         List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), frame.settings().cameraSamples(), memory);
-        return new CompiledScene(new Scene(scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
+        return new CompiledScene(Scene.reusing(last, scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
                 frame.settings(), frame.format(), frame.quality(), frame.fileStem());
     }
 
@@ -203,7 +206,7 @@ final class SceneReuse implements AutoCloseable {
             }
             assembled.add(object);
         }
-        return new Revision(assemble(last.compiled(), assembled, memory), origins);
+        return new Revision(assemble(last.compiled(), scene, assembled, memory), origins);
     }
 
     /**
