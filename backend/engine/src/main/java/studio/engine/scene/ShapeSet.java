@@ -34,7 +34,7 @@ import studio.engine.memory.MemoryGate;
  * Behind {@link #intersect}, a ray of a {@link RayBundle} tests what the bundle's pyramid holds
  * ({@link BundleSearch}), and a ray that starts into a shape tests it first ({@link Ray#within});
  * behind {@link #occluded}, the shape that last blocked the ray object is tested first
- * ({@link Ray#blocker}).
+ * ({@link Ray#blocker}), then a shadow ray of a {@link RayBundle} tests what its pyramid holds.
  */
 public final class ShapeSet {
 
@@ -77,6 +77,8 @@ public final class ShapeSet {
     private final double apartMargin;
     /** Camera rays' bundles (null: the set is too small for lists to pay, or has no tree). */
     private final BundleSearch bundles;
+    /** Whether shadow rays' bundles are listed too: where no light buffer answers them instead. */
+    private final boolean shadowBundles;
     /** Per light, a light buffer over the tree's slots, or null. */
     private final LightBuffer[] lightBuffers;
 
@@ -116,6 +118,7 @@ public final class ShapeSet {
             slotApart = null;
             apartMargin = 0;
             bundles = null;
+            shadowBundles = false;
             lightBuffers = new LightBuffer[0];
             return;
         }
@@ -161,7 +164,7 @@ public final class ShapeSet {
         bounded = new ShapeLeaves(all, slotShapes);
         tree = new Traversal(bvh.bounds(), bvh.nodes(), bounded);
         bundles = BundleSearch.pays(memberCount, unboundedIndex.length)
-                ? new BundleSearch(tree, bounded, slotShapes, slotBoxes, planes, unboundedIndex, largest) : null;
+                ? new BundleSearch(tree, bounded, slotShapes, slotBoxes, planes, unboundedIndex, largest, all) : null;
         int buffered = boundedCount >= LIGHT_BUFFER_MIN ? Math.min(lights.size(), LightBuffer.MAX_LIGHTS) : 0;
         lightBuffers = new LightBuffer[buffered];
         LightBuffer.Primitives slots = (slot, ray, tMax) -> bounded.any(slot, slot + 1, ray, tMax);
@@ -171,6 +174,7 @@ public final class ShapeSet {
                     : LightBuffer.ofBoxes(slotBoxes, boundedCount, bvh.rootBounds(), lights.get(i), slots,
                             MemoryGate.UNLIMITED);
         }
+        shadowBundles = bundles != null && buffered == 0;
     }
 
     /** The shapes, searched linearly or through a BVH depending on their number. */
@@ -216,7 +220,8 @@ public final class ShapeSet {
      * the tree is not walked at all. The same hit either way: one more visiting order.
      */
     public boolean intersect(Ray ray, double tMax, Hit hit) {
-        if (ray.bundle != null && bundles != null && bundles.lists(ray.bundle, this)) {
+        RayBundle b = ray.bundle;
+        if (b != null && bundles != null && b.fromApex() && bundles.lists(b, this)) {
             return bundles.intersect(ray, tMax, hit);
         }
         hit.primitive = ShapeLeaves.NONE;
@@ -307,6 +312,10 @@ public final class ShapeSet {
         boolean member = last >= 0 && (members == null || last < members.length && members[last]);
         if (member && listed.blocks(last, ray, tMax)) {
             return true;
+        }
+        RayBundle b = ray.bundle;
+        if (b != null && shadowBundles && !b.fromApex() && bundles.lists(b, this)) {
+            return bundles.occluded(ray, tMax);
         }
         boolean blocked = listed.any(0, listedCount, ray, tMax) || planes.any(0, planeCount, ray, tMax)
                 || tree != null && blockedInTree(ray, tMax);
