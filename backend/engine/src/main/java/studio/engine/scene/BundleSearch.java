@@ -132,9 +132,11 @@ final class BundleSearch {
 
     /**
      * Lists into the bundle what its pyramid holds, a camera bundle's nearest first: a slot of the
-     * tree as itself, a plane k as {@code ~k} unless the pyramid is clear of it
-     * ({@link Frustum#clearOf}: a camera pixel above a floor's horizon); count -1 when they do not
-     * fit, or a shadow bundle has no pyramid ({@link #aimShadows}).
+     * tree as itself, a plane k as {@code ~k}, in a shadow bundle's list only where its pyramid is
+     * not clear of it ({@link Frustum#clearOf}: shadows of what stands above a floor); count -1
+     * when they do not fit, or a shadow bundle has no pyramid ({@link #aimShadows}). Camera lists
+     * keep every plane: leaving out a floor above its horizon gained nothing measurable (whole
+     * six-materials processes without it: 0.98 of the CPU time, 6 alternated pairs, 0.90-1.22).
      */
     private void list(RayBundle b) {
         int[] ids = b.ids;
@@ -147,7 +149,7 @@ final class BundleSearch {
         int listed = 0;
         for (int k = 0; k < planeIndex.length; k++) {
             int o = 6 * k;
-            if (!pyramid.clearOf(f[o], f[o + 1], f[o + 2], f[o + 3], f[o + 4], f[o + 5])) {
+            if (b.fromApex() || !pyramid.clearOf(f[o], f[o + 1], f[o + 2], f[o + 3], f[o + 4], f[o + 5])) {
                 if (listed == ids.length) {
                     return;
                 }

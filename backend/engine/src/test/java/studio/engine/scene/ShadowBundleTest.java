@@ -100,25 +100,41 @@ class ShadowBundleTest {
     }
 
     @Test
-    void aPixelAboveTheFloorsHorizonListsNoFloorAndStillFindsWhatTheTreeFinds() {
-        Random random = new Random(8);
-        Shape[] shapes = scene(random, 12, Vec3.ZERO);
+    void aShadowBundleAboveTheFloorListsNeitherFloorNorWallAndAnswersAsTheTreeDoes() {
+        Shape[] shapes = new Shape[12];
+        shapes[0] = new Plane(Vec3.ZERO, new Vec3(0, 1, 0));
+        shapes[1] = new Plane(new Vec3(0, 0, -8), new Vec3(0.05, 0, 1));
+        for (int i = 2; i < shapes.length; i++) {
+            shapes[i] = new Sphere(new Vec3(2.5 * (i - 7), 3 + 0.3 * (i % 3), -(i % 4)), 0.5);
+        }
         ShapeSet set = ShapeSet.of(shapes), tree = ShapeSets.bvh(shapes);
-        Camera camera = new Camera(new Vec3(0, 2, 10), new Vec3(0, 2, 0), new Vec3(0, 1, 0), 50);
-        RayBundle bundle = new RayBundle();
-        Vec3 eye = camera.position();
-        // the upper half of the image looks above the horizon: rays go up, away from the floor
-        camera.frustum(-0.1, 0.1, 0.5, 0.6, 1, bundle.aim(eye.x(), eye.y(), eye.z()));
-        Hit a = new Hit(), b = new Hit();
+        Camera camera = new Camera(new Vec3(0, 3, 10), new Vec3(0, 3, 0), new Vec3(0, 1, 0), 50);
+        Vec3 eye = camera.position(), light = new Vec3(1, 20, 5);
+        RayBundle cameraRays = new RayBundle(), shadows = RayBundle.towardsLight(shapes.length);
+        camera.frustum(-0.02, 0.02, -0.02, 0.02, 1, cameraRays.aim(eye.x(), eye.y(), eye.z()));
+        Random random = new Random(8);
+        Hit hit = new Hit();
+        Ray shadow = new Ray();
+        int onSphere = 0;
         for (int s = 0; s < 200; s++) {
-            Ray ray = camera.ray(uniform(random, -0.1, 0.1), uniform(random, 0.5, 0.6), 1);
-            boolean expected = tree.intersect(ray, Double.POSITIVE_INFINITY, a);
-            ray.bundle = bundle;
-            assertEquals(expected, set.intersect(ray, Double.POSITIVE_INFINITY, b));
-            assertEquals(expected ? a.primitive : -1, expected ? b.primitive : -1);
+            Ray ray = camera.ray(uniform(random, -0.02, 0.02), uniform(random, -0.02, 0.02), 1);
+            ray.bundle = cameraRays;
+            if (!set.intersect(ray, Double.POSITIVE_INFINITY, hit) || !(shapes[hit.primitive] instanceof Sphere)) {
+                continue;
+            }
+            onSphere++;
+            Rays.spawnTowards(hit, light.x(), light.y(), light.z(), shadow);
+            double tMax = light.minus(new Vec3(shadow.ox, shadow.oy, shadow.oz)).length() * (1 - 1e-9);
+            boolean expected = tree.occluded(shadow, tMax);
+            shadow.bundle = shadows.from(light.x(), light.y(), light.z(), cameraRays, hit.primitive);
+            shadow.blocker = -1; // no cached answer: the list decides
+            assertEquals(expected, set.occluded(shadow, tMax));
+            assertTrue(shadows.listedBy == set, "listed by the set");
+            assertTrue(shadows.count >= 0, "the shadow rays have a list: " + shadows.count);
+            for (int k = 0; k < shadows.count; k++) {
+                assertTrue(shadows.ids[k] >= 0, "no plane listed: " + shadows.ids[k]);
+            }
         }
-        for (int k = 0; k < bundle.count; k++) {
-            assertTrue(bundle.ids[k] != ~0, "the floor (plane 0) is not listed");
-        }
+        assertTrue(onSphere > 100, "rays on the middle sphere: " + onSphere);
     }
 }
