@@ -167,6 +167,7 @@ final class Integrator {
         boolean front = hit.gx * dx + hit.gy * dy + hit.gz * dz < 0;
         double sx = front ? hit.nx : -hit.nx, sy = front ? hit.ny : -hit.ny, sz = front ? hit.nz : -hit.nz;
 
+        shadows.cameraBundle = depth == 0 ? ray.bundle : null; // its shadow rays may share a pyramid
         direct(m, cr, cg, cb, hit, sx, sy, sz, -dx, -dy, -dz, front, weight);
         double r = directR, g = directG, b = directB;
         if (depth < maxDepth) {

@@ -2,6 +2,7 @@ package studio.engine.render;
 
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
+import studio.engine.geometry.RayBundle;
 import studio.engine.geometry.Rays;
 import studio.engine.material.Fresnel;
 import studio.engine.material.Material;
@@ -40,6 +41,19 @@ final class ShadowRays {
     private final Hit shadowHit = new Hit();
     /** Per light, the ray object of its shadow rays, which keeps what blocked the last one ({@link Ray#blocker}). */
     private final Ray[] shadowRays;
+    /**
+     * Per light, {@link #WAYS} bundles of shadow rays, each from where one camera bundle's rays hit
+     * one object (picked by the object's index), which its shadow rays carry for the scene's
+     * any-hit question; null for a light with a size, whose rays end all over it.
+     */
+    private final RayBundle[] lightBundles;
+    /** Bundles kept per light: a pixel's rays may hit a few objects, each with its own pyramid to the light. */
+    static final int WAYS = 4;
+    /**
+     * The bundle of the camera ray whose hit the next {@link #reach} leaves from (null: the hit is
+     * not a camera ray's, or its ray has no bundle); set by the integrator.
+     */
+    RayBundle cameraBundle;
     /** The transmittance found by the last {@link #reach}, and how many rays it traced. */
     double throughR, throughG, throughB;
     int traced;
@@ -54,8 +68,12 @@ final class ShadowRays {
             isGlass[i] = scene.material(i).kind() == MaterialKind.GLASS;
         }
         this.shadowRays = new Ray[scene.lights().size()];
+        this.lightBundles = new RayBundle[WAYS * shadowRays.length];
         for (int i = 0; i < shadowRays.length; i++) {
             shadowRays[i] = new Ray();
+            for (int k = 0; k < WAYS && !scene.lights().get(i).soft(); k++) {
+                lightBundles[WAYS * i + k] = RayBundle.towardsLight(scene.objectCount());
+            }
         }
     }
 
@@ -75,6 +93,10 @@ final class ShadowRays {
         Ray shadowRay = shadowRays[light];
         Ray ray = Rays.spawnTowards(from, tx, ty, tz, shadowRay);
         double dist = distance(ray, tx, ty, tz);
+        RayBundle bundle = lightBundles[WAYS * light + (from.primitive & (WAYS - 1))];
+        if (cameraBundle != null && bundle != null) {
+            ray.bundle = bundle.from(tx, ty, tz, cameraBundle, from.primitive);
+        }
         traced = 1;
         throughR = throughG = throughB = 1;
         if (glass == null) {
@@ -83,6 +105,7 @@ final class ShadowRays {
         if (!scene.occluded(ray, dist * SHADOW_END)) {
             return true;
         }
+        ray.bundle = null; // the bundle serves the scene's question; the opaque and glass sets walk
         if (!isGlass[ray.blocker] || opaque.occluded(ray, dist * SHADOW_END)) {
             return false;
         }

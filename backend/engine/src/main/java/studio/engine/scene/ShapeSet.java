@@ -33,7 +33,7 @@ import studio.engine.memory.MemoryGate;
  * Behind {@link #intersect}, a ray of a {@link RayBundle} tests what the bundle's pyramid holds
  * ({@link BundleSearch}), and a ray that starts into a shape tests it first ({@link Ray#within});
  * behind {@link #occluded}, the shape that last blocked the ray object is tested first
- * ({@link Ray#blocker}).
+ * ({@link Ray#blocker}), then a shadow ray of a {@link RayBundle} tests what its pyramid holds.
  *
  * <p>A set made from the last one ({@link #of(List, Shape[], ShapeSet)}: a live view's next
  * revision, its shapes the last one's but a few) refits that one's tree ({@link ShapeTree}) and
@@ -80,6 +80,8 @@ public final class ShapeSet {
     private final double apartMargin;
     /** Camera rays' bundles (null: the set is too small for lists to pay, or has no tree). */
     private final BundleSearch bundles;
+    /** Whether shadow rays' bundles are listed too: where no light buffer answers them instead. */
+    private final boolean shadowBundles;
     /** Per light, a light buffer over the tree's slots, or null. */
     private final LightBuffer[] lightBuffers;
     /** The lights the set was made with (a null: one with a size). */
@@ -138,6 +140,7 @@ public final class ShapeSet {
             slotApart = null;
             apartMargin = 0;
             bundles = null;
+            shadowBundles = false;
             lightBuffers = new LightBuffer[0];
             staleSlots = new int[0];
             return;
@@ -157,7 +160,7 @@ public final class ShapeSet {
         bounded = new ShapeLeaves(all, shapeTree.slotShapes);
         tree = new Traversal(nodeBounds, nodeLinks, bounded);
         bundles = BundleSearch.pays(memberCount, planeCount) ? new BundleSearch(tree, bounded, shapeTree.slotShapes,
-                slotBoxes, planes, shapeTree.planeIndex, largest) : null;
+                slotBoxes, planes, shapeTree.planeIndex, largest, all) : null;
         LightBuffer.Primitives slots = (slot, ray, tMax) -> bounded.any(slot, slot + 1, ray, tMax);
         int[] stale = refitted != null && last.lights.equals(this.lights)
                 ? StaleSlots.union(last.staleSlots, refitted.changedSlots) : null;
@@ -167,6 +170,7 @@ public final class ShapeSet {
             for (int i = 0; i < lightBuffers.length; i++) {
                 lightBuffers[i] = last.lightBuffers[i] == null ? null : last.lightBuffers[i].testing(slots);
             }
+            shadowBundles = bundles != null && lightBuffers.length == 0;
             return;
         }
         staleSlots = new int[0];
@@ -178,6 +182,7 @@ public final class ShapeSet {
                     : LightBuffer.ofBoxes(slotBoxes, boundedCount, shapeTree.rootBounds(), lights.get(i),
                             slots, MemoryGate.UNLIMITED);
         }
+        shadowBundles = bundles != null && buffered == 0;
     }
 
     /** The shapes, searched linearly or through a BVH depending on their number. */
@@ -232,7 +237,8 @@ public final class ShapeSet {
      * the tree is not walked at all. The same hit either way: one more visiting order.
      */
     public boolean intersect(Ray ray, double tMax, Hit hit) {
-        if (ray.bundle != null && bundles != null && bundles.lists(ray.bundle, this)) {
+        RayBundle b = ray.bundle;
+        if (b != null && bundles != null && b.fromApex() && bundles.lists(b, this)) {
             return bundles.intersect(ray, tMax, hit);
         }
         hit.primitive = ShapeLeaves.NONE;
@@ -318,6 +324,10 @@ public final class ShapeSet {
         boolean member = last >= 0 && (members == null || last < members.length && members[last]);
         if (member && listed.blocks(last, ray, tMax)) {
             return true;
+        }
+        RayBundle b = ray.bundle;
+        if (b != null && shadowBundles && !b.fromApex() && bundles.lists(b, this)) {
+            return bundles.occluded(ray, tMax);
         }
         boolean blocked = listed.any(0, listedCount, ray, tMax) || planes.any(0, planeCount, ray, tMax)
                 || tree != null && blockedInTree(ray, tMax);
