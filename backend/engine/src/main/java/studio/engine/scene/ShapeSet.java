@@ -361,23 +361,4 @@ public final class ShapeSet {
         }
         return null;
     }
-
-    /** Whether this set's tree has the nodes of {@code other}'s, refitted or the same (for tests). */
-    boolean sharesTreeWith(ShapeSet other) {
-        return shapeTree != null && other.shapeTree != null && shapeTree.nodeLinks == other.shapeTree.nodeLinks;
-    }
-
-    /** How many changed slots are tested beside the light buffers (for tests). */
-    int staleSlotCount() {
-        return staleSlots.length;
-    }
-
-    /** How many light buffers the set has (for tests). */
-    int lightBufferCount() {
-        int n = 0;
-        for (LightBuffer b : lightBuffers) {
-            n += b != null ? 1 : 0;
-        }
-        return n;
-    }
 }
