@@ -18,13 +18,14 @@ import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.MeshFiles;
 import studio.server.scene.compiling.SceneCompiler;
+import studio.server.system.MemoryBudget;
 
 /**
  * Renders the jar's training scenes ({@code bin/training}: 160x120, one of each kind the engine
  * treats apart) once at start-up, before the port opens, through the same reading, engine and
- * encoder as a request, so that a fresh service's first job runs compiled code rather than paying
- * the JIT on a user's time (docs/cluster.md, the pinned ratio cold and warm). Bounded by
- * {@code studio.warm-up}; a failure is logged and start-up goes on.
+ * encoder as a request, its render memory reserved first, so that a fresh service's first job runs
+ * compiled code rather than paying the JIT on a user's time (docs/cluster.md, the pinned ratio cold
+ * and warm). Bounded by {@code studio.warm-up}; a failure is logged and start-up goes on.
  */
 final class RenderWarmUp implements SmartInitializingSingleton {
 
@@ -68,8 +69,7 @@ final class RenderWarmUp implements SmartInitializingSingleton {
                 break;
             }
             try {
-                render(read(scene), deadline);
-                rendered++;
+                rendered += render(read(scene), deadline) ? 1 : 0;
             } catch (RenderCancelledException e) {
                 break;
             } catch (RuntimeException e) {
@@ -79,11 +79,18 @@ final class RenderWarmUp implements SmartInitializingSingleton {
         return new Outcome(rendered, scenes.length, (System.nanoTime() - start) / 1_000_000);
     }
 
-    private void render(byte[] json, long deadline) {
+    /** Renders one scene within the render memory, as a request would; false if the memory is taken. */
+    private boolean render(byte[] json, long deadline) {
         CompiledScene compiled = compiler.compile(CompileRequest.of(json).onThreads(threads)
                 .readingMeshesFrom(MeshFiles.onClasspath("training/")));
-        RenderResult result = budget.render(compiled.request().cancelledWhen(() -> System.nanoTime() - deadline > 0));
-        ImageFiles.encode(result.film(), compiled.format(), compiled.quality());
+        try (MemoryBudget.Reservation memory = budget.reserve(compiled)) {
+            if (memory == null) {
+                return false;
+            }
+            RenderResult result = budget.render(compiled.request().cancelledWhen(() -> System.nanoTime() - deadline > 0));
+            ImageFiles.encode(result.film(), compiled.format(), compiled.quality());
+            return true;
+        }
     }
 
     private static Resource[] scenes() {

@@ -31,6 +31,19 @@ class RenderWarmUpTest {
     }
 
     @Test
+    void rendersNothingWhileOtherWorkHoldsTheRenderMemory() {
+        MemoryBudget memory = new MemoryBudget(256L << 20);
+        try (MemoryBudget.Reservation taken = memory.tryReserve(memory.capacity())) {
+            RenderWarmUp.Outcome outcome = new RenderWarmUp(ExampleSceneFiles.compiler(),
+                    new RenderBudget(Duration.ofMinutes(5), memory), 1, Duration.ofMinutes(2)).run();
+
+            assertEquals(0, outcome.rendered(), "no scene rendered without its memory reserved first");
+            assertEquals(4, outcome.scenes());
+        }
+        assertEquals(0, memory.reserved(), "and nothing left reserved");
+    }
+
+    @Test
     void zeroTurnsItOff() {
         // a warm-up that ran would need its compiler and budget: with none, only "off" gets through
         new RenderWarmUp(null, null, 1, Duration.ZERO).afterSingletonsInstantiated();
