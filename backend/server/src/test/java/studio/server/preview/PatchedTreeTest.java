@@ -2,7 +2,6 @@ package studio.server.preview;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.nio.charset.StandardCharsets;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Random;
@@ -11,7 +10,6 @@ import java.util.function.Function;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
-import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.MeshShapes;
 import studio.engine.mesh.ObjWriter;
 import studio.engine.render.Film;
@@ -24,8 +22,6 @@ import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.reading.LazyValidation;
-import studio.server.system.MemoryBudget;
-import tools.jackson.databind.JsonNode;
 
 /**
  * A patched revision of a large scene refits the last revision's tree ({@link Scene#reusing}) and
@@ -71,43 +67,9 @@ class PatchedTreeTest {
         return json.append(",{\"type\": \"plane\"}]}").toString();
     }
 
-    /** A view's kept scene and patch base after a whole revision of {@code n} objects, and the patches that follow. */
-    private static final class View implements AutoCloseable {
-        final SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited());
-        final PatchBase base = new PatchBase(MemoryBudget.unlimited(), 1 << 20);
-        JsonNode tree;
-        long revision = 1;
-
-        View(int n) {
-            String message = "{\"revision\": 1, \"width\": " + WIDTH + ", \"height\": " + HEIGHT + ", \"scene\": " + scene(n) + "}";
-            PreviewRequest request = PreviewRequest.parse(message.getBytes(StandardCharsets.UTF_8), 2048, 2048);
-            base.whole(1, request.scene());
-            reuse.compile(request, MemoryGate.UNLIMITED, READ);
-            base.compiled();
-        }
-
-        Scene patch(String operations) {
-            String message = "{\"revision\": " + (revision + 1) + ", \"base\": " + revision + ", \"width\": " + WIDTH
-                    + ", \"height\": " + HEIGHT + ", \"patch\": " + operations + "}";
-            PreviewRequest request = PreviewRequest.parse(message.getBytes(StandardCharsets.UTF_8), 2048, 2048);
-            revision++;
-            tree = base.patch(revision, request.base(), request.patch());
-            SceneReuse.Revision compiled = reuse.compilePatched(base.compiledTree(), tree, base.origins(), request,
-                    MemoryGate.UNLIMITED, READ);
-            base.compiled();
-            return compiled.compiled().scene();
-        }
-
-        /** The patched scene read in full, as POST /api/render reads it. */
-        Scene readInFull() {
-            return READ.apply(TreeObjects.bytes(tree)).scene();
-        }
-
-        @Override
-        public void close() {
-            reuse.close();
-            base.close();
-        }
+    /** A view sent a whole scene of {@code n} objects ({@link #scene}), then patches. */
+    private static PatchedView view(int n) {
+        return new PatchedView(scene(n), WIDTH, HEIGHT, READ);
     }
 
     private static double[] pixels(Scene scene) {
@@ -131,36 +93,37 @@ class PatchedTreeTest {
 
     @Test
     void movingOneOfTenThousandSpheresRendersWhatTheWholeSceneRenders() {
-        try (View view = new View(10_000)) {
-            Scene moved = view.patch("[" + move(0, "center", 0.7, 0.9, 2.2) + "]");
+        try (PatchedView view = view(10_000)) {
+            Scene moved = view.patch("[" + move(0, "center", 0.7, 0.9, 2.2) + "]").compiled().scene();
             assertThat(view.reuse.reused()).isOne();
-            assertThat(pixels(moved)).isEqualTo(pixels(view.readInFull()));
-            Scene again = view.patch("[" + move(0, "center", -0.6, 0.8, 2.6) + "]");
-            assertThat(pixels(again)).isEqualTo(pixels(view.readInFull())).isNotEqualTo(pixels(moved));
+            assertThat(pixels(moved)).isEqualTo(pixels(view.readInFull().scene()));
+            Scene again = view.patch("[" + move(0, "center", -0.6, 0.8, 2.6) + "]").compiled().scene();
+            assertThat(pixels(again)).isEqualTo(pixels(view.readInFull().scene())).isNotEqualTo(pixels(moved));
         }
     }
 
     @Test
     void aMovedMeshAmongTheSpheresRendersWhatTheWholeSceneRenders() {
-        try (View view = new View(3_000)) {
-            Scene moved = view.patch("[" + move(1, "position", 0.5, 1.2, 1.5) + "," + move(0, "center", -1, 0.7, 2.4) + "]");
+        try (PatchedView view = view(3_000)) {
+            Scene moved = view.patch("[" + move(1, "position", 0.5, 1.2, 1.5) + "," + move(0, "center", -1, 0.7, 2.4) + "]")
+                    .compiled().scene();
             assertThat(view.reuse.reused()).isOne();
-            assertThat(pixels(moved)).isEqualTo(pixels(view.readInFull()));
+            assertThat(pixels(moved)).isEqualTo(pixels(view.readInFull().scene()));
         }
     }
 
     @Test
     void manyPatchesRebuildOnTheWayAndStillRenderWhatTheWholeSceneRenders() {
-        try (View view = new View(3_000)) {
+        try (PatchedView view = view(3_000)) {
             // different spheres each time (more than the light buffers keep beside them), some thrown far
             // enough that the refitted tree would cost too much and is built again
             for (int i = 0; i < 24; i++) {
                 int object = 2 + 37 * i;
                 view.patch("[" + move(object, "center", i % 3 == 0 ? 30 + i : -3 + 0.25 * i, 0.5 + 0.1 * i, 1 - 0.2 * i) + "]");
             }
-            Scene last = view.patch("[" + move(0, "center", 0.4, 0.8, 2) + "]");
+            Scene last = view.patch("[" + move(0, "center", 0.4, 0.8, 2) + "]").compiled().scene();
             assertThat(view.reuse.reused()).isEqualTo(25);
-            assertThat(pixels(last)).isEqualTo(pixels(view.readInFull()));
+            assertThat(pixels(last)).isEqualTo(pixels(view.readInFull().scene()));
         }
     }
 }

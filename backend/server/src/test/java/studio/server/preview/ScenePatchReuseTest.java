@@ -2,7 +2,6 @@ package studio.server.preview;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.nio.charset.StandardCharsets;
 import java.util.Map;
 import java.util.function.Function;
 
@@ -10,7 +9,6 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
 import studio.engine.geometry.TriangleMesh;
-import studio.engine.memory.MemoryGate;
 import studio.engine.mesh.MeshShapes;
 import studio.engine.mesh.ObjWriter;
 import studio.engine.render.Film;
@@ -23,8 +21,6 @@ import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.reading.LazyValidation;
-import studio.server.system.MemoryBudget;
-import tools.jackson.databind.JsonNode;
 
 /**
  * A patched revision reads only the objects the patch's paths name, keeps every other object (and a
@@ -64,44 +60,8 @@ class ScenePatchReuseTest {
                 """.formatted(knot.toString().replace("\n", "\\n"), spheres);
     }
 
-    /** A view's kept scene and patch base after a whole revision, and the patches that follow. */
-    private static final class View implements AutoCloseable {
-        final SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited());
-        final PatchBase base = new PatchBase(MemoryBudget.unlimited(), 1 << 20);
-        CompiledScene first;
-        JsonNode tree;
-        long revision = 1;
-
-        View() {
-            String message = "{\"revision\": 1, \"width\": 48, \"height\": 36, \"scene\": " + scene() + "}";
-            PreviewRequest request = PreviewRequest.parse(message.getBytes(StandardCharsets.UTF_8), 2048, 2048);
-            base.whole(1, request.scene());
-            first = reuse.compile(request, MemoryGate.UNLIMITED, READ).compiled();
-            base.compiled();
-        }
-
-        SceneReuse.Revision patch(String operations) {
-            String message = "{\"revision\": " + (revision + 1) + ", \"base\": " + revision
-                    + ", \"width\": 48, \"height\": 36, \"patch\": " + operations + "}";
-            PreviewRequest request = PreviewRequest.parse(message.getBytes(StandardCharsets.UTF_8), 2048, 2048);
-            revision++;
-            tree = base.patch(revision, request.base(), request.patch());
-            SceneReuse.Revision compiled = reuse.compilePatched(base.compiledTree(), tree, base.origins(), request,
-                    MemoryGate.UNLIMITED, READ);
-            base.compiled();
-            return compiled;
-        }
-
-        /** The patched scene read in full, as POST /api/render reads it. */
-        CompiledScene readInFull() {
-            return READ.apply(TreeObjects.bytes(tree));
-        }
-
-        @Override
-        public void close() {
-            reuse.close();
-            base.close();
-        }
+    private static PatchedView view() {
+        return new PatchedView(scene(), 48, 36, READ);
     }
 
     private static double[] pixels(Scene scene) {
@@ -120,7 +80,7 @@ class ScenePatchReuseTest {
 
     @Test
     void aPatchedObjectIsReadAloneAndTheOthersKept() {
-        try (View view = new View()) {
+        try (PatchedView view = view()) {
             SceneReuse.Revision moved = view.patch("[{\"op\": \"replace\", \"path\": \"/objects/5/center\", \"value\": [0.3, 1, 0]}]");
             assertThat(view.reuse.reused()).isOne();
             assertThat(moved.origins()[5]).isEqualTo(-1);
@@ -134,7 +94,7 @@ class ScenePatchReuseTest {
 
     @Test
     void aPatchThatChangesNothingIsTheLastScene() {
-        try (View view = new View()) {
+        try (PatchedView view = view()) {
             SceneReuse.Revision same = view.patch("[{\"op\": \"test\", \"path\": \"/objects/1/scale\", \"value\": 0.4}]");
             assertThat(same.compiled()).isSameAs(view.first);
             assertThat(view.patch("[]").compiled()).isSameAs(view.first);
@@ -143,7 +103,7 @@ class ScenePatchReuseTest {
 
     @Test
     void aMovedMeshKeepsItsTree() {
-        try (View view = new View()) {
+        try (PatchedView view = view()) {
             SceneReuse.Revision moved = view.patch("[{\"op\": \"replace\", \"path\": \"/objects/1/position\", \"value\": [0.3, 0.8, 0]},"
                     + "{\"op\": \"replace\", \"path\": \"/objects/1/material/color\", \"value\": \"#3060c0\"}]");
             assertThat(view.reuse.reused()).isOne();
@@ -158,7 +118,7 @@ class ScenePatchReuseTest {
 
     @Test
     void aChangedCameraOrLightKeepsEveryObject() {
-        try (View view = new View()) {
+        try (PatchedView view = view()) {
             SceneReuse.Revision turned = view.patch("[{\"op\": \"replace\", \"path\": \"/camera/position\", \"value\": [1, 2, 6]},"
                     + "{\"op\": \"add\", \"path\": \"/lights/-\", \"value\": {\"type\": \"point\", \"position\": [-3, 3, 3]}}]");
             assertThat(view.reuse.reused()).isOne();
@@ -171,7 +131,7 @@ class ScenePatchReuseTest {
 
     @Test
     void anAddedOrRemovedObjectIsReadInFullWithItsChangesTold() {
-        try (View view = new View()) {
+        try (PatchedView view = view()) {
             SceneReuse.Revision added = view.patch("[{\"op\": \"add\", \"path\": \"/objects/2\", \"value\": {\"type\": \"box\"}}]");
             assertThat(view.reuse.reused()).isZero();
             assertThat(added.origins()).startsWith(0, 1, -1, 2, 3);

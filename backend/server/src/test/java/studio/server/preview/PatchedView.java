@@ -1,0 +1,66 @@
+package studio.server.preview;
+
+import java.nio.charset.StandardCharsets;
+import java.util.function.Function;
+
+import tools.jackson.databind.JsonNode;
+
+import studio.engine.memory.MemoryGate;
+import studio.server.scene.compiling.CompiledScene;
+import studio.server.system.MemoryBudget;
+
+/**
+ * A live view's kept scene and patch base after a whole revision, and the patches that follow, as
+ * {@link PreviewSession} drives {@link SceneReuse} and {@link PatchBase}; the scene can be read in
+ * full from the patched tree, as {@code POST /api/render} reads it.
+ */
+final class PatchedView implements AutoCloseable {
+
+    final SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited());
+    final PatchBase base = new PatchBase(MemoryBudget.unlimited(), 1 << 20);
+    /** The whole revision's scene. */
+    final CompiledScene first;
+    private final int width, height;
+    private final Function<byte[], CompiledScene> read;
+    private JsonNode tree;
+    private long revision = 1;
+
+    /** A view of {@code width} x {@code height} sent {@code sceneJson} whole; {@code read} compiles a scene at that size. */
+    PatchedView(String sceneJson, int width, int height, Function<byte[], CompiledScene> read) {
+        this.width = width;
+        this.height = height;
+        this.read = read;
+        PreviewRequest request = parse("{\"revision\": 1, \"width\": " + width + ", \"height\": " + height
+                + ", \"scene\": " + sceneJson + "}");
+        base.whole(1, request.scene());
+        first = reuse.compile(request, MemoryGate.UNLIMITED, read).compiled();
+        base.compiled();
+    }
+
+    /** The next revision: these RFC 6902 operations against the last one. */
+    SceneReuse.Revision patch(String operations) {
+        PreviewRequest request = parse("{\"revision\": " + (revision + 1) + ", \"base\": " + revision + ", \"width\": "
+                + width + ", \"height\": " + height + ", \"patch\": " + operations + "}");
+        revision++;
+        tree = base.patch(revision, request.base(), request.patch());
+        SceneReuse.Revision compiled = reuse.compilePatched(base.compiledTree(), tree, base.origins(), request,
+                MemoryGate.UNLIMITED, read);
+        base.compiled();
+        return compiled;
+    }
+
+    /** The patched scene read in full. */
+    CompiledScene readInFull() {
+        return read.apply(TreeObjects.bytes(tree));
+    }
+
+    private static PreviewRequest parse(String message) {
+        return PreviewRequest.parse(message.getBytes(StandardCharsets.UTF_8), 2048, 2048);
+    }
+
+    @Override
+    public void close() {
+        reuse.close();
+        base.close();
+    }
+}
