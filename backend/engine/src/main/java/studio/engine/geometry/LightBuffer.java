@@ -313,16 +313,6 @@ public final class LightBuffer {
         return dx * dx + dy * dy + dz * dz <= tolerance * tolerance;
     }
 
-    /** Entries in all lists together (for tests and the docs' figures). */
-    int entryCount() {
-        return listed.length;
-    }
-
-    /** Cells in the grid. */
-    int cellCount() {
-        return nu * nv;
-    }
-
     /**
      * A primitive that lies on the ray with 0 &lt; t &lt; tMax, or {@link #NONE}: whether there is
      * one is the tree's answer; {@link #UNDECIDED} when the ray's piece in the box covers too many

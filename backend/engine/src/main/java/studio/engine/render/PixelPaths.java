@@ -123,17 +123,6 @@ public final class PixelPaths {
         return true;
     }
 
-    /** How many pixels are known, each tested against the edits noted (a scan of them all, for tests and figures). */
-    public int knownCount() {
-        int known = 0;
-        for (int p = 0; p < state.length; p++) {
-            if (known(p)) {
-                known++;
-            }
-        }
-        return known;
-    }
-
     /** Forgets every pixel: after an edit that may reach all of them (the camera, a light, the size). */
     public void forgetAll() {
         Arrays.fill(state, UNKNOWN);

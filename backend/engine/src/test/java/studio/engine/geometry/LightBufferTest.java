@@ -254,12 +254,45 @@ class LightBufferTest {
         long allocated = CountingGate.allocatedBy(
                 () -> made[0] = LightBuffer.ofTriangles(positions, indices, mesh.bounds(), light, mesh::occludedBy, gate));
         assertTrue(allocated <= gate.granted() + CountingGate.SLACK, allocated + " allocated, " + gate.granted() + " granted");
-        assertTrue(made[0].entryCount() < 8 * mesh.triangleCount(), made[0].entryCount() + " entries");
-        assertTrue(made[0].cellCount() > mesh.triangleCount() / 16, made[0].cellCount() + " cells");
+        // about 64 bytes a triangle and 10 an entry of the lists (an int, a float, their share of
+        // the cells): under 140 bytes a triangle is under 8 entries a triangle
+        assertTrue(allocated < 140L * mesh.triangleCount(), allocated / mesh.triangleCount() + " bytes a triangle");
+        // cells about as small as a triangle's shadow: a ray aimed at the light tests a few triangles
+        double tested = trianglesTestedPerShadowRay(mesh, light, positions, indices);
+        assertTrue(tested < 12, tested + " triangles tested a shadow ray");
         CountingGate stingy = new CountingGate(gate.granted() / 2);
         assertNull(LightBuffer.ofTriangles(positions, indices, mesh.bounds(), light, mesh::occludedBy, stingy),
                 "memory not free: no buffer, and no refusal");
         assertTrue(stingy.granted() <= gate.granted() / 2);
+    }
+
+    /**
+     * Triangles the buffer of {@code light} tests, on average, for a shadow ray from a point of the
+     * mesh a camera ray finds towards the light.
+     */
+    private static double trianglesTestedPerShadowRay(TriangleMesh mesh, Vec3 light, double[] positions, int[] indices) {
+        long[] tests = new long[1];
+        LightBuffer buffer = LightBuffer.ofTriangles(positions, indices, mesh.bounds(), light,
+                (tri, ray, tMax) -> {
+                    tests[0]++;
+                    return mesh.occludedBy(tri, ray, tMax);
+                }, MemoryGate.UNLIMITED);
+        Random random = new Random(16);
+        Hit hit = new Hit();
+        var box = mesh.bounds();
+        Vec3 centre = new Vec3((box.minX() + box.maxX()) / 2, (box.minY() + box.maxY()) / 2, (box.minZ() + box.maxZ()) / 2);
+        int rays = 0;
+        while (rays < 2_000) {
+            Vec3 eye = centre.plus(randomUnit(random).times(6));
+            Vec3 d = centre.plus(randomUnit(random).times(0.6)).minus(eye).normalized();
+            if (mesh.intersect(new Ray(eye.x(), eye.y(), eye.z(), d.x(), d.y(), d.z()), Double.POSITIVE_INFINITY, hit)) {
+                Ray ray = Rays.spawnTowards(hit, light.x(), light.y(), light.z());
+                double ex = light.x() - ray.ox, ey = light.y() - ray.oy, ez = light.z() - ray.oz;
+                buffer.occluder(ray, Math.sqrt(ex * ex + ey * ey + ez * ez) * SHADOW_END);
+                rays++;
+            }
+        }
+        return (double) tests[0] / rays;
     }
 
     private static LightBuffer buffer(TriangleMesh mesh, Vec3 light) {

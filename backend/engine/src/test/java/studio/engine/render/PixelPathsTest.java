@@ -70,6 +70,11 @@ class PixelPathsTest {
         return Renderer.render(RenderRequest.of(scene, oneSample()).into(film, PixelLattice.ALL, null).recording(paths));
     }
 
+    /** The pixels a render of {@code scene} with {@code paths} renders: those it does not keep. */
+    private static long rendered(PixelPaths paths, Scene scene) {
+        return render(scene, new Film(WIDTH, HEIGHT), paths).samplesTaken();
+    }
+
     private static int firstOf(Scene scene, MaterialKind kind) {
         for (int i = 0; i < scene.objectCount(); i++) {
             if (scene.material(i).kind() == kind && scene.shape(i) instanceof Sphere) {
@@ -91,8 +96,8 @@ class PixelPathsTest {
         render(before, film, paths);
         List<Aabb> boxes = changedBoxes(before, after);
         paths.forget(boxes, after.camera().position(), after.lights());
-        int kept = paths.knownCount();
         RenderResult again = render(after, film, paths);
+        long kept = WIDTH * HEIGHT - again.samplesTaken();
 
         Film fresh = Renderer.render(RenderRequest.of(after, oneSample())).film();
         for (int y = 0; y < HEIGHT; y++) {
@@ -102,7 +107,6 @@ class PixelPathsTest {
                 }
             }
         }
-        assertEquals(WIDTH * HEIGHT - kept, again.samplesTaken(), "only the forgotten pixels are rendered");
         return (double) kept / (WIDTH * HEIGHT);
     }
 
@@ -171,7 +175,8 @@ class PixelPathsTest {
         }
         assertEquals(SampledImagesUnchangedTest.fingerprint(Renderer.render(RenderRequest.of(scene, oneSample())).film()),
                 SampledImagesUnchangedTest.fingerprint(film));
-        assertTrue(paths.knownCount() > WIDTH * HEIGHT * 9 / 10, "known " + paths.knownCount());
+        long again = rendered(paths, scene);
+        assertTrue(again < WIDTH * HEIGHT / 10, "rendered again " + again);
     }
 
     @Test
@@ -190,13 +195,15 @@ class PixelPathsTest {
             }
         }
         assertEquals(0, centre, "a pixel seeing the glass ball branches and is not kept");
-        assertTrue(paths.knownCount() > 0);
+        assertTrue(rendered(paths, glass) < WIDTH * HEIGHT, "the pixels seeing no glass are kept");
 
         RenderSettings four = new RenderSettings(WIDTH, HEIGHT, Sampler.of("sobol", 4), 4, 2, 42L,
                 RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0);
         PixelPaths fourSamples = new PixelPaths(WIDTH, HEIGHT);
         Renderer.render(RenderRequest.of(opaque, four).into(new Film(WIDTH, HEIGHT), PixelLattice.ALL, null).recording(fourSamples));
-        assertEquals(0, fourSamples.knownCount());
+        assertEquals(WIDTH * HEIGHT * 4, Renderer.render(RenderRequest.of(opaque, four)
+                .into(new Film(WIDTH, HEIGHT), PixelLattice.ALL, null).recording(fourSamples)).samplesTaken(),
+                "every pixel rendered again");
     }
 
     @Test
@@ -301,35 +308,42 @@ class PixelPathsTest {
     @Test
     void pixelsOlderThanTheEditsNotedAreRenderedAgain() {
         Scene a = OpaqueShadowsUnchangedTest.scene();
-        PixelPaths untouched = new PixelPaths(WIDTH, HEIGHT);
-        render(a, new Film(WIDTH, HEIGHT), untouched);
         Scene far = edited(a, 1, o -> new SceneObject(new Sphere(new Vec3(0, 2.5, 9), 0.1), o.material()));
         Scene farther = edited(far, 1, o -> new SceneObject(new Sphere(new Vec3(0, 2.5, 9.5), 0.1), o.material()));
-        forget(untouched, a, far); // the first edit reaches some pixels (the object's old place)
-        int afterFirst = untouched.knownCount();
+        PixelPaths once = new PixelPaths(WIDTH, HEIGHT), untouched = new PixelPaths(WIDTH, HEIGHT);
+        render(a, new Film(WIDTH, HEIGHT), once);
+        render(a, new Film(WIDTH, HEIGHT), untouched);
+        forget(once, a, far); // the first edit reaches some pixels (the object's old place)
+        forget(untouched, a, far);
         for (int i = 0; i < PixelPaths.MAX_EDITS - 1; i++) {
             forget(untouched, i % 2 == 0 ? far : farther, i % 2 == 0 ? farther : far);
         }
-        assertEquals(afterFirst, untouched.knownCount(), "edits behind the camera reach nothing");
+        long afterFirst = rendered(once, far);
+        assertTrue(afterFirst < WIDTH * HEIGHT, "rendered after the first edit " + afterFirst);
+        assertEquals(afterFirst, rendered(untouched, far), "edits behind the camera reach nothing");
         PixelPaths stale = new PixelPaths(WIDTH, HEIGHT);
         render(a, new Film(WIDTH, HEIGHT), stale);
         for (int i = 0; i <= PixelPaths.MAX_EDITS; i++) {
             stale.forget(List.of(new Aabb(0, 2.5, 9, 0.1, 2.6, 9.1)), a.camera().position(), a.lights());
         }
-        assertEquals(0, stale.knownCount(), "tested against none of more edits than are noted");
+        assertEquals(WIDTH * HEIGHT, rendered(stale, a), "tested against none of more edits than are noted");
 
-        PixelPaths many = new PixelPaths(WIDTH, HEIGHT);
+        PixelPaths unedited = new PixelPaths(WIDTH, HEIGHT), many = new PixelPaths(WIDTH, HEIGHT);
+        PixelPaths tooMany = new PixelPaths(WIDTH, HEIGHT);
+        render(a, new Film(WIDTH, HEIGHT), unedited);
         render(a, new Film(WIDTH, HEIGHT), many);
+        render(a, new Film(WIDTH, HEIGHT), tooMany);
         List<Aabb> behind = new ArrayList<>();
         for (int i = 0; i < PixelPaths.MAX_BOXES; i++) {
             behind.add(new Aabb(0, 2.5, 9 + i, 0.1, 2.6, 9.1 + i)); // behind the camera: they reach nothing
         }
-        int known = many.knownCount();
         many.forget(behind, a.camera().position(), a.lights());
-        assertEquals(known, many.knownCount(), "as many boxes as are tested one by one");
+        long notKept = rendered(unedited, a);
+        assertTrue(notKept < WIDTH * HEIGHT / 10, "rendered with no edit " + notKept);
+        assertEquals(notKept, rendered(many, a), "as many boxes as are tested one by one");
         behind.add(new Aabb(0, 2.5, 50, 0.1, 2.6, 50.1));
-        many.forget(behind, a.camera().position(), a.lights());
-        assertEquals(0, many.knownCount(), "one box more: every pixel rendered again, not tested against each");
+        tooMany.forget(behind, a.camera().position(), a.lights());
+        assertEquals(WIDTH * HEIGHT, rendered(tooMany, a), "one box more: every pixel rendered again, not tested against each");
     }
 
     @Test
