@@ -5,8 +5,6 @@ import java.util.Arrays;
 import tools.jackson.core.JacksonException;
 import tools.jackson.core.JsonParser;
 import tools.jackson.core.JsonToken;
-import tools.jackson.core.ObjectReadContext;
-import tools.jackson.core.json.JsonFactory;
 
 /**
  * Where each element of a scene's top-level {@code objects} array lies in the scene's JSON bytes,
@@ -16,38 +14,21 @@ import tools.jackson.core.json.JsonFactory;
  */
 final class SceneObjectsInJson {
 
-    private static final JsonFactory JSON = new JsonFactory();
-
     private SceneObjectsInJson() {
     }
 
-    /** Ints a scene's object takes in {@link #ranges}. */
+    /** Ints a scene's object takes in {@link #scan}'s answer. */
     static final int PER_OBJECT = 4;
 
     /**
-     * For each element of the scene's {@code objects} array, {@value #PER_OBJECT} ints: its first
-     * byte, the byte after its last, and the same for the value of its {@code obj} member if that is
-     * a string (an inline mesh's OBJ text, quotes included; -1, -1 if there is none); null unless the
-     * scene is a JSON object with exactly one {@code objects} member, an array of one or more JSON
-     * objects, and the rest of it well-formed as far as a streaming pass can tell. A string's
-     * characters are skipped, not decoded.
-     */
-    static int[] ranges(byte[] scene) {
-        try (JsonParser parser = JSON.createParser(ObjectReadContext.empty(), scene)) {
-            if (parser.nextToken() != JsonToken.START_OBJECT) {
-                return null;
-            }
-            int[] found = scan(parser, scene, 0);
-            return parser.nextToken() == null ? found : null;
-        } catch (JacksonException e) {
-            return null;
-        }
-    }
-
-    /**
-     * {@link #ranges} of a scene that a parser over {@code json} is reading, at the scene's
-     * {@code START_OBJECT}, which begins at byte {@code base}; the ranges count from there. Reads
-     * the scene to its end, as {@code skipChildren} would, whatever it finds.
+     * Where the elements of the {@code objects} array of a scene that a parser over {@code json} is
+     * reading lie, the parser at the scene's {@code START_OBJECT}, which begins at byte
+     * {@code base}; the ranges count from there. For each element, {@value #PER_OBJECT} ints: its
+     * first byte, the byte after its last, and the same for the value of its {@code obj} member if
+     * that is a string (an inline mesh's OBJ text, quotes included; -1, -1 if there is none); null
+     * unless the scene has exactly one {@code objects} member, an array of one or more JSON objects.
+     * A string's characters are skipped, not decoded. Reads the scene to its end, as
+     * {@code skipChildren} would, whatever it finds.
      *
      * @throws JacksonException if the JSON is malformed, as skipping it would
      */

@@ -68,7 +68,6 @@ final class SceneReuse implements AutoCloseable {
     private final MemoryBudget memory;
     private final AtomicReference<Kept> kept = new AtomicReference<>();
     private volatile boolean closed;
-    private volatile long reused;
 
     SceneReuse(MemoryBudget memory) {
         this.memory = memory;
@@ -85,9 +84,6 @@ final class SceneReuse implements AutoCloseable {
         Revision assembled = objects != null && before != null && before.json() != null
                 ? fromKept(before, request, objects, memory, read) : null;
         Revision revision = assembled != null ? assembled : new Revision(read.apply(request.scene()), null);
-        if (assembled != null) {
-            reused++;
-        }
         keep(objects != null ? request.scene() : null, objects, request, revision.compiled());
         return revision;
     }
@@ -108,16 +104,8 @@ final class SceneReuse implements AutoCloseable {
                 : changes.changed() == 0 && !changes.frameChanged() ? last.compiled() // a patch of tests alone, or none
                 : fromTree(last.compiled(), before, after, origins, changes.frameChanged(), memory, read);
         CompiledScene scene = assembled != null ? assembled : read.apply(TreeObjects.bytes(after));
-        if (assembled != null) {
-            reused++;
-        }
         keep(null, null, request, scene);
         return new Revision(scene, origins);
-    }
-
-    /** Revisions assembled from a kept scene so far. */
-    long reused() {
-        return reused;
     }
 
     /** Gives the kept scene's memory back; nothing is kept from now on. */

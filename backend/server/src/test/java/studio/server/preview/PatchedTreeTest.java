@@ -95,7 +95,7 @@ class PatchedTreeTest {
     void movingOneOfTenThousandSpheresRendersWhatTheWholeSceneRenders() {
         try (PatchedView view = view(10_000)) {
             Scene moved = view.patch("[" + move(0, "center", 0.7, 0.9, 2.2) + "]").compiled().scene();
-            assertThat(view.reuse.reused()).isOne();
+            assertThat(view.assembled()).isOne();
             assertThat(pixels(moved)).isEqualTo(pixels(view.readInFull().scene()));
             Scene again = view.patch("[" + move(0, "center", -0.6, 0.8, 2.6) + "]").compiled().scene();
             assertThat(pixels(again)).isEqualTo(pixels(view.readInFull().scene())).isNotEqualTo(pixels(moved));
@@ -107,7 +107,7 @@ class PatchedTreeTest {
         try (PatchedView view = view(3_000)) {
             Scene moved = view.patch("[" + move(1, "position", 0.5, 1.2, 1.5) + "," + move(0, "center", -1, 0.7, 2.4) + "]")
                     .compiled().scene();
-            assertThat(view.reuse.reused()).isOne();
+            assertThat(view.assembled()).isOne();
             assertThat(pixels(moved)).isEqualTo(pixels(view.readInFull().scene()));
         }
     }
@@ -122,7 +122,7 @@ class PatchedTreeTest {
                 view.patch("[" + move(object, "center", i % 3 == 0 ? 30 + i : -3 + 0.25 * i, 0.5 + 0.1 * i, 1 - 0.2 * i) + "]");
             }
             Scene last = view.patch("[" + move(0, "center", 0.4, 0.8, 2) + "]").compiled().scene();
-            assertThat(view.reuse.reused()).isEqualTo(25);
+            assertThat(view.assembled()).isEqualTo(25);
             assertThat(pixels(last)).isEqualTo(pixels(view.readInFull().scene()));
         }
     }

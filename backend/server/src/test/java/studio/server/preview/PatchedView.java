@@ -22,18 +22,22 @@ final class PatchedView implements AutoCloseable {
     final CompiledScene first;
     private final int width, height;
     private final Function<byte[], CompiledScene> read;
+    private final CountedReads reads;
     private JsonNode tree;
     private long revision = 1;
+    private long readWhole;
 
     /** A view of {@code width} x {@code height} sent {@code sceneJson} whole; {@code read} compiles a scene at that size. */
     PatchedView(String sceneJson, int width, int height, Function<byte[], CompiledScene> read) {
         this.width = width;
         this.height = height;
         this.read = read;
+        this.reads = new CountedReads(read);
         PreviewRequest request = parse("{\"revision\": 1, \"width\": " + width + ", \"height\": " + height
                 + ", \"scene\": " + sceneJson + "}");
         base.whole(1, request.scene());
-        first = reuse.compile(request, MemoryGate.UNLIMITED, read).compiled();
+        first = reuse.compile(request, MemoryGate.UNLIMITED, reads).compiled();
+        readWhole = reads.holding(first.scene().objectCount());
         base.compiled();
     }
 
@@ -43,10 +47,25 @@ final class PatchedView implements AutoCloseable {
                 + width + ", \"height\": " + height + ", \"patch\": " + operations + "}");
         revision++;
         tree = base.patch(revision, request.base(), request.patch());
+        int from = reads.reads();
         SceneReuse.Revision compiled = reuse.compilePatched(base.compiledTree(), tree, base.origins(), request,
-                MemoryGate.UNLIMITED, read);
+                MemoryGate.UNLIMITED, reads);
+        readWhole += reads.holding(compiled.compiled().scene().objectCount(), from) > 0 ? 1 : 0;
         base.compiled();
         return compiled;
+    }
+
+    /**
+     * Revisions so far (the whole first one among them) for which a scene with all of the
+     * revision's objects was read, not the changed objects alone.
+     */
+    long readWhole() {
+        return readWhole;
+    }
+
+    /** Revisions so far assembled from the kept scene: the patches for which no whole scene was read. */
+    long assembled() {
+        return revision - readWhole;
     }
 
     /** The patched scene read in full. */

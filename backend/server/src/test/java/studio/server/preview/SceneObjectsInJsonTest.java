@@ -1,15 +1,21 @@
 package studio.server.preview;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.nio.charset.StandardCharsets;
 
 import org.junit.jupiter.api.Test;
 
+import studio.server.scene.format.InvalidSceneException;
+
+/** The live view's message reader finds each object of its scene by the object's bytes, in the pass that reads the message. */
 class SceneObjectsInJsonTest {
 
+    /** The ranges of a live-view message with {@code scene}, counted from the scene's first byte. */
     private static int[] ranges(String scene) {
-        return SceneObjectsInJson.ranges(scene.getBytes(StandardCharsets.UTF_8));
+        byte[] message = ("{\"revision\": 1, \"scene\": " + scene + "}").getBytes(StandardCharsets.UTF_8);
+        return PreviewRequest.parse(message, 2048, 2048).objects();
     }
 
     @Test
@@ -49,10 +55,10 @@ class SceneObjectsInJsonTest {
         assertThat(ranges("{\"objects\": [{}, 3]}")).isNull();
         assertThat(ranges("{\"objects\": {\"type\": \"sphere\"}}")).isNull();
         assertThat(ranges("{\"objects\": [{}], \"objects\": [{}]}")).isNull();
-        assertThat(ranges("{\"objects\": [{}]")).isNull();
-        assertThat(ranges("{\"objects\": [{}]} {}")).isNull();
-        assertThat(ranges("[{\"objects\": [{}]}]")).isNull();
         assertThat(ranges("{\"objects\": [{}]}")).containsExactly(13, 15, -1, -1);
+        for (String malformed : new String[] {"{\"objects\": [{}]", "{\"objects\": [{}]} {}", "[{\"objects\": [{}]}]"}) {
+            assertThatThrownBy(() -> ranges(malformed)).as(malformed).isInstanceOf(InvalidSceneException.class);
+        }
     }
 
     @Test
@@ -63,7 +69,12 @@ class SceneObjectsInJsonTest {
         PreviewRequest request = PreviewRequest.parse(message, 2048, 2048);
 
         assertThat(new String(request.scene(), StandardCharsets.UTF_8)).isEqualTo(scene);
-        assertThat(request.objects()).isEqualTo(ranges(scene)).hasSize(8);
+        int[] objects = request.objects();
+        assertThat(objects).hasSize(8);
+        assertThat(new String(request.scene(), objects[0], objects[1] - objects[0], StandardCharsets.UTF_8))
+                .isEqualTo("{\"type\": \"sphere\"}");
+        assertThat(new String(request.scene(), objects[4], objects[5] - objects[4], StandardCharsets.UTF_8))
+                .isEqualTo("{\"type\": \"plane\"}");
         assertThat(PreviewRequest.parse("{\"revision\": 4, \"scene\": {\"objects\": [1]}}"
                 .getBytes(StandardCharsets.UTF_8), 2048, 2048).objects()).isNull();
     }

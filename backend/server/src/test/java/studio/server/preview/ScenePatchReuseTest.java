@@ -82,7 +82,7 @@ class ScenePatchReuseTest {
     void aPatchedObjectIsReadAloneAndTheOthersKept() {
         try (PatchedView view = view()) {
             SceneReuse.Revision moved = view.patch("[{\"op\": \"replace\", \"path\": \"/objects/5/center\", \"value\": [0.3, 1, 0]}]");
-            assertThat(view.reuse.reused()).isOne();
+            assertThat(view.assembled()).isOne();
             assertThat(moved.origins()[5]).isEqualTo(-1);
             assertThat(moved.origins()[6]).isEqualTo(6);
             Scene scene = moved.compiled().scene();
@@ -106,13 +106,13 @@ class ScenePatchReuseTest {
         try (PatchedView view = view()) {
             SceneReuse.Revision moved = view.patch("[{\"op\": \"replace\", \"path\": \"/objects/1/position\", \"value\": [0.3, 0.8, 0]},"
                     + "{\"op\": \"replace\", \"path\": \"/objects/1/material/color\", \"value\": \"#3060c0\"}]");
-            assertThat(view.reuse.reused()).isOne();
+            assertThat(view.assembled()).isOne();
             TriangleMesh mesh = (TriangleMesh) moved.compiled().scene().shape(1);
             assertThat(mesh.buildNanos()).as("the kept mesh moved, its tree not built again").isZero();
             assertThat(pixels(moved.compiled().scene())).isEqualTo(pixels(view.readInFull().scene()));
 
             view.patch("[{\"op\": \"replace\", \"path\": \"/objects/1/scale\", \"value\": 0.5}]");
-            assertThat(view.reuse.reused()).as("a scaled mesh is read in full").isOne();
+            assertThat(view.assembled()).as("a scaled mesh is read in full").isOne();
         }
     }
 
@@ -121,7 +121,7 @@ class ScenePatchReuseTest {
         try (PatchedView view = view()) {
             SceneReuse.Revision turned = view.patch("[{\"op\": \"replace\", \"path\": \"/camera/position\", \"value\": [1, 2, 6]},"
                     + "{\"op\": \"add\", \"path\": \"/lights/-\", \"value\": {\"type\": \"point\", \"position\": [-3, 3, 3]}}]");
-            assertThat(view.reuse.reused()).isOne();
+            assertThat(view.assembled()).isOne();
             Scene scene = turned.compiled().scene();
             assertThat(scene.shape(7)).isSameAs(view.first.scene().shape(7));
             assertThat(scene.lights()).hasSize(2);
@@ -133,7 +133,7 @@ class ScenePatchReuseTest {
     void anAddedOrRemovedObjectIsReadInFullWithItsChangesTold() {
         try (PatchedView view = view()) {
             SceneReuse.Revision added = view.patch("[{\"op\": \"add\", \"path\": \"/objects/2\", \"value\": {\"type\": \"box\"}}]");
-            assertThat(view.reuse.reused()).isZero();
+            assertThat(view.assembled()).isZero();
             assertThat(added.origins()).startsWith(0, 1, -1, 2, 3);
             assertThat(pixels(added.compiled().scene())).isEqualTo(pixels(view.readInFull().scene()));
             SceneReuse.Revision removed = view.patch("[{\"op\": \"remove\", \"path\": \"/objects/2\"}]");

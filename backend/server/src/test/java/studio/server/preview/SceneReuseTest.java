@@ -92,13 +92,15 @@ class SceneReuseTest {
 
     @Test
     void aMovedObjectIsReadAloneAndTheSceneIsTheOneReadingItAllGives() {
+        CountedReads reads = new CountedReads(READ);
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, reads).compiled();
             String movedJson = scene(300, 7, 0.4, LIGHT);
 
-            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, READ).compiled();
+            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, reads).compiled();
 
-            assertThat(reuse.reused()).isEqualTo(1);
+            assertThat(reads.holding(302)).as("the first revision read in full, the second not").isOne();
+            assertThat(reads.holding(1, 1)).as("the moved sphere read alone").isOne();
             assertThat(moved.scene().objectCount()).isEqualTo(302);
             assertThat(moved.scene().shape(3)).as("an unchanged object is kept").isSameAs(first.scene().shape(3));
             assertThat(moved.scene().shape(8)).isNotEqualTo(first.scene().shape(8)).isEqualTo(
@@ -121,37 +123,41 @@ class SceneReuseTest {
 
     @Test
     void changesBesideTheObjectsOrToManyOfThemAreReadInFull() {
+        CountedReads reads = new CountedReads(READ);
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
+            CompiledScene first = reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, reads).compiled();
             String lightMoved = LIGHT.replace("[3, 5, 4]", "[2, 5, 4]");
 
-            CompiledScene relit = reuse.compile(request(2, scene(300, 7, 0, lightMoved)), MemoryGate.UNLIMITED, READ).compiled();
+            CompiledScene relit = reuse.compile(request(2, scene(300, 7, 0, lightMoved)), MemoryGate.UNLIMITED, reads).compiled();
             assertThat(relit.scene().shape(3)).isNotSameAs(first.scene().shape(3));
             assertThat(relit.scene().lights().get(0).position().x()).isEqualTo(2);
 
             String many = scene(300, 7, 0, lightMoved).replace("\"radius\": 0.15", "\"radius\": 0.16");
-            CompiledScene grown = reuse.compile(request(3, many), MemoryGate.UNLIMITED, READ).compiled();
+            CompiledScene grown = reuse.compile(request(3, many), MemoryGate.UNLIMITED, reads).compiled();
             assertThat(grown.scene().shape(3)).isNotSameAs(relit.scene().shape(3));
 
-            CompiledScene otherSize = reuse.compile(request(4, many, 64, 48),
-                    MemoryGate.UNLIMITED, json -> COMPILER.compile(CompileRequest.of(json).overriding(Map.of("image.width", 64, "image.height", 48)).onThreads(1))).compiled();
+            CountedReads larger = new CountedReads(
+                    json -> COMPILER.compile(CompileRequest.of(json).overriding(Map.of("image.width", 64, "image.height", 48)).onThreads(1)));
+            CompiledScene otherSize = reuse.compile(request(4, many, 64, 48), MemoryGate.UNLIMITED, larger).compiled();
             assertThat(otherSize.settings().width()).isEqualTo(64);
-            assertThat(reuse.reused()).isZero();
+            assertThat(reads.holding(302)).as("each revision read in full").isEqualTo(3);
+            assertThat(larger.holding(302)).isOne();
         }
     }
 
     @Test
     void aChangedObjectThatDoesNotReadGetsItsProblemByItsPathInTheWholeScene() {
+        CountedReads reads = new CountedReads(READ);
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
+            reuse.compile(request(1, scene(300, 7, 0, LIGHT)), MemoryGate.UNLIMITED, reads).compiled();
             String bad = scene(300, 7, 0, LIGHT).replaceFirst("\"radius\": 0.15", "\"radius\": -1");
 
-            assertThatThrownBy(() -> reuse.compile(request(2, bad), MemoryGate.UNLIMITED, READ).compiled()).isInstanceOfSatisfying(
+            assertThatThrownBy(() -> reuse.compile(request(2, bad), MemoryGate.UNLIMITED, reads).compiled()).isInstanceOfSatisfying(
                     InvalidSceneException.class, e -> assertThat(e.problems()).anySatisfy(
                             p -> assertThat(p.field()).isEqualTo("objects[1].radius")));
             // the last scene that read is still kept
-            reuse.compile(request(3, scene(300, 7, 0.2, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
-            assertThat(reuse.reused()).isEqualTo(1);
+            reuse.compile(request(3, scene(300, 7, 0.2, LIGHT)), MemoryGate.UNLIMITED, reads).compiled();
+            assertThat(reads.holding(302)).as("only the first revision read in full").isOne();
         }
     }
 
@@ -159,9 +165,10 @@ class SceneReuseTest {
     void smallScenesAreReusedTooAndAKeptSceneHoldsMemoryUntilTheViewCloses() {
         MemoryBudget memory = new MemoryBudget(1L << 30);
         SceneReuse reuse = new SceneReuse(memory);
-        reuse.compile(request(1, scene(10, 7, 0, LIGHT)), MemoryGate.UNLIMITED, READ).compiled();
-        SceneReuse.Revision small = reuse.compile(request(2, scene(10, 7, 0.4, LIGHT)), MemoryGate.UNLIMITED, READ);
-        assertThat(reuse.reused()).isOne();
+        CountedReads reads = new CountedReads(READ);
+        reuse.compile(request(1, scene(10, 7, 0, LIGHT)), MemoryGate.UNLIMITED, reads).compiled();
+        SceneReuse.Revision small = reuse.compile(request(2, scene(10, 7, 0.4, LIGHT)), MemoryGate.UNLIMITED, reads);
+        assertThat(reads.holding(12)).as("the second revision not read in full").isOne();
         assertThat(small.origins()).as("the moved sphere told, the others kept in place")
                 .containsExactly(0, 1, 2, 3, 4, 5, 6, 7, -1, 9, 10, 11);
         assertThat(memory.reserved()).isPositive();
@@ -200,13 +207,14 @@ class SceneReuseTest {
     @Test
     void aMovedInlineMeshKeepsItsTextUnreadAndItsTree() {
         String knot = knot();
+        CountedReads reads = new CountedReads(READ);
         try (SceneReuse reuse = new SceneReuse(MemoryBudget.unlimited())) {
-            CompiledScene first = reuse.compile(request(1, meshScene(knot, 0, 0.4)), MemoryGate.UNLIMITED, READ).compiled();
+            CompiledScene first = reuse.compile(request(1, meshScene(knot, 0, 0.4)), MemoryGate.UNLIMITED, reads).compiled();
             String movedJson = meshScene(knot, 0.25, 0.4);
 
-            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, READ).compiled();
+            CompiledScene moved = reuse.compile(request(2, movedJson), MemoryGate.UNLIMITED, reads).compiled();
 
-            assertThat(reuse.reused()).isEqualTo(1);
+            assertThat(reads.holding(3)).as("the moved mesh read alone").isOne();
             TriangleMesh mesh = (TriangleMesh) moved.scene().shape(1);
             assertThat(mesh.buildNanos()).as("the kept mesh moved, its tree not built again").isZero();
             assertThat(mesh.triangleCount()).isEqualTo(((TriangleMesh) first.scene().shape(1)).triangleCount());
@@ -217,9 +225,9 @@ class SceneReuseTest {
             assertThat(pixels(moved.scene())).isNotEqualTo(pixels(first.scene()));
 
             // scaled, or another text: read in full
-            reuse.compile(request(3, meshScene(knot, 0.25, 0.5)), MemoryGate.UNLIMITED, READ).compiled();
-            reuse.compile(request(4, meshScene(knot + "# another text\\n", 0.25, 0.5)), MemoryGate.UNLIMITED, READ).compiled();
-            assertThat(reuse.reused()).isEqualTo(1);
+            reuse.compile(request(3, meshScene(knot, 0.25, 0.5)), MemoryGate.UNLIMITED, reads).compiled();
+            reuse.compile(request(4, meshScene(knot + "# another text\\n", 0.25, 0.5)), MemoryGate.UNLIMITED, reads).compiled();
+            assertThat(reads.holding(3)).as("the revisions but the second read in full").isEqualTo(3);
         }
     }
 }
