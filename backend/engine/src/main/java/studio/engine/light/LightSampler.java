@@ -41,7 +41,6 @@ public final class LightSampler {
     /** Per light: centre, colour * intensity, radius (sphere), normal and half axes (area). */
     private final double[] cx, cy, cz, er, eg, eb, radius;
     private final double[] nx, ny, nz, wx, wy, wz, hx, hy, hz;
-    private final boolean anySoft;
 
     /** Unit direction from the point to the sample. */
     public double lx, ly, lz;
@@ -61,7 +60,6 @@ public final class LightSampler {
         nx = new double[n]; ny = new double[n]; nz = new double[n];
         wx = new double[n]; wy = new double[n]; wz = new double[n];
         hx = new double[n]; hy = new double[n]; hz = new double[n];
-        boolean soft = false;
         for (int i = 0; i < n; i++) {
             Light light = lights.get(i);
             Vec3 p = light.position();
@@ -70,7 +68,6 @@ public final class LightSampler {
             eg[i] = light.color().g() * light.intensity();
             eb[i] = light.color().b() * light.intensity();
             falloff[i] = light.falloff();
-            soft |= light.soft();
             if (light instanceof SphereLight sphere) {
                 kind[i] = SPHERE;
                 radius[i] = sphere.radius();
@@ -86,17 +83,6 @@ public final class LightSampler {
                 kind[i] = POINT;
             }
         }
-        anySoft = soft;
-    }
-
-    /** Whether some light has a size (and so needs a 2D point per sample). */
-    public boolean anySoft() {
-        return anySoft;
-    }
-
-    /** Whether light i is a point light (whose shadow rays all end at one point). */
-    public boolean isPoint(int i) {
-        return kind[i] == POINT;
     }
 
     /**

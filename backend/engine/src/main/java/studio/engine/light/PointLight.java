@@ -15,9 +15,4 @@ public record PointLight(Vec3 position, Rgb color, double intensity, boolean fal
         }
         Light.checkColorAndIntensity(color, intensity);
     }
-
-    /** Colour times intensity: the radiance scale before fall-off. */
-    public Rgb power() {
-        return color.times(intensity);
-    }
 }

@@ -52,9 +52,4 @@ public record Material(MaterialKind kind, Rgb color, double diffuse, double spec
     public Material withTexture(Texture texture) {
         return new Material(kind, color, diffuse, specular, shininess, reflectivity, ior, texture);
     }
-
-    /** The colour of a highlight: white on plastic and glass, the metal's own colour on metal. */
-    public Rgb specularTint() {
-        return kind == MaterialKind.METAL ? color : Rgb.WHITE;
-    }
 }

@@ -93,11 +93,6 @@ public final class MipMap {
         return heights[0];
     }
 
-    /** Levels in the pyramid, the full image first and one texel last. */
-    public int levelCount() {
-        return levels.length;
-    }
-
     /** Bytes the pyramid keeps (as {@link #fromSrgb} reserved them). */
     public long bytes() {
         return BYTES_PER_PIXEL * widths[0] * heights[0];

@@ -37,8 +37,9 @@ class LightSamplerTest {
         assertEquals(0.5, s.r, 1e-15);
         assertEquals(1, s.ly, 1e-15);
         assertEquals(4, s.ty);
-        assertTrue(s.isPoint(0));
-        assertFalse(s.anySoft());
+        assertTrue(s.sample(0, 0.3, 0, -0.2, 0.7, 0.05));
+        assertEquals(4, s.ty, "every shadow ray to a point light ends at its one point, whatever (u, v)");
+        assertEquals(0.5, s.r, 1e-15);
     }
 
     @Test
@@ -198,8 +199,9 @@ class LightSamplerTest {
         LightSampler s = new LightSampler(List.of(area));
         assertTrue(s.sample(0, 0.3, 0, -0.2, 0.2, 0.7));
         assertEquals(5 / 16.0, s.r, 1e-9);
-        assertTrue(s.anySoft());
-        assertFalse(s.isPoint(0));
+        double tx = s.tx, tz = s.tz;
+        assertTrue(s.sample(0, 0.3, 0, -0.2, 0.9, 0.1));
+        assertTrue(s.tx != tx || s.tz != tz, "another (u, v), another point on the light");
     }
 
     @Test

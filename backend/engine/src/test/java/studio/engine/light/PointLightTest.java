@@ -1,6 +1,5 @@
 package studio.engine.light;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import org.junit.jupiter.api.Test;
@@ -9,13 +8,6 @@ import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
 
 class PointLightTest {
-
-    @Test
-    void powerIsColourTimesIntensity() {
-        PointLight light = new PointLight(Vec3.ZERO, new Rgb(0.5, 0.25, 1), 4, false);
-
-        assertEquals(new Rgb(2, 1, 4), light.power());
-    }
 
     @Test
     void pointLightRejectsNonFinitePositionAndNegativeOrNonFiniteIntensity() {

@@ -16,7 +16,6 @@ class MipMapTest {
     void decodesSrgbToLinearAndHalvesToTheMean() {
         int[] pixels = {GREY, WHITE, WHITE, GREY, GREY, WHITE, WHITE, GREY}; // 4 x 2
         MipMap map = MipMap.fromSrgb(4, 2, pixels, MemoryGate.UNLIMITED);
-        assertEquals(3, map.levelCount());
         double[] out = new double[3];
         double grey = Srgb.toLinear(128 / 255.0);
         map.sample(0.125, 0.75, 0, out); // the centre of the top-left texel

@@ -13,8 +13,4 @@ final class Bytes {
     static int bigEndianShort(byte[] b, int at) {
         return (b[at] & 0xff) << 8 | (b[at + 1] & 0xff);
     }
-
-    static long littleEndianUnsignedInt(byte[] b, int at) {
-        return ((b[at] & 0xff) | (b[at + 1] & 0xff) << 8 | (b[at + 2] & 0xff) << 16 | (long) (b[at + 3] & 0xff) << 24);
-    }
 }

@@ -18,11 +18,6 @@ final class Hkdf {
     private Hkdf() {
     }
 
-    /** Extract, then expand: {@code length} bytes of key material for {@code info}. */
-    static byte[] derive(byte[] salt, byte[] ikm, byte[] info, int length) {
-        return expand(extract(salt, ikm), info, length);
-    }
-
     /** HKDF-Extract: the pseudorandom key; an empty salt stands for 32 zero bytes. */
     static byte[] extract(byte[] salt, byte[] ikm) {
         return mac(salt.length == 0 ? new byte[HASH_BYTES] : salt).doFinal(ikm);

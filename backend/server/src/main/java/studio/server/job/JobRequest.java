@@ -13,19 +13,4 @@ import studio.server.system.IntakeMemory;
  * @param owner     who submits it: only they see the job, within their limit
  */
 public record JobRequest(CompiledScene scene, byte[] sceneJson, IntakeMemory intake, JobOwner owner) {
-
-    /** A scene by anyone (sign-in off), without its JSON or a request's memory. */
-    public static JobRequest of(CompiledScene scene) {
-        return new JobRequest(scene, null, IntakeMemory.NONE, JobOwner.ANYONE);
-    }
-
-    /** The same request with the JSON the scene was compiled from. */
-    public JobRequest withJson(byte[] json) {
-        return new JobRequest(scene, json, intake, owner);
-    }
-
-    /** The same request by {@code by}. */
-    public JobRequest by(JobOwner by) {
-        return new JobRequest(scene, sceneJson, intake, by);
-    }
 }

@@ -351,10 +351,6 @@ final class RenderJob implements Runnable {
         return endNanos;
     }
 
-    long createdNanos() {
-        return createdNanos;
-    }
-
     void touch() {
         lastSeenNanos = System.nanoTime();
     }

@@ -17,7 +17,7 @@ import studio.server.asset.Asset;
 import studio.server.asset.AssetType;
 import studio.server.asset.LocalAssets;
 import studio.server.scene.gltf.TestGltf;
-import studio.server.job.JobRequest;
+import studio.server.job.JobRequests;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
 import studio.server.scene.compiling.CompileRequest;
@@ -50,7 +50,7 @@ class ClusterAssetsTest {
 
     private static String render(TestMember through, String json) throws Exception {
         byte[] bytes = json.getBytes(StandardCharsets.UTF_8);
-        String id = through.jobs.submit(JobRequest.of(through.compiler.compile(CompileRequest.of(bytes))).withJson(bytes)).id();
+        String id = through.jobs.submit(JobRequests.of(through.compiler.compile(CompileRequest.of(bytes)), bytes)).id();
         Await.until("job " + id + " to end", ClusterJobsTest.WAIT_MILLIS, () -> through.jobs.status(id).state().isFinal());
         JobStatus status = through.jobs.status(id);
         assertThat(status.state()).as(String.valueOf(status.error())).isEqualTo(JobState.DONE);

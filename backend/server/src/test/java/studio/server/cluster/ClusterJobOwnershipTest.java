@@ -13,7 +13,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
 import studio.server.Await;
-import studio.server.job.JobRequest;
+import studio.server.job.JobRequests;
 import studio.server.job.JobListener;
 import studio.server.job.JobNotFoundException;
 import studio.server.job.JobOwner;
@@ -53,7 +53,7 @@ class ClusterJobOwnershipTest {
     private static String submitAsAlice(TestMember member) {
         byte[] json = ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8);
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(CompileRequest.of(json));
-        return member.jobs.submit(JobRequest.of(scene).withJson(json).by(new JobOwner("alice", 4))).id();
+        return member.jobs.submit(JobRequests.of(scene, json, new JobOwner("alice", 4))).id();
     }
 
     private static final JobListener NOBODY = new JobListener() {

@@ -23,7 +23,7 @@ import com.hazelcast.map.MapInterceptor;
 import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.Await;
-import studio.server.job.JobRequest;
+import studio.server.job.JobRequests;
 import studio.server.job.JobListener;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
@@ -92,7 +92,7 @@ class ClusterJobsTest {
     private String submit(TestMember member) {
         byte[] json = SCENE.getBytes(StandardCharsets.UTF_8);
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(CompileRequest.of(json));
-        return member.jobs.submit(JobRequest.of(scene).withJson(json)).id();
+        return member.jobs.submit(JobRequests.of(scene, json)).id();
     }
 
     private static JobStatus awaitFinal(TestMember member, String id) throws Exception {

@@ -16,7 +16,7 @@ import com.hazelcast.map.IMap;
 import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.Await;
-import studio.server.job.JobRequest;
+import studio.server.job.JobRequests;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
 import studio.server.render.ImageFiles;
@@ -57,7 +57,7 @@ class ClusterSealTest {
         TestMember owner = members.get(0), other = members.get(1);
         byte[] json = ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8);
         CompiledScene scene = SceneCompiler.standalone(TestMember.VALIDATION::getValidator).compile(CompileRequest.of(json));
-        String id = owner.jobs.submit(JobRequest.of(scene).withJson(json)).id();
+        String id = owner.jobs.submit(JobRequests.of(scene, json)).id();
         Await.until("the job to run", ClusterJobsTest.WAIT_MILLIS,
                 () -> owner.jobs.status(id).state() == JobState.RUNNING);
 

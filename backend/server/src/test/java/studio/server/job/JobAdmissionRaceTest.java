@@ -63,7 +63,7 @@ class JobAdmissionRaceTest {
         List<Throwable> unexpected = new CopyOnWriteArrayList<>();
         try {
             for (int round = 0; round < ROUNDS; round++) {
-                List<String> accepted = race(() -> jobs.submit(JobRequest.of(large)).id(), unexpected);
+                List<String> accepted = race(() -> jobs.submit(JobRequests.of(large)).id(), unexpected);
                 for (String id : accepted) {
                     assertThat(jobs.status(id).state()).isNotEqualTo(JobState.FAILED);
                     jobs.cancel(id);
@@ -85,7 +85,7 @@ class JobAdmissionRaceTest {
         List<Throwable> unexpected = new CopyOnWriteArrayList<>();
         try {
             for (int round = 0; round < ROUNDS; round++) {
-                List<String> accepted = race(() -> jobs.submit(JobRequest.of(large).by(alice)).id(), unexpected);
+                List<String> accepted = race(() -> jobs.submit(JobRequests.of(large, null, alice)).id(), unexpected);
                 assertThat(accepted).hasSizeLessThanOrEqualTo(2);
                 for (String id : accepted) {
                     jobs.cancel(id, "alice");

@@ -70,7 +70,7 @@ class JobServiceTest {
     @Test
     void jobGoesFromQueuedThroughRunningToDoneWithItsImage() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(JobRequest.of(compile(SMALL)));
+        JobStatus started = jobs.submit(JobRequests.of(compile(SMALL)));
         assertTrue(started.state() == JobState.QUEUED || started.state() == JobState.RUNNING, started.toString());
         assertEquals("job-test.png", started.fileName());
         await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
@@ -100,7 +100,7 @@ class JobServiceTest {
             }
         };
         service = self[0] = new JobService(settings(1, 4), RenderBudget.unlimited(), Duration.ofSeconds(5), cluster);
-        JobStatus started = service.submit(JobRequest.of(compile(SMALL)));
+        JobStatus started = service.submit(JobRequests.of(compile(SMALL)));
 
         await("done", () -> service.status(started.id()).state() == JobState.DONE);
 
@@ -110,8 +110,8 @@ class JobServiceTest {
     @Test
     void listenerHearsEachStateEveryTileAndTheEnd() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus blocker = jobs.submit(JobRequest.of(compile(LARGE)));
-        JobStatus small = jobs.submit(JobRequest.of(compile(SMALL)));
+        JobStatus blocker = jobs.submit(JobRequests.of(compile(LARGE)));
+        JobStatus small = jobs.submit(JobRequests.of(compile(SMALL)));
         Recorder recorder = new Recorder();
         jobs.subscribe(small.id(), recorder);
         jobs.cancel(blocker.id());
@@ -134,7 +134,7 @@ class JobServiceTest {
     @Test
     void lateSubscriberGetsTheTilesFinishedSoFar() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus started = jobs.submit(JobRequests.of(compile(LARGE)));
         await("a few tiles", () -> jobs.status(started.id()).progress() > 0.02);
         double progress = jobs.status(started.id()).progress();
         Recorder late = new Recorder();
@@ -148,7 +148,7 @@ class JobServiceTest {
     @Test
     void cancellingARunningJobStopsItWithinATile() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus started = jobs.submit(JobRequests.of(compile(LARGE)));
         await("running", () -> jobs.status(started.id()).progress() > 0);
         long before = System.nanoTime();
         jobs.cancel(started.id());
@@ -162,8 +162,8 @@ class JobServiceTest {
     @Test
     void cancellingAQueuedJobEndsItAtOnce() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
-        JobStatus queued = jobs.submit(JobRequest.of(compile(SMALL)));
+        JobStatus running = jobs.submit(JobRequests.of(compile(LARGE)));
+        JobStatus queued = jobs.submit(JobRequests.of(compile(SMALL)));
         assertEquals(JobState.QUEUED, queued.state());
         assertEquals(JobState.CANCELLED, jobs.cancel(queued.id()).state());
         jobs.cancel(running.id());
@@ -173,10 +173,10 @@ class JobServiceTest {
     void aFullQueueIsRefusedBeforeAnySceneIsRead() throws Exception {
         JobService jobs = service(settings(1, 1));
         jobs.checkRoom();
-        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus running = jobs.submit(JobRequests.of(compile(LARGE)));
         await("running", () -> jobs.status(running.id()).state() == JobState.RUNNING);
         jobs.checkRoom(); // the queue's one place is free
-        JobStatus queued = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus queued = jobs.submit(JobRequests.of(compile(LARGE)));
         JobQueueFullException full = assertThrows(JobQueueFullException.class, jobs::checkRoom);
         assertTrue(full.retryAfterSeconds() >= 1);
         jobs.cancel(queued.id());
@@ -195,9 +195,9 @@ class JobServiceTest {
                 () -> jobs.start("{}".getBytes(StandardCharsets.UTF_8), IntakeMemory.NONE, JobOwner.ANYONE));
         assertEquals("objects", invalid.problems().get(0).field());
 
-        JobStatus blocker = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus blocker = jobs.submit(JobRequests.of(compile(LARGE)));
         await("running", () -> jobs.status(blocker.id()).state() == JobState.RUNNING);
-        JobStatus queued = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus queued = jobs.submit(JobRequests.of(compile(LARGE)));
         // no room: refused before the scene is read, so an invalid one is refused for the queue, not itself
         assertThrows(JobQueueFullException.class, () -> jobs.start("{}".getBytes(StandardCharsets.UTF_8),
                 IntakeMemory.NONE, JobOwner.ANYONE));
@@ -208,9 +208,9 @@ class JobServiceTest {
     @Test
     void fullQueueIsRefusedWithARetryDelay() {
         JobService jobs = service(settings(1, 1));
-        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
-        jobs.submit(JobRequest.of(compile(LARGE)));
-        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequest.of(compile(SMALL))));
+        JobStatus running = jobs.submit(JobRequests.of(compile(LARGE)));
+        jobs.submit(JobRequests.of(compile(LARGE)));
+        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequests.of(compile(SMALL))));
         assertTrue(full.retryAfterSeconds() >= 1);
         jobs.cancel(running.id());
     }
@@ -218,7 +218,7 @@ class JobServiceTest {
     @Test
     void finishedJobsExpireAfterTheirKeepTime() throws Exception {
         JobService jobs = service(new JobSettings(1, 4, Duration.ZERO, 50, Duration.ofMinutes(10), 2));
-        JobStatus started = jobs.submit(JobRequest.of(compile(SMALL)));
+        JobStatus started = jobs.submit(JobRequests.of(compile(SMALL)));
         await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
         Thread.sleep(2);
         jobs.sweep();
@@ -228,9 +228,9 @@ class JobServiceTest {
     @Test
     void onlyTheNewestFinishedJobsAreKept() throws Exception {
         JobService jobs = service(new JobSettings(1, 4, Duration.ofMinutes(10), 1, Duration.ofMinutes(10), 2));
-        JobStatus first = jobs.submit(JobRequest.of(compile(SMALL)));
+        JobStatus first = jobs.submit(JobRequests.of(compile(SMALL)));
         await("first done", () -> jobs.status(first.id()).state() == JobState.DONE);
-        JobStatus second = jobs.submit(JobRequest.of(compile(SMALL)));
+        JobStatus second = jobs.submit(JobRequests.of(compile(SMALL)));
         await("second done", () -> jobs.status(second.id()).state() == JobState.DONE);
         jobs.sweep();
         assertThrows(JobNotFoundException.class, () -> jobs.status(first.id()));
@@ -240,7 +240,7 @@ class JobServiceTest {
     @Test
     void jobNobodyAsksAboutIsCancelled() throws Exception {
         JobService jobs = service(new JobSettings(1, 4, Duration.ofMinutes(10), 50, Duration.ofMillis(50), 2));
-        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus started = jobs.submit(JobRequests.of(compile(LARGE)));
         Thread.sleep(100);
         jobs.sweep();
         await("cancelled", () -> jobs.status(started.id()).state() == JobState.CANCELLED);
@@ -249,7 +249,7 @@ class JobServiceTest {
     @Test
     void jobWithAnOpenEventStreamIsNotAbandoned() throws Exception {
         JobService jobs = service(new JobSettings(1, 4, Duration.ofMinutes(10), 50, Duration.ofMillis(50), 2));
-        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus started = jobs.submit(JobRequests.of(compile(LARGE)));
         jobs.subscribe(started.id(), new Recorder());
         Thread.sleep(100);
         jobs.sweep();
@@ -264,8 +264,8 @@ class JobServiceTest {
         CompiledScene first = compile(SMALL), second = compile(SMALL);
         WeakReference<Scene> doneScene = new WeakReference<>(first.scene());
         WeakReference<Scene> cancelledScene = new WeakReference<>(second.scene());
-        JobStatus done = jobs.submit(JobRequest.of(first));
-        JobStatus cancelled = jobs.submit(JobRequest.of(second));
+        JobStatus done = jobs.submit(JobRequests.of(first));
+        JobStatus cancelled = jobs.submit(JobRequests.of(second));
         first = null;
         second = null;
         jobs.cancel(cancelled.id());
@@ -302,7 +302,7 @@ class JobServiceTest {
         JobService jobs = service(settings(1, 4), memory, Duration.ofSeconds(5));
         // long enough (a few hundred ms) to be running still when the reservation is read: SMALL
         // could finish first, leaving only its image (seen once)
-        JobStatus started = jobs.submit(JobRequest.of(compile(scene(320, 240, 64))));
+        JobStatus started = jobs.submit(JobRequests.of(compile(scene(320, 240, 64))));
         assertTrue(memory.reserved() > 320 * 240 * 40, "reserved " + memory.reserved());
         await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
         assertEquals(jobs.image(started.id()).bytes().length, memory.reserved());
@@ -313,8 +313,8 @@ class JobServiceTest {
         // LARGE needs about 1024 x 768 x 54 bytes = 41 MiB; two do not fit in 48 MiB
         MemoryBudget memory = new MemoryBudget(48L << 20);
         JobService jobs = service(settings(1, 4), memory, Duration.ofSeconds(5));
-        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
-        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequest.of(compile(LARGE))));
+        JobStatus running = jobs.submit(JobRequests.of(compile(LARGE)));
+        JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequests.of(compile(LARGE))));
         assertTrue(full.getMessage().contains("memory"), full.getMessage());
         assertTrue(full.retryAfterSeconds() >= 1);
         jobs.cancel(running.id());
@@ -323,7 +323,7 @@ class JobServiceTest {
     @Test
     void jobThatCouldNeverFitIsInvalid() {
         JobService jobs = service(settings(1, 4), new MemoryBudget(8L << 20), Duration.ofSeconds(5));
-        InvalidSceneException invalid = assertThrows(InvalidSceneException.class, () -> jobs.submit(JobRequest.of(compile(LARGE))));
+        InvalidSceneException invalid = assertThrows(InvalidSceneException.class, () -> jobs.submit(JobRequests.of(compile(LARGE))));
         assertEquals("image", invalid.problems().get(0).field());
     }
 
@@ -332,7 +332,7 @@ class JobServiceTest {
         MemoryBudget memory = new MemoryBudget(1L << 30);
         JobService jobs = service(new JobSettings(1, 4, Duration.ZERO, 50, Duration.ofMinutes(10), 2), memory,
                 Duration.ofSeconds(5));
-        JobStatus started = jobs.submit(JobRequest.of(compile(SMALL)));
+        JobStatus started = jobs.submit(JobRequests.of(compile(SMALL)));
         await("done", () -> jobs.status(started.id()).state() == JobState.DONE);
         Thread.sleep(2);
         jobs.sweep();
@@ -342,7 +342,7 @@ class JobServiceTest {
     @Test
     void lastWatcherDisconnectingCancelsTheJob() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(JobRequest.of(compile(LARGE)));
+        JobStatus started = jobs.submit(JobRequests.of(compile(LARGE)));
         Recorder first = new Recorder(), second = new Recorder();
         jobs.subscribe(started.id(), first);
         jobs.subscribe(started.id(), second);
@@ -355,18 +355,18 @@ class JobServiceTest {
     @Test
     void shutdownLetsARunningJobFinishWithinTheGrace() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(JobRequest.of(compile(scene(256, 192, 4))));
+        JobStatus started = jobs.submit(JobRequests.of(compile(scene(256, 192, 4))));
         await("running", () -> jobs.status(started.id()).state() == JobState.RUNNING);
         jobs.shutdown(30_000);
         assertEquals(JobState.DONE, jobs.status(started.id()).state());
-        assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequest.of(compile(SMALL))));
+        assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequests.of(compile(SMALL))));
     }
 
     @Test
     void shutdownCancelsQueuedJobsAtOnceAndRunningOnesAfterTheGrace() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
-        JobStatus queued = jobs.submit(JobRequest.of(compile(SMALL)));
+        JobStatus running = jobs.submit(JobRequests.of(compile(LARGE)));
+        JobStatus queued = jobs.submit(JobRequests.of(compile(SMALL)));
         await("running", () -> jobs.status(running.id()).progress() > 0);
         long start = System.nanoTime();
         jobs.shutdown(300);
@@ -384,7 +384,7 @@ class JobServiceTest {
     @Test
     void listenerThatStopsReadingHoldsUpNeitherTheJobNorItsStatusAndIsDropped() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus started = jobs.submit(JobRequest.of(compile(scene(512, 384, 16))));
+        JobStatus started = jobs.submit(JobRequests.of(compile(scene(512, 384, 16))));
         Stuck stuck = new Stuck();
         Recorder reading = new Recorder();
         jobs.subscribe(started.id(), stuck);
@@ -416,8 +416,8 @@ class JobServiceTest {
     @Test
     void shutdownTellsTheListenersOfRunningAndQueuedJobsTheirEnd() throws Exception {
         JobService jobs = service(settings(1, 4));
-        JobStatus running = jobs.submit(JobRequest.of(compile(LARGE)));
-        JobStatus queued = jobs.submit(JobRequest.of(compile(SMALL)));
+        JobStatus running = jobs.submit(JobRequests.of(compile(LARGE)));
+        JobStatus queued = jobs.submit(JobRequests.of(compile(SMALL)));
         Recorder watchingRunning = new Recorder(), watchingQueued = new Recorder();
         jobs.subscribe(running.id(), watchingRunning);
         jobs.subscribe(queued.id(), watchingQueued);
@@ -426,7 +426,7 @@ class JobServiceTest {
         await("the queued job's end, at once", () -> watchingQueued.ended != null);
         assertEquals(JobState.CANCELLED, watchingQueued.ended.state());
         assertEquals(null, watchingRunning.ended, "the running job goes on for its grace period");
-        assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequest.of(compile(SMALL))));
+        assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequests.of(compile(SMALL))));
         jobs.cancelRunning(System.nanoTime() + 5_000_000_000L);
         assertEquals(JobState.CANCELLED, watchingRunning.ended.state());
         assertTrue(watchingRunning.ended.error().contains("shut down"), watchingRunning.ended.error());

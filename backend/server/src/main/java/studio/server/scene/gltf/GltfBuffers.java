@@ -116,10 +116,4 @@ final class GltfBuffers {
         throw bad(path, "only data: URIs and asset ids (sha256-...) are read, never a file or a URL: embed it, "
                 + "or upload it as an asset and name its id");
     }
-
-    /** The media type of a data: URI ("image/png"), or null. */
-    static String dataMediaType(String uri) {
-        int semicolon = uri.indexOf(';');
-        return uri.startsWith("data:") && semicolon > 5 ? uri.substring(5, semicolon) : null;
-    }
 }
