@@ -33,8 +33,8 @@ import studio.engine.memory.MemoryGate;
  * <p>Building reads every primitive a few times; it asks a {@link MemoryGate} first for memory the
  * render can do without ({@link MemoryGate#tryReserve}) and gives up (no buffer) where that is not
  * free, or where the lists would hold more than {@value #MAX_ENTRIES_PER_PRIMITIVE} entries a
- * primitive. The peer benchmark's 104,000-triangle knot: about 25,000 cells and 4 entries a
- * triangle per light, built in 11-15 ms warm (25 ms on C1 alone).
+ * primitive. The peer benchmark's 104,000-triangle knot gets about 25,000 cells and 4 entries a
+ * triangle per light.
  */
 public final class LightBuffer {
 
@@ -51,10 +51,8 @@ public final class LightBuffer {
 
     /**
      * A cell's side over the mean side of the primitives' projected rectangles. Smaller cells mean
-     * shorter lists but more entries: the peer mesh warm at 0.5, 1, 2 and 4 took 1.18, 1.26, 1.34
-     * and 1.71 s (the tree: 1.76) with 9, 4, 2.2 and 1.3 entries a triangle; whole processes at one
-     * sample 1.06 of the time without buffers at 0.5, 0.98 at 1 (building costs more than it saves
-     * in so short a render), at 16 samples 0.81 and 0.85.
+     * shorter lists but more entries: half this size renders the peer mesh a little faster at 16
+     * samples but costs more to build than it saves at one ({@code studio-bench peers}).
      */
     static final double CELL_SIZE = 1;
     /** The box must clear the light by this fraction of the largest coordinate. */

@@ -25,16 +25,14 @@ final class SampleTracer {
      * Pixels of a row bundled together: one pyramid over runs of this many pixels (from a column
      * that is a multiple of it), kept while the pixels traced stay in the run. The rays test a few
      * more objects each, and the listings, which took a third of 10,000 spheres' render pixel by
-     * pixel, happen a quarter as often (warm, 800x600, 16 samples, 2 threads: one pixel 437 ms,
-     * runs of 2 379, of 4 327, of 8 344).
+     * pixel, happen a quarter as often: runs of 4 render it fastest of 1, 2, 4 and 8 (warm).
      */
     static final int RUN = 4;
     /**
      * A sample's texture footprint: this share of its cell of the pixel (the pixel over the square
      * root of its samples). The sampler's stratification already averages across cells; the
-     * texture's filter need only remove what lies below a cell. The checker horizon (TEX-01,
-     * docs/robustness.md; 480x240, 16 sobol samples, RMSE in 8-bit levels against 1,024): a whole
-     * cell 3.56, a half 2.27, a quarter 2.36.
+     * texture's filter need only remove what lies below a cell. A half gives the checker horizon's
+     * least error of a whole, a half and a quarter cell (TEX-01; {@code CheckerHorizonTest} prints it).
      */
     static final double FOOTPRINT_SHARE = 0.5;
 

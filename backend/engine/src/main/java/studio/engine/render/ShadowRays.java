@@ -82,8 +82,7 @@ final class ShadowRays {
      * less through glass. Returns false when nothing arrives. In a scene with glass the scene's
      * any-hit question decides first: nothing on the way, or an opaque object ({@link Ray#blocker}),
      * settles it in one question, as most shadow rays are (asking the opaque objects, then the glass,
-     * for every ray took six-materials 1.08 times as long, and glass-pattern, where more rays meet
-     * glass, about 0.95; warm renders, one thread, alternated).
+     * for every ray took six-materials 1.08 times as long, warm).
      * Only a ray that meets glass asks the opaque objects, and then walks the glass objects surface
      * by surface, through their closest-hit question, multiplying their transmittance (the scene's
      * own closest-hit walk, with opaque objects in it, would make every blocked ray walk:

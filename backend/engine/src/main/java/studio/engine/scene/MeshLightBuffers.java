@@ -11,9 +11,8 @@ import studio.engine.memory.MemoryGate;
  * Which meshes of a scene get light buffers ({@link TriangleMesh#withLightBuffers}) for a render:
  * those with at most one triangle for every {@value #SAMPLES_PER_TRIANGLE} camera samples. Building
  * a mesh's buffers reads all its triangles a few times per light, which a short render does not win
- * back: the peer benchmark's 104,000-triangle mesh, whole processes with and without them, took
- * 0.84 of the time at 16 samples a pixel (800x600: 74 samples a triangle), but 0.98 and 1.04 in
- * two runs at one (4.6 a triangle), so about as long; it needs about twice that to be sure to pay.
+ * back: on the peer benchmark's 104,000-triangle mesh ({@code studio-bench peers}) they save a sixth
+ * at 74 camera samples a triangle and nothing at 4.6; the threshold asks about twice that.
  */
 public final class MeshLightBuffers {
 

@@ -27,11 +27,8 @@ import tools.jackson.databind.node.ObjectNode;
  *
  * <p>Why: reading a 10,000-sphere scene through Jackson's data binding and Hibernate Validator in a
  * cold JVM took about 0.5 s of a 2.9 s command-line render, and booting the validator 0.2 s more.
- * It pays in the warm server too, where the live view reads the whole scene at every edit: warm,
- * reading the bytes into validated records took (median of the last 30 of 60 reads, both paths
- * alternated in one JVM) 14.8 ms against 35.9 on the full path for the 1.1 MB scene of 10,000
- * spheres, a seventh of the live view's 150 ms for a full-size frame; 0.07 against 0.15 ms for the
- * still life; 5.4 against 5.8 ms for a 3.4 MB scene that is mostly one inline mesh's text.
+ * It pays in the warm server too, where the live view reads the whole scene at every edit: the
+ * 10,000 spheres' 1.1 MB read into validated records in 14.8 ms against 35.9 on the full path.
  *
  * <p>It knows the constraints the scene records use ({@link FieldRule}): a record field with any
  * other constraint fails {@code SceneConstraintsTest}, which also fails when the table is out of date

@@ -11,10 +11,9 @@ import jakarta.validation.Constraint;
  * One Bean Validation constraint of a scene record's field, as the fast path checks it
  * ({@link FastPathBinder}). The rules are plain data, listed per field in {@link SceneConstraints},
  * which a test generates from the records' annotations ({@link #of}). Reading the annotations
- * themselves at run time made the JDK spin a proxy class for each of 19 annotation types: the
- * binder's set-up took 74-106 ms of a cold command-line render, and takes 14-24 ms from the table
- * (5 runs each, JDK 25 with the AOT cache). Whole processes at one sample, 20 alternated pairs: the
- * still life 0.94 of its time, the 10,000 spheres 0.98.
+ * themselves at run time made the JDK spin a proxy class for each of 19 annotation types, most of
+ * the binder's set-up in a cold command-line render (with the table, a still life at one
+ * sample takes 0.94 of the time).
  *
  * <p>Every rule passes null but {@link NotNull}; the full path's validator agrees.
  */

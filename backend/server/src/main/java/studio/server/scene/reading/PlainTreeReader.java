@@ -19,7 +19,7 @@ import tools.jackson.databind.node.ObjectNode;
  * reads the bytes again through its mapper, which names the problem.
  *
  * <p>For the command line: {@code bin/studio render scenes/still-life.json --width 160 --height 120 --samples 1}
- * takes 430 ms against 523 through the mapper (medians, 12 alternated pairs); warm, even (SceneTreeBench).
+ * takes 430 ms against 523 through the mapper, cold; warm, even ({@code SceneTreeBench}).
  * {@code PlainTreeReaderTest} checks the trees are equal, node type for node type, to the mapper's.
  */
 final class PlainTreeReader {
