@@ -183,9 +183,9 @@ public final class TriangleMesh implements Shape {
      * This mesh with a light buffer ({@link LightBuffer}) for each of the first
      * {@value LightBuffer#MAX_LIGHTS} of these point lights that can have one (its box clear of the
      * light on one side): a shadow ray that ends at such a light tests the few triangles in its
-     * direction instead of searching the tree, with the same answer. The peer benchmark's mesh
-     * rendered in about 0.7 of the time warm (1.26 s against 1.75-1.76), and whole processes in
-     * 0.84 at 16 samples; which renders
+     * direction instead of searching the tree, with the same answer: the peer benchmark's mesh
+     * renders in about 0.7 of the time warm and 0.84 as whole processes at 16 samples
+     * ({@code studio-bench peers}); which renders
      * pay for the building is {@code MeshLightBuffers}' rule. Itself if it already has buffers for
      * exactly these lights; each buffer keeps some 35 bytes a triangle (and takes about 70 more
      * while it is built), asked of {@code memory} first. A moved copy ({@link #movedTo}) has none.

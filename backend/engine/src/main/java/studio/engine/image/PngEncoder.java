@@ -34,8 +34,8 @@ final class PngEncoder {
      */
     private static final int RUN_BYTES = 3 * COST_STRIDE * 16;
     /**
-     * zlib's level 4: a 4096x4096 render-like image in 0.63-0.86 s on 2 cores and 11.1 MB, where
-     * the default level 6 took 2.3-2.4 s for 9.8 MB and ImageIO's writer 1.5-1.8 s for 18.4 MB.
+     * zlib's level 4: a 4096x4096 render-like image in about a third of the default level 6's time,
+     * for an eighth more bytes (and in half of ImageIO's writer's time, for 0.6 of its bytes).
      */
     private static final int LEVEL = 4;
 
