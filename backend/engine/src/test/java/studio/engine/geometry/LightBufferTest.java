@@ -253,6 +253,7 @@ class LightBufferTest {
         Vec3 light = new Vec3(-3, 6, 4);
         long allocated = CountingGate.allocatedBy(
                 () -> made[0] = LightBuffer.ofTriangles(positions, indices, mesh.bounds(), light, mesh::occludedBy, gate));
+        assertNotNull(made[0], "a buffer for a light clear of the knot's box");
         assertTrue(allocated <= gate.granted() + CountingGate.SLACK, allocated + " allocated, " + gate.granted() + " granted");
         // about 64 bytes a triangle and 10 an entry of the lists (an int, a float, their share of
         // the cells): under 140 bytes a triangle is under 8 entries a triangle
