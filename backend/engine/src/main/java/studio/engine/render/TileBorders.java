@@ -4,23 +4,25 @@ import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 
 /**
- * Adaptive sampling with sobol: the base samples of the pixels on the tiles' edges, shared between
- * neighbouring tiles. A tile judges its edge pixels by a one-pixel ring of its neighbours' pixels;
- * whichever tile takes a pixel's base samples first leaves them here, and the other reads them
- * instead of tracing them again (on the stripes benchmark scene at 320x240 the ring was 7% of all
- * rays). Base samples are seeded by pixel, so both tiles would get the same values: the image does
- * not depend on which tile went first, nor on the thread count.
+ * Adaptive sampling with sobol: the base samples of the pixels near the tiles' edges, shared between
+ * neighbouring tiles. A tile judges its pixels by a ring of {@value #LINES} pixels of its neighbours'
+ * ({@link ProgressiveSobolSampling}); whichever tile takes a pixel's base samples first leaves them
+ * here, and the other reads them instead of tracing them again (on the stripes benchmark scene at
+ * 320x240 a one-pixel ring was 7% of all rays). Base samples are seeded by pixel, so both tiles would
+ * get the same values: the image does not depend on which tile went first, nor on the thread count.
  *
- * <p>Per pixel on an edge: its base sum, smallest and largest sample per channel, and how many
- * samples came out non-finite. Two rows per row of tiles (its first and last) and two columns per
- * column of tiles; a corner pixel is kept with its row. About 2 x 2 / size of the image's pixels at
- * 80 bytes each: 10 bytes a pixel with 32-pixel tiles.
+ * <p>Per pixel near an edge: its base sum, smallest and largest sample per channel, and how many
+ * samples came out non-finite. {@value #LINES} x 2 rows per row of tiles (its first and last) and as
+ * many columns per column of tiles; a pixel near a corner is kept with its row. About 2 x 2 x
+ * {@value #LINES} / size of the image's pixels at 80 bytes each: 20 bytes a pixel with 32-pixel tiles.
  */
 final class TileBorders {
 
     private static final VarHandle STATE = MethodHandles.arrayElementVarHandle(int[].class);
     private static final int FREE = 0, CLAIMED = 1, STORED = 2;
     private static final int VALUES = 9;
+    /** The lines along each edge of a tile that the neighbouring tile's ring holds. */
+    static final int LINES = 2;
 
     private final int width, height, size;
     private final int rowEntries;
@@ -35,30 +37,35 @@ final class TileBorders {
         this.height = height;
         this.size = size;
         int tileRows = (height + size - 1) / size, tileColumns = (width + size - 1) / size;
-        rowEntries = 2 * tileRows * width;
-        int entries = rowEntries + 2 * tileColumns * height;
+        rowEntries = 2 * LINES * tileRows * width;
+        int entries = rowEntries + 2 * LINES * tileColumns * height;
         values = new double[VALUES * entries];
         nonFinite = new int[entries];
         states = new int[entries];
     }
 
-    /** Pixel (x, y)'s entry, or -1 if it lies inside its tile (no other tile's ring holds it). */
+    /** Pixel (x, y)'s entry, or -1 if it lies deep inside its tile (no other tile's ring holds it). */
     int entryOf(int x, int y) {
         int slot = edgeSlot(y, height);
         if (slot >= 0) {
-            return (2 * (y / size) + slot) * width + x;
+            return (2 * LINES * (y / size) + slot) * width + x;
         }
         slot = edgeSlot(x, width);
-        return slot < 0 ? -1 : rowEntries + (2 * (x / size) + slot) * height + y;
+        return slot < 0 ? -1 : rowEntries + (2 * LINES * (x / size) + slot) * height + y;
     }
 
-    /** 0 on the first line of a tile, 1 on its last, -1 in between. */
+    /**
+     * 0 .. {@value #LINES} - 1 on a tile's first lines, {@value #LINES} .. 2 {@value #LINES} - 1 on
+     * its last (the image's last tile may be narrower), -1 in between; a line both among the first and
+     * among the last of a narrow tile counts with the first.
+     */
     private int edgeSlot(int coordinate, int extent) {
         int within = coordinate % size;
-        if (within == 0) {
-            return 0;
+        if (within < LINES) {
+            return within;
         }
-        return within == size - 1 || coordinate == extent - 1 ? 1 : -1;
+        int fromEnd = Math.min(size, extent - (coordinate - within)) - 1 - within;
+        return fromEnd < LINES ? 2 * LINES - 1 - fromEnd : -1;
     }
 
     /**

@@ -20,6 +20,36 @@ class TileBordersTest {
     private final int entry = borders.entryOf(31, 0);
     private final StopSignal stop = new StopSignal();
 
+    /**
+     * A tile reads a ring of two pixels (its pixels' neighbours' neighbourhoods): every pixel within
+     * two of an edge between tiles has an entry of its own, on a 70 x 50 image whose last tiles are narrow.
+     */
+    @Test
+    void everyPixelWithinTwoOfATilesEdgeHasAnEntryOfItsOwn() {
+        TileBorders narrow = new TileBorders(70, 50, 32);
+        java.util.Set<Integer> seen = new java.util.HashSet<>();
+        for (int y = 0; y < 50; y++) {
+            for (int x = 0; x < 70; x++) {
+                int e = narrow.entryOf(x, y);
+                boolean nearEdge = near(x, 70) || near(y, 50);
+                if (nearEdge) {
+                    assertTrue(e >= 0, "pixel " + x + "," + y);
+                    assertTrue(seen.add(e), "pixel " + x + "," + y + " shares entry " + e);
+                }
+            }
+        }
+    }
+
+    /** Within two of a border between tiles of 32 along an extent. */
+    private static boolean near(int c, int extent) {
+        for (int edge = 32; edge < extent; edge += 32) {
+            if (c >= edge - TileBorders.LINES && c < edge + TileBorders.LINES) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     @Test
     void theSecondTileReadsWhatTheFirstStored() {
         assertEquals(-1, borders.loadOrClaim(entry, new double[3], new double[3], new double[3], 0, stop));
