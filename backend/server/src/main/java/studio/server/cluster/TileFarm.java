@@ -207,7 +207,8 @@ final class TileFarm {
      * Looks for the job's tiles in no state: not done here, not in the queue, not claimed. The queue is
      * read before the claims, so a tile taken meanwhile shows as claimed, unless its worker claims it
      * only after the claims were read: so a tile is taken for lost only when it was in no state at the
-     * previous look too. The results of such tiles are read first (their events may have been lost).
+     * previous look too. The results of every tile neither done here nor queued are read first, claimed
+     * or not (their events may have been lost, and a worker keeps its claim once its result is in).
      *
      * @return true if some tiles were in no state for the first time: the next look should come soon
      */
@@ -218,13 +219,16 @@ final class TileFarm {
             BitSet queued = queued(job.id);
             Set<Integer> claimed = job.claims.keySet();
             BitSet done = job.assembly.done;
+            Set<Integer> out = new HashSet<>();
             for (int i = done.nextClearBit(0); i < job.tiles.size(); i = done.nextClearBit(i + 1)) {
-                if (!queued.get(i) && !claimed.contains(i)) {
-                    missing.set(i);
+                if (!queued.get(i)) {
+                    out.add(i);
+                    if (!claimed.contains(i)) {
+                        missing.set(i);
+                    }
                 }
             }
-            unheard = missing.isEmpty() ? List.of() : job.results.getAll(new HashSet<>(missing.stream().boxed().toList()))
-                    .values();
+            unheard = out.isEmpty() ? List.of() : job.results.getAll(out).values();
         } catch (RuntimeException e) {
             log.warn("job {}: could not look for lost tiles ({}); looking again shortly", job.id, e.toString());
             return true;
