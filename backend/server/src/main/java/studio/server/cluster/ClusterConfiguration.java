@@ -78,6 +78,15 @@ class ClusterConfiguration {
         return new ClusterJobs(compiler, workers, properties.renderThreads());
     }
 
+    /** At start-up, after the cluster has formed and before the port opens: a tiny scene through this member's own cluster path. */
+    @Bean
+    @Conditional(MembersConfigured.class)
+    ClusterWarmUp clusterWarmUp(HazelcastInstance member, ClusterSecret secret, ObjectProvider<MeterRegistry> registry,
+                                SceneCompiler compiler, MemoryBudget memory, StudioProperties properties) {
+        Seal seal = new Seal(secret, registry.getIfAvailable(SimpleMeterRegistry::new));
+        return new ClusterWarmUp(new ClusterData(member, seal), compiler, memory, properties.warmUp());
+    }
+
     /**
      * Seals and opens {@value #WARM_UP_VALUES} tile-sized values on a background thread at start-up:
      * about 0.8 s of CPU once, which each member otherwise spent in its first jobs' tiles (the
