@@ -33,7 +33,8 @@ import studio.server.system.MemoryBudget;
  * CPU goes"). Its structures are named for this member ({@link ClusterData#named}): no other
  * member's workers take its tiles, they hold no data of a job, and they are destroyed at the end;
  * partitions of them live on the other members, so their network path is compiled too. Bounded by
- * {@code studio.warm-up}, like the render warm-up; a failure is logged and start-up goes on.
+ * {@code studio.cluster.warm-up} (by default {@code studio.warm-up}, the render warm-up's limit); a
+ * failure is logged and start-up goes on.
  */
 final class ClusterWarmUp implements SmartInitializingSingleton {
 
@@ -70,8 +71,8 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
         try {
             Outcome outcome = run();
             log.info("Warmed up the cluster path in {} ms: {} tiles in {} of {} rounds through this member's own "
-                    + "structures (studio.warm-up={})", outcome.elapsedMillis(), outcome.tiles(), outcome.rounds(),
-                    ROUNDS, limit.toMillis() + "ms");
+                    + "structures (studio.cluster.warm-up={}, 0s turns it off)", outcome.elapsedMillis(),
+                    outcome.tiles(), outcome.rounds(), ROUNDS, limit.toMillis() + "ms");
         } catch (RuntimeException e) {
             log.warn("The cluster warm-up stopped: {}", e.toString());
         }
