@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.time.Duration;
 import java.util.HashSet;
-import java.util.List;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -135,8 +134,7 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
         own.images().set(id, image);
         publisher.end(done);
         farm.forget(id);
-        List<?> tiles = Renderer.tiles(width, height, TILE_SIZE);
-        return tiles.size();
+        return Renderer.tiles(width, height, TILE_SIZE).size();
     }
 
     private static byte[] read() {
