@@ -191,14 +191,22 @@ final class TileFarm {
         return alive;
     }
 
-    /** Queues again the tiles claimed by members that have left. */
+    /**
+     * Queues again the tiles claimed by members that have left, unless their result is in (a worker keeps
+     * its claim once it has put its result, whose event may not have been heard yet).
+     */
     private void requeueLost(Job job) {
         Set<String> alive = alive();
         for (Map.Entry<Integer, TileClaim> entry : job.claims.entries().entrySet()) {
             int index = entry.getKey();
             TileClaim claim = entry.getValue();
             if (!job.assembly.done.get(index) && !alive.contains(claim.member()) && job.claims.remove(index, claim)) {
-                job.retry(index, claim.attempt(), "its member left the cluster");
+                TileResult result = job.results.get(index);
+                if (result != null && result.attempt() == claim.attempt()) {
+                    job.arrived(result);
+                } else {
+                    job.retry(index, claim.attempt(), "its member left the cluster");
+                }
             }
         }
     }
