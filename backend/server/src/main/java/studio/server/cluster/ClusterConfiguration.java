@@ -1,5 +1,7 @@
 package studio.server.cluster;
 
+import java.time.Duration;
+
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -16,6 +18,7 @@ import org.springframework.context.annotation.Condition;
 import org.springframework.context.annotation.ConditionContext;
 import org.springframework.context.annotation.Conditional;
 import org.springframework.context.annotation.Configuration;
+import org.springframework.core.env.Environment;
 import org.springframework.core.type.AnnotatedTypeMetadata;
 
 import com.hazelcast.config.Config;
@@ -76,6 +79,22 @@ class ClusterConfiguration {
         ClusterData data = new ClusterData(member, seal);
         TileWorkers workers = new TileWorkers(data, new JobScenes(data.scenes(), compiler, memory), threads);
         return new ClusterJobs(compiler, workers, properties.renderThreads());
+    }
+
+    /**
+     * At start-up, after the member has joined and before the port opens: a tiny scene through this
+     * member's own cluster path, for at most {@code studio.cluster.warm-up} (by default
+     * {@code studio.warm-up}; {@code 0s} turns it off).
+     */
+    @Bean
+    @Conditional(MembersConfigured.class)
+    ClusterWarmUp clusterWarmUp(HazelcastInstance member, ClusterSecret secret, ObjectProvider<MeterRegistry> registry,
+                                SceneCompiler compiler, MemoryBudget memory, StudioProperties properties,
+                                Environment environment) {
+        Seal seal = new Seal(secret, registry.getIfAvailable(SimpleMeterRegistry::new));
+        Duration limit = Binder.get(environment).bind("studio.cluster.warm-up", Duration.class)
+                .orElse(properties.warmUp());
+        return new ClusterWarmUp(new ClusterData(member, seal), compiler, memory, limit);
     }
 
     /**

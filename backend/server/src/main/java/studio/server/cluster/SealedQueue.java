@@ -93,6 +93,10 @@ final class SealedQueue<V> {
         return values;
     }
 
+    void destroy() {
+        queue.destroy();
+    }
+
     private byte[] seal(V value) {
         return seal.seal(family, queue.getName(), "", codec.encode(value));
     }

@@ -191,14 +191,22 @@ final class TileFarm {
         return alive;
     }
 
-    /** Queues again the tiles claimed by members that have left. */
+    /**
+     * Queues again the tiles claimed by members that have left, unless their result is in (a worker keeps
+     * its claim once it has put its result, whose event may not have been heard yet).
+     */
     private void requeueLost(Job job) {
         Set<String> alive = alive();
         for (Map.Entry<Integer, TileClaim> entry : job.claims.entries().entrySet()) {
             int index = entry.getKey();
             TileClaim claim = entry.getValue();
             if (!job.assembly.done.get(index) && !alive.contains(claim.member()) && job.claims.remove(index, claim)) {
-                job.retry(index, claim.attempt(), "its member left the cluster");
+                TileResult result = job.results.get(index);
+                if (result != null && result.attempt() == claim.attempt()) {
+                    job.arrived(result);
+                } else {
+                    job.retry(index, claim.attempt(), "its member left the cluster");
+                }
             }
         }
     }
@@ -207,7 +215,8 @@ final class TileFarm {
      * Looks for the job's tiles in no state: not done here, not in the queue, not claimed. The queue is
      * read before the claims, so a tile taken meanwhile shows as claimed, unless its worker claims it
      * only after the claims were read: so a tile is taken for lost only when it was in no state at the
-     * previous look too. The results of such tiles are read first (their events may have been lost).
+     * previous look too. The results of every tile neither done here nor queued are read first, claimed
+     * or not (their events may have been lost, and a worker keeps its claim once its result is in).
      *
      * @return true if some tiles were in no state for the first time: the next look should come soon
      */
@@ -218,13 +227,16 @@ final class TileFarm {
             BitSet queued = queued(job.id);
             Set<Integer> claimed = job.claims.keySet();
             BitSet done = job.assembly.done;
+            Set<Integer> out = new HashSet<>();
             for (int i = done.nextClearBit(0); i < job.tiles.size(); i = done.nextClearBit(i + 1)) {
-                if (!queued.get(i) && !claimed.contains(i)) {
-                    missing.set(i);
+                if (!queued.get(i)) {
+                    out.add(i);
+                    if (!claimed.contains(i)) {
+                        missing.set(i);
+                    }
                 }
             }
-            unheard = missing.isEmpty() ? List.of() : job.results.getAll(new HashSet<>(missing.stream().boxed().toList()))
-                    .values();
+            unheard = out.isEmpty() ? List.of() : job.results.getAll(out).values();
         } catch (RuntimeException e) {
             log.warn("job {}: could not look for lost tiles ({}); looking again shortly", job.id, e.toString());
             return true;

@@ -277,17 +277,20 @@ final class TileWorkers implements AutoCloseable {
                     }
                 }
                 // not waited for: the next tile starts now; if this member dies first, its claim is still there.
-                // The claim goes whether the put succeeded or not: a claim of a live member that outlives a lost
-                // put would hide the tile from its coordinator for good (it re-queues only tiles neither done
-                // nor claimed by a live member), while without it the tile is queued again within a stall's time.
+                // A claim stays once its result is in: the coordinator reads results before claims, and a claim of a
+                // tile with a result costs nothing, while deleting it was two of a tile's round trips (its backup).
+                // A lost put's claim goes: a claim of a live member would otherwise hide the tile from its coordinator
+                // until its next look at the results (TileFarm#requeueMissing).
                 results.setAsync(task.index(), new TileResult(task.index(), task.attempt(), rgb, worker.rays() - rays,
                         worker.samples() - samples, nonFinite, address, null))
                         .whenComplete((ignored, failure) -> {
-                            if (failure != null && running && member.getLifecycleService().isRunning()) {
-                                log.warn("could not report tile {} of job {}: {}", task.index(), task.jobId(),
-                                        failure.toString());
+                            if (failure != null) {
+                                if (running && member.getLifecycleService().isRunning()) {
+                                    log.warn("could not report tile {} of job {}: {}", task.index(), task.jobId(),
+                                            failure.toString());
+                                }
+                                claims.deleteAsync(task.index());
                             }
-                            claims.deleteAsync(task.index());
                         });
             } catch (RenderCancelledException e) {
                 giveBack(task); // shutting down: another member takes it

@@ -10,12 +10,12 @@ import studio.engine.render.Film;
 import studio.engine.render.TileRect;
 
 /** A finished tile as a job's events carry it: a base64 PNG, written by the same encoder as whole images. */
-final class TilePng {
+public final class TilePng {
 
     private TilePng() {
     }
 
-    static String encode(Film film, TileRect tile) {
+    public static String encode(Film film, TileRect tile) {
         var pixels = ImageEncoder.toImage(film, tile);
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         try {

@@ -1,0 +1,99 @@
+package studio.server.cluster;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.UUID;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+import com.hazelcast.collection.ItemEvent;
+import com.hazelcast.collection.ItemListener;
+import com.hazelcast.core.DistributedObject;
+
+import studio.engine.render.Renderer;
+import studio.server.Await;
+import studio.server.system.MemoryBudget;
+
+/**
+ * The start-up warm-up of a member's cluster path: a tiny scene's tiles through the member's own
+ * structures, across the members (their partitions), touching none of the cluster's own (no task in
+ * the tile queue, no job), rendered by this member's warm-up workers alone, every structure of it
+ * gone afterwards, and stopped at its limit.
+ */
+class ClusterWarmUpTest {
+
+    private final List<TestMember> members = new ArrayList<>();
+
+    @AfterEach
+    void stopMembers() {
+        for (TestMember member : members) {
+            member.kill();
+        }
+    }
+
+    private void start() throws Exception {
+        String name = "test-" + UUID.randomUUID();
+        int[] ports = {TestMember.BASE_PORT + 2, TestMember.BASE_PORT + 3};
+        for (int port : ports) {
+            members.add(new TestMember(name, port, ports));
+        }
+        Await.until("the cluster to be safe", ClusterJobsTest.WAIT_MILLIS,
+                () -> members.stream().allMatch(member -> member.hazelcast.getPartitionService().isClusterSafe()));
+    }
+
+    private ClusterWarmUp warmUp(TestMember member, Duration limit) {
+        return new ClusterWarmUp(member.data, member.compiler, MemoryBudget.unlimited(), limit);
+    }
+
+    @Test
+    void sendsEveryRoundsTilesThroughItsOwnStructuresAndLeavesNothing() throws Exception {
+        start();
+        AtomicInteger queued = new AtomicInteger();
+        for (TestMember member : members) {
+            member.hazelcast.getQueue(ClusterMaps.TILE_QUEUE).addItemListener(new ItemListener<Object>() {
+                @Override
+                public void itemAdded(ItemEvent<Object> item) {
+                    queued.incrementAndGet();
+                }
+
+                @Override
+                public void itemRemoved(ItemEvent<Object> item) {
+                }
+            }, false);
+        }
+
+        ClusterWarmUp.Outcome outcome = warmUp(members.get(0), Duration.ofMinutes(2)).run();
+
+        int tiles = Renderer.tiles(128, 128, ClusterWarmUp.TILE_SIZE).size();
+        assertThat(outcome.rounds()).isEqualTo(ClusterWarmUp.ROUNDS);
+        assertThat(outcome.tiles()).isEqualTo(ClusterWarmUp.ROUNDS * tiles);
+        assertThat(queued).as("tasks in the cluster's tile queue").hasValue(0);
+        for (TestMember member : members) {
+            assertThat(member.hazelcast.getDistributedObjects()).map(DistributedObject::getName)
+                    .noneMatch(structure -> structure.startsWith("studio-warm-up-"));
+            assertThat(member.data.jobs().keySet()).isEmpty();
+            assertThat(member.rejected(ClusterMaps.TILES_FAMILY)).isZero();
+        }
+    }
+
+    @Test
+    void stopsAtItsLimitAndLeavesNothing() throws Exception {
+        start();
+
+        long start = System.nanoTime();
+        ClusterWarmUp.Outcome outcome = warmUp(members.get(0), Duration.ofMillis(1)).run();
+
+        assertThat(outcome.rounds()).isZero();
+        assertThat(outcome.tiles()).isZero();
+        assertThat(System.nanoTime() - start).isLessThan(Duration.ofSeconds(10).toNanos());
+        for (TestMember member : members) {
+            assertThat(member.hazelcast.getDistributedObjects()).map(DistributedObject::getName)
+                    .noneMatch(structure -> structure.startsWith("studio-warm-up-"));
+        }
+    }
+}
