@@ -250,26 +250,30 @@ public final class LightBuffer {
             return null;
         }
         double[] pu = new double[vertices], pv = new double[vertices];
-        for (int i = 0, o = 0; i < vertices; i++, o += 3) {
-            double z = f.z(p, o);
-            pu[i] = (p[o + ua] - f.l[ua]) / z;
-            pv[i] = (p[o + va] - f.l[va]) / z;
-        }
+        Runs.over(vertices, (from, to) -> {
+            for (int i = from, o = 3 * from; i < to; i++, o += 3) {
+                double z = f.z(p, o);
+                pu[i] = (p[o + ua] - f.l[ua]) / z;
+                pv[i] = (p[o + va] - f.l[va]) / z;
+            }
+        });
         double[] rects = new double[4 * count];
         float[] near = new float[count];
         double[] box = new double[6];
-        for (int t = 0; t < count; t++) {
-            int a = indices[3 * t], b = indices[3 * t + 1], c = indices[3 * t + 2];
-            rects[4 * t] = Math.min(pu[a], Math.min(pu[b], pu[c]));
-            rects[4 * t + 1] = Math.max(pu[a], Math.max(pu[b], pu[c]));
-            rects[4 * t + 2] = Math.min(pv[a], Math.min(pv[b], pv[c]));
-            rects[4 * t + 3] = Math.max(pv[a], Math.max(pv[b], pv[c]));
-            for (int k = 0; k < 3; k++) {
-                box[k] = Math.min(p[3 * a + k], Math.min(p[3 * b + k], p[3 * c + k]));
-                box[k + 3] = Math.max(p[3 * a + k], Math.max(p[3 * b + k], p[3 * c + k]));
+        Runs.over(count, (from, to) -> {
+            for (int t = from; t < to; t++) {
+                int a = indices[3 * t], b = indices[3 * t + 1], c = indices[3 * t + 2];
+                rects[4 * t] = Math.min(pu[a], Math.min(pu[b], pu[c]));
+                rects[4 * t + 1] = Math.max(pu[a], Math.max(pu[b], pu[c]));
+                rects[4 * t + 2] = Math.min(pv[a], Math.min(pv[b], pv[c]));
+                rects[4 * t + 3] = Math.max(pv[a], Math.max(pv[b], pv[c]));
+                for (int k = 0; k < 3; k++) {
+                    box[k] = Math.min(p[3 * a + k], Math.min(p[3 * b + k], p[3 * c + k]));
+                    box[k + 3] = Math.max(p[3 * a + k], Math.max(p[3 * b + k], p[3 * c + k]));
+                }
+                near[t] = LightBufferLists.nearestBound(box, 0, f.l);
             }
-            near[t] = nearestBound(box, 0, f.l);
-        }
+        });
         return LightBufferLists.assemble(f, rects, near, triangles, memory);
     }
 
@@ -289,20 +293,13 @@ public final class LightBuffer {
         }
         double[] rects = new double[4 * count];
         float[] near = new float[count];
-        for (int i = 0; i < count; i++) {
-            projectBox(boxes, 6 * i, f.l, f.depth, f.side, rects, 4 * i);
-            near[i] = nearestBound(boxes, 6 * i, f.l);
-        }
+        Runs.over(count, (from, to) -> {
+            for (int i = from; i < to; i++) {
+                projectBox(boxes, 6 * i, f.l, f.depth, f.side, rects, 4 * i);
+                near[i] = LightBufferLists.nearestBound(boxes, 6 * i, f.l);
+            }
+        });
         return LightBufferLists.assemble(f, rects, near, primitives, memory);
-    }
-
-    /**
-     * A lower bound of the distance from the light to the box at {@code box[o ..]}: its distance,
-     * shrunk by a millionth and rounded down to a float.
-     */
-    private static float nearestBound(double[] box, int o, double[] l) {
-        float bound = (float) (Aabb.distance(box, o, l[0], l[1], l[2]) * (1 - 1e-6));
-        return bound > 0 ? Math.nextDown(bound) : 0;
     }
 
     /** Whether the light this buffer sees from lies within {@code tolerance} of (x, y, z). */

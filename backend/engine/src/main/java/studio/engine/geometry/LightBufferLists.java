@@ -2,6 +2,7 @@ package studio.engine.geometry;
 
 import java.util.Arrays;
 
+import studio.engine.accel.Aabb;
 import studio.engine.memory.MemoryGate;
 
 /**
@@ -22,11 +23,14 @@ final class LightBufferLists {
             return null;
         }
         // cells about as large as a primitive's projected rectangle on average
-        double sumU = 0, sumV = 0;
-        for (int t = 0; t < count; t++) {
-            sumU += rects[4 * t + 1] - rects[4 * t];
-            sumV += rects[4 * t + 3] - rects[4 * t + 2];
-        }
+        double[] sums = new double[2];
+        Runs.over(count, (from, to) -> {
+            for (int t = from; t < to; t++) {
+                sums[0] += rects[4 * t + 1] - rects[4 * t];
+                sums[1] += rects[4 * t + 3] - rects[4 * t + 2];
+            }
+        });
+        double sumU = sums[0], sumV = sums[1];
         double spanU = f.uMax() - f.uMin(), spanV = f.vMax() - f.vMin();
         double cellU = Math.max(LightBuffer.CELL_SIZE * sumU / count, spanU / LightBuffer.MAX_SIDE);
         double cellV = Math.max(LightBuffer.CELL_SIZE * sumV / count, spanV / LightBuffer.MAX_SIDE);
@@ -36,7 +40,7 @@ final class LightBufferLists {
             nu = Math.max(1, nu / 2);
             nv = Math.max(1, nv / 2);
         }
-        int cells = nu * nv;
+        int cells = nu * nv, columns = nu, rows = nv;
         double perU = nu / spanU, perV = nv / spanV;
         if (!memory.tryReserve(MemoryGate.ints(4L * count) + MemoryGate.ints(cells + 1L))) {
             return null;
@@ -45,25 +49,29 @@ final class LightBufferLists {
         // each primitive's cells (i0, i1, j0, j1) and the lists' lengths
         int[] range = new int[4 * count];
         int[] cellStart = new int[cells + 1];
-        long entries = 0;
-        for (int t = 0; t < count; t++) {
-            int i0 = cell(rects[4 * t] - LightBuffer.UV_MARGIN, f.uMin(), perU, nu);
-            int i1 = cell(rects[4 * t + 1] + LightBuffer.UV_MARGIN, f.uMin(), perU, nu);
-            int j0 = cell(rects[4 * t + 2] - LightBuffer.UV_MARGIN, f.vMin(), perV, nv);
-            int j1 = cell(rects[4 * t + 3] + LightBuffer.UV_MARGIN, f.vMin(), perV, nv);
-            range[4 * t] = i0;
-            range[4 * t + 1] = i1;
-            range[4 * t + 2] = j0;
-            range[4 * t + 3] = j1;
-            entries += (long) (i1 - i0 + 1) * (j1 - j0 + 1);
-            if (entries > (long) LightBuffer.MAX_ENTRIES_PER_PRIMITIVE * count + cells) {
-                return null;
-            }
-            for (int j = j0; j <= j1; j++) {
-                for (int i = i0; i <= i1; i++) {
-                    cellStart[j * nu + i + 1]++;
+        long[] counted = new long[1];
+        long cap = (long) LightBuffer.MAX_ENTRIES_PER_PRIMITIVE * count + cells;
+        Runs.over(count, (from, to) -> {
+            for (int t = from; t < to && counted[0] <= cap; t++) {
+                int i0 = cell(rects[4 * t] - LightBuffer.UV_MARGIN, f.uMin(), perU, columns);
+                int i1 = cell(rects[4 * t + 1] + LightBuffer.UV_MARGIN, f.uMin(), perU, columns);
+                int j0 = cell(rects[4 * t + 2] - LightBuffer.UV_MARGIN, f.vMin(), perV, rows);
+                int j1 = cell(rects[4 * t + 3] + LightBuffer.UV_MARGIN, f.vMin(), perV, rows);
+                range[4 * t] = i0;
+                range[4 * t + 1] = i1;
+                range[4 * t + 2] = j0;
+                range[4 * t + 3] = j1;
+                counted[0] += (long) (i1 - i0 + 1) * (j1 - j0 + 1);
+                for (int j = j0; j <= j1; j++) {
+                    for (int i = i0; i <= i1; i++) {
+                        cellStart[j * columns + i + 1]++;
+                    }
                 }
             }
+        });
+        long entries = counted[0];
+        if (entries > cap) {
+            return null;
         }
         for (int cell = 0; cell < cells; cell++) {
             cellStart[cell + 1] += cellStart[cell];
@@ -94,20 +102,34 @@ final class LightBufferLists {
             order[bucketStart[bucket(bounds[t], least, perBound, count)]++] = t;
         }
         int[] next = Arrays.copyOf(cellStart, cells);
-        for (int t : order) {
-            float bound = bounds[t];
-            for (int j = range[4 * t + 2]; j <= range[4 * t + 3]; j++) {
-                for (int i = range[4 * t]; i <= range[4 * t + 1]; i++) {
-                    int at = next[j * nu + i]++;
-                    listed[at] = t;
-                    near[at] = bound;
+        Runs.over(count, (from, to) -> {
+            for (int q = from; q < to; q++) {
+                int t = order[q];
+                float bound = bounds[t];
+                for (int j = range[4 * t + 2]; j <= range[4 * t + 3]; j++) {
+                    for (int i = range[4 * t]; i <= range[4 * t + 1]; i++) {
+                        int at = next[j * columns + i]++;
+                        listed[at] = t;
+                        near[at] = bound;
+                    }
                 }
             }
-        }
-        for (int cell = 0; cell < cells; cell++) {
-            sortByNearest(listed, near, cellStart[cell], cellStart[cell + 1]);
-        }
+        });
+        Runs.over(cells, (from, to) -> {
+            for (int cell = from; cell < to; cell++) {
+                sortByNearest(listed, near, cellStart[cell], cellStart[cell + 1]);
+            }
+        });
         return new LightBuffer(f, primitives, nu, nv, cellStart, listed, near);
+    }
+
+    /**
+     * A lower bound of the distance from the light to the box at {@code box[o ..]}: its distance,
+     * shrunk by a millionth and rounded down to a float.
+     */
+    static float nearestBound(double[] box, int o, double[] l) {
+        float bound = (float) (Aabb.distance(box, o, l[0], l[1], l[2]) * (1 - 1e-6));
+        return bound > 0 ? Math.nextDown(bound) : 0;
     }
 
     /** The counting sort's bucket of a bound. */

@@ -22,12 +22,14 @@ final class MeshPlacement {
         double m10 = r.get(1, 0), m11 = r.get(1, 1), m12 = r.get(1, 2);
         double m20 = r.get(2, 0), m21 = r.get(2, 1), m22 = r.get(2, 2);
         double[] rotated = new double[object.length];
-        for (int i = 0; i < object.length; i += 3) {
-            double x = scale * object[i], y = scale * object[i + 1], z = scale * object[i + 2];
-            rotated[i] = m00 * x + m01 * y + m02 * z;
-            rotated[i + 1] = m10 * x + m11 * y + m12 * z;
-            rotated[i + 2] = m20 * x + m21 * y + m22 * z;
-        }
+        Runs.over(object.length / 3, (from, to) -> {
+            for (int i = 3 * from; i < 3 * to; i += 3) {
+                double x = scale * object[i], y = scale * object[i + 1], z = scale * object[i + 2];
+                rotated[i] = m00 * x + m01 * y + m02 * z;
+                rotated[i + 1] = m10 * x + m11 * y + m12 * z;
+                rotated[i + 2] = m20 * x + m21 * y + m22 * z;
+            }
+        });
         return rotated;
     }
 
@@ -35,14 +37,16 @@ final class MeshPlacement {
     static double[] moved(double[] unplaced, Vec3 position) {
         double tx = position.x(), ty = position.y(), tz = position.z();
         double[] world = new double[unplaced.length];
-        for (int i = 0; i < unplaced.length; i += 3) {
-            world[i] = tx + unplaced[i];
-            world[i + 1] = ty + unplaced[i + 1];
-            world[i + 2] = tz + unplaced[i + 2];
-            if (!Double.isFinite(world[i]) || !Double.isFinite(world[i + 1]) || !Double.isFinite(world[i + 2])) {
-                throw new IllegalArgumentException("vertex " + i / 3 + " is not finite once placed in the world");
+        Runs.over(unplaced.length / 3, (from, to) -> {
+            for (int i = 3 * from; i < 3 * to; i += 3) {
+                world[i] = tx + unplaced[i];
+                world[i + 1] = ty + unplaced[i + 1];
+                world[i + 2] = tz + unplaced[i + 2];
+                if (!Double.isFinite(world[i]) || !Double.isFinite(world[i + 1]) || !Double.isFinite(world[i + 2])) {
+                    throw new IllegalArgumentException("vertex " + i / 3 + " is not finite once placed in the world");
+                }
             }
-        }
+        });
         return world;
     }
 
@@ -53,28 +57,30 @@ final class MeshPlacement {
      */
     static double[] fitted(double[] p, int[] indices, int[] links, int nodeCount) {
         double[] b = new double[6 * nodeCount];
-        for (int node = nodeCount - 1; node >= 0; node--) {
-            int o = 3 * node, k = 6 * node;
-            int count = links[o + 1];
-            if (count >= 0) {
-                for (int axis = 0; axis < 3; axis++) {
-                    double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-                    for (int i = 3 * links[o], end = 3 * (links[o] + count); i < end; i++) {
-                        double v = p[3 * indices[i] + axis];
-                        lo = Math.min(lo, v);
-                        hi = Math.max(hi, v);
+        Runs.over(nodeCount, (from, to) -> {
+            for (int node = nodeCount - 1 - from; node > nodeCount - 1 - to; node--) {
+                int o = 3 * node, k = 6 * node;
+                int count = links[o + 1];
+                if (count >= 0) {
+                    for (int axis = 0; axis < 3; axis++) {
+                        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+                        for (int i = 3 * links[o], end = 3 * (links[o] + count); i < end; i++) {
+                            double v = p[3 * indices[i] + axis];
+                            lo = Math.min(lo, v);
+                            hi = Math.max(hi, v);
+                        }
+                        b[k + axis] = lo;
+                        b[k + 3 + axis] = hi;
                     }
-                    b[k + axis] = lo;
-                    b[k + 3 + axis] = hi;
-                }
-            } else {
-                int left = 6 * (node + 1), right = 6 * links[o];
-                for (int axis = 0; axis < 3; axis++) {
-                    b[k + axis] = Math.min(b[left + axis], b[right + axis]);
-                    b[k + 3 + axis] = Math.max(b[left + 3 + axis], b[right + 3 + axis]);
+                } else {
+                    int left = 6 * (node + 1), right = 6 * links[o];
+                    for (int axis = 0; axis < 3; axis++) {
+                        b[k + axis] = Math.min(b[left + axis], b[right + axis]);
+                        b[k + 3 + axis] = Math.max(b[left + 3 + axis], b[right + 3 + axis]);
+                    }
                 }
             }
-        }
+        });
         return b;
     }
 

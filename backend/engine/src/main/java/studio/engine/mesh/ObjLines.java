@@ -14,6 +14,12 @@ import studio.engine.memory.MemoryGate;
  */
 final class ObjLines {
 
+    /**
+     * Chars a read at most: a render process runs without on-stack replacement, so the JDK's copy
+     * loop behind a read is compiled only after a hundred calls (docs/speed.md, "Where a cold process's time goes").
+     */
+    private static final int READ = 4096;
+
     private final Reader in;
     private final MemoryGate memory;
     /** Buffered text: the current line and what follows it; only the current chunk is held. */
@@ -71,7 +77,7 @@ final class ObjLines {
             length = kept;
             nextStart = 0;
             scan = kept;
-            int n = in.read(text, length, text.length - length);
+            int n = in.read(text, length, Math.min(READ, text.length - length));
             if (n < 0) {
                 endOfInput = true;
             } else {
