@@ -269,7 +269,8 @@ final class PreviewSession {
         KeptFilm.Kept kept = keptFilmFor(revision, passes);
         Film film = null;
         MemoryBudget.Reservation passMemory = null;
-        CompiledScene lit = null; // with the light buffers its final pass pays for, from the first pass of a quarter of the pixels
+        // with the light buffers its final pass pays for, from the first pass of a quarter of the pixels on
+        CompiledScene lit = null;
         try {
             for (PreviewPass pass : passes) {
                 // the first, coarsest pass is shown even if a newer revision is waiting: it costs little
@@ -299,12 +300,13 @@ final class PreviewSession {
                         lit = renderer.lit(scene, passMemory);
                         reuse.lit(scene, lit);
                     }
-                    frame = renderer.render(lit != null ? lit : scene, pass, film, intoKept ? kept.paths() : null, request.revision(),
-                            next.receivedNanos(), first ? this::closed : this::superseded);
+                    frame = renderer.render(lit != null ? lit : scene, pass, film, intoKept ? kept.paths() : null,
+                            request.revision(), next.receivedNanos(), first ? this::closed : this::superseded);
                 } catch (RenderCancelledException e) {
                     return;
                 } catch (RenderTimeExceededException | InvalidSceneException | MemoryBusyException e) {
-                    // past the render time budget (422), it could never fit the render memory (400), or it is taken (503)
+                    // past the render time budget (422), it could never fit the render memory (400), or it is
+                    // taken right now (503)
                     output.text(renderer.problem(request.revision(), e));
                     return;
                 }
