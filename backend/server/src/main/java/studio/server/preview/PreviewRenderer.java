@@ -3,7 +3,9 @@ package studio.server.preview;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.function.BooleanSupplier;
 
@@ -12,10 +14,16 @@ import org.springframework.http.ProblemDetail;
 import org.springframework.web.ErrorResponse;
 
 import studio.engine.image.ImageEncoder;
+import studio.engine.memory.MemoryGate;
 import studio.engine.render.Film;
 import studio.engine.render.PixelPaths;
+import studio.engine.render.RenderListener;
+import studio.engine.render.RenderRequest;
 import studio.engine.render.RenderResult;
 import studio.engine.render.RenderSettings;
+import studio.engine.scene.MeshLightBuffers;
+import studio.engine.scene.Scene;
+import studio.engine.scene.SceneObject;
 import studio.server.render.RenderBudget;
 import studio.server.render.RenderMetrics;
 import studio.server.scene.compiling.CompiledScene;
@@ -24,6 +32,7 @@ import studio.server.scene.compiling.SceneCompiler;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
+import studio.server.system.MemoryBusyException;
 import tools.jackson.databind.JsonNode;
 import tools.jackson.databind.json.JsonMapper;
 
@@ -106,6 +115,42 @@ final class PreviewRenderer {
     }
 
     /**
+     * {@code scene} with its meshes given the light buffers a render at its own settings pays for
+     * ({@link MeshLightBuffers}), their memory asked of {@code memory}; itself if none was built.
+     * A revision assembled from the last gives a moved mesh only a one-sample render's, so the
+     * first frames do not wait for buffers that only the finer passes win back (PatchRevisionBench
+     * {@code --mesh}: building them was about three quarters of compiling a moved mesh's revision).
+     */
+    CompiledScene lit(CompiledScene scene, MemoryBudget.Reservation memory) {
+        Scene kept = scene.scene();
+        List<SceneObject> objects = new ArrayList<>(kept.objectCount());
+        for (int i = 0; i < kept.objectCount(); i++) {
+            objects.add(new SceneObject(kept.shape(i), kept.material(i)));
+        }
+        MemoryGate gate = new MemoryGate() {
+            @Override
+            public void reserve(long bytes) {
+                if (!memory.tryGrow(bytes)) {
+                    throw new MemoryBusyException();
+                }
+            }
+
+            @Override
+            public boolean tryReserve(long bytes) {
+                return memory.tryGrow(bytes);
+            }
+        };
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects, kept.lights(), scene.settings().cameraSamples(), gate);
+        for (int i = 0; i < lit.size(); i++) {
+            if (lit.get(i).shape() != kept.shape(i)) {
+                return new CompiledScene(Scene.reusing(kept, kept.camera(), lit, kept.lights(), kept.background(),
+                        kept.ambient()), scene.settings(), scene.format(), scene.quality(), scene.fileStem());
+            }
+        }
+        return scene;
+    }
+
+    /**
      * Renders one pass into {@code film} (of the pass's settings, its memory reserved by
      * {@link #reserve}), leaving out the pixels known to {@code paths} (null: none) and recording
      * the others' there, and encodes the pass's pixels as a frame message.
@@ -115,8 +160,10 @@ final class PreviewRenderer {
      */
     byte[] render(CompiledScene scene, PreviewPass pass, Film film, PixelPaths paths, long revision,
                   long receivedNanos, BooleanSupplier superseded) {
-        RenderResult rendered = budget.render(passScene(scene, pass.settings()).request()
-                .into(film, pass.pixels(), pass.except()).recording(paths).cancelledWhen(superseded));
+        // into the pass's film itself: a request of the scene's own (CompiledScene.request) would first
+        // allocate a film of the view's size for nothing, 7.4 MB at 640x480 for every pass of every revision
+        RenderResult rendered = budget.render(new RenderRequest(scene.scene(), pass.settings(), film, pass.pixels(),
+                pass.except(), paths, RenderListener.NONE, superseded));
         budget.metrics().rendered(RenderMetrics.Kind.LIVE_VIEW, rendered);
         try {
             ByteArrayOutputStream image = new ByteArrayOutputStream();

@@ -19,6 +19,7 @@ import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.format.InvalidSceneException;
 import studio.server.system.IntakeMemory;
 import studio.server.system.MemoryBudget;
+import studio.server.system.MemoryBusyException;
 import tools.jackson.databind.JsonNode;
 
 /**
@@ -69,6 +70,12 @@ final class PreviewSession {
      * before it. The worker reads them all before a revision's passes, so only those of one read wait.
      */
     static final int MAX_PENDING = 32;
+
+    /**
+     * The passes of lattices this fine and finer render with the light buffers of the scene's final
+     * pass ({@link PreviewRenderer#lit}); the coarser ones, a sixteenth of the pixels, do without.
+     */
+    static final int LIT_STEP = 2;
 
     private static final String BUSY = "the server is reading or rendering as much as its memory allows right now; the "
             + "view renders again with your next change";
@@ -262,6 +269,8 @@ final class PreviewSession {
         KeptFilm.Kept kept = keptFilmFor(revision, passes);
         Film film = null;
         MemoryBudget.Reservation passMemory = null;
+        // with the light buffers its final pass pays for, from the first pass of a quarter of the pixels on
+        CompiledScene lit = null;
         try {
             for (PreviewPass pass : passes) {
                 // the first, coarsest pass is shown even if a newer revision is waiting: it costs little
@@ -287,12 +296,17 @@ final class PreviewSession {
                         }
                         film = intoKept ? kept.film() : new Film(pass.settings().width(), pass.settings().height());
                     }
-                    frame = renderer.render(scene, pass, film, intoKept ? kept.paths() : null, request.revision(),
-                            next.receivedNanos(), first ? this::closed : this::superseded);
+                    if (lit == null && pass.pixels().step() <= LIT_STEP) {
+                        lit = renderer.lit(scene, passMemory);
+                        reuse.lit(scene, lit);
+                    }
+                    frame = renderer.render(lit != null ? lit : scene, pass, film, intoKept ? kept.paths() : null,
+                            request.revision(), next.receivedNanos(), first ? this::closed : this::superseded);
                 } catch (RenderCancelledException e) {
                     return;
-                } catch (RenderTimeExceededException | InvalidSceneException e) {
-                    // past the render time budget (422), or it could never fit the render memory (400)
+                } catch (RenderTimeExceededException | InvalidSceneException | MemoryBusyException e) {
+                    // past the render time budget (422), it could never fit the render memory (400), or it is
+                    // taken right now (503)
                     output.text(renderer.problem(request.revision(), e));
                     return;
                 }

@@ -108,6 +108,18 @@ final class SceneReuse implements AutoCloseable {
         return new Revision(scene, origins);
     }
 
+    /**
+     * The kept scene becomes {@code lit} (the same scene, its meshes given light buffers) if it is
+     * still {@code compiled}, so that the next revision's unchanged meshes keep their buffers.
+     */
+    void lit(CompiledScene compiled, CompiledScene lit) {
+        Kept last = kept.get();
+        if (last != null && last.compiled() == compiled && lit != compiled) {
+            kept.compareAndSet(last, new Kept(last.json(), last.objects(), last.width(), last.height(), lit,
+                    last.memory()));
+        }
+    }
+
     /** Gives the kept scene's memory back; nothing is kept from now on. */
     @Override
     public void close() {
@@ -141,10 +153,13 @@ final class SceneReuse implements AutoCloseable {
     /**
      * The scene of {@code frame} (its camera, lights and settings) with these objects, its trees
      * refitted from {@code last}'s where the objects are its own but a few ({@link Scene#reusing}).
+     * A changed mesh gets the light buffers a one-sample render of the view pays for, not those of
+     * the final pass: the view's first frames come before them ({@link PreviewRenderer#lit}).
      */
     private static CompiledScene assemble(CompiledScene frame, Scene last, List<SceneObject> objects, MemoryGate memory) {
         Scene scene = frame.scene();
-        List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), frame.settings().cameraSamples(), memory);
+        long oneSample = (long) frame.settings().width() * frame.settings().height();
+        List<SceneObject> lit = MeshLightBuffers.forRender(objects, scene.lights(), oneSample, memory);
         return new CompiledScene(Scene.reusing(last, scene.camera(), lit, scene.lights(), scene.background(), scene.ambient()),
                 frame.settings(), frame.format(), frame.quality(), frame.fileStem());
     }
