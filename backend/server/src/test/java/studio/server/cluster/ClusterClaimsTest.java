@@ -25,7 +25,7 @@ import com.hazelcast.spi.impl.eventservice.EventRegistration;
 import studio.engine.render.RenderRequest;
 import studio.engine.render.Renderer;
 import studio.server.Await;
-import studio.server.job.JobRequest;
+import studio.server.job.JobRequests;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
 import studio.server.render.ImageFiles;
@@ -113,7 +113,7 @@ class ClusterClaimsTest {
             member.onTaken = task -> awaitQuietly(deaf);
         }
         byte[] json = ClusterJobsTest.SCENE.getBytes(StandardCharsets.UTF_8);
-        String id = owner.jobs.submit(JobRequest.of(compile()).withJson(json)).id();
+        String id = owner.jobs.submit(JobRequests.of(compile(), json)).id();
         String tiles = ClusterMaps.tiles(id);
         Await.until("the coordinator to listen for results", ClusterJobsTest.WAIT_MILLIS,
                 () -> !registrations(owner.hazelcast, tiles).isEmpty());
