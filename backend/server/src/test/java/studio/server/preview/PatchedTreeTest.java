@@ -12,11 +12,6 @@ import org.junit.jupiter.api.Test;
 
 import studio.engine.mesh.MeshShapes;
 import studio.engine.mesh.ObjWriter;
-import studio.engine.render.Film;
-import studio.engine.render.RenderRequest;
-import studio.engine.render.RenderSettings;
-import studio.engine.render.Renderer;
-import studio.engine.sampler.Sampler;
 import studio.engine.scene.Scene;
 import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.CompiledScene;
@@ -73,17 +68,7 @@ class PatchedTreeTest {
     }
 
     private static double[] pixels(Scene scene) {
-        Film film = Renderer.render(RenderRequest.of(scene, new RenderSettings(WIDTH, HEIGHT, Sampler.of("jittered", 1), 4, 2,
-                7L, RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0))).film();
-        double[] all = new double[WIDTH * HEIGHT * 3];
-        for (int y = 0, k = 0; y < HEIGHT; y++) {
-            for (int x = 0; x < WIDTH; x++) {
-                for (int c = 0; c < 3; c++) {
-                    all[k++] = film.get(x, y, c);
-                }
-            }
-        }
-        return all;
+        return PatchedView.pixels(scene, WIDTH, HEIGHT, 1);
     }
 
     private static String move(int object, String field, double x, double y, double z) {

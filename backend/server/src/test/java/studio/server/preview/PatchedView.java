@@ -6,6 +6,12 @@ import java.util.function.Function;
 import tools.jackson.databind.JsonNode;
 
 import studio.engine.memory.MemoryGate;
+import studio.engine.render.Film;
+import studio.engine.render.RenderRequest;
+import studio.engine.render.RenderSettings;
+import studio.engine.render.Renderer;
+import studio.engine.sampler.Sampler;
+import studio.engine.scene.Scene;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.system.MemoryBudget;
 
@@ -75,6 +81,21 @@ final class PatchedView implements AutoCloseable {
 
     private static PreviewRequest parse(String message) {
         return PreviewRequest.parse(message.getBytes(StandardCharsets.UTF_8), 2048, 2048);
+    }
+
+    /** Every channel of {@code scene} rendered at {@code width} x {@code height}, jittered at {@code samples}, seed 7. */
+    static double[] pixels(Scene scene, int width, int height, int samples) {
+        Film film = Renderer.render(RenderRequest.of(scene, new RenderSettings(width, height, Sampler.of("jittered", samples), 4,
+                2, 7L, RenderSettings.DEFAULT_MIN_PATH_WEIGHT, 0))).film();
+        double[] all = new double[width * height * 3];
+        for (int y = 0, k = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                for (int c = 0; c < 3; c++) {
+                    all[k++] = film.get(x, y, c);
+                }
+            }
+        }
+        return all;
     }
 
     @Override
