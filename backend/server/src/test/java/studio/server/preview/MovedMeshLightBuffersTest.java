@@ -10,8 +10,6 @@ import java.util.function.Function;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
-import studio.engine.mesh.MeshShapes;
-import studio.engine.mesh.ObjWriter;
 import studio.engine.scene.Scene;
 import studio.server.render.RenderBudget;
 import studio.server.scene.compiling.CompileRequest;
@@ -43,17 +41,12 @@ class MovedMeshLightBuffersTest {
     }
 
     private static String scene() {
-        StringBuilder knot = new StringBuilder();
-        try {
-            ObjWriter.write(MeshShapes.torusKnot(2, 3, 60, 8), knot);
-        } catch (java.io.IOException e) {
-            throw new java.io.UncheckedIOException(e);
-        }
+        String knot = PatchedView.knotObj();
         return "{\"render\": {\"samples\": 16, \"maxDepth\": 4},"
                 + "\"camera\": {\"position\": [0, 3, 9], \"lookAt\": [0, 1, 0], \"fov\": 45},"
                 + "\"lights\": [{\"type\": \"point\", \"position\": [4, 7, 5]}, {\"type\": \"point\", \"position\": [-5, 4, 3],"
                 + " \"intensity\": 0.4}],"
-                + "\"objects\": [{\"type\": \"mesh\", \"obj\": \"" + knot.toString().replace("\n", "\\n") + "\", \"position\": [0, 1.2, 0],"
+                + "\"objects\": [{\"type\": \"mesh\", \"obj\": \"" + knot + "\", \"position\": [0, 1.2, 0],"
                 + " \"scale\": 0.6, \"material\": {\"type\": \"plastic\", \"color\": \"#c0a060\"}},"
                 + "{\"type\": \"sphere\", \"center\": [1.5, 0.5, 1], \"radius\": 0.5, \"material\": {\"type\": \"mirror\"}},"
                 + "{\"type\": \"plane\"}]}";

@@ -10,8 +10,6 @@ import java.util.function.Function;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
-import studio.engine.mesh.MeshShapes;
-import studio.engine.mesh.ObjWriter;
 import studio.engine.scene.Scene;
 import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.CompiledScene;
@@ -39,19 +37,14 @@ class PatchedTreeTest {
 
     /** A mirror ball in front, a knot mesh, {@code n} small spheres behind them, a floor, two lights. */
     private static String scene(int n) {
-        StringBuilder knot = new StringBuilder();
-        try {
-            ObjWriter.write(MeshShapes.torusKnot(2, 3, 60, 8), knot);
-        } catch (java.io.IOException e) {
-            throw new java.io.UncheckedIOException(e);
-        }
+        String knot = PatchedView.knotObj();
         Random random = new Random(45);
         StringBuilder json = new StringBuilder("{\"render\": {\"samples\": 1, \"maxDepth\": 4},"
                 + "\"camera\": {\"position\": [0, 3, 9], \"lookAt\": [0, 1, 0], \"fov\": 45},"
                 + "\"lights\": [{\"type\": \"point\", \"position\": [4, 7, 5]}, {\"type\": \"point\", \"position\": [-5, 4, 3],"
                 + " \"intensity\": 0.4}],"
                 + "\"objects\": [{\"type\": \"sphere\", \"center\": [0, 0.8, 2.5], \"radius\": 0.6, \"material\": {\"type\": \"mirror\"}},"
-                + "{\"type\": \"mesh\", \"obj\": \"" + knot.toString().replace("\n", "\\n") + "\", \"position\": [1.5, 1, 1],"
+                + "{\"type\": \"mesh\", \"obj\": \"" + knot + "\", \"position\": [1.5, 1, 1],"
                 + " \"scale\": 0.3, \"material\": {\"type\": \"metal\", \"color\": \"#c0a060\"}}");
         String[] materials = {"chalk", "plastic", "metal"};
         for (int i = 2; i < n; i++) {

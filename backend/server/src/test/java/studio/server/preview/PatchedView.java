@@ -1,11 +1,15 @@
 package studio.server.preview;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.util.function.Function;
 
 import tools.jackson.databind.JsonNode;
 
 import studio.engine.memory.MemoryGate;
+import studio.engine.mesh.MeshShapes;
+import studio.engine.mesh.ObjWriter;
 import studio.engine.render.Film;
 import studio.engine.render.RenderRequest;
 import studio.engine.render.RenderSettings;
@@ -81,6 +85,17 @@ final class PatchedView implements AutoCloseable {
 
     private static PreviewRequest parse(String message) {
         return PreviewRequest.parse(message.getBytes(StandardCharsets.UTF_8), 2048, 2048);
+    }
+
+    /** A 960-triangle torus knot's OBJ text, escaped for a JSON string: the patch tests' mesh. */
+    static String knotObj() {
+        StringBuilder knot = new StringBuilder();
+        try {
+            ObjWriter.write(MeshShapes.torusKnot(2, 3, 60, 8), knot);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return knot.toString().replace("\n", "\\n");
     }
 
     /** Every channel of {@code scene} rendered at {@code width} x {@code height}, jittered at {@code samples}, seed 7. */

@@ -9,8 +9,6 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
 import studio.engine.geometry.TriangleMesh;
-import studio.engine.mesh.MeshShapes;
-import studio.engine.mesh.ObjWriter;
 import studio.engine.render.Film;
 import studio.engine.render.RenderSettings;
 import studio.engine.render.RenderRequest;
@@ -39,12 +37,7 @@ class ScenePatchReuseTest {
     }
 
     private static String scene() {
-        StringBuilder knot = new StringBuilder();
-        try {
-            ObjWriter.write(MeshShapes.torusKnot(2, 3, 60, 8), knot);
-        } catch (java.io.IOException e) {
-            throw new java.io.UncheckedIOException(e);
-        }
+        String knot = PatchedView.knotObj();
         StringBuilder spheres = new StringBuilder();
         for (int i = 0; i < 40; i++) {
             spheres.append(",{\"type\": \"sphere\", \"center\": [%s, %s, -1], \"radius\": 0.1, \"material\": {\"type\": \"plastic\"}}"
@@ -57,7 +50,7 @@ class ScenePatchReuseTest {
                  "objects": [{"type": "plane"},
                              {"type": "mesh", "obj": "%s", "position": [0, 0.8, 0], "scale": 0.4,
                               "material": {"type": "metal", "color": "#c0a060"}}%s]}
-                """.formatted(knot.toString().replace("\n", "\\n"), spheres);
+                """.formatted(knot, spheres);
     }
 
     private static PatchedView view() {
