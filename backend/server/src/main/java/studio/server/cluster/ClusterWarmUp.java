@@ -17,6 +17,7 @@ import studio.server.job.JobStatus;
 import studio.server.job.TileEvent;
 import studio.server.job.TilePng;
 import studio.server.render.ImageFiles;
+import studio.server.render.RenderMemory;
 import studio.server.scene.compiling.CompileRequest;
 import studio.server.scene.compiling.CompiledScene;
 import studio.server.scene.compiling.SceneCompiler;
@@ -77,13 +78,26 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
         }
     }
 
-    /** Renders the scene {@value #ROUNDS} times through the cluster, or until the limit has passed. */
+    /**
+     * Renders the scene {@value #ROUNDS} times through the cluster, or until the limit has passed; none
+     * while other work holds the render memory it reserves first, as a request does.
+     */
     Outcome run() {
         long start = System.nanoTime();
         long deadline = start + limit.toNanos();
         String memberId = data.member().getCluster().getLocalMember().getUuid().toString();
         ClusterData own = data.named("studio-warm-up-" + memberId + "-");
         CompiledScene scene = compiler.compile(CompileRequest.of(read()));
+        try (MemoryBudget.Reservation held = memory.tryReserve(RenderMemory.estimate(scene))) {
+            if (held == null) { // other work holds the render memory: it goes first
+                return new Outcome(0, 0, (System.nanoTime() - start) / 1_000_000);
+            }
+            return run(own, memberId, scene, start, deadline);
+        }
+    }
+
+    /** The rounds, their render memory reserved. */
+    private Outcome run(ClusterData own, String memberId, CompiledScene scene, long start, long deadline) {
         int tiles = 0, rounds = 0;
         TileWorkers workers = new TileWorkers(own, new JobScenes(own.scenes(), compiler, memory), 1);
         TileFarm farm = new TileFarm(own, workers, id -> false);

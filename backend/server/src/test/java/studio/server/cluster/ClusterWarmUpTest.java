@@ -96,4 +96,23 @@ class ClusterWarmUpTest {
                     .noneMatch(structure -> structure.startsWith("studio-warm-up-"));
         }
     }
+
+    @Test
+    void rendersNothingWhileOtherWorkHoldsTheRenderMemory() throws Exception {
+        start();
+        MemoryBudget memory = new MemoryBudget(64L << 20);
+        try (MemoryBudget.Reservation taken = memory.tryReserve(memory.capacity())) {
+            TestMember member = members.get(0);
+            ClusterWarmUp.Outcome outcome = new ClusterWarmUp(member.data, member.compiler, memory,
+                    Duration.ofMinutes(2)).run();
+
+            assertThat(outcome.rounds()).as("rounds without the render memory reserved first").isZero();
+            assertThat(outcome.tiles()).isZero();
+        }
+        assertThat(memory.reserved()).as("nothing left reserved").isZero();
+        for (TestMember member : members) {
+            assertThat(member.hazelcast.getDistributedObjects()).map(DistributedObject::getName)
+                    .noneMatch(structure -> structure.startsWith("studio-warm-up-"));
+        }
+    }
 }
