@@ -1,5 +1,5 @@
 # syntax=docker/dockerfile:1
-# Three stages: Node builds the editor, Maven builds the jar (JDK 17), a JDK 25 JRE runs it as a non-root user.
+# Three stages: Node builds the editor, the Maven wrapper builds the jar (JDK 17), a JDK 25 JRE runs it as a non-root user.
 
 FROM node:20-bookworm-slim AS editor
 WORKDIR /src/frontend
@@ -8,12 +8,14 @@ RUN npm ci --no-audit --no-fund
 COPY frontend/ ./
 RUN npm run build
 
-FROM maven:3.9-eclipse-temurin-17 AS jar
+FROM eclipse-temurin:17-jdk AS jar
 WORKDIR /src
+COPY mvnw ./
+COPY .mvn/ .mvn/
 COPY backend/ backend/
 COPY scenes/ scenes/
 COPY --from=editor /src/frontend/dist frontend/dist
-RUN mvn -B -q -f backend/pom.xml package -DskipTests -DskipFrontend
+RUN ./mvnw -B -q -f backend/pom.xml package -DskipTests -DskipFrontend
 
 # JDK 25 with the Vector API's incubator module (a boot module, so its JRE has it; the java
 # -version below fails the build if not), so the engine can test four boxes at once (WideBoxTests)

@@ -39,7 +39,7 @@ fi
 
 if [[ ! -f "$jar" ]]; then
   echo "building $jar"
-  mvn -B -q -f "$root/backend/pom.xml" package -pl server -am -DskipTests -DskipFrontend
+  "$root/mvnw" -B -q -f "$root/backend/pom.xml" package -pl server -am -DskipTests -DskipFrontend
 fi
 
 members="127.0.0.1:$cluster,127.0.0.1:$((cluster + 1)),127.0.0.1:$((cluster + 2))"

@@ -36,7 +36,7 @@ fi
 if [ ! -f "$JAR" ] || [ -n "$(find backend/engine/src backend/server/src backend/*/pom.xml backend/pom.xml scenes \
       -newer "$JAR" -type f -print -quit)" ]; then
   echo "building $JAR"
-  mvn -B -q -Dstyle.color=never -f backend/pom.xml package -pl server -am -DskipTests -DskipFrontend
+  ./mvnw -B -q -Dstyle.color=never -f backend/pom.xml package -pl server -am -DskipTests -DskipFrontend
 fi
 
 # --- the service, on a free port, with small limits ------------------------------------------------

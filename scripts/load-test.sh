@@ -21,7 +21,7 @@ log="$root/backend/server/target/load-test-server.log"
 
 if [[ ! -f "$jar" ]]; then
   echo "building $jar"
-  mvn -B -q -f "$root/backend/pom.xml" package -pl server -am -DskipTests -DskipFrontend
+  "$root/mvnw" -B -q -f "$root/backend/pom.xml" package -pl server -am -DskipTests -DskipFrontend
 fi
 
 server_args=(--server.port=0)

@@ -3,7 +3,7 @@
 members, alternated ROUNDS times (default 3): start-up (Spring's "Started" figure and until
 /actuator/health answers), 25 jobs of the still life at 320x240 and 4 samples one after another (the
 median latency of the last 20, submit to done), then heap used after a full GC (/actuator/prometheus),
-resident memory and threads. Needs the jar (mvn -B -q -f backend/pom.xml package -DskipTests), jcmd,
+resident memory and threads. Needs the jar (./mvnw -B -q -f backend/pom.xml package -DskipTests), jcmd,
 and HTTP port 8395 and cluster port 5795 free.
 
     scripts/member-cost.py [ROUNDS]

@@ -32,7 +32,7 @@ jobs_count=5
 
 if [[ ! -f "$jar" ]]; then
   echo "building $jar"
-  mvn -B -q -f "$root/backend/pom.xml" package -pl server -am -DskipTests -DskipFrontend
+  "$root/mvnw" -B -q -f "$root/backend/pom.xml" package -pl server -am -DskipTests -DskipFrontend
 fi
 
 pids=(0 0 0)
