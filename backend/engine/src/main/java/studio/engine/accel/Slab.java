@@ -14,19 +14,12 @@ import studio.engine.math.Fp;
  * ({@link #nanFree}). For most rays none can, and the largest near and smallest far distance are
  * then taken with {@code Math.max} and {@code Math.min} instead of a comparison and a branch each:
  * the same values, without branches the processor mispredicts about half the time in a deep tree
- * (which of three slabs a ray enters last is a coin toss from box to box). Measured on one thread
- * (thread CPU time, 640x480 primary rays plus a shadow ray per light, best of 12 per run, runs
- * alternated): 10,000 spheres 257 to 286 ms before, 220 to 225 after; a 50,000-triangle mesh 151
- * to 157 before, 126 to 138 after. In the editor's scenes of 6 to 16 objects, whose trees are a
- * few levels deep, runs disagreed (from 8 % faster to 15 % slower) on a busy machine.
+ * (which of three slabs a ray enters last is a coin toss from box to box; {@code studio-bench.jar kernel}).
  *
  * <p>Whether the ray meets the box is then not asked of those two distances, at the end of the
  * chain of {@code Math.max} and {@code Math.min}, but by thirteen independent comparisons of the
  * slabs' bounds ({@link #overlap}): the same answer, ready sooner, and a traversal branches on it
- * at every box. Whole {@code bin/studio} processes, 800x600, 16 samples, 2 threads, 6 alternated
- * pairs: a 100,000-triangle mesh 0.91 of the time, 10,000 spheres 0.93, 8,000 spheres over a floor
- * 0.93, glass-pattern 0.98; at one sample the mesh 0.93 and glass-pattern 0.98. The images are the
- * same to the bit.
+ * at every box (whole processes, docs/speed.md). The images are the same to the bit.
  */
 public final class Slab {
 

@@ -18,10 +18,9 @@ import studio.engine.memory.MemoryGate;
  * <p>Where the Vector API box test is on ({@link WideBoxTests#vectorized}: JDK 20 or newer with
  * {@code --add-modules jdk.incubator.vector} and the optimising compiler) both walks go through a
  * {@link WideBvh} collapsed from the binary tree instead, eight boxes tested at once, and the same
- * {@link Leaves} calls: on JDK 25 the kernel benchmark ({@code studio-bench.jar kernel},
- * one thread, rays a CPU second) ran 10,000 spheres 1.90 times and a 104,000-triangle mesh 1.37
- * times as fast so, and {@code studio-bench.jar wide} found the scalar (four-)wide walk no faster than
- * this binary one, so a scalar JVM keeps the binary walk (docs/speed.md). The float box test keeps every
+ * {@link Leaves} calls, faster in the kernel benchmark ({@code studio-bench.jar kernel}); a scalar
+ * wide walk was no faster than this binary one ({@code studio-bench.jar wide}), so a scalar JVM
+ * keeps the binary walk (docs/speed.md). The float box test keeps every
  * node the double one keeps ({@link WideRay}), and the leaves decide ties by declaration order, not
  * by the order they are met, so both walks find the same hits and renders stay bit-identical.
  * A tree of fewer than {@link #WIDE_MIN_SLOTS} leaf slots, and {@link #slotsIn} always, walk the binary tree.
@@ -33,8 +32,8 @@ public final class Traversal {
     private static final WideBoxTest BOXES = WideBoxTests.get();
     /**
      * Leaf slots a tree needs for its walk to go wide: in a tree of a few objects setting up the
-     * float ray costs more than the few double box tests it spares (the still life's 5 objects:
-     * 16.4 M rays/s a CPU second wide against 20.9 binary, {@code compare.sh} on JDK 25).
+     * float ray costs more than the few double box tests it spares (the still life in
+     * {@code backend/bench/embree/compare.sh} on JDK 25).
      */
     static final int WIDE_MIN_SLOTS = 16;
 

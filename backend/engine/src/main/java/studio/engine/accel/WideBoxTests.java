@@ -6,9 +6,8 @@ import java.lang.invoke.MethodType;
 /**
  * Chooses the {@link WideBoxTest} once, when this class is first used (Lucene's
  * {@code VectorizationProvider}): the Vector API implementation when the JVM is of feature version
- * 20 or newer (JDK 17's incubator API allocated some 720 bytes a ray in {@code WideWalkTest}; JDK
- * 25's nothing, and its walks took 0.32-0.71 of the binary walk's CPU time in
- * {@code WideBvhBenchmark}'s scenes, docs/speed.md), has the
+ * 20 or newer (JDK 17's incubator API allocated on every ray in {@code WideWalkTest}, JDK 25's
+ * nothing, and its walks are faster in {@code WideBvhBenchmark}, docs/speed.md), has the
  * {@code jdk.incubator.vector} module (run with {@code --add-modules jdk.incubator.vector}) and
  * has its optimising compiler (not C1 alone, {@code -XX:TieredStopAtLevel=1}, where every vector
  * operation is a call and an allocation); {@link ScalarBoxTest} everywhere else. The system

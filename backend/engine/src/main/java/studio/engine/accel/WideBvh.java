@@ -6,8 +6,7 @@ import studio.engine.memory.MemoryGate;
  * An eight-wide bounding volume hierarchy collapsed from a binary {@link Bvh} (Embree's BVH8): each
  * node holds the boxes of up to eight children, in float and structure-of-arrays form, so that one
  * {@link WideBoxTest} tests all eight with one ray in a few 256-bit vector instructions. Eight
- * rather than four: the kernel benchmark ({@code studio-bench.jar kernel}, JDK 25) spent 0.88 of
- * the CPU time on 10,000 spheres and 0.92-0.94 on the mesh with eight lanes than with four.
+ * rather than four: less CPU time in the kernel benchmark ({@code studio-bench.jar kernel}, JDK 25).
  *
  * <p>Node {@code i} keeps its children's boxes at {@code boxes()[48i .. 48i+47]}: minX of the eight
  * lanes, then minY, minZ, maxX, maxY, maxZ (eight floats each; offsets {@link #MIN_X} ..

@@ -10,13 +10,9 @@ import studio.engine.sampler.PixelRandom;
  * of ...) are mostly not traced. The split itself stays: a branch at or above the threshold is
  * always traced, so at normal incidence both the refraction and the 4% reflection are.
  *
- * <p>Measured on the two glass scenes (2026-12-03, warm, 2 threads, against a 1,024-sample
- * reference of the full split), threshold 0 / 0.02 / 0.05 / 0.1: at 16 jittered samples
- * glass-pattern (400x300) 483 / 412 / 384 / 358 ms at RMSE 0.00574 / 0.00574 / 0.00576 / 0.00586,
- * and with the default adaptive sampling at 0.05 194 / 172 / 170 / 190 ms at 0.00298 / 0.00302 /
- * 0.00316 / 0.00358. Above 0.05 the noise it adds costs the adaptive sampler more samples than the
- * roulette saves; choosing one branch by its Fresnel weight (a threshold of 1) tripled the
- * 16-sample error on the bench's glass.
+ * <p>{@link #BELOW} is where time against error was best on glass-pattern and the bench's glass
+ * (docs/speed.md): above it the noise it adds costs the adaptive sampler more samples than the
+ * roulette saves, and choosing one branch by its Fresnel weight tripled the 16-sample error.
  *
  * <p>The numbers are drawn from a stream of their own per pixel sample, seeded from the pixel, the
  * sample's index and the render's seed, and only when a branch is weak: a pixel comes out the same

@@ -71,9 +71,8 @@ public final class RenderService implements Drainable, AutoCloseable {
 
     /**
      * As {@link #start(byte[])}; the render also stops when {@code client} finds its client gone.
-     * The slot is taken before the scene is read, so that a refused request costs no reading: 16
-     * clients sending 100,000 boxes at once to 2 slots got their 503s after 20-25 s while every
-     * scene was read first, after 0.3-0.7 s with the slot first. The price, as for jobs: while every
+     * The slot is taken before the scene is read, so that a refused request costs no reading (many
+     * clients sending large scenes at once to few slots get their 503s at once). The price, as for jobs: while every
      * slot is busy, an invalid scene, too, is answered 503 first, and its 400 comes on the retry.
      * The compile draws on the request's {@code intake}, which hands it over to the render's memory.
      */

@@ -21,14 +21,11 @@ import tools.jackson.databind.node.ObjectNode;
  * Hibernate Validator), which names every problem. So it may only ever be stricter than the full
  * path, never looser: {@code FastPathBinderTest} checks that on every example scene and on
  * thousands of mutated ones, and that it returns the same records. It makes the records through
- * their constructors as {@link SceneConstraints} calls them, not by reflection: in a cold command
- * line, reflection's first call of each record's constructor (method handles spun at run time) took
- * 30-37 ms of a 2.4 KB scene's 32-39 ms of binding.
+ * their constructors as {@link SceneConstraints} calls them, not by reflection, whose first call of
+ * each record's constructor (method handles spun at run time) took most of a cold binding.
  *
- * <p>Why: reading a 10,000-sphere scene through Jackson's data binding and Hibernate Validator in a
- * cold JVM took about 0.5 s of a 2.9 s command-line render, and booting the validator 0.2 s more.
- * It pays in the warm server too, where the live view reads the whole scene at every edit: the
- * 10,000 spheres' 1.1 MB read into validated records in 14.8 ms against 35.9 on the full path.
+ * <p>Why: Jackson's data binding and Hibernate Validator take a large share of a cold command-line
+ * render of a large scene, and of a warm read of one ({@code SceneTreeBench} in the server's tests).
  *
  * <p>It knows the constraints the scene records use ({@link FieldRule}): a record field with any
  * other constraint fails {@code SceneConstraintsTest}, which also fails when the table is out of date
