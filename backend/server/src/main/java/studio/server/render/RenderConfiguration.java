@@ -1,6 +1,9 @@
 package studio.server.render;
 
+import io.micrometer.core.instrument.FunctionCounter;
+import io.micrometer.core.instrument.Gauge;
 import io.micrometer.core.instrument.MeterRegistry;
+import io.micrometer.core.instrument.binder.MeterBinder;
 import org.springframework.context.annotation.Bean;
 import org.springframework.context.annotation.Configuration;
 
@@ -8,7 +11,7 @@ import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.MemoryBudget;
 import studio.server.system.StudioProperties;
 
-/** The render budget every render runs within (its renders counted in the service's metrics), the synchronous render service (POST /api/render), and the start-up warm-up. */
+/** The render budget every render runs within (its renders counted in the service's metrics), the synchronous render service (POST /api/render) with its metrics, and the start-up warm-up. */
 @Configuration(proxyBeanMethods = false)
 class RenderConfiguration {
 
@@ -25,5 +28,21 @@ class RenderConfiguration {
     @Bean(destroyMethod = "close")
     RenderService renderService(SceneCompiler compiler, StudioProperties properties, RenderBudget budget) {
         return new RenderService(compiler, properties.concurrentRenders(), properties.renderThreads(), budget);
+    }
+
+    /**
+     * The synchronous renders in the metrics: studio_render_requests_active (running or about to
+     * run, at most studio.concurrent-renders) and studio_render_requests_cancelled_total (stopped
+     * because their client went away, or the service stopped).
+     */
+    @Bean
+    MeterBinder renderRequestMetrics(RenderService renders) {
+        return registry -> {
+            Gauge.builder("studio.render.requests.active", renders, RenderService::active)
+                    .description("Synchronous renders (POST /api/render) running or about to run").register(registry);
+            FunctionCounter.builder("studio.render.requests.cancelled", renders, RenderService::cancelled)
+                    .description("Synchronous renders stopped because their client went away or the service stopped")
+                    .register(registry);
+        };
     }
 }

@@ -107,7 +107,7 @@ public final class MemoryBudget {
         return reservation;
     }
 
-    /** How many yielding reservations are held. */
+    /** How many yielding reservations are held (studio_render_memory_kept in the metrics). */
     public synchronized int yieldingCount() {
         return yielding.size();
     }

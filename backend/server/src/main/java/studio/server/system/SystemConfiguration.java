@@ -46,7 +46,8 @@ class SystemConfiguration {
 
     /**
      * The render memory in the metrics: studio_render_memory_capacity_bytes, _reserved_bytes and
-     * _free_bytes (what renders, jobs, live views and request bodies hold, and what is left).
+     * _free_bytes (what renders, jobs, live views and request bodies hold, and what is left), and
+     * studio_render_memory_kept (how many holdings are only kept, and yield).
      */
     @Bean
     MeterBinder renderMemoryMetrics(MemoryBudget memory) {
@@ -58,6 +59,9 @@ class SystemConfiguration {
                     .register(registry);
             Gauge.builder("studio.render.memory.free", memory, m -> m.capacity() - m.reserved()).baseUnit("bytes")
                     .description("Render memory not held").register(registry);
+            Gauge.builder("studio.render.memory.kept", memory, MemoryBudget::yieldingCount)
+                    .description("Scenes and films kept only to save work (live views'), given back when other work needs the memory")
+                    .register(registry);
         };
     }
 

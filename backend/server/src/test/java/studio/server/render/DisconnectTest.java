@@ -12,6 +12,7 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.util.regex.Pattern;
 
+import io.micrometer.core.instrument.MeterRegistry;
 import org.junit.jupiter.api.Test;
 import org.springframework.beans.factory.annotation.Autowired;
 import org.springframework.boot.test.context.SpringBootTest;
@@ -56,6 +57,9 @@ class DisconnectTest {
     @Autowired
     MemoryBudget memory;
 
+    @Autowired
+    MeterRegistry meters;
+
     @Test
     void aClientThatDisconnectsCancelsItsRender() throws Exception {
         // a 32 x 32 tile of this scene at 256 samples takes well under a second on one thread
@@ -68,9 +72,14 @@ class DisconnectTest {
         assertDisconnectStopsRenderWithin(HallOfGlass.scene(16, 256), 1_000);
     }
 
+    private double cancelledInMetrics() {
+        return meters.get("studio.render.requests.cancelled").functionCounter().count();
+    }
+
     /** Posts the scene, goes away once its render runs, and checks the render stops soon and gives its memory back. */
     private void assertDisconnectStopsRenderWithin(String scene, long maxMillis) throws Exception {
         long cancelledBefore = renders.cancelled();
+        double publishedBefore = cancelledInMetrics();
         try (Socket socket = post(scene)) {
             Await.until("the render to start", 10_000, () -> renders.active() == 1);
             Thread.sleep(200);
@@ -80,6 +89,7 @@ class DisconnectTest {
         long stoppedMillis = (System.nanoTime() - closed) / 1_000_000;
         System.out.printf("disconnect: the render stopped %d ms after its client went away%n", stoppedMillis);
         assertThat(renders.cancelled()).isEqualTo(cancelledBefore + 1);
+        assertThat(cancelledInMetrics()).as("studio_render_requests_cancelled_total").isEqualTo(publishedBefore + 1);
         assertThat(stoppedMillis).as("ms from disconnect to the render's end").isLessThan(maxMillis);
         Await.until("the memory to be given back", 5_000, () -> memory.reserved() == 0);
     }
