@@ -1,4 +1,4 @@
-import { useEffect, useRef, useState, type FormEvent } from 'react';
+import { useEffect, useLayoutEffect, useRef, useState, type FormEvent } from 'react';
 import { setKeyPrompt } from '../api/auth';
 
 /**
@@ -26,7 +26,8 @@ export function SignInDialog() {
     };
   }, []);
 
-  useEffect(() => {
+  // in the commit that shows the dialog, so that no keystroke lands before the field has focus
+  useLayoutEffect(() => {
     if (resolve) input.current?.focus();
   }, [resolve]);
 
