@@ -29,7 +29,7 @@ import studio.engine.sampler.PixelSamples;
  *     for every c: |A_c - B_c| / 2 &lt;= L,   R / n &lt;= L   and   S / ({@value #NEARBY_SHARE_INVERSE} n) &lt;= L'
  * </pre>
  * else at N (in a scene with a sphere or area light, judged first at 4, with |A_c - B_c| / 3 and
- * R / 2n: {@link #SOFT_FIRST_JUDGED}). R is the widest channel's range of the pixel's n samples: two halves of a few
+ * R / 2n, and every L at half the threshold: {@link #SOFT_FIRST_JUDGED}). R is the widest channel's range of the pixel's n samples: two halves of a few
  * stratified samples can agree by chance on an edge. S is the step next to it: where all n samples
  * agree, a part of the pixel (or of the light) of about 1/n that none of them reached may still hold
  * it, so a pixel beside an edge or a penumbra takes samples in proportion to S / L', and a lower
@@ -58,14 +58,20 @@ final class ProgressiveSobolSampling implements TileSampling {
     /**
      * In a scene with a sphere or area light: the samples a refined pixel takes before its halves are
      * first compared (2 against 2; elsewhere 4 against 4), the share of their difference that counts
-     * (|A - B| / 3; elsewhere / 2) and of their range (R / (2n); elsewhere R / n). A penumbra pixel's
-     * samples differ by light sample as well as by place in the pixel, and a base sample's
-     * neighbourhood finds that in every pixel near it; those whose first 4 samples agree stop there.
-     * On soft-ball and soft-room at 160x120 the default reached jittered's error at 16 samples with 0.31
-     * and 0.34 of its samples, against 0.44 and 0.45 (judged from 4 alone 0.37 / 0.41, with R / (2n)
-     * 0.34 / 0.37); from threshold 0.005 down its curve is as low, at fewer samples.
+     * (|A - B| / 3; elsewhere / 2) and of their range (R / (2n); elsewhere R / n), and the threshold's
+     * share in every limit ({@link #SOFT_THRESHOLD_SHARE}). A penumbra pixel's samples differ by light
+     * sample as well as by place in the pixel, and a base sample's neighbourhood finds that in every
+     * pixel near it; those whose first 4 samples agree stop there. On soft-ball and soft-room at
+     * 160x120 the default reached jittered's error at 16 samples with 0.32 and 0.35 of its samples,
+     * against 0.44 and 0.45 (judged from 4 alone 0.37 / 0.41, with R / (2n) too 0.34 / 0.37).
      */
     static final int SOFT_FIRST_JUDGED = 2, SOFT_HALVES_SHARE = 3, SOFT_RANGE_SHARE_INVERSE = 2;
+    /**
+     * The threshold's share in a soft-light scene's limits: with the laxer tests above at the whole
+     * threshold, the default 0.05 left soft-ball's error at 0.0083 (0.0052 before them); at half
+     * of it 0.0048, in 4.7 samples a pixel instead of 6.5 (soft-room 0.0046 in 6.6, not 8.1).
+     */
+    static final double SOFT_THRESHOLD_SHARE = 0.5;
     /**
      * S's share in the step n agreeing samples may hide (see the class comment). On soft-ball and
      * soft-room at 160x120 a quarter and an eighth give the same curve; the whole step spends up to
@@ -117,8 +123,8 @@ final class ProgressiveSobolSampling implements TileSampling {
         ys = new double[max];
         width = settings.width();
         height = settings.height();
-        threshold = settings.adaptiveThreshold();
         boolean soft = tracer.softLights();
+        threshold = soft ? settings.adaptiveThreshold() * SOFT_THRESHOLD_SHARE : settings.adaptiveThreshold();
         firstStep = soft ? SOFT_FIRST_JUDGED : FIRST_JUDGED;
         firstJudged = soft ? 2 * SOFT_FIRST_JUDGED : 2 * FIRST_JUDGED;
         halvesShare = soft ? SOFT_HALVES_SHARE : 2;

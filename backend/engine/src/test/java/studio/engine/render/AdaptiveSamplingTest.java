@@ -193,13 +193,13 @@ class AdaptiveSamplingTest {
     void withASoftLightSobolJudgesARefinedPixelFromFewerSamples() {
         // the half-white box of the test above, and a sphere light behind the camera that the flat box
         // ignores: the refined columns' 2 against 2 samples agree, with no range, so they stop at 4
-        // (at a threshold where the step beside them, 1 / (4 x 4), is within the limit at 4 samples)
+        // (at a threshold whose half, the limit there, holds the step beside them, 1 / (4 x 4), at 4 samples)
         Scene halfWhite = new Scene(new Camera(new Vec3(0, 0, 10), Vec3.ZERO, UP, 20),
                 List.of(new SceneObject(new Box(new Vec3(-50, 0, 0), new Vec3(100, 100, 1)),
                         MaterialDefaults.of(MaterialKind.FLAT, Rgb.WHITE))),
                 List.of(new SphereLight(new Vec3(0, 0, 30), 1, Rgb.WHITE, 1, false)), Rgb.BLACK, 0);
 
-        RenderResult result = Renderer.render(RenderRequest.of(halfWhite, settings(8, 4, Sampler.of("sobol", 64), 0.07, 1)));
+        RenderResult result = Renderer.render(RenderRequest.of(halfWhite, settings(8, 4, Sampler.of("sobol", 64), 0.13, 1)));
 
         assertEquals(ProgressiveSobolSampling.BASE * 6 * 4 + 2 * ProgressiveSobolSampling.SOFT_FIRST_JUDGED * 2 * 4,
                 result.samplesTaken());
