@@ -130,40 +130,69 @@ public final class LightSampler {
         if (!(d > rad)) {
             return false; // inside the light (or NaN)
         }
-        x /= d; y /= d; z /= d;
-        double cosMax = Math.sqrt((d - rad) * (d + rad)) / d;
-        double sin2Max = (rad / d) * (rad / d);
-        double oneMinusCosMax = sin2Max / (1 + cosMax);
+        double inverse = 1 / d;
+        x *= inverse; y *= inverse; z *= inverse;
+        double sinMax = rad * inverse;
+        double onePlusCosMax = 1 + Math.sqrt((d - rad) * (d + rad)) * inverse;
+        double overOnePlus = 1 / onePlusCosMax;
+        double oneMinusCosMax = sinMax * sinMax * overOnePlus;
         // (u, v) to the unit disc by Shirley and Chiu's concentric map, which keeps strata compact
-        // (polar (u, v) makes them rings and wedges); the disc's r^2, uniform, is the cap's share a / (1 - cos theta_max)
-        double su = 2 * u - 1, sv = 2 * v - 1, disc, phi;
+        // (polar (u, v) makes them rings and wedges); the disc's r^2, uniform, is the cap's share a / (1 - cos theta_max).
+        // Its angle is pi/4 * w, |w| <= 1, or pi/2 less that: cosine and sine from their series (see cosQuarter)
+        double su = 2 * u - 1, sv = 2 * v - 1, disc, cosPhi, sinPhi;
         if (Math.abs(su) > Math.abs(sv)) {
+            double w = sv / su;
             disc = su;
-            phi = Math.PI / 4 * (sv / su);
+            cosPhi = cosQuarter(w);
+            sinPhi = sinQuarter(w);
         } else if (sv != 0) {
+            double w = su / sv;
             disc = sv;
-            phi = Math.PI / 2 - Math.PI / 4 * (su / sv);
+            cosPhi = sinQuarter(w);
+            sinPhi = cosQuarter(w);
         } else {
             disc = 0;
-            phi = 0;
+            cosPhi = 1;
+            sinPhi = 0;
         }
         double a = disc * disc * oneMinusCosMax;
-        double cos = 1 - a, sin = Math.sqrt(a * (2 - a));
-        double side = Math.copySign(1.0, disc), cosPhi = side * Math.cos(phi), sinPhi = side * Math.sin(phi);
+        double cos = 1 - a, sin = Math.copySign(Math.sqrt(a * (2 - a)), disc);
+        double sc = sin * cosPhi, ss = sin * sinPhi;
         // an orthonormal frame (s, t, w) around w = (x, y, z) (Duff et al. 2017)
         double sign = Math.copySign(1.0, z), e = -1 / (sign + z), f = x * y * e;
         double sx = 1 + sign * x * x * e, sy = sign * f, sz = -sign * x;
         double qx = f, qy = sign + y * y * e, qz = -y;
-        lx = sin * cosPhi * sx + sin * sinPhi * qx + cos * x;
-        ly = sin * cosPhi * sy + sin * sinPhi * qy + cos * y;
-        lz = sin * cosPhi * sz + sin * sinPhi * qz + cos * z;
+        lx = sc * sx + ss * qx + cos * x;
+        ly = sc * sy + ss * qy + cos * y;
+        lz = sc * sz + ss * qz + cos * z;
         // the near root of |p + t l - c| = r: t = (d^2 - r^2) / (d cos + sqrt(r^2 - d^2 sin^2)), no cancellation
-        double root = Math.sqrt(Math.max(0, (rad - d * sin) * (rad + d * sin)));
+        double ds = d * Math.abs(sin);
+        double root = Math.sqrt(Math.max(0, (rad - ds) * (rad + ds)));
         double t = (d - rad) * (d + rad) / (d * cos + root);
         tx = px + t * lx; ty = py + t * ly; tz = pz + t * lz;
-        double k = falloff[i] ? 2 / (d * d * (1 + cosMax)) : 1;
+        double k = falloff[i] ? 2 * inverse * inverse * overOnePlus : 1;
         r = er[i] * k; g = eg[i] * k; b = eb[i] * k;
         return true;
+    }
+
+    private static final double QUARTER_PI = Math.PI / 4;
+
+    /**
+     * cos(pi/4 w) for |w| &lt;= 1, from its Taylor series to the 16th power (the next term is below
+     * 3e-18): a sphere light's sample took about half the time with these than with Math.cos and
+     * Math.sin (soft-ball's penumbra, where they ran once a sample).
+     */
+    static double cosQuarter(double w) {
+        double t = QUARTER_PI * w, q = t * t;
+        return 1 + q * (-1.0 / 2 + q * (1.0 / 24 + q * (-1.0 / 720 + q * (1.0 / 40320 + q * (-1.0 / 3628800
+                + q * (1.0 / 479001600 + q * (-1.0 / 87178291200.0 + q * (1.0 / 20922789888000.0))))))));
+    }
+
+    /** sin(pi/4 w) for |w| &lt;= 1, from its Taylor series to the 15th power (the next term is below 5e-17). */
+    static double sinQuarter(double w) {
+        double t = QUARTER_PI * w, q = t * t;
+        return t * (1 + q * (-1.0 / 6 + q * (1.0 / 120 + q * (-1.0 / 5040 + q * (1.0 / 362880 + q * (-1.0 / 39916800
+                + q * (1.0 / 6227020800.0 + q * (-1.0 / 1307674368000.0))))))));
     }
 
     private boolean area(int i, double px, double py, double pz, double u, double v) {

@@ -76,6 +76,11 @@ final class SampleTracer {
         return 1 - 2 * (y + dy) / height;
     }
 
+    /** Whether the scene has a sphere or area light, whose samples each take a point on it. */
+    boolean softLights() {
+        return lightPoints != null;
+    }
+
     /** Records the rays of the next samples as pixel p's in {@code paths} (null: nowhere). */
     void recordInto(PixelPaths paths, int p) {
         integrator.paths = paths;
@@ -106,10 +111,10 @@ final class SampleTracer {
      */
     long trace(int x, int y, double[] xs, double[] ys, int first, int count) {
         long bad = 0;
+        // a call of fewer samples traces without the bundle but keeps it: the pyramid of its run
+        // holds the run's next calls' rays too (a refined pixel's first calls are short)
         boolean bundled = count >= BUNDLE_FROM;
-        if (!bundled) {
-            bundledRow = -1;
-        } else if (y != bundledRow || x < bundledFrom || x >= bundledFrom + RUN) {
+        if (bundled && (y != bundledRow || x < bundledFrom || x >= bundledFrom + RUN)) {
             bundledRow = y;
             bundledFrom = x - x % RUN;
             int to = Math.min(width, bundledFrom + RUN);

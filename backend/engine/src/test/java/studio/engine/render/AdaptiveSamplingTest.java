@@ -16,6 +16,7 @@ import studio.engine.geometry.Box;
 import studio.engine.geometry.Plane;
 import studio.engine.geometry.Sphere;
 import studio.engine.light.PointLight;
+import studio.engine.light.SphereLight;
 import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
@@ -183,6 +184,24 @@ class AdaptiveSamplingTest {
 
         // the refined pixels' halves then agree and their samples have no range: they stop at 2 x FIRST_JUDGED
         assertEquals(ProgressiveSobolSampling.BASE * 6 * 4 + 2 * ProgressiveSobolSampling.FIRST_JUDGED * 2 * 4,
+                result.samplesTaken());
+        assertEquals(1.0, result.film().get(3, 1, 0), 0.0);
+        assertEquals(0.0, result.film().get(4, 1, 0), 0.0);
+    }
+
+    @Test
+    void withASoftLightSobolJudgesARefinedPixelFromFewerSamples() {
+        // the half-white box of the test above, and a sphere light behind the camera that the flat box
+        // ignores: the refined columns' 2 against 2 samples agree, with no range, so they stop at 4
+        // (at a threshold whose half, the limit there, holds the step beside them, 1 / (4 x 4), at 4 samples)
+        Scene halfWhite = new Scene(new Camera(new Vec3(0, 0, 10), Vec3.ZERO, UP, 20),
+                List.of(new SceneObject(new Box(new Vec3(-50, 0, 0), new Vec3(100, 100, 1)),
+                        MaterialDefaults.of(MaterialKind.FLAT, Rgb.WHITE))),
+                List.of(new SphereLight(new Vec3(0, 0, 30), 1, Rgb.WHITE, 1, false)), Rgb.BLACK, 0);
+
+        RenderResult result = Renderer.render(RenderRequest.of(halfWhite, settings(8, 4, Sampler.of("sobol", 64), 0.13, 1)));
+
+        assertEquals(ProgressiveSobolSampling.BASE * 6 * 4 + 2 * ProgressiveSobolSampling.SOFT_FIRST_JUDGED * 2 * 4,
                 result.samplesTaken());
         assertEquals(1.0, result.film().get(3, 1, 0), 0.0);
         assertEquals(0.0, result.film().get(4, 1, 0), 0.0);
