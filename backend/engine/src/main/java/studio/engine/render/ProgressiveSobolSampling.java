@@ -40,14 +40,10 @@ import studio.engine.sampler.PixelSamples;
  * improve like a fixed-count Sobol pattern. Every decision reads only samples seeded by pixel, so the
  * image is the same at any thread count, and whichever worker renders which tile.
  *
- * <p>Measured on the speed-accuracy bench (320x240, the same error): one base sample instead of 4
- * halves the time on {@code edges} and {@code soft-shadows}, where most pixels are flat, and takes
- * about 0.6 of it on {@code glass}; judging a refined pixel's halves from 2 samples instead of
- * {@value #FIRST_JUDGED} stalled the error at 3-4 times the target (on an edge, two samples on one
- * side agree). Without S the error stopped falling as the threshold did ({@code soft-ball} at
- * 160x120, at most 256 samples: RMSE 0.0024 at thresholds 0.005 and 0.002, 19% of its square in
- * pixels stopped at 1 sample all shadowed, 62% at 8); with it 0.0012 and 0.0011, nearly all of it in
- * pixels at the 256 (docs/speed.md).
+ * <p>Why (the speed-accuracy bench, docs/speed.md): one base sample instead of 4 saves most where
+ * pixels are flat; judging a refined pixel's halves from 2 samples instead of {@value #FIRST_JUDGED}
+ * stalls the error on edges (two samples on one side agree); without S the error stops falling as
+ * the threshold does, held by penumbra pixels whose few samples were all shadowed by chance.
  */
 final class ProgressiveSobolSampling implements TileSampling {
 
@@ -61,15 +57,14 @@ final class ProgressiveSobolSampling implements TileSampling {
      * (|A - B| / 3; elsewhere / 2) and of their range (R / (2n); elsewhere R / n), and the threshold's
      * share in every limit ({@link #SOFT_THRESHOLD_SHARE}). A penumbra pixel's samples differ by light
      * sample as well as by place in the pixel, and a base sample's neighbourhood finds that in every
-     * pixel near it; those whose first 4 samples agree stop there. On soft-ball and soft-room at
-     * 160x120 the default reached jittered's error at 16 samples with 0.32 and 0.35 of its samples,
-     * against 0.44 and 0.45 (judged from 4 alone 0.37 / 0.41, with R / (2n) too 0.34 / 0.37).
+     * pixel near it; those whose first 4 samples agree stop there (fewer samples to jittered's
+     * 16-sample error on the soft-light chart, docs/speed.md).
      */
     static final int SOFT_FIRST_JUDGED = 2, SOFT_HALVES_SHARE = 3, SOFT_RANGE_SHARE_INVERSE = 2;
     /**
      * The threshold's share in a soft-light scene's limits: with the laxer tests above at the whole
-     * threshold, the default 0.05 left soft-ball's error at 0.0083 (0.0052 before them); at half
-     * of it 0.0048, in 4.7 samples a pixel instead of 6.5 (soft-room 0.0046 in 6.6, not 8.1).
+     * threshold, the default threshold's error would rise by half; at half of it, it is as before, in
+     * fewer samples (the soft-light chart, docs/speed.md).
      */
     static final double SOFT_THRESHOLD_SHARE = 0.5;
     /**
