@@ -1,6 +1,7 @@
 package studio.engine.image;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferByte;
 import java.awt.image.DataBufferInt;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -70,6 +71,35 @@ public final class ImageEncoder {
             }
         });
         return image;
+    }
+
+    /**
+     * As {@link #toImage(Film, PixelLattice)}, the same pixels laid out as blue, green, red bytes
+     * ({@code TYPE_3BYTE_BGR}), which ImageIO's JPEG writer takes as they are: the same file in
+     * about three fifths of the time the writer takes converting packed ints row by row (a live
+     * view's 640x480 frames, LiveViewSpanBench).
+     */
+    public static BufferedImage toJpegImage(Film film, PixelLattice lattice) {
+        int step = lattice.step(), offset = lattice.offset();
+        int w = lattice.count(film.width()), h = lattice.count(film.height());
+        BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_3BYTE_BGR);
+        byte[] bytes = ((DataBufferByte) image.getRaster().getDataBuffer()).getData();
+        IntStream rows = IntStream.range(0, h);
+        (w * (long) h >= PARALLEL_PIXELS ? rows.parallel() : rows).forEach(y -> {
+            for (int x = 0; x < w; x += RUN) {
+                packBgr(film, offset + x * step, offset + y * step, step, Math.min(RUN, w - x), bytes, 3 * (y * w + x));
+            }
+        });
+        return image;
+    }
+
+    /** As {@link #pack}, into bytes[at ..] as blue, green, red. */
+    private static void packBgr(Film film, int fx, int fy, int step, int count, byte[] bytes, int at) {
+        for (int i = 0, x = fx, o = at; i < count; i++, x += step, o += 3) {
+            bytes[o] = (byte) Srgb.toByte(film.get(x, fy, 2));
+            bytes[o + 1] = (byte) Srgb.toByte(film.get(x, fy, 1));
+            bytes[o + 2] = (byte) Srgb.toByte(film.get(x, fy, 0));
+        }
     }
 
     /** {@code count} pixels of the film's row fy, from fx on every {@code step}th, as 8-bit sRGB, into pixels[at ..]. */

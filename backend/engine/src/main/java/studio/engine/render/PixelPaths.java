@@ -1,9 +1,12 @@
 package studio.engine.render;
 
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
 import studio.engine.accel.Aabb;
+import studio.engine.geometry.Shape;
+import studio.engine.geometry.Sphere;
 import studio.engine.light.Light;
 import studio.engine.math.Vec3;
 
@@ -18,7 +21,8 @@ import studio.engine.math.Vec3;
  * the scene its direction), as floats. Its value depends only on the objects those rays and the
  * shadow rays from each hit point to each light meet, so it stays the same when every changed
  * object (before and after the change) lies off all of those segments: {@link #forget} tests
- * them against the changed objects' boxes, widened far beyond the floats' rounding. A pixel whose
+ * them against the changed objects' boxes, and a sphere's ball ({@link #forgetShapes}), widened
+ * far beyond the floats' rounding ({@link EditReach}). A pixel whose
  * rays branch (glass both reflects and refracts), that traces a longer chain, or that takes more
  * than one sample is not kept: it is rendered every time.
  *
@@ -139,6 +143,34 @@ public final class PixelPaths {
      *               them every pixel is forgotten, as its shadow rays end all over the light
      */
     public void forget(List<Aabb> boxes, Vec3 camera, List<? extends Light> lights) {
+        forget(boxes, new double[0], camera, lights);
+    }
+
+    /**
+     * As {@link #forget(List, Vec3, List)} with the changed objects' shapes (each object's before
+     * and after the edit), so that a segment that meets a sphere's box but passes beside the sphere
+     * keeps its pixel: most of those that only pass near a moved ball (LiveViewSpanBench).
+     */
+    public void forgetShapes(List<? extends Shape> shapes, Vec3 camera, List<? extends Light> lights) {
+        List<Aabb> boxes = new ArrayList<>(shapes.size());
+        double[] balls = new double[4 * shapes.size()];
+        for (int i = 0; i < shapes.size(); i++) {
+            Shape shape = shapes.get(i);
+            boxes.add(shape.bounds());
+            if (shape instanceof Sphere sphere) {
+                balls[4 * i] = sphere.center().x();
+                balls[4 * i + 1] = sphere.center().y();
+                balls[4 * i + 2] = sphere.center().z();
+                balls[4 * i + 3] = sphere.radius();
+            } else {
+                balls[4 * i + 3] = -1;
+            }
+        }
+        forget(boxes, balls, camera, lights);
+    }
+
+    /** As {@link #forget(List, Vec3, List)}, each box's object held by the ball at balls[4 i ..] if its radius is not negative. */
+    private void forget(List<Aabb> boxes, double[] balls, Vec3 camera, List<? extends Light> lights) {
         if (boxes.isEmpty()) {
             return;
         }
@@ -147,15 +179,24 @@ public final class PixelPaths {
             return;
         }
         double[] box = new double[6 * (boxes.size() + 1)];
+        double[] ball = new double[4 * (boxes.size() + 1)];
         double scale = Math.max(Math.abs(camera.x()), Math.max(Math.abs(camera.y()), Math.abs(camera.z())));
+        boolean everyBall = true;
         for (int i = 0; i < boxes.size(); i++) {
             Aabb b = boxes.get(i);
             if (!b.isBounded()) {
                 throw new IllegalArgumentException("an unbounded object's edit reaches every pixel: forget them all");
             }
             b.copyTo(box, 6 * (i + 1));
+            boolean held = 4 * i < balls.length && balls[4 * i + 3] >= 0;
+            everyBall &= held;
+            if (held) {
+                System.arraycopy(balls, 4 * i, ball, 4 * (i + 1), 4);
+            } else {
+                ball[4 * (i + 1) + 3] = -1;
+            }
         }
-        // box 0: the union, tested first
+        // box 0: the union, tested first; its ball holds every object's, if each has one
         for (int k = 0; k < 3; k++) {
             double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
             for (int i = 1; i <= boxes.size(); i++) {
@@ -164,7 +205,17 @@ public final class PixelPaths {
             }
             box[k] = min;
             box[k + 3] = max;
+            ball[k] = (min + max) / 2;
             scale = Math.max(scale, Math.max(Math.abs(min), Math.abs(max)));
+        }
+        ball[3] = -1;
+        if (everyBall) {
+            double radius = 0;
+            for (int i = 1; i <= boxes.size(); i++) {
+                double dx = ball[4 * i] - ball[0], dy = ball[4 * i + 1] - ball[1], dz = ball[4 * i + 2] - ball[2];
+                radius = Math.max(radius, Math.sqrt(dx * dx + dy * dy + dz * dz) + ball[4 * i + 3]);
+            }
+            ball[3] = radius * (1 + 1e-9);
         }
         double[] light = new double[3 * lights.size()];
         for (int i = 0; i < lights.size(); i++) {
@@ -174,11 +225,11 @@ public final class PixelPaths {
             light[3 * i + 2] = at.z();
             scale = Math.max(scale, Math.max(Math.abs(at.x()), Math.max(Math.abs(at.y()), Math.abs(at.z()))));
         }
-        Reach reach = new Reach(box, boxes.size() > 1, scale);
-        Cone[] cones = new Cone[1 + lights.size()];
-        cones[0] = Cone.of(camera.x(), camera.y(), camera.z(), box, scale);
+        EditReach reach = new EditReach(box, ball, boxes.size() > 1, scale, MARGIN);
+        EditReach.Cone[] cones = new EditReach.Cone[1 + lights.size()];
+        cones[0] = reach.cone(camera.x(), camera.y(), camera.z());
         for (int l = 0; l < lights.size(); l++) {
-            cones[1 + l] = Cone.of(light[3 * l], light[3 * l + 1], light[3 * l + 2], box, scale);
+            cones[1 + l] = reach.cone(light[3 * l], light[3 * l + 1], light[3 * l + 2]);
         }
         int kept = Math.min(edits.length, MAX_EDITS - 1);
         Edit[] next = Arrays.copyOfRange(edits, edits.length - kept, edits.length + 1);
@@ -188,7 +239,7 @@ public final class PixelPaths {
     }
 
     /** One edit noted: its boxes, the cones around them from the camera and each light, and where those are. */
-    private record Edit(Reach reach, Cone[] cones, double cx, double cy, double cz, double[] light) {
+    private record Edit(EditReach reach, EditReach.Cone[] cones, double cx, double cy, double cz, double[] light) {
 
         /** Whether pixel p's rays (state s) may meet one of the edit's boxes. */
         boolean reaches(PixelPaths paths, int p, int s) {
@@ -197,7 +248,7 @@ public final class PixelPaths {
     }
 
     /** Whether pixel p's rays (state s) may meet a changed box. */
-    private boolean reaches(Reach reach, Cone[] cones, int p, int s, double ax, double ay, double az,
+    private boolean reaches(EditReach reach, EditReach.Cone[] cones, int p, int s, double ax, double ay, double az,
                             double[] light) {
         int count = s & COUNT;
         boolean lastMisses = (s & MISS) != 0;
@@ -260,101 +311,5 @@ public final class PixelPaths {
 
     int index(int x, int y) {
         return y * width + x;
-    }
-
-    /**
-     * A quick first test of the segments from one point (the camera, a light) to the pixels' hit
-     * points against the changed objects: the cone from the point around a sphere that holds the
-     * union box, widened past {@link Reach}'s margin and the floats' rounding (a hit point kept as
-     * floats is off by at most 1.2e-7 of its largest coordinate; seen from the apex at least half
-     * the sphere's distance away, that turns the segment by less than the widening). A segment
-     * that leaves the cone, or ends before the sphere, cannot meet the boxes; one inside is tested
-     * exactly. Without a cone (the apex within twice the sphere's radius) every segment is.
-     */
-    private record Cone(double ax, double ay, double az, double wx, double wy, double wz, double k, double minLength2,
-                        boolean active) {
-
-        static Cone of(double ax, double ay, double az, double[] union, double scale) {
-            double cx = (union[0] + union[3]) / 2, cy = (union[1] + union[4]) / 2, cz = (union[2] + union[5]) / 2;
-            double hx = (union[3] - union[0]) / 2, hy = (union[4] - union[1]) / 2, hz = (union[5] - union[2]) / 2;
-            double radius = Math.sqrt(hx * hx + hy * hy + hz * hz) * (1 + 1e-9)
-                    + 2 * MARGIN * (1 + scale + Math.abs(ax) + Math.abs(ay) + Math.abs(az));
-            double wx = cx - ax, wy = cy - ay, wz = cz - az;
-            double d2 = wx * wx + wy * wy + wz * wz, d = Math.sqrt(d2);
-            boolean active = d > 2 * radius;
-            return new Cone(ax, ay, az, wx, wy, wz, d2 - radius * radius, active ? (d - radius) * (d - radius) : 0,
-                    active);
-        }
-
-        /** Whether the segment from the apex to (px, py, pz) may meet the sphere. */
-        boolean mayMeet(double px, double py, double pz) {
-            if (!active) {
-                return true;
-            }
-            double vx = px - ax, vy = py - ay, vz = pz - az;
-            double dot = vx * wx + vy * wy + vz * wz;
-            double v2 = vx * vx + vy * vy + vz * vz;
-            return dot > 0 && dot * dot >= v2 * k && v2 >= minLength2;
-        }
-    }
-
-    /**
-     * The changed boxes (the union first, then each, if more than one), and the test of a segment
-     * or ray against them, conservative: a box is widened by a margin far beyond the rounding of
-     * the floats the points are kept in, and a NaN distance (a point on a box's plane with a zero
-     * direction component) counts as inside.
-     */
-    private record Reach(double[] box, boolean several, double scale) {
-
-        /** Whether a + t d, 0 &lt;= t &lt;= tMax, may meet a changed box. */
-        boolean meets(double ax, double ay, double az, double dx, double dy, double dz, double tMax) {
-            double size = Math.max(scale, Math.max(Math.abs(ax), Math.max(Math.abs(ay), Math.abs(az))));
-            if (tMax == 1) {
-                size = Math.max(size, Math.max(Math.abs(ax + dx), Math.max(Math.abs(ay + dy), Math.abs(az + dz))));
-            }
-            double margin = MARGIN * (1 + size);
-            if (!meets(0, ax, ay, az, dx, dy, dz, tMax, margin)) {
-                return false;
-            }
-            if (!several) {
-                return true;
-            }
-            for (int o = 6; o < box.length; o += 6) {
-                if (meets(o, ax, ay, az, dx, dy, dz, tMax, margin)) {
-                    return true;
-                }
-            }
-            return false;
-        }
-
-        private boolean meets(int o, double ax, double ay, double az, double dx, double dy, double dz, double tMax,
-                              double margin) {
-            double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
-            double x0 = (box[o] - margin - ax) * ix, x1 = (box[o + 3] + margin - ax) * ix;
-            double y0 = (box[o + 1] - margin - ay) * iy, y1 = (box[o + 4] + margin - ay) * iy;
-            double z0 = (box[o + 2] - margin - az) * iz, z1 = (box[o + 5] + margin - az) * iz;
-            // a NaN (0 times infinity: a point on a plane of the box, moving along it) fails every
-            // comparison and so leaves the ray inside that slab
-            double near = 0, far = tMax;
-            if (Math.min(x0, x1) > near) {
-                near = Math.min(x0, x1);
-            }
-            if (Math.max(x0, x1) < far) {
-                far = Math.max(x0, x1);
-            }
-            if (Math.min(y0, y1) > near) {
-                near = Math.min(y0, y1);
-            }
-            if (Math.max(y0, y1) < far) {
-                far = Math.max(y0, y1);
-            }
-            if (Math.min(z0, z1) > near) {
-                near = Math.min(z0, z1);
-            }
-            if (Math.max(z0, z1) < far) {
-                far = Math.max(z0, z1);
-            }
-            return !(near > far);
-        }
     }
 }

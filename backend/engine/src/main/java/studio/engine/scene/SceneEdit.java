@@ -29,28 +29,37 @@ public final class SceneEdit {
      *                is unchanged from (shape and material), or -1; null when that is not known
      */
     public static List<Aabb> changedBoxes(Scene before, Scene after, int[] origins) {
+        List<Shape> shapes = changedShapes(before, after, origins);
+        return shapes == null ? null : shapes.stream().map(Shape::bounds).toList();
+    }
+
+    /**
+     * The shapes of the objects the edit changed, each object's in {@code before} and in
+     * {@code after} (empty if nothing changed), every one bounded; null if the edit may change any
+     * pixel. As {@link #changedBoxes}.
+     */
+    public static List<Shape> changedShapes(Scene before, Scene after, int[] origins) {
         if (origins == null || origins.length != after.objectCount() || !before.camera().equals(after.camera())
                 || !before.lights().equals(after.lights()) || !before.background().equals(after.background())
                 || Double.compare(before.ambient(), after.ambient()) != 0
                 || before.objectCount() != after.objectCount()) {
             return null;
         }
-        List<Aabb> boxes = new ArrayList<>();
+        List<Shape> shapes = new ArrayList<>();
         for (int i = 0; i < after.objectCount(); i++) {
             if (origins[i] == i) {
                 continue;
             }
-            if (boxes.size() == 2 * MAX_CHANGED) {
+            if (shapes.size() == 2 * MAX_CHANGED) {
                 return null;
             }
             Shape was = before.shape(i), is = after.shape(i);
-            Aabb wasBox = was.bounds(), isBox = is.bounds();
-            if (!wasBox.isBounded() || !isBox.isBounded()) {
+            if (!was.bounds().isBounded() || !is.bounds().isBounded()) {
                 return null;
             }
-            boxes.add(wasBox);
-            boxes.add(isBox);
+            shapes.add(was);
+            shapes.add(is);
         }
-        return boxes;
+        return shapes;
     }
 }

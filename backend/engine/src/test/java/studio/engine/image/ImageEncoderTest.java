@@ -64,6 +64,33 @@ class ImageEncoderTest {
     }
 
     @Test
+    void aLatticesJpegImageHoldsTheSamePixelsAndWritesTheSameFile() throws IOException {
+        // a film large enough to be converted by several threads, with colours that differ in each channel
+        Film film = new Film(700, 400);
+        java.util.Random random = new java.util.Random(3);
+        for (int y = 0; y < 400; y++) {
+            for (int x = 0; x < 700; x++) {
+                film.set(x, y, random.nextDouble(), x / 700.0, y / 300.0);
+            }
+        }
+        for (PixelLattice lattice : new PixelLattice[] {PixelLattice.ALL, new PixelLattice(8, 4), new PixelLattice(2, 0)}) {
+            BufferedImage packed = ImageEncoder.toImage(film, lattice), bytes = ImageEncoder.toJpegImage(film, lattice);
+
+            assertEquals(packed.getWidth(), bytes.getWidth());
+            assertEquals(packed.getHeight(), bytes.getHeight());
+            for (int y = 0; y < packed.getHeight(); y++) {
+                for (int x = 0; x < packed.getWidth(); x++) {
+                    assertEquals(packed.getRGB(x, y), bytes.getRGB(x, y), lattice + " pixel " + x + "," + y);
+                }
+            }
+            ByteArrayOutputStream fromPacked = new ByteArrayOutputStream(), fromBytes = new ByteArrayOutputStream();
+            ImageEncoder.writeJpeg(packed, 0.85, fromPacked);
+            ImageEncoder.writeJpeg(bytes, 0.85, fromBytes);
+            assertTrue(java.util.Arrays.equals(fromPacked.toByteArray(), fromBytes.toByteArray()), lattice + ": the same file");
+        }
+    }
+
+    @Test
     void jpegRoundTripKeepsSizeAndApproximatelyTheColour() throws IOException {
         Film film = new Film(16, 8);
         for (int y = 0; y < 8; y++) {

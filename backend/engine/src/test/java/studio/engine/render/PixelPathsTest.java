@@ -91,11 +91,20 @@ class PixelPathsTest {
      * @return the share of pixels kept
      */
     private static double keptAfterEdit(Scene before, Scene after) {
+        return keptAfterEdit(before, after, true);
+    }
+
+    /** As {@link #keptAfterEdit(Scene, Scene)}, the edit told by its shapes (a sphere's ball tested) or by their boxes only. */
+    private static double keptAfterEdit(Scene before, Scene after, boolean byShapes) {
         Film film = new Film(WIDTH, HEIGHT);
         PixelPaths paths = new PixelPaths(WIDTH, HEIGHT);
         render(before, film, paths);
-        List<Aabb> boxes = changedBoxes(before, after);
-        paths.forget(boxes, after.camera().position(), after.lights());
+        if (byShapes) {
+            paths.forgetShapes(SceneEdit.changedShapes(before, after, origins(before, after)), after.camera().position(),
+                    after.lights());
+        } else {
+            paths.forget(changedBoxes(before, after), after.camera().position(), after.lights());
+        }
         RenderResult again = render(after, film, paths);
         long kept = WIDTH * HEIGHT - again.samplesTaken();
 
@@ -135,6 +144,22 @@ class PixelPathsTest {
         int mirror = firstOf(scene, MaterialKind.MIRROR);
         double kept = keptAfterEdit(scene, edited(scene, mirror, o -> moved(o, new Vec3(-0.2, 0, 0.1))));
         assertTrue(kept > 0.5 && kept < 1, "kept " + kept);
+    }
+
+    /**
+     * A moved sphere forgets the pixels whose rays pass near its ball, before and after, not all
+     * of those that cross its box (whose corners stand out of the ball): fewer pixels, and the film
+     * is still a fresh render of the edited scene.
+     */
+    @Test
+    void aMovedSphereForgetsWhatPassesNearItsBallNotAllOfItsBox() {
+        Scene scene = OpaqueShadowsUnchangedTest.scene();
+        for (MaterialKind kind : new MaterialKind[] {MaterialKind.PLASTIC, MaterialKind.MIRROR}) {
+            int sphere = firstOf(scene, kind);
+            Scene after = edited(scene, sphere, o -> moved(o, new Vec3(-0.2, 0, 0.1)));
+            double byBalls = keptAfterEdit(scene, after, true), byBoxes = keptAfterEdit(scene, after, false);
+            assertTrue(byBalls > byBoxes && byBoxes > 0.5, kind + ": kept " + byBalls + " by the balls, " + byBoxes + " by the boxes");
+        }
     }
 
     @Test
@@ -243,13 +268,18 @@ class PixelPathsTest {
 
     /** The edit's boxes, its changed objects told as an editor that compares values would tell them. */
     private static List<Aabb> changedBoxes(Scene before, Scene after) {
+        return SceneEdit.changedBoxes(before, after, origins(before, after));
+    }
+
+    /** The edit's changed objects as an editor that compares values would tell them. */
+    private static int[] origins(Scene before, Scene after) {
         int[] origins = new int[after.objectCount()];
         for (int i = 0; i < origins.length; i++) {
             boolean same = i < before.objectCount() && before.shape(i).equals(after.shape(i))
                     && before.material(i).equals(after.material(i));
             origins[i] = same ? i : -1;
         }
-        return SceneEdit.changedBoxes(before, after, origins);
+        return origins;
     }
 
     @Test

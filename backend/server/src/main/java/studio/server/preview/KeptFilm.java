@@ -3,7 +3,7 @@ package studio.server.preview;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 
-import studio.engine.accel.Aabb;
+import studio.engine.geometry.Shape;
 import studio.engine.render.Film;
 import studio.engine.render.PixelPaths;
 import studio.engine.render.RenderSettings;
@@ -60,11 +60,11 @@ final class KeptFilm implements AutoCloseable {
             last.memory().close();
             next = hold(oneSample, last.film(), last.paths(), scene);
             if (next != null) {
-                List<Aabb> boxes = SceneEdit.changedBoxes(last.scene(), scene, origins);
-                if (boxes == null) {
+                List<Shape> changed = SceneEdit.changedShapes(last.scene(), scene, origins);
+                if (changed == null) {
                     next.paths().forgetAll();
                 } else {
-                    next.paths().forget(boxes, scene.camera().position(), scene.lights());
+                    next.paths().forgetShapes(changed, scene.camera().position(), scene.lights());
                 }
             }
         } else {

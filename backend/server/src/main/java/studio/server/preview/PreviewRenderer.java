@@ -167,11 +167,10 @@ final class PreviewRenderer {
         budget.metrics().rendered(RenderMetrics.Kind.LIVE_VIEW, rendered);
         try {
             ByteArrayOutputStream image = new ByteArrayOutputStream();
-            var pixels = ImageEncoder.toImage(film, pass.pixels());
             if (pass.last()) {
-                ImageEncoder.writePng(pixels, image);
+                ImageEncoder.writePng(ImageEncoder.toImage(film, pass.pixels()), image);
             } else {
-                ImageEncoder.writeJpeg(pixels, COARSE_QUALITY, image);
+                ImageEncoder.writeJpeg(ImageEncoder.toJpegImage(film, pass.pixels()), COARSE_QUALITY, image);
             }
             PreviewFrame frame = new PreviewFrame(revision, pass.number(), pass.frameWidth(), pass.frameHeight(),
                     pass.settings().sampler().samplesPerPixel(), pass.last(), pass.last() ? "png" : "jpeg",
