@@ -76,12 +76,12 @@ final class LightBufferLists {
         for (int cell = 0; cell < cells; cell++) {
             cellStart[cell + 1] += cellStart[cell];
         }
-        if (!memory.tryReserve(MemoryGate.ints(entries) + MemoryGate.floats(entries) + MemoryGate.ints(cells)
+        if (3 * entries > Integer.MAX_VALUE - 8
+                || !memory.tryReserve(MemoryGate.ints(3 * entries) + MemoryGate.ints(cells)
                 + 2 * MemoryGate.ints(count + 1L))) {
             return null;
         }
-        int[] listed = new int[(int) entries];
-        float[] near = new float[(int) entries];
+        int[] packed = new int[3 * (int) entries];
         // the primitives in about the order of their bounds (a counting sort on a grid of them), so
         // that each cell's list comes out nearly sorted and its sort has little left to do
         float least = Float.POSITIVE_INFINITY, most = 0;
@@ -106,21 +106,27 @@ final class LightBufferLists {
             for (int q = from; q < to; q++) {
                 int t = order[q];
                 float bound = bounds[t];
+                // the rectangle in cells, as LightBuffer.occluder works out a ray's
+                double uLow = (rects[4 * t] - LightBuffer.UV_MARGIN - f.uMin()) * perU;
+                double uHigh = (rects[4 * t + 1] + LightBuffer.UV_MARGIN - f.uMin()) * perU;
+                double vLow = (rects[4 * t + 2] - LightBuffer.UV_MARGIN - f.vMin()) * perV;
+                double vHigh = (rects[4 * t + 3] + LightBuffer.UV_MARGIN - f.vMin()) * perV;
                 for (int j = range[4 * t + 2]; j <= range[4 * t + 3]; j++) {
                     for (int i = range[4 * t]; i <= range[4 * t + 1]; i++) {
                         int at = next[j * columns + i]++;
-                        listed[at] = t;
-                        near[at] = bound;
+                        packed[3 * at] = t;
+                        packed[3 * at + 1] = Float.floatToRawIntBits(bound);
+                        packed[3 * at + 2] = LightBuffer.span(uLow, uHigh, vLow, vHigh, i, j);
                     }
                 }
             }
         });
         Runs.over(cells, (from, to) -> {
             for (int cell = from; cell < to; cell++) {
-                sortByNearest(listed, near, cellStart[cell], cellStart[cell + 1]);
+                sortByNearest(packed, cellStart[cell], cellStart[cell + 1]);
             }
         });
-        return new LightBuffer(f, primitives, nu, nv, cellStart, listed, near);
+        return new LightBuffer(f, primitives, nu, nv, cellStart, packed);
     }
 
     /**
@@ -143,19 +149,19 @@ final class LightBufferLists {
         return at < 0 ? 0 : at >= n ? n - 1 : (int) at;
     }
 
-    /** Insertion sort of one cell's entries by their bound (lists are short). */
-    private static void sortByNearest(int[] listed, float[] near, int from, int to) {
+    /** Insertion sort of one cell's entries (three ints each) by their bound (lists are short). */
+    private static void sortByNearest(int[] packed, int from, int to) {
         for (int i = from + 1; i < to; i++) {
-            int t = listed[i];
-            float key = near[i];
+            int t = packed[3 * i], bits = packed[3 * i + 1], span = packed[3 * i + 2];
+            float key = Float.intBitsToFloat(bits);
             int j = i - 1;
-            while (j >= from && near[j] > key) {
-                listed[j + 1] = listed[j];
-                near[j + 1] = near[j];
+            while (j >= from && Float.intBitsToFloat(packed[3 * j + 1]) > key) {
+                System.arraycopy(packed, 3 * j, packed, 3 * j + 3, 3);
                 j--;
             }
-            listed[j + 1] = t;
-            near[j + 1] = key;
+            packed[3 * j + 3] = t;
+            packed[3 * j + 4] = bits;
+            packed[3 * j + 5] = span;
         }
     }
 }

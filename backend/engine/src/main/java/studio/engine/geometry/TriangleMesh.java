@@ -187,7 +187,7 @@ public final class TriangleMesh implements Shape {
      * renders in about 0.7 of the time warm and 0.84 as whole processes at 16 samples
      * ({@code studio-bench peers}); which renders
      * pay for the building is {@code MeshLightBuffers}' rule. Itself if it already has buffers for
-     * exactly these lights; each buffer keeps some 35 bytes a triangle (and takes about 70 more
+     * exactly these lights; each buffer keeps some 50 bytes a triangle (and takes about 70 more
      * while it is built), asked of {@code memory} first. A moved copy ({@link #movedTo}) has none.
      */
     public TriangleMesh withLightBuffers(List<Vec3> lights, MemoryGate memory) {
