@@ -58,7 +58,6 @@ public final class TriangleMesh implements Shape {
     private final int nodeCount;
     private final Aabb bounds;
     private final long buildNanos;
-    private final int bvhDepth;
     /** Whether the tree was built on the unplaced positions, so that a copy moved elsewhere may share it. */
     private final boolean movable;
     /** The lights this mesh was given buffers for, and the buffers of those that can have one ({@link #withLightBuffers}). */
@@ -140,7 +139,6 @@ public final class TriangleMesh implements Shape {
         this.traversal = new Traversal(nodeBounds, nodeLinks, leaves, memory);
         this.bounds = MeshPlacement.rootBounds(nodeBounds);
         this.buildNanos = bvh.buildNanos();
-        this.bvhDepth = bvh.depth();
         this.bufferedLights = List.of();
         this.lightBuffers = NO_BUFFERS;
     }
@@ -173,7 +171,6 @@ public final class TriangleMesh implements Shape {
         this.traversal = nodeBounds == from.nodeBounds ? from.traversal : new Traversal(nodeBounds, nodeLinks, leaves);
         this.bounds = MeshPlacement.rootBounds(nodeBounds);
         this.buildNanos = buildNanos;
-        this.bvhDepth = from.bvhDepth;
         this.movable = from.movable;
         this.bufferedLights = bufferedLights;
         this.lightBuffers = lightBuffers;
@@ -355,11 +352,6 @@ public final class TriangleMesh implements Shape {
     /** How long building the triangles' BVH took. */
     public long buildNanos() {
         return buildNanos;
-    }
-
-    /** Levels of the triangles' BVH. */
-    public int bvhDepth() {
-        return bvhDepth;
     }
 
     @Override
