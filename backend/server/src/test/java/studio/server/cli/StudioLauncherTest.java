@@ -38,6 +38,8 @@ class StudioLauncherTest {
     @TempDir
     Path dir;
     private Path calls;
+    /** The jar the launcher is given (STUDIO_JAR), in the test's directory. */
+    private String jarName = "studio.jar";
 
     private static final String VECTOR_MODULES = "java.base jdk.incubator.vector jdk.jfr";
 
@@ -83,7 +85,7 @@ class StudioLauncherTest {
         command.addAll(List.of(args));
         ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
         builder.environment().put("JAVA", dir.resolve("jdk/bin/java").toString());
-        builder.environment().put("STUDIO_JAR", dir.resolve("studio.jar").toString());
+        builder.environment().put("STUDIO_JAR", dir.resolve(jarName).toString());
         Process process = builder.start();
         String output = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertThat(process.waitFor(30, TimeUnit.SECONDS)).as("the launcher finished").isTrue();
@@ -109,6 +111,18 @@ class StudioLauncherTest {
         assertThat(jarOf(training)).isEqualTo(jarOf(render)).endsWith("studio-cds/studio.jar");
         assertThat(dir.resolve("studio-cds/stamp")).exists();
         assertThat(calls("render", "s.json")).as("recorded once").hasSize(calls.size() + 1);
+    }
+
+    /** The jar's tools mode unpacks it under its own file name, which the training run and the render run. */
+    @Test
+    void aJarOfAnotherNameRunsUnpackedUnderItsOwnName() throws Exception {
+        jarName = "build-7.jar";
+        Files.writeString(dir.resolve(jarName), "a jar");
+        List<String> calls = calls("render", "s.json");
+
+        String training = calls.stream().filter(c -> c.contains("-XX:AOTCacheOutput=")).findFirst().orElseThrow();
+        assertThat(jarOf(training)).contains("studio-cds.tmp.").endsWith("/build-7.jar");
+        assertThat(jarOf(calls.get(calls.size() - 1))).endsWith("studio-cds/build-7.jar");
     }
 
     @Test
