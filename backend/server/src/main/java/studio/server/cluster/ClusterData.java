@@ -29,7 +29,10 @@ final class ClusterData {
     /**
      * The same structures under names of their own, {@code prefix} before each: another member's
      * workers never read them, and a value sealed for one opens in no structure of the cluster's own
-     * (the name is the seal's associated data). The start-up warm-up's ({@link ClusterWarmUp}).
+     * (the name is the seal's associated data). A job's tile, claim and event structures take the prefix
+     * after their own family's name, so they match the family's configuration ({@link MemberConfig}: the
+     * tile maps' time to live, the logs' capacity) and run the code a job's do. The start-up warm-up's
+     * ({@link ClusterWarmUp}).
      */
     ClusterData named(String prefix) {
         return new ClusterData(member, seal, this.prefix + prefix);
@@ -68,12 +71,12 @@ final class ClusterData {
     }
 
     SealedMap<Integer, TileResult> tiles(String jobId) {
-        return new SealedMap<>(member.getMap(prefix + ClusterMaps.tiles(jobId)), ClusterMaps.TILES_FAMILY,
+        return new SealedMap<>(member.getMap(ClusterMaps.tiles(prefix + jobId)), ClusterMaps.TILES_FAMILY,
                 ClusterCodecs.TILE_RESULT, seal);
     }
 
     SealedMap<Integer, TileClaim> claims(String jobId) {
-        return new SealedMap<>(member.getMap(prefix + ClusterMaps.claims(jobId)), ClusterMaps.CLAIMS_FAMILY,
+        return new SealedMap<>(member.getMap(ClusterMaps.claims(prefix + jobId)), ClusterMaps.CLAIMS_FAMILY,
                 ClusterCodecs.TILE_CLAIM, seal);
     }
 
@@ -83,6 +86,6 @@ final class ClusterData {
     }
 
     EventLog events(String jobId) {
-        return new EventLog(member.getRingbuffer(prefix + ClusterMaps.events(jobId)), seal);
+        return new EventLog(member.getRingbuffer(ClusterMaps.events(prefix + jobId)), seal);
     }
 }

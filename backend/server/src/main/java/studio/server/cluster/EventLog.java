@@ -30,6 +30,10 @@ final class EventLog {
         this.seal = seal;
     }
 
+    String name() {
+        return events.getName();
+    }
+
     void add(JobEvent event) {
         events.add(seal.seal(FAMILY, events.getName(), "", ClusterCodecs.EVENT.encode(event)));
     }

@@ -50,8 +50,8 @@ final class TileFarm {
     /** The coordinator looks for results this often, and for the cancel and the deadline. */
     static final long POLL_MILLIS = 100;
     /**
-     * The coordinator looks for tiles claimed by members that left this often (and at once when one
-     * leaves), and looks again this soon at tiles it found in no state.
+     * The coordinator looks whether a member left this often (and at once when one leaves; then it reads
+     * the claims, {@link LostCheck}), and looks again this soon at tiles it found in no state.
      */
     static final long LOST_CHECK_MILLIS = 1_000;
     /**
@@ -123,6 +123,7 @@ final class TileFarm {
             }
             queue.addAll(todo);
             long seenLeft = membersLeft;
+            LostCheck lostCheck = new LostCheck(alive, System.nanoTime());
             long nextLostCheck = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(LOST_CHECK_MILLIS);
             long nextMissingCheck = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(MISSING_CHECK_MILLIS);
             while (job.assembly.doneCount < tiles.size()) {
@@ -141,7 +142,10 @@ final class TileFarm {
                 }
                 if (left || now - nextLostCheck > 0) {
                     nextLostCheck = now + TimeUnit.MILLISECONDS.toNanos(LOST_CHECK_MILLIS);
-                    requeueLost(job);
+                    Set<String> members = alive();
+                    if (lostCheck.due(now, left, members)) {
+                        requeueLost(job, members);
+                    }
                 }
                 if (now - nextMissingCheck > 0) {
                     boolean suspects = requeueMissing(job);
@@ -195,8 +199,7 @@ final class TileFarm {
      * Queues again the tiles claimed by members that have left, unless their result is in (a worker keeps
      * its claim once it has put its result, whose event may not have been heard yet).
      */
-    private void requeueLost(Job job) {
-        Set<String> alive = alive();
+    private void requeueLost(Job job, Set<String> alive) {
         for (Map.Entry<Integer, TileClaim> entry : job.claims.entries().entrySet()) {
             int index = entry.getKey();
             TileClaim claim = entry.getValue();

@@ -13,6 +13,8 @@ import org.junit.jupiter.api.Test;
 
 import com.hazelcast.collection.ItemEvent;
 import com.hazelcast.collection.ItemListener;
+import com.hazelcast.config.Config;
+import com.hazelcast.config.MapConfig;
 import com.hazelcast.core.DistributedObject;
 
 import studio.engine.render.Renderer;
@@ -75,10 +77,28 @@ class ClusterWarmUpTest {
         assertThat(queued).as("tasks in the cluster's tile queue").hasValue(0);
         for (TestMember member : members) {
             assertThat(member.hazelcast.getDistributedObjects()).map(DistributedObject::getName)
-                    .noneMatch(structure -> structure.startsWith("studio-warm-up-"));
+                    .noneMatch(structure -> structure.contains("studio-warm-up-"));
             assertThat(member.data.jobs().keySet()).isEmpty();
             assertThat(member.rejected(ClusterMaps.TILES_FAMILY)).isZero();
         }
+    }
+
+    /** The warm-up's tile and claim maps and event log are configured as a job's, so it runs the code a job's run. */
+    @Test
+    void itsPerJobStructuresAreConfiguredAsAJobs() throws Exception {
+        start();
+        TestMember member = members.get(0);
+        Config config = member.hazelcast.getConfig();
+        ClusterData own = member.data.named("studio-warm-up-" + member.uuid + "-");
+
+        MapConfig jobTiles = config.findMapConfig(member.data.tiles("a-job").name());
+        assertThat(jobTiles.getTimeToLiveSeconds()).isEqualTo(MemberConfig.TILE_MAPS_TTL_SECONDS);
+        assertThat(config.findMapConfig(own.tiles("warm-up-0").name()).getTimeToLiveSeconds())
+                .isEqualTo(jobTiles.getTimeToLiveSeconds());
+        assertThat(config.findMapConfig(own.claims("warm-up-0").name()).getTimeToLiveSeconds())
+                .isEqualTo(config.findMapConfig(member.data.claims("a-job").name()).getTimeToLiveSeconds());
+        assertThat(config.findRingbufferConfig(own.events("warm-up-0").name()).getCapacity())
+                .isEqualTo(MemberConfig.EVENTS_CAPACITY);
     }
 
     @Test
@@ -93,7 +113,7 @@ class ClusterWarmUpTest {
         assertThat(System.nanoTime() - start).isLessThan(Duration.ofSeconds(10).toNanos());
         for (TestMember member : members) {
             assertThat(member.hazelcast.getDistributedObjects()).map(DistributedObject::getName)
-                    .noneMatch(structure -> structure.startsWith("studio-warm-up-"));
+                    .noneMatch(structure -> structure.contains("studio-warm-up-"));
         }
     }
 
@@ -112,7 +132,7 @@ class ClusterWarmUpTest {
         assertThat(memory.reserved()).as("nothing left reserved").isZero();
         for (TestMember member : members) {
             assertThat(member.hazelcast.getDistributedObjects()).map(DistributedObject::getName)
-                    .noneMatch(structure -> structure.startsWith("studio-warm-up-"));
+                    .noneMatch(structure -> structure.contains("studio-warm-up-"));
         }
     }
 }
