@@ -42,9 +42,8 @@ import studio.server.system.MemoryBusyException;
  * claimed task a worker {@linkplain #ready ready}: a worker that finishes a tile finds the next one
  * there instead of waiting for the two round trips to the members that own the queue and the claim.
  * Those members' cores are busy rendering, and each round trip waits for their network and
- * operation threads to be scheduled: with two members pinned to one core each
- * ({@code scripts/cluster-scaling.sh}), a worker waited about 7 ms for each task, 0.6 s of a 13 s
- * job; taken ahead, under 0.1 ms. The price is at most one tile a worker holds beyond the one it
+ * operation threads to be scheduled (milliseconds a task with two members pinned to one core each,
+ * {@code scripts/cluster-scaling.sh}; taken ahead, a tenth of one). The price is at most one tile a worker holds beyond the one it
  * renders, which another member may wait for at the job's end.
  */
 final class TileWorkers implements AutoCloseable {
