@@ -42,11 +42,8 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
     static final String SCENE = "cluster/warm-up.json";
     /** 8-pixel tiles of the 128x128 scene: 256 tiles a round, each a few round trips and hardly a render. */
     static final int TILE_SIZE = 8;
-    /**
-     * Enough calls of Hazelcast's per-operation code (a few a tile) for C2 before the port opens: after 2
-     * rounds it stayed in C1's profiled code until the second job (docs/cluster.md, "The warm job's compiles").
-     */
-    static final int ROUNDS = 6;
+    /** Past the 200 calls after which the JIT compiles a method with C1's profile, for code called once a tile. */
+    static final int ROUNDS = 2;
     /** A round's job id, before its number. */
     private static final String ID = "warm-up-";
 
