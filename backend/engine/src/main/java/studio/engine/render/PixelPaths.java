@@ -149,7 +149,7 @@ public final class PixelPaths {
     /**
      * As {@link #forget(List, Vec3, List)} with the changed objects' shapes (each object's before
      * and after the edit), so that a segment that meets a sphere's box but passes beside the sphere
-     * keeps its pixel: most of those that only pass near a moved ball (LiveViewSpanBench).
+     * keeps its pixel: most of those that only pass near a moved ball (docs/live-view.md).
      */
     public void forgetShapes(List<? extends Shape> shapes, Vec3 camera, List<? extends Light> lights) {
         List<Aabb> boxes = new ArrayList<>(shapes.size());

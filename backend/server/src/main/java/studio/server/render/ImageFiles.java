@@ -7,6 +7,7 @@ import java.io.UncheckedIOException;
 
 import studio.engine.image.ImageEncoder;
 import studio.engine.render.Film;
+import studio.engine.render.PixelLattice;
 
 /** Encodes a film in the format a scene asks for. */
 public final class ImageFiles {
@@ -16,7 +17,8 @@ public final class ImageFiles {
 
     public static void write(Film film, String format, double quality, OutputStream out) throws IOException {
         if (format.equals("jpg")) {
-            ImageEncoder.writeJpeg(ImageEncoder.toImage(film), quality, out);
+            // blue-green-red bytes, which the JPEG writer takes as they are: the same file as from packed ints
+            ImageEncoder.writeJpeg(ImageEncoder.toJpegImage(film, PixelLattice.ALL), quality, out);
         } else {
             ImageEncoder.writePng(ImageEncoder.toImage(film), out);
         }

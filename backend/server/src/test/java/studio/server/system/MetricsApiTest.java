@@ -79,7 +79,7 @@ class MetricsApiTest {
         assertThat(value(scrape, "studio_render_requests_active")).isZero();
         assertThat(value(scrape, "studio_render_memory_kept")).isZero();
         assertThat(scrape).contains("studio_jobs_queued ", "studio_jobs_running ", "studio_live_view_sessions ",
-                "studio_render_requests_cancelled_total ",
+                "studio_render_requests_active ", "studio_render_requests_cancelled_total ", "studio_render_memory_kept ",
                 "# HELP studio_render_seconds ");
         // the JVM's and the web server's own meters come too
         assertThat(scrape).contains("jvm_memory_used_bytes", "http_server_requests_seconds");
