@@ -50,6 +50,9 @@ class PreviewLoadTest {
         long threadsBefore = liveViewThreads();
         long reservedBefore = memory.reserved();
         for (int round = 0; round < 13; round++) {
+            // a closed view gives its slot back when the server sees the close: the next 16 wait for
+            // that, or the last of them would find the limit (16) still taken and get 503
+            Await.until("the round before's views closed", 20_000, () -> handler.open() == 0);
             List<PreviewClient> views = new ArrayList<>();
             for (int i = 0; i < 16; i++) {
                 PreviewClient view = new PreviewClient(port);
