@@ -49,6 +49,11 @@ public final class LightPoints {
      */
     public void start(int x, int y, int first, int count, double[] xs, double[] ys) {
         this.first = first;
+        if (count == 1 && !ownPattern) { // a run of one deals its one pixel point to itself
+            us[0] = xs[first];
+            vs[0] = ys[first];
+            return;
+        }
         random.reset(x, y, seed ^ STREAM);
         random.skip((long) first << 24);
         if (count == 0) {

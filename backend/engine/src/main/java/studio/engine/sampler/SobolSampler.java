@@ -50,11 +50,31 @@ public record SobolSampler(int samplesPerPixel) implements Sampler {
             return;
         }
         int indexSeed = random.nextInt(), xSeed = random.nextInt(), ySeed = random.nextInt();
+        points(indexSeed, xSeed, ySeed, first, count, xs, ys);
+    }
+
+    /**
+     * Points first .. first + count - 1 of the sequence scrambled with the seeds {@link #fill}
+     * draws (a pattern of more than one point), into xs and ys at the same indices: what fill gives,
+     * for a caller that keeps a pixel's seeds across its runs ({@link PixelSamples}).
+     */
+    static void points(int indexSeed, int xSeed, int ySeed, int first, int count, double[] xs, double[] ys) {
         // owenScramble(b, s) = reverse(lkHash(reverse(b), s)); the reversals that cancel are left out.
         for (int i = first; i < first + count; i++) {
-            int index = owenScramble(i, indexSeed);
+            int reversed = i < SMALL ? SMALL_REVERSED[i] : Integer.reverse(i);
+            int index = Integer.reverse(lkHash(reversed, indexSeed));
             xs[i] = unit(Integer.reverse(lkHash(index, xSeed)));
             ys[i] = unit(Integer.reverse(lkHash(sobolSecondReversed(index), ySeed)));
+        }
+    }
+
+    /** Indices below this have their bits reversed by a table: a pixel's first points. */
+    private static final int SMALL = 256;
+    private static final int[] SMALL_REVERSED = new int[SMALL];
+
+    static {
+        for (int i = 0; i < SMALL; i++) {
+            SMALL_REVERSED[i] = Integer.reverse(i);
         }
     }
 

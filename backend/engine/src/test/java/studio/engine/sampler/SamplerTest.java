@@ -315,6 +315,25 @@ class SamplerTest {
     }
 
     @Test
+    void sobolPointIsBothDimensionsOwenScrambledAtTheScrambledIndex() {
+        // point i: the index Owen-scrambled, then van der Corput's and Sobol's second dimension of it,
+        // each Owen-scrambled with its own seed; past the table of the first indices' reversals too
+        Random cases = new Random(11);
+        double[] xs = new double[1024], ys = new double[1024];
+        for (int t = 0; t < 20; t++) {
+            int indexSeed = cases.nextInt(), xSeed = cases.nextInt(), ySeed = cases.nextInt();
+            SobolSampler.points(indexSeed, xSeed, ySeed, 0, 1024, xs, ys);
+            for (int i = 0; i < 1024; i++) {
+                int index = SobolSampler.owenScramble(i, indexSeed);
+                int x = SobolSampler.owenScramble(Integer.reverse(index), xSeed);
+                int y = SobolSampler.owenScramble(SobolSampler.sobolSecond(index), ySeed);
+                assertEquals((x & 0xffffffffL) * 0x1.0p-32, xs[i], 0.0, "x of point " + i);
+                assertEquals((y & 0xffffffffL) * 0x1.0p-32, ys[i], 0.0, "y of point " + i);
+            }
+        }
+    }
+
+    @Test
     void owenScramblingKeepsEachBitsPrefixTogether() {
         // points that share their top k bits still share them (possibly flipped) after scrambling
         Random cases = new Random(5);
