@@ -170,7 +170,8 @@ final class ProgressiveSobolSampling implements TileSampling {
                     pixelSamples.fill(0, base, xs, ys);
                     t.resetRange();
                     try {
-                        badHere = t.trace(x, y, xs, ys, 0, base);
+                        // bundled whatever the count: the pass goes along rows, so one listing serves 4 pixels (docs/speed.md)
+                        badHere = t.trace(x, y, xs, ys, 0, base, true);
                     } catch (RuntimeException | Error e) {
                         if (entry >= 0) {
                             borders.abandon(entry);
@@ -313,7 +314,7 @@ final class ProgressiveSobolSampling implements TileSampling {
             double firstR = totalR, firstG = totalG, firstB = totalB;
             int half = taken, target = Math.min(max, Math.max(taken * 2, firstStep));
             pixelSamples.fill(taken, target - taken, xs, ys);
-            bad += t.trace(x, y, xs, ys, taken, target - taken);
+            bad += t.trace(x, y, xs, ys, taken, target - taken, true);
             totalR += t.sumR;
             totalG += t.sumG;
             totalB += t.sumB;

@@ -18,7 +18,9 @@ final class SampleTracer {
 
     /**
      * A call tracing at least this many samples sends its camera rays as a {@link RayBundle}, for
-     * the scene to list what they can meet once; fewer would not repay the listing.
+     * the scene to list what they can meet once; fewer would not repay the listing, unless the
+     * caller traces a row's pixels one after the other (progressive sobol's base pass, see
+     * {@link #trace(int, int, double[], double[], int, int, boolean)}).
      */
     static final int BUNDLE_FROM = 4;
     /**
@@ -110,10 +112,19 @@ final class SampleTracer {
      * @throws RenderCancelledException once the render's stop signal is raised
      */
     long trace(int x, int y, double[] xs, double[] ys, int first, int count) {
-        long bad = 0;
         // a call of fewer samples traces without the bundle but keeps it: the pyramid of its run
         // holds the run's next calls' rays too (a refined pixel's first calls are short)
-        boolean bundled = count >= BUNDLE_FROM;
+        return trace(x, y, xs, ys, first, count, count >= BUNDLE_FROM);
+    }
+
+    /**
+     * {@link #trace(int, int, double[], double[], int, int)}, the camera rays bundled or not as the
+     * caller says. A caller that traces the pixels of a row one after the other, a few samples each,
+     * bundles every call: one pyramid's listing then serves the next pixels of its run of {@value #RUN}
+     * too (the same hits either way).
+     */
+    long trace(int x, int y, double[] xs, double[] ys, int first, int count, boolean bundled) {
+        long bad = 0;
         if (bundled && (y != bundledRow || x < bundledFrom || x >= bundledFrom + RUN)) {
             bundledRow = y;
             bundledFrom = x - x % RUN;
