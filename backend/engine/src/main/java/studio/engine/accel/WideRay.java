@@ -39,11 +39,34 @@ public final class WideRay {
     public int nearX, nearY, nearZ, farX, farY, farZ;
     /** Whether the float test must keep every box for this ray (see the class comment). */
     public boolean acceptAll;
+    /**
+     * The last origin's bits and what was worked out from it: the origin rounded up and down to
+     * float on each axis, and whether it is in range; rays from one point (a frame's camera rays)
+     * work it out once (kernel benchmark, {@code studio-bench.jar kernel}). It starts as the
+     * origin (0, 0, 0)'s: all bits zero, every rounding 0, in range.
+     */
+    private long lastOx, lastOy, lastOz;
+    private float upX, downX, upY, downY, upZ, downZ;
+    private boolean originInRange = true;
 
     /** Sets this up for the ray from (ox, oy, oz) along (dx, dy, dz). */
     public WideRay set(double ox, double oy, double oz, double dx, double dy, double dz) {
+        long bx = Double.doubleToRawLongBits(ox), by = Double.doubleToRawLongBits(oy), bz = Double.doubleToRawLongBits(oz);
+        if (bx != lastOx || by != lastOy || bz != lastOz) {
+            // (near - o) * i is smallest with o rounded up when i >= 0, down when i < 0; the far one the other way
+            upX = WideBvh.floatAbove(ox);
+            downX = WideBvh.floatBelow(ox);
+            upY = WideBvh.floatAbove(oy);
+            downY = WideBvh.floatBelow(oy);
+            upZ = WideBvh.floatAbove(oz);
+            downZ = WideBvh.floatBelow(oz);
+            originInRange = inRange(ox) && inRange(oy) && inRange(oz);
+            lastOx = bx;
+            lastOy = by;
+            lastOz = bz;
+        }
         double ixd = 1 / dx, iyd = 1 / dy, izd = 1 / dz;
-        acceptAll = !(inRange(ox) && inRange(oy) && inRange(oz) && usable(ixd) && usable(iyd) && usable(izd));
+        acceptAll = !(originInRange && usable(ixd) && usable(iyd) && usable(izd));
         ix = (float) ixd;
         iy = (float) iyd;
         iz = (float) izd;
@@ -54,10 +77,6 @@ public final class WideRay {
         farY = py ? WideBvh.MAX_Y : WideBvh.MIN_Y;
         nearZ = pz ? WideBvh.MIN_Z : WideBvh.MAX_Z;
         farZ = pz ? WideBvh.MAX_Z : WideBvh.MIN_Z;
-        // (near - o) * i is smallest with o rounded up when i >= 0, down when i < 0; the far one the other way
-        float upX = WideBvh.floatAbove(ox), downX = WideBvh.floatBelow(ox);
-        float upY = WideBvh.floatAbove(oy), downY = WideBvh.floatBelow(oy);
-        float upZ = WideBvh.floatAbove(oz), downZ = WideBvh.floatBelow(oz);
         nearOx = px ? upX : downX;
         farOx = px ? downX : upX;
         nearOy = py ? upY : downY;
