@@ -32,9 +32,6 @@ import studio.engine.memory.MemoryGate;
  */
 public final class ObjReader {
 
-    /** Lines {@link #readRun} reads a call. */
-    static final int LINES_A_CALL = 64;
-
     private final ObjLines lines;
     private final int maxTriangles;
     private final MemoryGate memory;
@@ -103,25 +100,10 @@ public final class ObjReader {
     }
 
     private MeshData read() throws IOException {
-        while (readRun()) {
-            // each call reads up to LINES_A_CALL lines
-        }
-        return corners.mesh(positions, positionCount, normals, normalCount, uvs);
-    }
-
-    /**
-     * Reads up to {@value #LINES_A_CALL} lines; false at the end of the text. A render process runs
-     * without on-stack replacement ({@code bin/studio}), so a loop over every line in one call would
-     * stay interpreted to its end; called run by run it is compiled after its first hundred runs.
-     */
-    private boolean readRun() throws IOException {
-        for (int k = 0; k < LINES_A_CALL; k++) {
-            if (!lines.nextLine()) {
-                return false;
-            }
+        while (lines.nextLine()) {
             statement();
         }
-        return true;
+        return corners.mesh(positions, positionCount, normals, normalCount, uvs);
     }
 
     private void statement() {
