@@ -34,6 +34,14 @@ final class BvhBuilder {
     private static final double TRAVERSAL_COST = 1;
     /** Doubles of pending node data: box (6), centroid minima (3) and maxima (3), centroids as min+max. */
     private static final int INFO = 12;
+    /**
+     * Slots a call of the loops over a node's slots (checking, bounding, binning, partitioning): a
+     * render process runs without on-stack replacement ({@code bin/studio}), so a loop inside one
+     * call stays interpreted to its end, and the root's loops cover every primitive; called run by
+     * run they are compiled after their first hundred runs (docs/speed.md, "Where a cold process's
+     * time goes").
+     */
+    static final int RUN = 64;
 
     /** Primitive boxes in slot order, six doubles per slot; partitioned together with {@link #ids}. */
     private final double[] box;
@@ -43,6 +51,8 @@ final class BvhBuilder {
     private int[] nodeLinks;
     private int nodeCount;
     private int maxDepth;
+    /** The last slot {@link #partitionRun} has not looked at yet. */
+    private int partitionLast;
 
     /** The box and centroid bounds of the two children waiting at each depth (left, right). */
     private final double[] pending = new double[(Bvh.STACK_SIZE + 2) * 2 * INFO];
@@ -61,17 +71,25 @@ final class BvhBuilder {
                 + MemoryGate.ints(3L * capacity));
         this.memory = memory;
         box = Arrays.copyOf(primitiveBounds, 6 * count);
-        for (double v : box) {
-            if (!Double.isFinite(v)) {
-                throw new IllegalArgumentException("primitive boxes must be finite");
-            }
-        }
         ids = new int[count];
-        for (int i = 0; i < count; i++) {
-            ids[i] = i;
+        for (int from = 0; from < count; from += RUN) {
+            startRun(from, Math.min(count, from + RUN));
         }
         nodeBounds = new double[6 * capacity];
         nodeLinks = new int[3 * capacity];
+    }
+
+    /** Checks the boxes of slots [from, to) and numbers them. */
+    private void startRun(int from, int to) {
+        double[] b = box;
+        for (int i = 6 * from, end = 6 * to; i < end; i++) {
+            if (!Double.isFinite(b[i])) {
+                throw new IllegalArgumentException("primitive boxes must be finite");
+            }
+        }
+        for (int i = from; i < to; i++) {
+            ids[i] = i;
+        }
     }
 
     Bvh build() {
@@ -159,7 +177,15 @@ final class BvhBuilder {
             p[info + k] = p[info + 6 + k] = Double.POSITIVE_INFINITY;
             p[info + 3 + k] = p[info + 9 + k] = Double.NEGATIVE_INFINITY;
         }
-        for (int s = start; s < end; s++) {
+        for (int from = start; from < end; from += RUN) {
+            scanRun(from, Math.min(end, from + RUN), info);
+        }
+    }
+
+    /** {@link #scanBounds}' loop over slots [from, to), widening the bounds at {@code pending[info ..]}. */
+    private void scanRun(int from, int to, int info) {
+        double[] p = pending;
+        for (int s = from; s < to; s++) {
             int o = 6 * s;
             for (int k = 0; k < 3; k++) {
                 double lo = box[o + k], hi = box[o + k + 3], c = lo + hi;
@@ -181,23 +207,14 @@ final class BvhBuilder {
         return k < 0 ? 0 : k >= bins ? bins - 1 : k;
     }
 
-    /**
-     * Bins the slots' centroids along the axis and returns the cheapest split as the first bin of
-     * the right side (1 .. bins-1); 0 if a leaf is cheaper and small enough; -1 if no boundary
-     * separates the centroids.
-     */
-    private int findSplit(int start, int end, int axis, double cmin, double scale, int bins, double area, int n) {
+    /** Counts slots [from, to) into their centroids' bins along the axis and widens the bins' boxes. */
+    private void binRun(int from, int to, int axis, double cmin, double scale, int bins) {
         double[] bb = binBox, b = box;
-        Arrays.fill(binCount, 0, bins, 0);
-        for (int k = 0; k < bins; k++) {
-            int q = 6 * k;
-            bb[q] = bb[q + 1] = bb[q + 2] = Double.POSITIVE_INFINITY;
-            bb[q + 3] = bb[q + 4] = bb[q + 5] = Double.NEGATIVE_INFINITY;
-        }
-        for (int s = start; s < end; s++) {
+        int[] counts = binCount;
+        for (int s = from; s < to; s++) {
             int o = 6 * s;
             int k = bin(b[o + axis] + b[o + axis + 3], cmin, scale, bins);
-            binCount[k]++;
+            counts[k]++;
             int q = 6 * k;
             bb[q] = Math.min(bb[q], b[o]);
             bb[q + 1] = Math.min(bb[q + 1], b[o + 1]);
@@ -205,6 +222,24 @@ final class BvhBuilder {
             bb[q + 3] = Math.max(bb[q + 3], b[o + 3]);
             bb[q + 4] = Math.max(bb[q + 4], b[o + 4]);
             bb[q + 5] = Math.max(bb[q + 5], b[o + 5]);
+        }
+    }
+
+    /**
+     * Bins the slots' centroids along the axis and returns the cheapest split as the first bin of
+     * the right side (1 .. bins-1); 0 if a leaf is cheaper and small enough; -1 if no boundary
+     * separates the centroids.
+     */
+    private int findSplit(int start, int end, int axis, double cmin, double scale, int bins, double area, int n) {
+        double[] bb = binBox;
+        Arrays.fill(binCount, 0, bins, 0);
+        for (int k = 0; k < bins; k++) {
+            int q = 6 * k;
+            bb[q] = bb[q + 1] = bb[q + 2] = Double.POSITIVE_INFINITY;
+            bb[q + 3] = bb[q + 4] = bb[q + 5] = Double.NEGATIVE_INFINITY;
+        }
+        for (int from = start; from < end; from += RUN) {
+            binRun(from, Math.min(end, from + RUN), axis, cmin, scale, bins);
         }
         // Sweep from the right: count and area of bins k .. bins-1.
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
@@ -249,19 +284,43 @@ final class BvhBuilder {
     /**
      * Moves the slots whose centroid bin is below {@code split} to the front, writing each side's
      * box and centroid bounds to {@code pending[left ..]} and {@code pending[right ..]}; returns the
-     * first slot of the right side.
+     * first slot of the right side. The two sides' bounds are widened in {@code pending} run by run
+     * ({@link #partitionRun}).
      */
     private int partition(int start, int end, int axis, double cmin, double scale, int bins, int split,
                           int left, int right) {
-        double[] b = box;
-        final double inf = Double.POSITIVE_INFINITY;
-        // Left and right: box (l*, r*) and centroid bounds (lc*, rc*), kept in locals.
-        double lx0 = inf, ly0 = inf, lz0 = inf, lx1 = -inf, ly1 = -inf, lz1 = -inf;
-        double lcx0 = inf, lcy0 = inf, lcz0 = inf, lcx1 = -inf, lcy1 = -inf, lcz1 = -inf;
-        double rx0 = inf, ry0 = inf, rz0 = inf, rx1 = -inf, ry1 = -inf, rz1 = -inf;
-        double rcx0 = inf, rcy0 = inf, rcz0 = inf, rcx1 = -inf, rcy1 = -inf, rcz1 = -inf;
-        int i = start, j = end - 1;
-        while (i <= j) {
+        double[] p = pending;
+        for (int k = 0; k < 6; k++) {
+            p[left + k] = p[left + 6 + k] = p[right + k] = p[right + 6 + k] = k < 3 ? Double.POSITIVE_INFINITY
+                    : Double.NEGATIVE_INFINITY;
+        }
+        partitionLast = end - 1;
+        int i = start;
+        while (i <= partitionLast) {
+            i = partitionRun(i, axis, cmin, scale, bins, split, left, right);
+        }
+        return i;
+    }
+
+    /**
+     * Up to {@value #RUN} steps of {@link #partition} from slot {@code i} to {@link #partitionLast}:
+     * a slot left of the split stays and widens the left side's bounds, one right of it widens the
+     * right side's and is swapped to the end; returns the next slot to look at and leaves the last
+     * one not yet looked at in {@link #partitionLast}.
+     */
+    private int partitionRun(int i, int axis, double cmin, double scale, int bins, int split, int left, int right) {
+        double[] b = box, p = pending;
+        // Left and right: box (l*, r*) and centroid bounds (lc*, rc*), kept in locals for the run.
+        double lx0 = p[left], ly0 = p[left + 1], lz0 = p[left + 2];
+        double lx1 = p[left + 3], ly1 = p[left + 4], lz1 = p[left + 5];
+        double lcx0 = p[left + 6], lcy0 = p[left + 7], lcz0 = p[left + 8];
+        double lcx1 = p[left + 9], lcy1 = p[left + 10], lcz1 = p[left + 11];
+        double rx0 = p[right], ry0 = p[right + 1], rz0 = p[right + 2];
+        double rx1 = p[right + 3], ry1 = p[right + 4], rz1 = p[right + 5];
+        double rcx0 = p[right + 6], rcy0 = p[right + 7], rcz0 = p[right + 8];
+        double rcx1 = p[right + 9], rcy1 = p[right + 10], rcz1 = p[right + 11];
+        int j = partitionLast;
+        for (int steps = 0; steps < RUN && i <= j; steps++) {
             int o = 6 * i;
             double x0 = b[o], y0 = b[o + 1], z0 = b[o + 2], x1 = b[o + 3], y1 = b[o + 4], z1 = b[o + 5];
             double cx = x0 + x1, cy = y0 + y1, cz = z0 + z1;
@@ -280,6 +339,7 @@ final class BvhBuilder {
                 j--;
             }
         }
+        partitionLast = j;
         store(left, lx0, ly0, lz0, lx1, ly1, lz1, lcx0, lcy0, lcz0, lcx1, lcy1, lcz1);
         store(right, rx0, ry0, rz0, rx1, ry1, rz1, rcx0, rcy0, rcz0, rcx1, rcy1, rcz1);
         return i;

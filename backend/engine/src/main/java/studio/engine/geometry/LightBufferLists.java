@@ -73,9 +73,7 @@ final class LightBufferLists {
         if (entries > cap) {
             return null;
         }
-        for (int cell = 0; cell < cells; cell++) {
-            cellStart[cell + 1] += cellStart[cell];
-        }
+        prefixSums(cellStart, cells);
         if (3 * entries > Integer.MAX_VALUE - 8
                 || !memory.tryReserve(MemoryGate.ints(3 * entries) + MemoryGate.ints(cells)
                 + 2 * MemoryGate.ints(count + 1L))) {
@@ -84,23 +82,31 @@ final class LightBufferLists {
         int[] packed = new int[3 * (int) entries];
         // the primitives in about the order of their bounds (a counting sort on a grid of them), so
         // that each cell's list comes out nearly sorted and its sort has little left to do
-        float least = Float.POSITIVE_INFINITY, most = 0;
-        for (float bound : bounds) {
-            least = Math.min(least, bound);
-            most = Math.max(most, bound);
-        }
+        float[] extent = {Float.POSITIVE_INFINITY, 0}; // the least and the most bound
+        Runs.over(count, (from, to) -> {
+            float least = extent[0], most = extent[1];
+            for (int t = from; t < to; t++) {
+                least = Math.min(least, bounds[t]);
+                most = Math.max(most, bounds[t]);
+            }
+            extent[0] = least;
+            extent[1] = most;
+        });
+        float least = extent[0], most = extent[1];
         double perBound = most > least ? (count - 1) / ((double) most - least) : 0;
         int[] bucketStart = new int[count + 1];
-        for (int t = 0; t < count; t++) {
-            bucketStart[bucket(bounds[t], least, perBound, count) + 1]++;
-        }
-        for (int q = 0; q < count; q++) {
-            bucketStart[q + 1] += bucketStart[q];
-        }
+        Runs.over(count, (from, to) -> {
+            for (int t = from; t < to; t++) {
+                bucketStart[bucket(bounds[t], least, perBound, count) + 1]++;
+            }
+        });
+        prefixSums(bucketStart, count);
         int[] order = new int[count];
-        for (int t = 0; t < count; t++) {
-            order[bucketStart[bucket(bounds[t], least, perBound, count)]++] = t;
-        }
+        Runs.over(count, (from, to) -> {
+            for (int t = from; t < to; t++) {
+                order[bucketStart[bucket(bounds[t], least, perBound, count)]++] = t;
+            }
+        });
         int[] next = Arrays.copyOf(cellStart, cells);
         Runs.over(count, (from, to) -> {
             for (int q = from; q < to; q++) {
@@ -136,6 +142,15 @@ final class LightBufferLists {
     static float nearestBound(double[] box, int o, double[] l) {
         float bound = (float) (Aabb.distance(box, o, l[0], l[1], l[2]) * (1 - 1e-6));
         return bound > 0 ? Math.nextDown(bound) : 0;
+    }
+
+    /** Turns counts at {@code a[1 .. n]} into starts: each a[q + 1] becomes a[0] + ... + a[q + 1]. */
+    private static void prefixSums(int[] a, int n) {
+        Runs.over(n, (from, to) -> {
+            for (int q = from; q < to; q++) {
+                a[q + 1] += a[q];
+            }
+        });
     }
 
     /** The counting sort's bucket of a bound. */

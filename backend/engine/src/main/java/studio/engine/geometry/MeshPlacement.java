@@ -90,37 +90,44 @@ final class MeshPlacement {
 
     static double[] worldNormals(double[] object, Rotation r) {
         double[] world = new double[object.length];
-        for (int i = 0; i < object.length; i += 3) {
-            Vec3 n = r.apply(new Vec3(object[i], object[i + 1], object[i + 2])).normalized();
-            world[i] = n.x();
-            world[i + 1] = n.y();
-            world[i + 2] = n.z();
-        }
+        Runs.over(object.length / 3, (from, to) -> {
+            for (int i = 3 * from; i < 3 * to; i += 3) {
+                Vec3 n = r.apply(new Vec3(object[i], object[i + 1], object[i + 2])).normalized();
+                world[i] = n.x();
+                world[i + 1] = n.y();
+                world[i + 2] = n.z();
+            }
+        });
         return world;
     }
 
     /** The triangles whose cross product at these positions is non-zero, in their given order. */
     static int[] nonDegenerate(int[] indices, double[] p) {
         int[] kept = new int[indices.length];
-        int n = 0;
-        for (int i = 0; i < indices.length; i += 3) {
-            if (hasArea(indices, i, p)) {
-                kept[n++] = indices[i];
-                kept[n++] = indices[i + 1];
-                kept[n++] = indices[i + 2];
+        int[] n = {0};
+        Runs.over(indices.length / 3, (from, to) -> {
+            int k = n[0];
+            for (int i = 3 * from; i < 3 * to; i += 3) {
+                if (hasArea(indices, i, p)) {
+                    kept[k++] = indices[i];
+                    kept[k++] = indices[i + 1];
+                    kept[k++] = indices[i + 2];
+                }
             }
-        }
-        return n == kept.length ? kept : Arrays.copyOf(kept, n);
+            n[0] = k;
+        });
+        return n[0] == kept.length ? kept : Arrays.copyOf(kept, n[0]);
     }
 
     /** Whether every triangle's cross product at these positions is non-zero. */
     static boolean haveArea(int[] indices, double[] p) {
-        for (int i = 0; i < indices.length; i += 3) {
-            if (!hasArea(indices, i, p)) {
-                return false;
+        boolean[] all = {true};
+        Runs.over(indices.length / 3, (from, to) -> {
+            for (int i = 3 * from; i < 3 * to && all[0]; i += 3) {
+                all[0] = hasArea(indices, i, p);
             }
-        }
-        return true;
+        });
+        return all[0];
     }
 
     static boolean hasArea(int[] indices, int i, double[] p) {
