@@ -43,6 +43,12 @@ final class Seal {
     private final ClusterSecret secret;
     private final MeterRegistry registry;
     private final SecureRandom random = new SecureRandom();
+    /**
+     * Each thread's cipher, initialized again for every value: {@code Cipher.getInstance} per value
+     * looked up the provider every time (4 us of a small value's seal and open, warm) and two members'
+     * warm jobs were still compiling that lookup (docs/cluster.md, "The warm job's compiles").
+     */
+    private final ThreadLocal<Cipher> ciphers = ThreadLocal.withInitial(Seal::newCipher);
     private final Map<String, SecretKey> keys = new ConcurrentHashMap<>();
     private final Map<String, Counter> rejected = new ConcurrentHashMap<>();
     private final Map<String, AtomicLong> lastLogged = new ConcurrentHashMap<>();
@@ -60,7 +66,7 @@ final class Seal {
         random.nextBytes(nonce);
         System.arraycopy(nonce, 0, out, 1, NONCE);
         try {
-            Cipher cipher = Cipher.getInstance(AES_GCM);
+            Cipher cipher = ciphers.get();
             cipher.init(Cipher.ENCRYPT_MODE, key(family), new GCMParameterSpec(TAG_BITS, nonce));
             cipher.updateAAD(aad(name, key));
             cipher.doFinal(plain, 0, plain.length, out, 1 + NONCE);
@@ -80,7 +86,7 @@ final class Seal {
             return null;
         }
         try {
-            Cipher cipher = Cipher.getInstance(AES_GCM);
+            Cipher cipher = ciphers.get();
             cipher.init(Cipher.DECRYPT_MODE, key(family), new GCMParameterSpec(TAG_BITS, sealed, 1, NONCE));
             cipher.updateAAD(aad(name, key));
             return cipher.doFinal(sealed, 1 + NONCE, sealed.length - 1 - NONCE);
@@ -116,6 +122,14 @@ final class Seal {
                 && last.compareAndSet(then, now)) {
             log.warn("dropped a value read from {} ({}); such values are counted in studio.cluster.rejected, "
                     + "logged at most every {} s", name, why, LOG_EVERY_SECONDS);
+        }
+    }
+
+    private static Cipher newCipher() {
+        try {
+            return Cipher.getInstance(AES_GCM);
+        } catch (GeneralSecurityException e) {
+            throw new IllegalStateException("no " + AES_GCM + " in this JVM", e);
         }
     }
 

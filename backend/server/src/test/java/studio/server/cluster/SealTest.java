@@ -3,8 +3,14 @@ package studio.server.cluster;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
 
@@ -55,6 +61,39 @@ class SealTest {
         assertThat(seal.open("studio-claims", "studio-tiles-j1", 3, sealed)).isNull();
         assertThat(rejected("studio-tiles")).isEqualTo(2);
         assertThat(rejected("studio-claims")).isEqualTo(1);
+    }
+
+    @Test
+    void threadsSealAndOpenAtOnceAndAValueThatDidNotOpenSpoilsNothing() throws Exception {
+        ExecutorService threads = Executors.newFixedThreadPool(4);
+        try {
+            List<Future<Integer>> done = new ArrayList<>();
+            for (int t = 0; t < 4; t++) {
+                int thread = t;
+                done.add(threads.submit(() -> {
+                    int opened = 0;
+                    for (int i = 0; i < 2_000; i++) {
+                        byte[] value = ("tile " + thread + "/" + i).getBytes(StandardCharsets.UTF_8);
+                        byte[] sealed = seal.seal("studio-tiles", "studio-tiles-j" + thread, i, value);
+                        if (i % 7 == 0) {
+                            byte[] tampered = sealed.clone();
+                            tampered[tampered.length - 1] ^= 1;
+                            assertThat(seal.open("studio-tiles", "studio-tiles-j" + thread, i, tampered)).isNull();
+                        }
+                        if (Arrays.equals(seal.open("studio-tiles", "studio-tiles-j" + thread, i, sealed), value)) {
+                            opened++;
+                        }
+                    }
+                    return opened;
+                }));
+            }
+            for (Future<Integer> each : done) {
+                assertThat(each.get(60, TimeUnit.SECONDS)).isEqualTo(2_000);
+            }
+        } finally {
+            threads.shutdownNow();
+        }
+        assertThat(rejected("studio-tiles")).isEqualTo(4 * 286);
     }
 
     @Test
