@@ -44,9 +44,9 @@ final class Seal {
     private final MeterRegistry registry;
     private final SecureRandom random = new SecureRandom();
     /**
-     * Each thread's cipher, initialized again for every value: {@code Cipher.getInstance} per value
-     * looked up the provider every time (4 us of a small value's seal and open, warm) and two members'
-     * warm jobs were still compiling that lookup (docs/cluster.md, "The warm job's compiles").
+     * Each thread's cipher, initialized again for every value: a {@code Cipher.getInstance} per value
+     * looked the provider up every time, and the JIT was still compiling that lookup in two members'
+     * warm jobs (docs/cluster.md, "By CPU, under load").
      */
     private final ThreadLocal<Cipher> ciphers = ThreadLocal.withInitial(Seal::newCipher);
     private final Map<String, SecretKey> keys = new ConcurrentHashMap<>();
