@@ -159,9 +159,10 @@ public final class ClusterJobs implements JobCluster, AutoCloseable {
     }
 
     /**
-     * The cluster's tiling: {@value #LARGE_TILE}-pixel tiles when there are enough of them, else this
-     * member's own (see {@link Renderer#tileSize}). The image is the same whatever the tiling: each
-     * pixel is seeded from itself.
+     * The cluster's tile size: {@value #LARGE_TILE}-pixel tiles when there are enough of them, else this
+     * member's own (see {@link Renderer#tileSize}); {@link ClusterTiling} cuts the image's top rows
+     * into tiles twice as large. The image is the same whatever the tiling: each pixel is seeded from
+     * itself.
      */
     private int tileSize(int width, int height) {
         long large = (long) ((width + LARGE_TILE - 1) / LARGE_TILE) * ((height + LARGE_TILE - 1) / LARGE_TILE);

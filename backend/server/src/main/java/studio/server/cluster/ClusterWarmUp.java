@@ -11,7 +11,6 @@ import org.springframework.beans.factory.SmartInitializingSingleton;
 
 import studio.engine.render.RenderCancelledException;
 import studio.engine.render.RenderResult;
-import studio.engine.render.Renderer;
 import studio.server.job.JobState;
 import studio.server.job.JobStatus;
 import studio.server.job.TileEvent;
@@ -40,8 +39,8 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
 
     private static final Logger log = LoggerFactory.getLogger(ClusterWarmUp.class);
     static final String SCENE = "cluster/warm-up.json";
-    /** 8-pixel tiles of the 128x128 scene: 256 tiles a round, each a few round trips and hardly a render. */
-    static final int TILE_SIZE = 8;
+    /** 6-pixel tiles of the 128x128 scene ({@link ClusterTiling}: 12-pixel ones first): 253 tiles a round, each a few round trips and hardly a render. */
+    static final int TILE_SIZE = 6;
     /** Past the 200 calls after which the JIT compiles a method with C1's profile, for code called once a tile. */
     static final int ROUNDS = 2;
     /** A round's job id, before its number. */
@@ -148,7 +147,7 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
         own.images().set(id, image);
         publisher.end(done);
         farm.forget(id);
-        return Renderer.tiles(width, height, TILE_SIZE).size();
+        return ClusterTiling.tiles(width, height, TILE_SIZE).size();
     }
 
     private static byte[] read() {

@@ -21,7 +21,6 @@ import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
 import studio.engine.render.RenderListener;
 import studio.engine.render.RenderResult;
-import studio.engine.render.Renderer;
 import studio.engine.render.TileRect;
 import studio.server.job.JobFailedException;
 import studio.server.scene.compiling.CompiledScene;
@@ -99,7 +98,7 @@ final class TileFarm {
                         BooleanSupplier stop) {
         long start = System.nanoTime();
         int width = scene.settings().width(), height = scene.settings().height();
-        List<TileRect> tiles = Renderer.tiles(width, height, tileSize);
+        List<TileRect> tiles = ClusterTiling.tiles(width, height, tileSize);
         SealedMap<Integer, TileResult> results = data.tiles(jobId);
         SealedMap<Integer, TileClaim> claims = data.claims(jobId);
         BlockingQueue<TileResult> arrived = new LinkedBlockingQueue<>();

@@ -16,7 +16,6 @@ import com.hazelcast.core.HazelcastInstance;
 
 import studio.engine.render.Film;
 import studio.engine.render.RenderCancelledException;
-import studio.engine.render.Renderer;
 import studio.engine.render.TileRect;
 import studio.engine.render.TileRenderer;
 import studio.engine.render.TileRequest;
@@ -261,7 +260,7 @@ final class TileWorkers implements AutoCloseable {
                     return;
                 }
                 int width = scene.settings().width(), height = scene.settings().height();
-                TileRect tile = Renderer.tiles(width, height, job.tileSize()).get(task.index());
+                TileRect tile = ClusterTiling.tiles(width, height, job.tileSize()).get(task.index());
                 TileRenderer worker = worker(task.jobId(), scene);
                 long rays = worker.rays(), samples = worker.samples();
                 Film film = Film.ofTile(tile);

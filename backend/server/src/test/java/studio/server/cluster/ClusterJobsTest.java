@@ -51,7 +51,7 @@ class ClusterJobsTest {
                          {"type": "plane"}]}
             """;
     static final long WAIT_MILLIS = 60_000;
-    static final int TILES = Renderer.tiles(160, 120, Renderer.tileSize(160, 120, 1)).size();
+    static final int TILES = ClusterTiling.tiles(160, 120, Renderer.tileSize(160, 120, 1)).size();
 
     private static byte[] oneMachine;
 

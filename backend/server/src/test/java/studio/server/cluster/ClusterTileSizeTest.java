@@ -3,6 +3,7 @@ package studio.server.cluster;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.charset.StandardCharsets;
+import java.util.List;
 
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -19,15 +20,16 @@ import studio.server.scene.examples.ExampleSceneFiles;
 
 /**
  * The cluster cuts a large image into tiles of {@link ClusterJobs#LARGE_TILE} pixels, twice the
- * engine's own: a worker renders any such tile, with every sampler, adaptive or not, to exactly the
- * pixels one machine's render gives. (The adaptive Sobol sampling's buffers once held a 32-pixel
+ * engine's own, and its top rows into tiles twice as large again ({@link ClusterTiling}): a worker
+ * renders any such tile, with every sampler, adaptive or not, to exactly the pixels one machine's
+ * render gives. (The adaptive Sobol sampling's buffers once held a 32-pixel
  * tile only: every cluster job of a large image with the default sampler failed at its first tile.)
  */
 class ClusterTileSizeTest {
 
     private static CompiledScene scene(String render) {
         String json = """
-                {"image": {"width": 150, "height": 100},
+                {"image": {"width": 150, "height": 330},
                  "render": %s,
                  "lights": [{"type": "point", "position": [3, 5, 4]}],
                  "objects": [{"type": "sphere", "center": [0, 1, 0], "material": {"type": "glass"}},
@@ -46,7 +48,10 @@ class ClusterTileSizeTest {
         int width = scene.settings().width(), height = scene.settings().height();
         Film oneMachine = Renderer.render(RenderRequest.of(scene.scene(), scene.settings())).film();
         TileRenderer worker = new TileRenderer(scene.scene(), scene.settings());
-        for (TileRect tile : Renderer.tiles(width, height, ClusterJobs.LARGE_TILE)) {
+        List<TileRect> tiles = ClusterTiling.tiles(width, height, ClusterJobs.LARGE_TILE);
+        assertThat(tiles).as("large and small tiles").anyMatch(tile -> tile.width() == 2 * ClusterJobs.LARGE_TILE)
+                .anyMatch(tile -> tile.width() == ClusterJobs.LARGE_TILE);
+        for (TileRect tile : tiles) {
             Film film = Film.ofTile(tile);
             worker.render(TileRequest.whole(film, tile));
             for (int y = tile.y(); y < tile.y() + tile.height(); y++) {

@@ -17,7 +17,6 @@ import com.hazelcast.config.Config;
 import com.hazelcast.config.MapConfig;
 import com.hazelcast.core.DistributedObject;
 
-import studio.engine.render.Renderer;
 import studio.server.Await;
 import studio.server.system.MemoryBudget;
 
@@ -71,7 +70,7 @@ class ClusterWarmUpTest {
 
         ClusterWarmUp.Outcome outcome = warmUp(members.get(0), Duration.ofMinutes(2)).run();
 
-        int tiles = Renderer.tiles(128, 128, ClusterWarmUp.TILE_SIZE).size();
+        int tiles = ClusterTiling.tiles(128, 128, ClusterWarmUp.TILE_SIZE).size();
         assertThat(outcome.rounds()).isEqualTo(ClusterWarmUp.ROUNDS);
         assertThat(outcome.tiles()).isEqualTo(ClusterWarmUp.ROUNDS * tiles);
         assertThat(queued).as("tasks in the cluster's tile queue").hasValue(0);
