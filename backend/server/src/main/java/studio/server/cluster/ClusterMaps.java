@@ -19,14 +19,22 @@ final class ClusterMaps {
     static final String CANCELS = "studio-cancels";
     /** Job id to when a client last asked about it through another member (epoch millis). */
     static final String SEEN = "studio-seen";
+    /**
+     * How jobs are cut into tiles ({@link ClusterTiling}), named in the structures that hold tiles by
+     * number: the queue, the results and the claims. Members of builds that cut a job differently
+     * then share no tile (a tile number is another rectangle to each): during a rolling restart onto
+     * another tiling each build renders its own owners' jobs, and a job handed from one build to the
+     * other renders its tiles again. Named structures before this carried no tiling (uniform tiles).
+     */
+    static final String TILING = "t2";
     /** The {@link TileTask}s every member's workers take from, all jobs' in the order queued. */
-    static final String TILE_QUEUE = "studio-tile-queue";
+    static final String TILE_QUEUE = "studio-tile-queue-" + TILING;
 
     /** The families of the per-job structures: their sealing keys and rejection counters. */
     static final String TILES_FAMILY = "studio-tiles", CLAIMS_FAMILY = "studio-claims";
 
-    private static final String TILES = TILES_FAMILY + "-";
-    private static final String CLAIMS = CLAIMS_FAMILY + "-";
+    private static final String TILES = TILES_FAMILY + "-" + TILING + "-";
+    private static final String CLAIMS = CLAIMS_FAMILY + "-" + TILING + "-";
     private static final String EVENTS = "studio-events-";
 
     private ClusterMaps() {
@@ -47,12 +55,14 @@ final class ClusterMaps {
         return EVENTS + jobId;
     }
 
+    /** Every tiling's result maps: a job's maps left by a member of another tiling expire as this one's do. */
     static String tilesPattern() {
-        return TILES + "*";
+        return TILES_FAMILY + "-*";
     }
 
+    /** Every tiling's claim maps, as {@link #tilesPattern()}. */
     static String claimsPattern() {
-        return CLAIMS + "*";
+        return CLAIMS_FAMILY + "-*";
     }
 
     static String eventsPattern() {

@@ -52,4 +52,17 @@ class ClusterTilingTest {
         assertThat(ClusterTiling.tiles(960, 720, 64)).hasSize(4 * 8 + 4 * 15);
         assertThat(ClusterTiling.tiles(128, 128, ClusterWarmUp.TILE_SIZE)).hasSize(253);
     }
+
+    /**
+     * Builds that cut every job into uniform tiles queued tasks and kept results and claims under
+     * these names. A member of such a build in the same cluster (a rolling restart onto this one)
+     * must never take this build's tasks nor read its results: it would render or place tile n as its
+     * own tiling's rectangle n, some of them of the right size in the wrong place.
+     */
+    @Test
+    void membersOfTheUniformTilingShareNoTileWithThisOne() {
+        assertThat(ClusterMaps.TILE_QUEUE).isNotEqualTo("studio-tile-queue");
+        assertThat(ClusterMaps.tiles("j1")).isNotEqualTo("studio-tiles-j1").startsWith("studio-tiles-");
+        assertThat(ClusterMaps.claims("j1")).isNotEqualTo("studio-claims-j1").startsWith("studio-claims-");
+    }
 }
