@@ -4,14 +4,15 @@
 # (and waited for until the cluster has three members). Every job must end done, and its image must be byte for
 # byte a single member's render of the same scene (a fourth service, not clustered, renders each scene with
 # POST /api/render). Prints a timeline (seconds since the start). Builds studio.jar if missing
-# (STUDIO_JAR=path tests another). Logs: backend/server/target/rolling-restart-member-N.log. Exit code 0 when
-# every check passed.
+# (STUDIO_JAR=path tests another; STUDIO_NEXT_JAR=path restarts each member on that build: a rolling upgrade).
+# Logs: backend/server/target/rolling-restart-member-N.log. Exit code 0 when every check passed.
 #
 #   scripts/rolling-restart.sh [--http-port 8390] [--cluster-port 5890] [--samples 512]
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 jar="${STUDIO_JAR:-$root/backend/server/target/studio.jar}"
+next_jar="${STUDIO_NEXT_JAR:-$jar}"
 java="${JAVA:-java}"
 http=8390
 cluster=5890
@@ -72,9 +73,9 @@ scene() { # scene N: the test scene with seed N
 JSON
 }
 
-start_member() {
+start_member() { # start_member N [JAR]
   # one render thread each: three members share this machine's cores
-  STUDIO_CLUSTER_SECRET="$secret" "$java" -Xmx768m -jar "$jar" --server.port=$((http + $1)) \
+  STUDIO_CLUSTER_SECRET="$secret" "$java" -Xmx768m -jar "${2:-$jar}" --server.port=$((http + $1)) \
     --studio.cluster.port=$((cluster + $1)) --studio.cluster.members="$members" \
     --studio.cluster.bind-address=127.0.0.1 --studio.render-threads=1 --studio.jobs.concurrent=2 \
     >>"$logs/rolling-restart-member-$1.log" 2>&1 &
@@ -139,7 +140,7 @@ for m in 0 1 2; do
   [[ $exited == 1 ]] || fail "member $m did not exit within 60 s of SIGTERM"
   wait "${pids[$m]}" 2>/dev/null || true
   at "member $m exited; jobs through member $r: $(states "$r")"
-  start_member "$m"
+  start_member "$m" "$next_jar"
   until_true 180 three_members || fail "member $m did not rejoin within 180 s"
   at "member $m restarted and rejoined; jobs: $(states "$m")"
 done
