@@ -80,6 +80,42 @@ class LightPointsTest {
         assertTrue(!Arrays.equals(r[0], r[2]), "shuffled");
     }
 
+    /**
+     * Under sobol a run's pixel and light points are stratified together: in the first 4 samples
+     * (runs 1, 1, 2) every pair of halves (x, u) and (y, v) holds one sample, and so does every pair
+     * of halves (x, u) in the run of 4 after them.
+     */
+    @Test
+    void sobolPairsAPixelPointWithALightPointOfAnotherStratum() {
+        Sampler sampler = new SobolSampler(16);
+        for (int pixel = 0; pixel < 64; pixel++) {
+            int px = pixel % 8, py = pixel / 8;
+            double[] x = new double[8], y = new double[8], u = new double[8], v = new double[8];
+            int[][] runs = {{0, 1}, {1, 1}, {2, 2}, {4, 4}};
+            for (int[] run : runs) {
+                double[][] r = run(sampler, px, py, run[0], run[1], 5L);
+                for (int s = 0; s < run[1]; s++) {
+                    u[run[0] + s] = r[0][s];
+                    v[run[0] + s] = r[1][s];
+                    x[run[0] + s] = r[2][s];
+                    y[run[0] + s] = r[3][s];
+                }
+            }
+            assertStrata(x, u, 0, 4, 2, 2, "pixel " + pixel + ", (x, u)");
+            assertStrata(y, v, 0, 4, 2, 2, "pixel " + pixel + ", (y, v)");
+            assertStrata(x, u, 4, 4, 2, 2, "pixel " + pixel + ", run of 4, (x, u)");
+        }
+    }
+
+    private static void assertStrata(double[] a, double[] b, int first, int count, int aCells, int bCells, String what) {
+        boolean[] seen = new boolean[aCells * bCells];
+        for (int s = first; s < first + count; s++) {
+            int cell = (int) (a[s] * aCells) * bCells + (int) (b[s] * bCells);
+            assertTrue(!seen[cell], what + ": two samples in stratum " + cell);
+            seen[cell] = true;
+        }
+    }
+
     /** A pixel's light points depend on the pixel, the run and the seed only: asked again, or after other pixels, they are the same. */
     @Test
     void lightPointsAreTheSameWhateverCameBefore() {
