@@ -51,6 +51,9 @@ class PreviewApiTest {
     @Autowired
     MeterRegistry metrics;
 
+    @Autowired
+    PreviewHandler handler;
+
     private static int[] pixels(byte[] encoded) throws Exception {
         BufferedImage image = ImageIO.read(new ByteArrayInputStream(encoded));
         return image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
@@ -266,6 +269,9 @@ class PreviewApiTest {
 
     @Test
     void viewsBeyondTheLimitAreRefusedWith503() throws Exception {
+        // the other tests' views give their slots back when the server sees their closes: wait for that,
+        // or one of the 3 views below could find the limit still taken by a view already closed
+        Await.until("the other tests' views closed", 20_000, () -> handler.open() == 0);
         List<PreviewClient> open = new ArrayList<>();
         try {
             for (int i = 0; i < 3; i++) {
