@@ -14,10 +14,8 @@ import studio.engine.memory.CountingGate;
 /** The flattened tree's invariants on ordinary and degenerate inputs. */
 class BvhTest {
 
-    @Test
-    void randomBoxesGiveAValidTreeWithSmallLeaves() {
-        Random random = new Random(1);
-        int n = 10_000;
+    /** n boxes of half-size below 1 around centres in [0, 100)^3, drawn from random in order. */
+    private static double[] randomBoxes(Random random, int n) {
         double[] boxes = new double[6 * n];
         for (int i = 0; i < n; i++) {
             for (int a = 0; a < 3; a++) {
@@ -26,6 +24,14 @@ class BvhTest {
                 boxes[6 * i + a + 3] = c + h;
             }
         }
+        return boxes;
+    }
+
+    @Test
+    void randomBoxesGiveAValidTreeWithSmallLeaves() {
+        Random random = new Random(1);
+        int n = 10_000;
+        double[] boxes = randomBoxes(random, n);
 
         Bvh bvh = Bvh.build(boxes, n);
 
@@ -44,14 +50,7 @@ class BvhTest {
     void slotLoopsInRunsBuildTheSameTreeAsInOneCall() {
         Random random = new Random(47);
         int n = 20_000;
-        double[] boxes = new double[6 * n];
-        for (int i = 0; i < n; i++) {
-            for (int a = 0; a < 3; a++) {
-                double c = random.nextDouble() * 100, h = random.nextDouble();
-                boxes[6 * i + a] = c - h;
-                boxes[6 * i + a + 3] = c + h;
-            }
-        }
+        double[] boxes = randomBoxes(random, n);
 
         Bvh bvh = Bvh.build(boxes, n);
 
@@ -66,14 +65,7 @@ class BvhTest {
         Random random = new Random(2);
         Bvh.build(new double[6], 1); // loads and initialises what the first build needs
         for (int n : new int[] {1, 7, 200_000}) {
-            double[] boxes = new double[6 * n];
-            for (int i = 0; i < n; i++) {
-                for (int a = 0; a < 3; a++) {
-                    double c = random.nextDouble() * 100, h = random.nextDouble();
-                    boxes[6 * i + a] = c - h;
-                    boxes[6 * i + a + 3] = c + h;
-                }
-            }
+            double[] boxes = randomBoxes(random, n);
             CountingGate gate = new CountingGate();
             long allocated = CountingGate.allocatedBy(() -> Bvh.build(boxes, n, gate));
 
