@@ -2,6 +2,7 @@ package studio.engine.accel;
 
 import java.util.Arrays;
 
+import studio.engine.geometry.Runs;
 import studio.engine.memory.MemoryGate;
 
 /**
@@ -34,14 +35,6 @@ final class BvhBuilder {
     private static final double TRAVERSAL_COST = 1;
     /** Doubles of pending node data: box (6), centroid minima (3) and maxima (3), centroids as min+max. */
     private static final int INFO = 12;
-    /**
-     * Slots a call of the loops over a node's slots (checking, bounding, binning, partitioning): a
-     * render process runs without on-stack replacement ({@code bin/studio}), so a loop inside one
-     * call stays interpreted to its end, and the root's loops cover every primitive; called run by
-     * run they are compiled after their first hundred runs (docs/speed.md, "Where a cold process's
-     * time goes").
-     */
-    static final int RUN = 64;
 
     /** Primitive boxes in slot order, six doubles per slot; partitioned together with {@link #ids}. */
     private final double[] box;
@@ -72,8 +65,12 @@ final class BvhBuilder {
         this.memory = memory;
         box = Arrays.copyOf(primitiveBounds, 6 * count);
         ids = new int[count];
-        for (int from = 0; from < count; from += RUN) {
-            startRun(from, Math.min(count, from + RUN));
+        // The loops over a node's slots (checking, bounding, binning, partitioning) run Runs.LENGTH slots a
+        // call, as Runs does (the root's cover every primitive, and a render process would run them
+        // interpreted to their end), written out: Runs.over's capturing lambdas would allocate at every
+        // node, memory the gate was not asked for (BvhTest.buildAsksTheGateForWhatItAllocates).
+        for (int from = 0; from < count; from += Runs.LENGTH) {
+            startRun(from, Math.min(count, from + Runs.LENGTH));
         }
         nodeBounds = new double[6 * capacity];
         nodeLinks = new int[3 * capacity];
@@ -177,8 +174,8 @@ final class BvhBuilder {
             p[info + k] = p[info + 6 + k] = Double.POSITIVE_INFINITY;
             p[info + 3 + k] = p[info + 9 + k] = Double.NEGATIVE_INFINITY;
         }
-        for (int from = start; from < end; from += RUN) {
-            scanRun(from, Math.min(end, from + RUN), info);
+        for (int from = start; from < end; from += Runs.LENGTH) {
+            scanRun(from, Math.min(end, from + Runs.LENGTH), info);
         }
     }
 
@@ -238,8 +235,8 @@ final class BvhBuilder {
             bb[q] = bb[q + 1] = bb[q + 2] = Double.POSITIVE_INFINITY;
             bb[q + 3] = bb[q + 4] = bb[q + 5] = Double.NEGATIVE_INFINITY;
         }
-        for (int from = start; from < end; from += RUN) {
-            binRun(from, Math.min(end, from + RUN), axis, cmin, scale, bins);
+        for (int from = start; from < end; from += Runs.LENGTH) {
+            binRun(from, Math.min(end, from + Runs.LENGTH), axis, cmin, scale, bins);
         }
         // Sweep from the right: count and area of bins k .. bins-1.
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
@@ -303,7 +300,7 @@ final class BvhBuilder {
     }
 
     /**
-     * Up to {@value #RUN} steps of {@link #partition} from slot {@code i} to {@link #partitionLast}:
+     * Up to {@value Runs#LENGTH} steps of {@link #partition} from slot {@code i} to {@link #partitionLast}:
      * a slot left of the split stays and widens the left side's bounds, one right of it widens the
      * right side's and is swapped to the end; returns the next slot to look at and leaves the last
      * one not yet looked at in {@link #partitionLast}.
@@ -320,7 +317,7 @@ final class BvhBuilder {
         double rcx0 = p[right + 6], rcy0 = p[right + 7], rcz0 = p[right + 8];
         double rcx1 = p[right + 9], rcy1 = p[right + 10], rcz1 = p[right + 11];
         int j = partitionLast;
-        for (int steps = 0; steps < RUN && i <= j; steps++) {
+        for (int steps = 0; steps < Runs.LENGTH && i <= j; steps++) {
             int o = 6 * i;
             double x0 = b[o], y0 = b[o + 1], z0 = b[o + 2], x1 = b[o + 3], y1 = b[o + 4], z1 = b[o + 5];
             double cx = x0 + x1, cy = y0 + y1, cz = z0 + z1;

@@ -6,14 +6,14 @@ package studio.engine.geometry;
  * a body called run by run is compiled after its first hundred runs (docs/speed.md, "Where a cold
  * process's time goes").
  */
-final class Runs {
+public final class Runs {
 
     /** Items a call. */
-    static final int LENGTH = 64;
+    public static final int LENGTH = 64;
 
     /** The body of a loop over items [from, to). */
     @FunctionalInterface
-    interface Body {
+    public interface Body {
         void run(int from, int to);
     }
 
@@ -21,7 +21,7 @@ final class Runs {
     }
 
     /** Runs {@code body} over [0, n) in order, {@value #LENGTH} items a call. */
-    static void over(int n, Body body) {
+    public static void over(int n, Body body) {
         for (int from = 0; from < n; from += LENGTH) {
             body.run(from, Math.min(n, from + LENGTH));
         }

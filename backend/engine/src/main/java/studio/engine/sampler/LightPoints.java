@@ -19,8 +19,7 @@ import java.util.Arrays;
  * one point each) gets the point in cell reverse(c) xor 1, so every half of x meets every half (of 2)
  * or quarter (of 4) of u; with samples 0 and 1, each its own point, a pixel's first 4 samples cover
  * all 4 pairs of halves of (x, u) and of (y, v), where a shuffle left them on the diagonal half the
- * time (the soft-light chart of docs/speed.md: 0.91-0.97 of the samples to jittered's error; pairing
- * runs of 8 and more too raised the error at 40-120 samples a pixel by a tenth).
+ * time; pairing longer runs too raised the error at many samples (docs/speed.md, "Soft lights").
  * One per worker thread; allocates nothing after construction.
  */
 public final class LightPoints {

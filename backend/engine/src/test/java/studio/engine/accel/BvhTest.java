@@ -41,7 +41,7 @@ class BvhTest {
     }
 
     /**
-     * The builder's loops over a node's slots run {@value BvhBuilder#RUN} slots a call; over 20,000
+     * The builder's loops over a node's slots run {@value studio.engine.geometry.Runs#LENGTH} slots a call; over 20,000
      * boxes, across many runs (the partition's two ends meeting inside one), the tree is node for
      * node, box for box and slot for slot the one built before they were cut into runs (its hashes,
      * from that build).
