@@ -68,8 +68,9 @@ sealed interface FieldRule {
         @Override
         public Predicate<Object> check() {
             BigDecimal bound = new BigDecimal(value);
+            double nearest = bound.doubleValue();
             return v -> v == null || finite(v)
-                    && (inclusive ? decimal(v).compareTo(bound) >= 0 : decimal(v).compareTo(bound) > 0);
+                    && (inclusive ? compare(v, bound, nearest) >= 0 : compare(v, bound, nearest) > 0);
         }
     }
 
@@ -77,8 +78,9 @@ sealed interface FieldRule {
         @Override
         public Predicate<Object> check() {
             BigDecimal bound = new BigDecimal(value);
+            double nearest = bound.doubleValue();
             return v -> v == null || finite(v)
-                    && (inclusive ? decimal(v).compareTo(bound) <= 0 : decimal(v).compareTo(bound) < 0);
+                    && (inclusive ? compare(v, bound, nearest) <= 0 : compare(v, bound, nearest) < 0);
         }
     }
 
@@ -205,7 +207,18 @@ sealed interface FieldRule {
         return Long.signum(((Number) value).longValue());
     }
 
-    private static BigDecimal decimal(Object value) {
-        return value instanceof Double d ? new BigDecimal(d) : BigDecimal.valueOf(((Number) value).longValue());
+    /**
+     * The sign of {@code value} minus {@code bound}, exactly, as the full path's decimal rules compare.
+     * A double other than {@code nearest} (the double nearest the bound) lies on the bound's side
+     * that it lies of {@code nearest}: the bound is {@code nearest} or lies between it and its
+     * neighbour, and no double lies between those two. Only a value equal to {@code nearest} is
+     * compared as a BigDecimal, whose exact expansion of a double took a tenth of a cold render of
+     * 10,000 spheres at one sample (a radius's bound checked 10,000 times).
+     */
+    private static int compare(Object value, BigDecimal bound, double nearest) {
+        if (value instanceof Double d) {
+            return d != nearest ? Double.compare(d, nearest) : new BigDecimal(d).compareTo(bound);
+        }
+        return BigDecimal.valueOf(((Number) value).longValue()).compareTo(bound);
     }
 }
