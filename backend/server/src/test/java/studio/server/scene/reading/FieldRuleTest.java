@@ -27,7 +27,9 @@ class FieldRuleTest {
         assertThat(new DecimalRule("0.3", true, true).check().test(0.3)).isFalse();
         assertThat(new DecimalRule("0.1", true, false).check().test(0.1)).isFalse();
         assertThat(new DecimalRule("0.3", true, true).check().test(Math.nextUp(0.3))).isTrue();
-        for (String bound : List.of("0.1", "0.3", "-0.7", "1e-400", "-1e-400", "1e400", "0", "1", "180", "1e12")) {
+        // 2^53 + 1 and 0.999... round to doubles (2^53, 1) that they are not
+        for (String bound : List.of("0.1", "0.3", "-0.7", "1e-400", "-1e-400", "1e400", "0", "1", "180", "1e12",
+                "9007199254740993", "9007199254740992", "-9007199254740993", "0.99999999999999999999")) {
             BigDecimal exact = new BigDecimal(bound);
             for (boolean inclusive : List.of(true, false)) {
                 for (boolean min : List.of(true, false)) {
@@ -41,8 +43,13 @@ class FieldRuleTest {
                         assertThat(check.test(d)).as("%s %s %s %s", d, min ? ">" : "<", inclusive ? "=" : "", bound)
                                 .isEqualTo(expected);
                     }
-                    assertThat(check.test(3L)).isEqualTo(min ? (inclusive ? 3 >= exact.doubleValue() : 3 > exact.doubleValue())
-                            : (inclusive ? 3 <= exact.doubleValue() : 3 < exact.doubleValue()));
+                    for (long whole : List.of(3L, 1L, 9007199254740991L, 9007199254740992L, 9007199254740993L,
+                            -9007199254740993L, Long.MAX_VALUE, Long.MIN_VALUE)) {
+                        int sign = BigDecimal.valueOf(whole).compareTo(exact);
+                        boolean expected = min ? (inclusive ? sign >= 0 : sign > 0) : (inclusive ? sign <= 0 : sign < 0);
+                        assertThat(check.test(whole)).as("%d %s %s %s", whole, min ? ">" : "<", inclusive ? "=" : "", bound)
+                                .isEqualTo(expected);
+                    }
                 }
             }
         }
