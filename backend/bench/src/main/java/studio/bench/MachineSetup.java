@@ -16,11 +16,16 @@ final class MachineSetup {
 
     /** One paragraph on the machine, the renderers' versions and the settings. */
     static String describe(Path java, Path povray, Path sunflowJar, Renderers r, int runs) {
-        return String.format(Locale.ROOT, "%s, %d cores (%s %s), Java %s (%s), %s, Sunflow %s. %dx%d, %d threads each; "
-                        + "median of %d runs, the three renderers alternated in a rotating order.", LocalDate.now(),
+        return String.format(Locale.ROOT, "%s, %d cores (%s %s), Java %s (%s), %s, Sunflow %s. Ours %s. %dx%d, %d threads "
+                        + "each; median of %d runs, the three renderers alternated in a rotating order.", LocalDate.now(),
                 Runtime.getRuntime().availableProcessors(), System.getProperty("os.name"), System.getProperty("os.arch"),
-                javaVersion(java), java, povrayVersion(povray), sunflowVersion(sunflowJar), r.width(), r.height(),
+                javaVersion(java), java, povrayVersion(povray), sunflowVersion(sunflowJar), ours(r), r.width(), r.height(),
                 r.threads(), runs);
+    }
+
+    /** How ours was started: through the launcher (its start-up cache, the newest JDK) or as java -jar. */
+    static String ours(Renderers r) {
+        return r.launcher() != null ? "through " + r.launcher() : "as java -jar, without bin/studio's start-up cache";
     }
 
     private static String javaVersion(Path java) {

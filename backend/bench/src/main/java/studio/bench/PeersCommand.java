@@ -94,6 +94,11 @@ public final class PeersCommand {
             err.println("error: cannot find this module's classes: " + e.getMessage());
             return IO_ERROR;
         }
+        if (o.launcher == null) {
+            // bin/studio is looked for in the working directory: run from elsewhere, ours went without it, slower, unsaid
+            err.println("note: ours runs " + MachineSetup.ours(renderers)
+                    + " (bin/studio is looked for in the working directory; --launcher PATH names it)");
+        }
         for (Path tool : List.of(o.java, o.studioJar, o.povray, o.sunflowJar)) {
             if (!Files.isRegularFile(tool)) {
                 err.println("error: not found: " + tool + (tool.equals(o.studioJar)

@@ -29,4 +29,10 @@ class RenderersTest {
         assertEquals(List.of("java", "-jar", JAR.toString(), "render"), cmd.subList(0, 4));
         assertEquals(List.of("--sampler", "regular"), cmd.subList(cmd.indexOf("--sampler"), cmd.indexOf("--sampler") + 2));
     }
+
+    @Test
+    void theReportSaysWhichWayOursRan() {
+        assertEquals("through bin/studio", MachineSetup.ours(renderers(Path.of("bin/studio"))));
+        assertEquals("as java -jar, without bin/studio's start-up cache", MachineSetup.ours(renderers(null)));
+    }
 }
