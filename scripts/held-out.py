@@ -29,6 +29,9 @@ def scene(name, w, h, cam, look, fov, lights, objects, samples=16, sampler="jitt
             "background": "#10141c", "ambient": ambient,
             "render": {"sampler": sampler, "samples": samples, "maxDepth": depth},
             "lights": lights, "objects": objects}
+def save(name, value):
+    with open(os.path.join(D, name), 'w') as f:
+        json.dump(value, f, indent=1)
 floor = {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": {"type": "chalk", "color": "#b8b0a0"}}
 def boxes(n, spread):
     out = []
@@ -41,9 +44,9 @@ def boxes(n, spread):
 o = [floor] + boxes(90, 4.5) + [
     {"type": "sphere", "center": [0.3, 1.9, 0.6], "radius": 0.9, "material": {"type": "glass", "ior": 1.5}},
     {"type": "box", "center": [-1.6, 1.6, 1.4], "size": [0.8, 0.8, 0.8], "rotation": [20, 35, 10], "material": {"type": "glass", "ior": 1.45, "color": "#d8ecff"}}]
-json.dump(scene("glass-crowd", 800, 600, [0.5, 4.0, 7.5], [0, 0.8, 0], 48,
+save('glass-crowd.json', scene("glass-crowd", 800, 600, [0.5, 4.0, 7.5], [0, 0.8, 0], 48,
     [{"type": "point", "position": [3, 8, 5], "color": "#ffffff", "intensity": 0.9},
-     {"type": "point", "position": [-6, 5, 2], "color": "#a0b8ff", "intensity": 0.3}], o), open(D + '/glass-crowd.json', 'w'), indent=1)
+     {"type": "point", "position": [-6, 5, 2], "color": "#a0b8ff", "intensity": 0.3}], o))
 # 2. a corridor of mirrors with metal and glass spheres
 o = [floor,
      {"type": "plane", "point": [-2.2, 0, 0], "normal": [1, 0, 0], "material": {"type": "mirror", "color": "#e0f0ff", "reflectivity": 0.85}},
@@ -53,19 +56,19 @@ for i in range(9):
     z = -i * 1.3
     o.append({"type": "sphere", "center": [R.uniform(-1.2, 1.2), 0.35, z], "radius": 0.35,
               "material": R.choice([{"type": "metal", "color": col()}, {"type": "glass", "ior": 1.5}, {"type": "plastic", "color": col()}])})
-json.dump(scene("mirror-corridor", 800, 600, [0.4, 1.5, 3.5], [0, 0.8, -4], 55,
+save('mirror-corridor.json', scene("mirror-corridor", 800, 600, [0.4, 1.5, 3.5], [0, 0.8, -4], 55,
     [{"type": "point", "position": [0, 3.0, 1.0], "color": "#fff4e0", "intensity": 1.0},
-     {"type": "point", "position": [0.5, 2.5, -7], "color": "#e0e8ff", "intensity": 0.6}], o, depth=12), open(D + '/mirror-corridor.json', 'w'), indent=1)
+     {"type": "point", "position": [0.5, 2.5, -7], "color": "#e0e8ff", "intensity": 0.6}], o, depth=12))
 # 3. a cloud of 7,000 small spheres over a floor
 o = [floor]
 for _ in range(7000):
     r = R.uniform(0.03, 0.08)
     o.append({"type": "sphere", "center": [R.uniform(-3, 3), R.uniform(0.1, 3.0), R.uniform(-3, 1.5)], "radius": r, "material": mat()})
-json.dump(scene("sphere-cloud", 800, 600, [0, 1.8, 6.0], [0, 1.4, 0], 50,
-    [{"type": "point", "position": [4, 6, 6], "color": "#ffffff", "intensity": 1.0}], o), open(D + '/sphere-cloud.json', 'w'), indent=1)
+save('sphere-cloud.json', scene("sphere-cloud", 800, 600, [0, 1.8, 6.0], [0, 1.4, 0], 50,
+    [{"type": "point", "position": [4, 6, 6], "color": "#ffffff", "intensity": 1.0}], o))
 # 4. a terrain mesh (OBJ, 160x160 quads = 51,200 triangles) with a glass ball and a metal ball
 N = 160
-with open(D + '/terrain.obj', 'w') as f:
+with open(os.path.join(D, 'terrain.obj'), 'w') as f:
     for j in range(N + 1):
         for i in range(N + 1):
             x, z = i / N * 8 - 4, j / N * 8 - 4
@@ -78,13 +81,12 @@ with open(D + '/terrain.obj', 'w') as f:
 o = [{"type": "mesh", "file": "terrain.obj", "position": [0, 0, 0], "scale": 1.0, "material": {"type": "chalk", "color": "#c8a878"}},
      {"type": "sphere", "center": [-0.8, 1.2, 0.5], "radius": 0.5, "material": {"type": "glass", "ior": 1.5}},
      {"type": "sphere", "center": [1.2, 1.0, -0.8], "radius": 0.45, "material": {"type": "metal", "color": "#d0d0e0"}}]
-json.dump(scene("terrain", 800, 600, [0, 3.0, 6.0], [0, 0.2, 0], 50,
-    [{"type": "point", "position": [-5, 7, 4], "color": "#fff0d8", "intensity": 1.0}], o), open(D + '/terrain.json', 'w'), indent=1)
+save('terrain.json', scene("terrain", 800, 600, [0, 3.0, 6.0], [0, 0.2, 0], 50,
+    [{"type": "point", "position": [-5, 7, 4], "color": "#fff0d8", "intensity": 1.0}], o))
 # soft: 40 boxes under a sphere light; a table (boxes) under an area light with a glass ball
 o = [floor] + boxes(40, 3.0)
-json.dump(scene("soft-blocks", 320, 240, [0, 3.5, 6.5], [0, 0.4, 0], 45,
-    [{"type": "point", "position": [1.0, 4.0, 1.5], "radius": 0.6, "color": "#ffffff", "intensity": 1.0}], o, depth=6, ambient=0.05),
-    open(D + '/soft/soft-blocks.json', 'w'), indent=1)
+save('soft/soft-blocks.json', scene("soft-blocks", 320, 240, [0, 3.5, 6.5], [0, 0.4, 0], 45,
+    [{"type": "point", "position": [1.0, 4.0, 1.5], "radius": 0.6, "color": "#ffffff", "intensity": 1.0}], o, depth=6, ambient=0.05))
 o = [floor, {"type": "plane", "point": [0, 0, -3], "normal": [0, 0, 1], "material": {"type": "chalk", "color": "#d8d0c0"}},
      {"type": "box", "center": [0, 0.9, 0], "size": [2.2, 0.08, 1.2], "material": {"type": "plastic", "color": "#8a5a30"}}]
 for x in (-1.0, 1.0):
@@ -92,12 +94,11 @@ for x in (-1.0, 1.0):
         o.append({"type": "box", "center": [x, 0.43, z], "size": [0.08, 0.86, 0.08], "material": {"type": "chalk", "color": "#5a3a20"}})
 o += [{"type": "sphere", "center": [0.4, 1.24, 0.1], "radius": 0.3, "material": {"type": "glass", "ior": 1.5}},
       {"type": "box", "center": [-0.5, 1.09, -0.1], "size": [0.3, 0.3, 0.3], "rotation": [0, 30, 0], "material": {"type": "plastic", "color": "#3070c0"}}]
-json.dump(scene("soft-table", 320, 240, [0.5, 2.2, 4.5], [0, 0.7, 0], 45,
-    [{"type": "area", "position": [0.3, 2.8, 0.6], "size": [1.2, 0.9], "lookAt": [0, 0, 0], "color": "#fff4e0", "intensity": 1.0}], o, depth=6, ambient=0.04),
-    open(D + '/soft/soft-table.json', 'w'), indent=1)
+save('soft/soft-table.json', scene("soft-table", 320, 240, [0.5, 2.2, 4.5], [0, 0.7, 0], 45,
+    [{"type": "area", "position": [0.3, 2.8, 0.6], "size": [1.2, 0.9], "lookAt": [0, 0, 0], "color": "#fff4e0", "intensity": 1.0}], o, depth=6, ambient=0.04))
 # cluster job: 960x720, 36 jittered samples, a glass ball and a mirror over 45 boxes
 o = [floor] + boxes(45, 3.5) + [
     {"type": "sphere", "center": [-0.4, 1.6, 0.4], "radius": 0.8, "material": {"type": "glass", "ior": 1.5}},
     {"type": "box", "center": [1.8, 1.2, -1.5], "size": [1.4, 2.4, 0.1], "rotation": [0, -25, 0], "material": {"type": "mirror"}}]
-json.dump(scene("cluster-job", 960, 720, [0.8, 3.2, 7.0], [0, 0.8, 0], 48,
-    [{"type": "point", "position": [3, 7, 5], "color": "#ffffff", "intensity": 0.9}], o, samples=36), open(D + '/cluster-job.json', 'w'), indent=1)
+save('cluster-job.json', scene("cluster-job", 960, 720, [0.8, 3.2, 7.0], [0, 0.8, 0], 48,
+    [{"type": "point", "position": [3, 7, 5], "color": "#ffffff", "intensity": 0.9}], o, samples=36))

@@ -212,8 +212,8 @@ sealed interface FieldRule {
      * A double other than {@code nearest} (the double nearest the bound) lies on the bound's side
      * that it lies of {@code nearest}: the bound is {@code nearest} or lies between it and its
      * neighbour, and no double lies between those two. Only a value equal to {@code nearest} is
-     * compared as a BigDecimal, whose exact expansion of a double took a tenth of a cold render of
-     * 10,000 spheres at one sample (a radius's bound checked 10,000 times).
+     * expanded into a BigDecimal, which for every checked number cost a large scene's reading much
+     * of its time (docs/speed.md, "Start-up").
      */
     private static int compare(Object value, BigDecimal bound, double nearest) {
         if (value instanceof Double d) {

@@ -38,21 +38,24 @@ class FieldRuleTest {
                         // an infinity (1e400's nearest) and -0.0 are left to the full path (FieldRule.finite)
                         boolean judged = Double.isFinite(d) && Double.compare(d, -0.0) != 0;
                         int sign = judged ? new BigDecimal(d).compareTo(exact) : 0;
-                        boolean expected = judged
-                                && (min ? (inclusive ? sign >= 0 : sign > 0) : (inclusive ? sign <= 0 : sign < 0));
+                        boolean expected = judged && passes(sign, min, inclusive);
                         assertThat(check.test(d)).as("%s %s %s %s", d, min ? ">" : "<", inclusive ? "=" : "", bound)
                                 .isEqualTo(expected);
                     }
                     for (long whole : List.of(3L, 1L, 9007199254740991L, 9007199254740992L, 9007199254740993L,
                             -9007199254740993L, Long.MAX_VALUE, Long.MIN_VALUE)) {
-                        int sign = BigDecimal.valueOf(whole).compareTo(exact);
-                        boolean expected = min ? (inclusive ? sign >= 0 : sign > 0) : (inclusive ? sign <= 0 : sign < 0);
+                        boolean expected = passes(BigDecimal.valueOf(whole).compareTo(exact), min, inclusive);
                         assertThat(check.test(whole)).as("%d %s %s %s", whole, min ? ">" : "<", inclusive ? "=" : "", bound)
                                 .isEqualTo(expected);
                     }
                 }
             }
         }
+    }
+
+    /** Whether a value whose exact difference from the bound has this sign passes the rule. */
+    private static boolean passes(int sign, boolean min, boolean inclusive) {
+        return min ? (inclusive ? sign >= 0 : sign > 0) : (inclusive ? sign <= 0 : sign < 0);
     }
 
     /** DecimalMin or DecimalMax, as one value for the loops above. */
