@@ -53,6 +53,20 @@ public final class Film {
         return false;
     }
 
+    /**
+     * The pixels of {@code tile} (which this film holds), row-major RGB triples from its top-left, in
+     * linear light: a copy, {@code 3 * width * height} long, taken a row at a time.
+     */
+    public double[] pixels(TileRect tile) {
+        int rowLength = 3 * tile.width();
+        double[] out = new double[rowLength * tile.height()];
+        for (int row = 0; row < tile.height(); row++) {
+            int from = 3 * ((tile.y() + row - y0) * width + tile.x() - x0);
+            System.arraycopy(rgb, from, out, row * rowLength, rowLength);
+        }
+        return out;
+    }
+
     /** Component c (0 red, 1 green, 2 blue) of pixel (x, y), in linear light. */
     public double get(int x, int y, int c) {
         return rgb[3 * ((y - y0) * width + x - x0) + c];

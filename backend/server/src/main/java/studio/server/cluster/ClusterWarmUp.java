@@ -3,7 +3,11 @@ package studio.server.cluster;
 import java.io.IOException;
 import java.io.InputStream;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -23,8 +27,9 @@ import studio.server.scene.compiling.SceneCompiler;
 import studio.server.system.MemoryBudget;
 
 /**
- * Renders a tiny scene's tiles through this member's own cluster path at start-up, before the port
- * opens: the queue, the claims, the results and their listener, the assembly, each tile's PNG event
+ * Renders a small scene's tiles through this member's own cluster path at start-up, before the port
+ * opens, once in a job's own tile sizes (results as large as a job's) and then in many small tiles
+ * (a job's round trips, many times over): the queue, the claims, the results and their listener, the assembly, each tile's PNG event
  * in an event log, the job table's compare-and-set, the image, all sealed, with the code a job runs
  * ({@link TileFarm}, {@link TileWorkers}, {@link JobPublisher}), so that a fresh member's first job
  * runs Hazelcast's and the tile path's code compiled instead of paying the JIT on a user's time (the
@@ -39,10 +44,19 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
 
     private static final Logger log = LoggerFactory.getLogger(ClusterWarmUp.class);
     static final String SCENE = "cluster/warm-up.json";
-    /** 6-pixel tiles of the 128x128 scene ({@link ClusterTiling}: 12-pixel ones first): 253 tiles a round, each a few round trips and hardly a render. */
+    /** 6-pixel tiles of the 128x128 scene ({@link ClusterTiling}: 12-pixel ones first): 253 tiles a small round, each a few round trips and hardly a render. */
     static final int TILE_SIZE = 6;
-    /** Past the 200 calls after which the JIT compiles a method with C1's profile, for code called once a tile. */
-    static final int ROUNDS = 2;
+    /**
+     * Rounds of small tiles: 253 tiles a round, several Hazelcast operations each, so that the
+     * operation and network threads' loops pass C2's thresholds here rather than in a user's first jobs.
+     */
+    static final int ROUNDS = 8;
+    /**
+     * The first round's image side: the scene at {@value}x{@value}, cut at the cluster's own tile size
+     * ({@link ClusterJobs#LARGE_TILE}) into a job's 128- and 64-pixel tiles, whose results (up to 393 KB)
+     * take the network's paths for packets larger than a socket's buffer, as a real job's do.
+     */
+    static final int FULL_SIZE = 512;
     /** A round's job id, before its number. */
     private static final String ID = "warm-up-";
 
@@ -71,42 +85,52 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
             Outcome outcome = run();
             log.info("Warmed up the cluster path in {} ms: {} tiles in {} of {} rounds through this member's own "
                     + "structures (studio.cluster.warm-up={}, 0s turns it off)", outcome.elapsedMillis(),
-                    outcome.tiles(), outcome.rounds(), ROUNDS, limit.toMillis() + "ms");
+                    outcome.tiles(), outcome.rounds(), ROUNDS + 1, limit.toMillis() + "ms");
         } catch (RuntimeException e) {
             log.warn("The cluster warm-up stopped: {}", e.toString());
         }
     }
 
     /**
-     * Renders the scene {@value #ROUNDS} times through the cluster, or until the limit has passed; none
-     * while other work holds the render memory it reserves first, as a request does.
+     * Renders the scene once at its full size in a job's tiles and {@value #ROUNDS} times in small
+     * tiles, through the cluster, or until the limit has passed; none while other work holds the render
+     * memory it reserves first, as a request does.
      */
     Outcome run() {
         long start = System.nanoTime();
         long deadline = start + limit.toNanos();
         String memberId = data.member().getCluster().getLocalMember().getUuid().toString();
         ClusterData own = data.named("studio-warm-up-" + memberId + "-");
-        CompiledScene scene = compiler.compile(CompileRequest.of(read()));
-        try (MemoryBudget.Reservation held = memory.tryReserve(RenderMemory.estimate(scene))) {
+        byte[] json = read();
+        CompiledScene small = compiler.compile(CompileRequest.of(json));
+        CompiledScene full = compiler.compile(CompileRequest.of(json)
+                .overriding(Map.of("image.width", FULL_SIZE, "image.height", FULL_SIZE)));
+        try (MemoryBudget.Reservation held = memory.tryReserve(RenderMemory.estimate(full))) {
             if (held == null) { // other work holds the render memory: it goes first
                 return new Outcome(0, 0, (System.nanoTime() - start) / 1_000_000);
             }
-            return run(own, memberId, scene, start, deadline);
+            List<Round> rounds = new ArrayList<>(List.of(new Round(full, ClusterJobs.LARGE_TILE)));
+            rounds.addAll(Collections.nCopies(ROUNDS, new Round(small, TILE_SIZE)));
+            return run(own, memberId, rounds, start, deadline);
         }
     }
 
+    /** A round's scene and the tile size it is cut at. */
+    record Round(CompiledScene scene, int tileSize) {
+    }
+
     /** The rounds, their render memory reserved. */
-    private Outcome run(ClusterData own, String memberId, CompiledScene scene, long start, long deadline) {
-        int tiles = 0, rounds = 0;
+    private Outcome run(ClusterData own, String memberId, List<Round> rounds, long start, long deadline) {
+        int tiles = 0, done = 0;
         TileWorkers workers = new TileWorkers(own, new JobScenes(own.scenes(), compiler, memory), 1);
         TileFarm farm = new TileFarm(own, workers, id -> false);
         workers.start();
         try {
-            for (int round = 0; round < ROUNDS; round++) {
-                String id = ID + round;
+            for (Round round : rounds) {
+                String id = ID + done;
                 try {
-                    tiles += render(own, farm, id, memberId, scene, deadline);
-                    rounds++;
+                    tiles += render(own, farm, id, memberId, round, deadline);
+                    done++;
                 } catch (RenderCancelledException e) {
                     break;
                 } finally {
@@ -116,7 +140,7 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
         } finally {
             workers.close();
             // a worker's last result may have come after its round's maps were destroyed: the round's maps go again
-            for (int round = 0; round < ROUNDS; round++) {
+            for (int round = 0; round <= done && round < rounds.size(); round++) {
                 own.tiles(ID + round).destroy();
                 own.claims(ID + round).destroy();
             }
@@ -125,19 +149,20 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
             own.images().destroy();
             own.scenes().destroy();
         }
-        return new Outcome(tiles, rounds, (System.nanoTime() - start) / 1_000_000);
+        return new Outcome(tiles, done, (System.nanoTime() - start) / 1_000_000);
     }
 
     /** One round: the scene as a job of this member, its tiles rendered by its own workers; the tiles it rendered. */
-    private static int render(ClusterData own, TileFarm farm, String id, String memberId, CompiledScene scene,
+    private static int render(ClusterData own, TileFarm farm, String id, String memberId, Round round,
                               long deadline) {
+        CompiledScene scene = round.scene();
         int width = scene.settings().width(), height = scene.settings().height();
         JobStatus running = new JobStatus(id, JobState.RUNNING, 0, 0, null, width, height, "warm-up.png", "image/png",
                 null, null);
-        own.jobs().set(id, new JobRecord(running, memberId, TILE_SIZE, ""));
+        own.jobs().set(id, new JobRecord(running, memberId, round.tileSize(), ""));
         JobPublisher publisher = new JobPublisher(id, memberId, own.jobs(), own.images(), own.events(id),
                 () -> running, () -> null, new HashSet<>(), () -> false);
-        RenderResult result = farm.render(id, scene, TILE_SIZE, false, (film, tile, done, total) ->
+        RenderResult result = farm.render(id, scene, round.tileSize(), false, (film, tile, done, total) ->
                         publisher.tile(new TileEvent(tile.x(), tile.y(), tile.width(), tile.height(),
                                 TilePng.encode(film, tile), (double) done / total)),
                 () -> System.nanoTime() - deadline > 0);
@@ -147,7 +172,7 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
         own.images().set(id, image);
         publisher.end(done);
         farm.forget(id);
-        return ClusterTiling.tiles(width, height, TILE_SIZE).size();
+        return ClusterTiling.tiles(width, height, round.tileSize()).size();
     }
 
     private static byte[] read() {

@@ -265,15 +265,7 @@ final class TileWorkers implements AutoCloseable {
                 long rays = worker.rays(), samples = worker.samples();
                 Film film = Film.ofTile(tile);
                 long nonFinite = worker.render(TileRequest.whole(film, tile));
-                double[] rgb = new double[3 * tile.width() * tile.height()];
-                int i = 0;
-                for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
-                    for (int x = tile.x(); x < tile.x() + tile.width(); x++) {
-                        for (int c = 0; c < 3; c++) {
-                            rgb[i++] = film.get(x, y, c);
-                        }
-                    }
-                }
+                double[] rgb = film.pixels(tile);
                 // not waited for: the next tile starts now; if this member dies first, its claim is still there.
                 // A claim stays once its result is in: the coordinator reads results before claims, and a claim of a
                 // tile with a result costs nothing, while deleting it was two of a tile's round trips (its backup).

@@ -17,11 +17,12 @@ import com.hazelcast.config.Config;
 import com.hazelcast.config.MapConfig;
 import com.hazelcast.core.DistributedObject;
 
+import studio.engine.render.TileRect;
 import studio.server.Await;
 import studio.server.system.MemoryBudget;
 
 /**
- * The start-up warm-up of a member's cluster path: a tiny scene's tiles through the member's own
+ * The start-up warm-up of a member's cluster path: a small scene's tiles through the member's own
  * structures, across the members (their partitions), touching none of the cluster's own (no task in
  * the tile queue, no job), rendered by this member's warm-up workers alone, every structure of it
  * gone afterwards, and stopped at its limit.
@@ -70,9 +71,10 @@ class ClusterWarmUpTest {
 
         ClusterWarmUp.Outcome outcome = warmUp(members.get(0), Duration.ofMinutes(2)).run();
 
-        int tiles = ClusterTiling.tiles(128, 128, ClusterWarmUp.TILE_SIZE).size();
-        assertThat(outcome.rounds()).isEqualTo(ClusterWarmUp.ROUNDS);
-        assertThat(outcome.tiles()).isEqualTo(ClusterWarmUp.ROUNDS * tiles);
+        int small = ClusterTiling.tiles(128, 128, ClusterWarmUp.TILE_SIZE).size();
+        int full = ClusterTiling.tiles(ClusterWarmUp.FULL_SIZE, ClusterWarmUp.FULL_SIZE, ClusterJobs.LARGE_TILE).size();
+        assertThat(outcome.rounds()).isEqualTo(1 + ClusterWarmUp.ROUNDS);
+        assertThat(outcome.tiles()).isEqualTo(full + ClusterWarmUp.ROUNDS * small);
         assertThat(queued).as("tasks in the cluster's tile queue").hasValue(0);
         for (TestMember member : members) {
             assertThat(member.hazelcast.getDistributedObjects()).map(DistributedObject::getName)
@@ -80,6 +82,16 @@ class ClusterWarmUpTest {
             assertThat(member.data.jobs().keySet()).isEmpty();
             assertThat(member.rejected(ClusterMaps.TILES_FAMILY)).isZero();
         }
+    }
+
+    /** The full-size round is cut as a large job is: its results are a job's largest, and its smallest. */
+    @Test
+    void itsFullSizeRoundHasAJobsTileSizes() {
+        List<TileRect> tiles = ClusterTiling.tiles(ClusterWarmUp.FULL_SIZE, ClusterWarmUp.FULL_SIZE,
+                ClusterJobs.LARGE_TILE);
+
+        assertThat(tiles).extracting(TileRect::width).containsOnly(2 * ClusterJobs.LARGE_TILE, ClusterJobs.LARGE_TILE);
+        assertThat(tiles).extracting(TileRect::height).containsOnly(2 * ClusterJobs.LARGE_TILE, ClusterJobs.LARGE_TILE);
     }
 
     /** The warm-up's tile and claim maps and event log are configured as a job's, so it runs the code a job's run. */
