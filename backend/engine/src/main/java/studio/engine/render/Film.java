@@ -67,6 +67,27 @@ public final class Film {
         return out;
     }
 
+    /**
+     * Stores the pixels of {@code tile} (which this film holds) from {@code rgb}, row-major RGB
+     * triples from its top-left as {@link #pixels} gives them, each as {@link #set} does.
+     *
+     * @return the pixels stored as black because a component was NaN or infinite
+     */
+    public int setPixels(TileRect tile, double[] rgb) {
+        if (rgb.length != 3 * tile.width() * tile.height()) {
+            throw new IllegalArgumentException(rgb.length + " values for a " + tile.width() + "x" + tile.height() + " tile");
+        }
+        int rejected = 0, i = 0;
+        for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
+            for (int x = tile.x(); x < tile.x() + tile.width(); x++, i += 3) {
+                if (!set(x, y, rgb[i], rgb[i + 1], rgb[i + 2])) {
+                    rejected++;
+                }
+            }
+        }
+        return rejected;
+    }
+
     /** Component c (0 red, 1 green, 2 blue) of pixel (x, y), in linear light. */
     public double get(int x, int y, int c) {
         return rgb[3 * ((y - y0) * width + x - x0) + c];

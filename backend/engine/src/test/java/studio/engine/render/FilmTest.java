@@ -3,6 +3,7 @@ package studio.engine.render;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import org.junit.jupiter.api.Test;
 
@@ -65,5 +66,33 @@ class FilmTest {
 
         assertFalse(film.set(0, 0, Double.NaN, 1, 1));
         assertArrayEquals(new double[] {0, 0, 0}, film.pixels(new TileRect(0, 0, 1, 1)));
+    }
+
+    @Test
+    void setPixelsStoresWhatPixelsGivesInTheSamePlaces() {
+        Film source = new Film(9, 8);
+        fill(source, new TileRect(0, 0, 9, 8));
+        TileRect tile = new TileRect(2, 3, 5, 4);
+        Film target = Film.ofTile(tile);
+
+        assertEquals(0, target.setPixels(tile, source.pixels(tile)));
+        assertArrayEquals(expected(tile), target.pixels(tile));
+    }
+
+    @Test
+    void setPixelsStoresANonFinitePixelAsBlackAndCountsIt() {
+        TileRect tile = new TileRect(0, 0, 2, 1);
+        Film film = Film.ofTile(tile);
+
+        assertEquals(1, film.setPixels(tile, new double[] {1, 2, 3, 4, Double.POSITIVE_INFINITY, 6}));
+        assertArrayEquals(new double[] {1, 2, 3, 0, 0, 0}, film.pixels(tile));
+    }
+
+    @Test
+    void setPixelsRefusesTheWrongNumberOfValues() {
+        TileRect tile = new TileRect(0, 0, 2, 2);
+        Film film = Film.ofTile(tile);
+
+        assertThrows(IllegalArgumentException.class, () -> film.setPixels(tile, new double[11]));
     }
 }

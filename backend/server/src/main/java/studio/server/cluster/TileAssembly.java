@@ -63,13 +63,9 @@ final class TileAssembly {
             return;
         }
         TileRect tile = tiles.get(result.index());
-        double[] rgb = result.rgb();
-        int i = 0;
-        for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
-            for (int x = tile.x(); x < tile.x() + tile.width(); x++, i += 3) {
-                film.set(x, y, rgb[i], rgb[i + 1], rgb[i + 2]);
-            }
-        }
+        // a call, not a loop here: a loop's backedges had C2 compile this method, with the listener's
+        // tile encoding inlined, during a fresh member's first job
+        film.setPixels(tile, result.rgb());
         done.set(result.index());
         doneCount++;
         rays += result.rays();
