@@ -75,7 +75,8 @@ public final class Film {
      */
     public int setPixels(TileRect tile, double[] rgb) {
         if (rgb.length != 3 * tile.width() * tile.height()) {
-            throw new IllegalArgumentException(rgb.length + " values for a " + tile.width() + "x" + tile.height() + " tile");
+            throw new IllegalArgumentException(
+                    rgb.length + " values for a " + tile.width() + "x" + tile.height() + " tile");
         }
         int rejected = 0, i = 0;
         for (int y = tile.y(); y < tile.y() + tile.height(); y++) {

@@ -28,13 +28,13 @@ import studio.server.system.MemoryBudget;
 
 /**
  * Renders a small scene's tiles through this member's own cluster path at start-up, before the port
- * opens, once in a job's own tile sizes (results as large as a job's) and then in many small tiles
- * (a job's round trips, many times over): the queue, the claims, the results and their listener, the assembly, each tile's PNG event
- * in an event log, the job table's compare-and-set, the image, all sealed, with the code a job runs
- * ({@link TileFarm}, {@link TileWorkers}, {@link JobPublisher}), so that a fresh member's first job
- * runs Hazelcast's and the tile path's code compiled instead of paying the JIT on a user's time (the
- * compiler threads' CPU during two pinned members' first job, docs/cluster.md, "Where two members'
- * CPU goes"). Its structures are named for this member ({@link ClusterData#named}): no other
+ * opens, once in a job's own tile sizes (results as large as a job's) and then in many small tiles (a
+ * job's round trips, many times over): the queue, the claims, the results and their listener, the
+ * assembly, each tile's PNG event in an event log, the job table's compare-and-set, the image, all
+ * sealed, with the code a job runs ({@link TileFarm}, {@link TileWorkers}, {@link JobPublisher}), so
+ * that a fresh member's first job runs Hazelcast's and the tile path's code compiled instead of paying
+ * the JIT on a user's time (the compiler threads' CPU during two pinned members' first job,
+ * docs/cluster.md, "Where two members' CPU goes"). Its structures are named for this member ({@link ClusterData#named}): no other
  * member's workers take its tiles, they hold no data of a job, and they are destroyed at the end;
  * partitions of them live on the other members, so their network path is compiled too. Bounded by
  * {@code studio.cluster.warm-up} (by default {@code studio.warm-up}, the render warm-up's limit); a
@@ -44,7 +44,10 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
 
     private static final Logger log = LoggerFactory.getLogger(ClusterWarmUp.class);
     static final String SCENE = "cluster/warm-up.json";
-    /** 6-pixel tiles of the 128x128 scene ({@link ClusterTiling}: 12-pixel ones first): 253 tiles a small round, each a few round trips and hardly a render. */
+    /**
+     * 6-pixel tiles of the 128x128 scene ({@link ClusterTiling}: 12-pixel ones first): 253 tiles a small
+     * round, each a few round trips and hardly a render.
+     */
     static final int TILE_SIZE = 6;
     /**
      * Rounds of small tiles: 253 tiles a round, several Hazelcast operations each, so that the
