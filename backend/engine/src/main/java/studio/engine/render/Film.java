@@ -69,24 +69,20 @@ public final class Film {
 
     /**
      * Stores the pixels of {@code tile} (which this film holds) from {@code rgb}, row-major RGB
-     * triples from its top-left as {@link #pixels} gives them, each as {@link #set} does.
-     *
-     * @return the pixels stored as black because a component was NaN or infinite
+     * triples from its top-left as {@link #pixels} gives them, each as {@link #set} does (a pixel
+     * with a NaN or infinite component as black).
      */
-    public int setPixels(TileRect tile, double[] rgb) {
+    public void setPixels(TileRect tile, double[] rgb) {
         if (rgb.length != 3 * tile.width() * tile.height()) {
             throw new IllegalArgumentException(
                     rgb.length + " values for a " + tile.width() + "x" + tile.height() + " tile");
         }
-        int rejected = 0, i = 0;
+        int i = 0;
         for (int y = tile.y(); y < tile.y() + tile.height(); y++) {
             for (int x = tile.x(); x < tile.x() + tile.width(); x++, i += 3) {
-                if (!set(x, y, rgb[i], rgb[i + 1], rgb[i + 2])) {
-                    rejected++;
-                }
+                set(x, y, rgb[i], rgb[i + 1], rgb[i + 2]);
             }
         }
-        return rejected;
     }
 
     /** Component c (0 red, 1 green, 2 blue) of pixel (x, y), in linear light. */
