@@ -56,6 +56,7 @@ class ClusterConfiguration {
     @Bean
     @Conditional(MembersConfigured.class)
     Config hazelcastConfig(ClusterProperties cluster, ClusterSecret secret, StudioProperties properties) {
+        HazelcastCompiles.keepOutOfC2(); // before the member starts: none of its code is hot yet
         return MemberConfig.withAssets(MemberConfig.of(cluster, secret), properties.assets().maxStoreBytes().toBytes());
     }
 
