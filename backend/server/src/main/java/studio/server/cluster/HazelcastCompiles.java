@@ -5,7 +5,6 @@ import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.atomic.AtomicBoolean;
 
 import javax.management.JMException;
 import javax.management.ObjectName;
@@ -28,22 +27,17 @@ final class HazelcastCompiles {
     private static final Logger log = LoggerFactory.getLogger(HazelcastCompiles.class);
     /** Every class of Hazelcast's packages (its shaded libraries too): C2 excluded, C1 as usual. */
     static final String DIRECTIVE = "[{ match: [\"com/hazelcast/*.*\"], c2: { Exclude: true } }]";
-    private static final AtomicBoolean added = new AtomicBoolean();
+    private static boolean added;
 
     private HazelcastCompiles() {
     }
 
     /** Adds the directive, once a JVM (the directives' stack is bounded); true if this JVM has it. */
-    static boolean keepOutOfC2() {
-        if (added.get()) {
-            return true;
+    static synchronized boolean keepOutOfC2() {
+        if (!added) {
+            added = add();
         }
-        synchronized (added) {
-            if (!added.get()) {
-                added.set(add());
-            }
-            return added.get();
-        }
+        return added;
     }
 
     private static boolean add() {
