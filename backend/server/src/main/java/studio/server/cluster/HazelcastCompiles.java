@@ -53,7 +53,7 @@ final class HazelcastCompiles {
                 log.info("Hazelcast's code stays with the JVM's usual compilers: the directive was refused ({})", text);
                 return false;
             }
-            log.debug("Hazelcast's code is compiled by C1 only ({})", text);
+            log.info("Hazelcast's code is compiled by C1 alone, by a compiler directive; the rest as usual");
             return true;
         } catch (JMException | IOException | RuntimeException e) {
             log.info("Hazelcast's code stays with the JVM's usual compilers: {}", e.toString());
