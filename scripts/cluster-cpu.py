@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Two pinned members against one service, by CPU (docs/cluster.md, "By CPU, under load"): one plain service pinned
+"""Two pinned members against one service, by CPU (docs/cluster.md, "Pinned, on a quiet machine"): one plain service pinned
 to core 0, then two members pinned to cores 0 and 1 (--studio.render-threads=1), each start renders the job cold
 then warm. Records each job's wall time (status elapsedMillis) and the CPU of each thread during the job from
 /proc/<pid>/task/*/stat, split into tile workers, compiler threads, Hazelcast threads and other (threads that

@@ -12,7 +12,7 @@ import studio.engine.render.TileRect;
  * the least) in tiles of the job's size. A tile costs its workers and its owner the same few round
  * trips however large it is, so the large tiles take a quarter of them for most of the image, and
  * the small ones at the end keep the job's tail as short as small tiles everywhere would
- * ({@code scripts/cluster-cpu.py}, docs/cluster.md, "By CPU, under load"). The pixels do not depend on the tiling: each is seeded from
+ * ({@code scripts/cluster-cpu.py}, docs/cluster.md, "Where two members' CPU goes"). The pixels do not depend on the tiling: each is seeded from
  * itself. A job's tiling is fixed by its image's size and its record's tile size, so every member
  * (and one that takes the job over) cuts it the same way.
  */

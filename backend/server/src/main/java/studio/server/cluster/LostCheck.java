@@ -8,7 +8,7 @@ import java.util.concurrent.TimeUnit;
  * its next look after a member left (heard, or missing from the members it saw at its last look), and
  * otherwise at most every {@value #BACKSTOP_MILLIS} ms. Reading the claims is a query of every member's
  * partitions; done every second it took the owner's and the workers' JIT into the query engine during
- * every job (the compilations of two pinned members' warm job, docs/cluster.md, "The pair's CPU, split").
+ * every job (the compilations of two pinned members' warm job, docs/cluster.md, "Where two members' CPU goes").
  */
 final class LostCheck {
 

@@ -68,7 +68,7 @@ public final class MemberConfig {
         config.setProperty("hazelcast.phone.home.enabled", "false");
         config.setProperty("hazelcast.logging.type", "slf4j");
         // nothing reads Hazelcast's own metrics (the service's are Micrometer's): collecting them every 5 s and
-        // publishing them to JMX showed in the members' CPU samples (docs/cluster.md, "What the seal costs")
+        // publishing them to JMX showed in the members' CPU samples (docs/cluster.md, "Where two members' CPU goes")
         config.getMetricsConfig().setEnabled(false);
         // on SIGTERM the application hands its jobs over (or drains its renders), then shuts the member down
         // (gracefully: its partitions migrate first); Hazelcast's own hook would take the member away before that

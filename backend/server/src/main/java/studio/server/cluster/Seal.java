@@ -46,7 +46,7 @@ final class Seal {
     /**
      * Each thread's cipher, initialized again for every value: a {@code Cipher.getInstance} per value
      * looked the provider up every time, and the JIT was still compiling that lookup in two members'
-     * warm jobs (docs/cluster.md, "By CPU, under load").
+     * warm jobs (docs/cluster.md, "Where two members' CPU goes").
      */
     private final ThreadLocal<Cipher> ciphers = ThreadLocal.withInitial(Seal::newCipher);
     private final Map<String, SecretKey> keys = new ConcurrentHashMap<>();
