@@ -196,12 +196,18 @@ final class BundleSearch {
      * first, ties by declaration (the order the linear loop would meet them in), and puts into
      * {@code near[k]} a bound below every unit-length ray's hit distance on entry k: its box's
      * distance from the point (a hit lies in the box, which is padded for the shape's rounding),
-     * shrunk by {@link #NEAR_SHRINK}, and 0 for a plane.
+     * shrunk by {@link #NEAR_SHRINK}, and 0 for a plane. The distances first, then an insertion sort:
+     * in one loop, C2's profiled loop predicates failed 4-5 times a process, each failure a recompile
+     * of the bundle search (-Xlog:deoptimization; docs/cluster.md, "The warm job's compiles").
      */
     private void order(int[] ids, int count, double px, double py, double pz, double[] near) {
         for (int k = 0; k < count; k++) {
             int id = ids[k];
-            double d = id >= 0 ? Aabb.distance(slotBoxes, 6 * id, px, py, pz) * NEAR_SHRINK : 0;
+            near[k] = id >= 0 ? Aabb.distance(slotBoxes, 6 * id, px, py, pz) * NEAR_SHRINK : 0;
+        }
+        for (int k = 1; k < count; k++) {
+            int id = ids[k];
+            double d = near[k];
             int shape = shapeOf(id);
             int j = k - 1;
             while (j >= 0 && (near[j] > d || near[j] == d && shapeOf(ids[j]) > shape)) {
