@@ -32,7 +32,7 @@ import studio.server.system.MemoryBudget;
  * job's round trips, many times over): the queue, the claims, the results and their listener, the
  * assembly, each tile's PNG event in an event log, the job table's compare-and-set, the image, all
  * sealed, with the code a job runs ({@link TileFarm}, {@link TileWorkers}, {@link JobPublisher}), so
- * that a fresh member's first job runs Hazelcast's and the tile path's code compiled instead of paying
+ * that a fresh member's first job runs the tile path's code compiled instead of paying
  * the JIT on a user's time (the compiler threads' CPU during two pinned members' first job,
  * docs/cluster.md, "Where two members' CPU goes"). Its structures are named for this member ({@link ClusterData#named}): no other
  * member's workers take its tiles, they hold no data of a job, and they are destroyed at the end;
@@ -50,8 +50,10 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
      */
     static final int TILE_SIZE = 6;
     /**
-     * Rounds of small tiles: 253 tiles a round, several Hazelcast operations each, so that the
-     * operation and network threads' loops pass C2's thresholds here rather than in a user's first jobs.
+     * Rounds of small tiles: 253 tiles a round, several operations each, so that more of the tile path's
+     * code is compiled here rather than in a user's first job: with two rounds a pinned pair's first job
+     * cost 0.45 s more CPU (docs/cluster.md, "The warm job's compiles").
+     * Hazelcast's code C1 compiles ({@link HazelcastCompiles}).
      */
     static final int ROUNDS = 8;
     /**
