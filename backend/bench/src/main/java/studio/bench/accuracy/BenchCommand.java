@@ -174,7 +174,8 @@ public final class BenchCommand {
                         + "error against %s at %d samples/pixel, RMSE in linear light, PSNR peak 1.0.%n"
                         + "slope: least squares of log RMSE against log samples/pixel (4..256; adaptive: all thresholds, "
                         + "mean samples/pixel).%n"
-                        + "ms to target: time to reach jittered's RMSE at 16 samples/pixel, interpolated log-log%s.%n%n",
+                        + "ms to target: time to reach jittered's RMSE at 16 samples/pixel, interpolated log-log%s; "
+                        + "spp to target: the mean samples/pixel there, interpolated the same way (no clock in it).%n%n",
                 Runtime.getRuntime().availableProcessors(), options.forks, options.runs,
                 SpeedAccuracyBench.REFERENCE_SAMPLER, options.referenceSamples,
                 jvms.size() > 1 ? "; vs jittered: the median over the JVMs of each one's own ratio" : ""));

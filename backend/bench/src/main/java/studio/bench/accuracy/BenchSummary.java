@@ -37,8 +37,11 @@ final class BenchSummary {
      * @param upperBound true if even the method's cheapest setting is below the target (millis is that setting's time)
      * @param ratio      millis over jittered's time to reach the target
      * @param cpuRatio   the same ratio by CPU time; NaN where CPU time was not measured
+     * @param samples    mean samples a pixel to reach the target, interpolated as the time is; NaN if it never
+     *                   does. It depends on no clock: a change to sampling shows in it without the machine's noise
      */
-    record Line(String method, double slope, double millis, boolean upperBound, double ratio, double cpuRatio) {
+    record Line(String method, double slope, double millis, boolean upperBound, double ratio, double cpuRatio,
+                double samples) {
     }
 
     private BenchSummary() {
@@ -102,7 +105,7 @@ final class BenchSummary {
                 cpuRatios[j] = own == null ? Double.NaN : own.cpuRatio();
             }
             paired.add(new Line(line.method(), line.slope(), line.millis(), line.upperBound(),
-                    medianOfMeasured(ratios), medianOfMeasured(cpuRatios)));
+                    medianOfMeasured(ratios), medianOfMeasured(cpuRatios), line.samples()));
         }
         return paired;
     }
@@ -128,15 +131,17 @@ final class BenchSummary {
         List<Line> lines = new ArrayList<>();
         for (String method : methods) {
             List<Measurement> own = rows.stream().filter(m -> m.method().equals(method)).toList();
-            double millis = Double.NaN, cpuMillis = Double.NaN;
+            double millis = Double.NaN, cpuMillis = Double.NaN, samples = Double.NaN;
             boolean upper = false;
             if (target != null) {
                 millis = timeToReach(own, target.rmse()).orElse(Double.NaN);
                 cpuMillis = timeToReach(own, target.rmse(), Measurement::medianCpuMillis).orElse(Double.NaN);
+                samples = timeToReach(own, target.rmse(), Measurement::meanSamplesPerPixel).orElse(Double.NaN);
                 upper = !Double.isNaN(millis) && ordered(own).get(0).rmse() <= target.rmse()
                         && !method.equals(TARGET_SAMPLER);
             }
-            lines.add(new Line(method, slope(own), millis, upper, millis / jitteredMillis, cpuMillis / jitteredCpuMillis));
+            lines.add(new Line(method, slope(own), millis, upper, millis / jitteredMillis, cpuMillis / jitteredCpuMillis,
+                    samples));
         }
         return lines;
     }
@@ -151,15 +156,17 @@ final class BenchSummary {
             s.append(String.format(Locale.ROOT, "%s: target RMSE %.5f (jittered at %d samples/pixel, %.1f ms)%n",
                     scene, target.rmse(), TARGET_SAMPLES, target.millis()));
         }
-        s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s %12s%n", "method", "slope", "ms to target", "vs jittered",
-                "by CPU time"));
+        s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s %12s %14s%n", "method", "slope", "ms to target", "vs jittered",
+                "by CPU time", "spp to target"));
         for (Line line : lines(rows, jvms)) {
             String bound = line.upperBound() ? "<= " : "";
             String millis = Double.isNaN(line.millis()) ? "not reached" : bound + String.format(Locale.ROOT, "%.1f", line.millis());
             String ratio = Double.isNaN(line.ratio()) ? "-" : bound + String.format(Locale.ROOT, "%.2f", line.ratio());
             String cpuRatio = Double.isNaN(line.cpuRatio()) ? "-" : bound + String.format(Locale.ROOT, "%.2f", line.cpuRatio());
             String slope = Double.isNaN(line.slope()) ? "-" : String.format(Locale.ROOT, "%.2f", line.slope());
-            s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s %12s%n", line.method(), slope, millis, ratio, cpuRatio));
+            String samples = Double.isNaN(line.samples()) ? "-" : bound + String.format(Locale.ROOT, "%.2f", line.samples());
+            s.append(String.format(Locale.ROOT, "  %-22s %9s %16s %12s %12s %14s%n", line.method(), slope, millis, ratio, cpuRatio,
+                    samples));
         }
         String povray = againstPovray(rows);
         if (!povray.isEmpty()) {

@@ -103,6 +103,10 @@ class BenchSummaryTest {
         assertThat(sobol.millis()).isCloseTo(24, within(1e-9));
         assertThat(sobol.ratio()).isCloseTo(0.75, within(1e-12));
         assertThat(sobol.upperBound()).isFalse();
+        assertThat(sobol.samples()).as("samples to the target, by no clock").isCloseTo(8, within(1e-9));
+        assertThat(random.samples()).isCloseTo(64, within(1e-9));
+        assertThat(jittered.samples()).isCloseTo(16, within(1e-9));
+        assertThat(BenchSummary.format("s", rows, List.of())).contains("spp to target").contains("8.00");
     }
 
     @Test
