@@ -170,11 +170,9 @@ class PenumbraTest {
     /**
      * The default sampling's error keeps falling as its threshold does: pixels near the umbra whose
      * few samples (and whose neighbours' base samples) were all shadowed by chance stopped at the
-     * umbra's value whatever the threshold was (on this floor at most 256 samples, mean squared error
-     * against 1,024 jittered samples: threshold 0.002 left 0.67 of 0.02's before, 0.44 after). Measured
-     * at most 1,024 samples against 4,096, 0.12 (2.5e-6 against 2.1e-5): at most 256, 0.002's error sat
-     * near that cap's floor, and a change to sampling that lowered 0.02's error alone (a light sampled by
-     * the cosine, docs/speed.md) brought the ratio to 0.51.
+     * umbra's value whatever the threshold was (then 0.002 left 0.67 of 0.02's mean squared error; now
+     * 0.12). At most 1,024 samples against a 4,096-sample reference, because at most 256 the error at
+     * 0.002 sits near the cap's floor, and a sampling change that lowers only 0.02's error crosses 0.5.
      */
     @Test
     void adaptiveErrorKeepsFallingAsTheThresholdDoes() {
