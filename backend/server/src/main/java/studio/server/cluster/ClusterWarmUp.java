@@ -52,8 +52,8 @@ final class ClusterWarmUp implements SmartInitializingSingleton {
     /**
      * Rounds of small tiles: 253 tiles a round, several operations each, so that more of the tile path's
      * code is compiled here rather than in a user's first job: with two rounds a pinned pair's first job
-     * cost 0.45 s more CPU (docs/cluster.md, "The warm job's compiles").
-     * Hazelcast's code C1 compiles ({@link HazelcastCompiles}).
+     * cost 0.45 s more CPU (docs/cluster.md, "The warm job's compiles"). Hazelcast's own code needs no
+     * rounds for C2: C1 alone compiles it ({@link HazelcastCompiles}).
      */
     static final int ROUNDS = 8;
     /**
