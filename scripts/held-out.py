@@ -8,6 +8,8 @@ no change is tuned on, written before the tuning they check. Seeded, so the same
                               DIR/terrain.json (.obj)  a 51,200-triangle terrain, a glass and a metal ball
                               DIR/soft/soft-blocks.json  40 boxes under a sphere light (160x120 charts)
                               DIR/soft/soft-table.json   a table with glass under an area light
+                              DIR/soft/soft-city.json    32 boxes and a mirror ball under a sphere light
+                              DIR/soft/soft-shelf.json   a shelf with glass and metal under a strip area light
                               DIR/cluster-job.json     960x720 at 36 jittered samples: glass, a mirror, 45 boxes
 """
 import json, math, os, random, sys
@@ -102,3 +104,36 @@ o = [floor] + boxes(45, 3.5) + [
     {"type": "box", "center": [1.8, 1.2, -1.5], "size": [1.4, 2.4, 0.1], "rotation": [0, -25, 0], "material": {"type": "mirror"}}]
 save('cluster-job.json', scene("cluster-job", 960, 720, [0.8, 3.2, 7.0], [0, 0.8, 0], 48,
     [{"type": "point", "position": [3, 7, 5], "color": "#ffffff", "intensity": 0.9}], o, samples=36))
+# soft, written later (before the umbra test and the halves' growing limit were tuned): a city of boxes
+# under a large sphere light; a shelf before a wall under a long strip light
+C = random.Random(6060)
+def box(lo, hi, material):
+    return {"type": "box", "center": [round((a + b) / 2, 4) for a, b in zip(lo, hi)],
+            "size": [round(b - a, 4) for a, b in zip(lo, hi)], "material": material}
+o = [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": {"type": "chalk", "color": "#c8c8c0"}}]
+for i in range(-3, 4):
+    for j in range(-3, 3):
+        if C.random() < 0.35: continue
+        h = 0.2 + C.random() * 1.1
+        cx, cz = i * 0.55 + C.uniform(-0.08, 0.08), j * 0.55 + C.uniform(-0.08, 0.08)
+        o.append(box([cx - 0.18, 0, cz - 0.18], [cx + 0.18, h, cz + 0.18],
+                     {"type": C.choice(["chalk", "plastic"]), "color": C.choice(["#d9d2c5", "#8fa3b8", "#c98e6b", "#9bb08a"])}))
+o.append({"type": "sphere", "center": [0.25, 0.3, 1.2], "radius": 0.3, "material": {"type": "mirror", "color": "#e8e8e8"}})
+city = scene("soft-city", 320, 240, [3.2, 3.0, 4.4], [0, 0.3, 0], 42,
+    [{"type": "point", "position": [-1.5, 3.5, 1.0], "radius": 0.6, "color": "#fff2dd", "intensity": 1.1}], o, depth=5, ambient=0.03)
+city["background"] = "#0c1018"
+save('soft/soft-city.json', city)
+wood = {"type": "plastic", "color": "#6b4f3a"}
+o = [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": {"type": "chalk", "color": "#b9b4aa"}},
+     {"type": "plane", "point": [0, 0, -1.6], "normal": [0, 0, 1], "material": {"type": "chalk", "color": "#a9aeb6"}},
+     box([-1.4, 0.0, -0.5], [-1.25, 0.9, -0.2], wood), box([1.25, 0.0, -0.5], [1.4, 0.9, -0.2], wood),
+     box([-1.5, 0.9, -0.6], [1.5, 0.98, -0.1], {"type": "plastic", "color": "#8a6a50"}),
+     box([-0.9, 0.98, -0.45], [-0.5, 1.38, -0.2], {"type": "glass", "color": "#ffffff"}),
+     {"type": "sphere", "center": [0.1, 1.16, -0.35], "radius": 0.18, "material": {"type": "plastic", "color": "#c0392b"}},
+     {"type": "sphere", "center": [0.7, 1.1, -0.3], "radius": 0.12, "material": {"type": "metal", "color": "#d4af37"}},
+     {"type": "sphere", "center": [-0.2, 0.25, 0.5], "radius": 0.25, "material": {"type": "chalk", "color": "#2e86c1"}}]
+shelf = scene("soft-shelf", 320, 240, [0.6, 1.7, 3.6], [0, 0.6, -0.3], 48,
+    [{"type": "area", "position": [0.8, 2.6, 0.9], "size": [2.0, 0.35], "lookAt": [0, 0.4, -0.4], "color": "#ffffff", "intensity": 1.2}],
+    o, depth=6, ambient=0.05)
+shelf["background"] = "#0e0e12"
+save('soft/soft-shelf.json', shelf)

@@ -200,6 +200,12 @@ public final class Box implements Shape {
     }
 
     /** The rotated box's world-space extent: the centre plus or minus |R| times the half size. */
+    /** {@inheritDoc} Here: a box, rotated or not. */
+    @Override
+    public boolean convex() {
+        return true;
+    }
+
     @Override
     public Aabb bounds() {
         double ex = Math.abs(m00) * hx + Math.abs(m01) * hy + Math.abs(m02) * hz;

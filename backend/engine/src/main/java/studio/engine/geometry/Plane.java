@@ -40,6 +40,12 @@ public record Plane(Vec3 point, Vec3 normal) implements Shape {
     }
 
     /** Unbounded: planes are tested beside a BVH, never in it. */
+    /** {@inheritDoc} Here: a plane. */
+    @Override
+    public boolean convex() {
+        return true;
+    }
+
     @Override
     public Aabb bounds() {
         return Aabb.UNBOUNDED;

@@ -18,6 +18,13 @@ public sealed interface Shape permits Sphere, Plane, Box, TriangleMesh {
     boolean occluded(Ray ray, double tMax);
 
     /**
+     * Whether the shape is convex: with any two of its points it holds the segment between them.
+     * Then the rays from one point that it stops form a convex cone, so it stops every ray between
+     * rays it stops (how an umbra is told from a penumbra: {@code LightSampler.hiddenBy}).
+     */
+    boolean convex();
+
+    /**
      * A box holding every point the shape can report as a hit (conservatively rounded outwards),
      * or {@link Aabb#UNBOUNDED} for shapes without finite extent, which stay out of a BVH.
      */

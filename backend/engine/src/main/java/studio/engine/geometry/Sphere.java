@@ -33,6 +33,12 @@ public record Sphere(Vec3 center, double radius) implements Shape {
         return occluded(center.x(), center.y(), center.z(), radius, ray, tMax);
     }
 
+    /** {@inheritDoc} Here: a ball. */
+    @Override
+    public boolean convex() {
+        return true;
+    }
+
     @Override
     public Aabb bounds() {
         double cx = center.x(), cy = center.y(), cz = center.z();

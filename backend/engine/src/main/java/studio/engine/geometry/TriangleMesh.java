@@ -309,6 +309,12 @@ public final class TriangleMesh implements Shape {
         return uvs != null;
     }
 
+    /** {@inheritDoc} Here: a mesh may be any shape; its triangles are not asked one by one. */
+    @Override
+    public boolean convex() {
+        return false;
+    }
+
     @Override
     public Aabb bounds() {
         return bounds;

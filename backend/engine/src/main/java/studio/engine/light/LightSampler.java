@@ -2,6 +2,8 @@ package studio.engine.light;
 
 import java.util.List;
 
+import studio.engine.geometry.Ray;
+import studio.engine.geometry.Shape;
 import studio.engine.math.Vec3;
 
 /**
@@ -193,6 +195,65 @@ public final class LightSampler {
         double t = QUARTER_PI * w, q = t * t;
         return t * (1 + q * (-1.0 / 6 + q * (1.0 / 120 + q * (-1.0 / 5040 + q * (1.0 / 362880 + q * (-1.0 / 39916800
                 + q * (1.0 / 6227020800.0 + q * (-1.0 / 1307674368000.0))))))));
+    }
+
+    /** Whether light i has a size (a sphere or area light): its shadows have penumbrae. */
+    public boolean soft(int i) {
+        return kind[i] != POINT;
+    }
+
+    /** The sides of the polygon around a sphere light's cone that {@link #hiddenBy} tests. */
+    static final int SPHERE_SIDES = 8;
+    private static final double POLYGON_REACH = (1 + 1e-9) / Math.cos(Math.PI / SPHERE_SIDES);
+    /** As a shadow ray's: blocked only before this fraction of the way to the light. */
+    private static final double SHADOW_END = 1 - 1e-9;
+
+    /**
+     * Whether {@code blocker} alone hides all of sphere or area light i from the point (ox, oy, oz):
+     * the point lies in the light's umbra, not in a penumbra. Exact, and cheap: the blocker is convex
+     * ({@link Shape#convex}), so the rays from the point that it stops form a convex cone, and when
+     * it stops the rays to an area light's 4 corners it stops the ray to every point of the
+     * rectangle between them; for a sphere light, the rays through the corners of an
+     * {@value #SPHERE_SIDES}-sided polygon around the cone the sphere fills, each stopped nearer than
+     * the sphere's nearest point. False for a shape that is not convex (a mesh), whatever it hides,
+     * and for a point light. {@code probe} is the caller's ray, set here.
+     */
+    public boolean hiddenBy(int i, Shape blocker, double ox, double oy, double oz, Ray probe) {
+        if (kind[i] == POINT || !blocker.convex()) {
+            return false;
+        }
+        if (kind[i] == AREA) {
+            for (int corner = 0; corner < 4; corner++) {
+                double su = (corner & 1) == 0 ? -1 : 1, sv = (corner & 2) == 0 ? -1 : 1;
+                double x = cx[i] + su * wx[i] + sv * hx[i] - ox, y = cy[i] + su * wy[i] + sv * hy[i] - oy,
+                        z = cz[i] + su * wz[i] + sv * hz[i] - oz;
+                double dist = Math.sqrt(x * x + y * y + z * z);
+                if (!(dist > 0) || !blocker.occluded(probe.set(ox, oy, oz, x / dist, y / dist, z / dist), dist * SHADOW_END)) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        double x = cx[i] - ox, y = cy[i] - oy, z = cz[i] - oz;
+        double d = Math.sqrt(x * x + y * y + z * z), rad = radius[i];
+        if (!(d > rad)) {
+            return false;
+        }
+        x /= d; y /= d; z /= d;
+        // the polygon's corners at unit distance along the axis, a little outside the cone of half-angle theta_max
+        double reach = rad / Math.sqrt((d - rad) * (d + rad)) * POLYGON_REACH;
+        double sign = Math.copySign(1.0, z), e = -1 / (sign + z), f = x * y * e;
+        double sx = 1 + sign * x * x * e, sy = sign * f, sz = -sign * x;
+        double qx = f, qy = sign + y * y * e, qz = -y;
+        for (int k = 0; k < SPHERE_SIDES; k++) {
+            double phi = 2 * Math.PI * k / SPHERE_SIDES, c = reach * Math.cos(phi), s = reach * Math.sin(phi);
+            double dx = x + c * sx + s * qx, dy = y + c * sy + s * qy, dz = z + c * sz + s * qz;
+            double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (!blocker.occluded(probe.set(ox, oy, oz, dx / len, dy / len, dz / len), d - rad)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private boolean area(int i, double px, double py, double pz, double u, double v) {

@@ -66,6 +66,17 @@ final class Integrator {
     /** The direct light found by {@link #direct}. */
     private double directR, directG, directB;
     long rays;
+    /**
+     * Whether {@link #direct} asks, of each shadow ray to a sphere or area light that something
+     * stopped, whether that hides the whole light ({@link ShadowRays#hidesAll}); set by the caller.
+     */
+    boolean watchPenumbrae;
+    /**
+     * Since the caller last cleared it: the most any such light could have added, unshadowed, to a
+     * sample whose shadow ray to it was stopped without the light being wholly hidden (the sample's
+     * point lies in a penumbra, where its one shadow ray went dark by chance); 0 if none.
+     */
+    double penumbraLight;
     /** Where the rays of the pixel being traced are recorded (null: nowhere), and that pixel's index. */
     PixelPaths paths;
     int pathPixel;
@@ -267,9 +278,20 @@ final class Integrator {
             if (highlightDecides && diffuseShare + share * sMax * highlight < NEGLIGIBLE_LIGHT) {
                 continue;
             }
+            boolean watch = watchPenumbrae && light.soft(i);
+            if (watch) {
+                shadows.forgetBlocker(i);
+            }
             boolean reached = shadows.reach(i, hit, light.tx, light.ty, light.tz);
             rays += shadows.traced;
             if (!reached) {
+                if (watch) {
+                    // the light's diffuse part and its highlight at its brightest
+                    double unshadowed = share * ((kd > 0 ? aMax * cos : 0) + sMax);
+                    if (unshadowed > penumbraLight && !shadows.hidesAll(i, light)) {
+                        penumbraLight = unshadowed;
+                    }
+                }
                 continue;
             }
             if (!highlightDecides && ks > 0) {

@@ -22,6 +22,12 @@ import studio.engine.sampler.PixelSamples;
  * umbra's value at any threshold. From threshold 0.035 up (the default is 0.05) S / 36 &lt;= L' and,
  * below, S / 32 &lt;= L' hold for any step up to white away from the image's border: only pixels
  * beside a light seen or on the border change there (11 of 19,200 on a held-out scene at 0.05).
+ * Under a sphere or area light a base sample also tells an umbra from a penumbra: where something
+ * stopped its shadow ray but does not hide the whole light ({@link ShadowRays#hidesAll}), its point
+ * sees part of the light, and its pixel does not stop at its base sample however its neighbourhood
+ * agrees; the light it could add there, counted whole as S, keeps it sampling until that over n is
+ * within the limit. Where a floor sees a sliver of a light, all the base samples near a pixel are
+ * often dark by chance, and it stopped at black (robustness case LIGHT-06).
  * Otherwise the pixel walks on along its sequence to {@value #FIRST_JUDGED} samples, then doubles:
  * after n = 2^k samples (8, 16, ...) the means A_c of the first and B_c of the second n/2 samples are
  * both estimates from a stratified (0, k-1, 2)-net, and the pixel stops when
@@ -29,7 +35,10 @@ import studio.engine.sampler.PixelSamples;
  *     for every c: |A_c - B_c| / 2 &lt;= L,   R / n &lt;= L   and   S / ({@value #NEARBY_SHARE_INVERSE} n) &lt;= L'
  * </pre>
  * else at N (in a scene with a sphere or area light, judged first at 4, with |A_c - B_c| / 3 and
- * R / 2n, and every L at half the threshold: {@link #SOFT_FIRST_JUDGED}). R is the widest channel's range of the pixel's n samples: two halves of a few
+ * R / 2n, every L at half the threshold: {@link #SOFT_FIRST_JUDGED}, and the halves' L growing as
+ * sqrt(n / 4), so that a pixel takes samples in proportion to its samples' spread rather than its
+ * square: the least squared error over the image for its samples gives each pixel samples in
+ * proportion to its spread). R is the widest channel's range of the pixel's n samples: two halves of a few
  * stratified samples can agree by chance on an edge. S is the step next to it: where all n samples
  * agree, a part of the pixel (or of the light) of about 1/n that none of them reached may still hold
  * it, so a pixel beside an edge or a penumbra takes samples in proportion to S / L', and a lower
@@ -98,11 +107,15 @@ final class ProgressiveSobolSampling implements TileSampling {
      */
     private double[] step = new double[RING_TILE * RING_TILE];
     private boolean[] agrees = new boolean[RING_TILE * RING_TILE];
+    /** For each pixel of the tile and its ring: {@link SampleTracer#penumbraLight} of its base samples. */
+    private double[] penumbra = new double[RING_TILE * RING_TILE];
     private final double[] xs, ys;
     private final int max, width, height;
     private final double threshold;
     /** The samples a refined pixel's first step reaches, when its halves are first judged, and R's share (see {@link #SOFT_FIRST_JUDGED}). */
     private final int firstStep, firstJudged, halvesShare, rangeShareInverse;
+    /** Whether the scene has a sphere or area light: then base samples watch for penumbrae, and the halves' limit grows. */
+    private final boolean soft;
     private long samples;
 
     ProgressiveSobolSampling(RenderSettings settings, SampleTracer tracer, TileBorders borders, StopSignal stop) {
@@ -118,7 +131,7 @@ final class ProgressiveSobolSampling implements TileSampling {
         ys = new double[max];
         width = settings.width();
         height = settings.height();
-        boolean soft = tracer.softLights();
+        soft = tracer.softLights();
         threshold = soft ? settings.adaptiveThreshold() * SOFT_THRESHOLD_SHARE : settings.adaptiveThreshold();
         firstStep = soft ? SOFT_FIRST_JUDGED : FIRST_JUDGED;
         firstJudged = soft ? 2 * SOFT_FIRST_JUDGED : 2 * FIRST_JUDGED;
@@ -136,6 +149,7 @@ final class ProgressiveSobolSampling implements TileSampling {
             rowMax = new double[length];
             step = new double[length / 3];
             agrees = new boolean[length / 3];
+            penumbra = new double[length / 3];
         }
     }
 
@@ -165,26 +179,32 @@ final class ProgressiveSobolSampling implements TileSampling {
                 int i = (y - y0) * stride + x - x0;
                 int entry = borders == null ? -1 : borders.entryOf(x, y);
                 long badHere = entry < 0 ? -1 : borders.loadOrClaim(entry, baseSum, baseMin, baseMax, 3 * i, stop);
-                if (badHere < 0) {
+                if (badHere >= 0) {
+                    penumbra[i] = borders.penumbraLight(entry);
+                } else {
                     pixelSamples.startPixel(x, y);
                     pixelSamples.fill(0, base, xs, ys);
                     t.resetRange();
+                    t.watchPenumbrae(soft);
                     try {
                         // bundled whatever the count: the pass goes along rows, so one listing serves 4 pixels (docs/speed.md)
                         badHere = t.trace(x, y, xs, ys, 0, base, true);
                     } catch (RuntimeException | Error e) {
+                        t.watchPenumbrae(false);
                         if (entry >= 0) {
                             borders.abandon(entry);
                         }
                         throw e;
                     }
+                    t.watchPenumbrae(false);
+                    penumbra[i] = t.penumbraLight();
                     baseSum[3 * i] = t.sumR;
                     baseSum[3 * i + 1] = t.sumG;
                     baseSum[3 * i + 2] = t.sumB;
                     baseMin[3 * i] = t.minR; baseMin[3 * i + 1] = t.minG; baseMin[3 * i + 2] = t.minB;
                     baseMax[3 * i] = t.maxR; baseMax[3 * i + 1] = t.maxG; baseMax[3 * i + 2] = t.maxB;
                     if (entry >= 0) {
-                        borders.store(entry, baseSum, baseMin, baseMax, 3 * i, (int) badHere);
+                        borders.store(entry, baseSum, baseMin, baseMax, 3 * i, (int) badHere, penumbra[i]);
                     }
                 }
                 if (tile.contains(x, y)) {
@@ -223,7 +243,12 @@ final class ProgressiveSobolSampling implements TileSampling {
                     }
                 }
                 double span = nearby * base;
-                if (!settled && agrees[i]) {
+                if (penumbra[i] > 0) {
+                    // its base sample's point sees part of a light its shadow ray missed: the light counts
+                    // whole as the step its samples may all have missed (S / 4n = light / n)
+                    settled = false;
+                    span = higher(span, NEARBY_SHARE_INVERSE * penumbra[i]);
+                } else if (!settled && agrees[i]) {
                     // only a neighbour's neighbourhood differs: what the samples of this one may have missed
                     double brightest = higher(baseSum[3 * i], higher(baseSum[3 * i + 1], baseSum[3 * i + 2])) / base;
                     int judged = (bottom - top + 1) * (right - left + 1) * base;
@@ -325,10 +350,12 @@ final class ProgressiveSobolSampling implements TileSampling {
                 double dB = Math.abs(firstB - (totalB - firstB)) / half;
                 double mean = Math.max(totalR, Math.max(totalG, totalB)) / taken;
                 double limit = TileSampling.limitOf(threshold, mean);
+                // under soft light the halves' limit grows as sqrt(n): samples in proportion to the spread, not its square
+                double halvesLimit = soft ? limit * Math.sqrt((double) taken / firstJudged) : limit;
                 double step = t.widestRange() / rangeShareInverse / taken;
                 double nearbyStep = span / NEARBY_SHARE_INVERSE / taken;
                 double nearbyLimit = TileSampling.limitOf(threshold, higher(mean, span));
-                if (Math.max(dR, Math.max(dG, dB)) / halvesShare <= limit && step <= limit && nearbyStep <= nearbyLimit) {
+                if (Math.max(dR, Math.max(dG, dB)) / halvesShare <= halvesLimit && step <= limit && nearbyStep <= nearbyLimit) {
                     break;
                 }
             }

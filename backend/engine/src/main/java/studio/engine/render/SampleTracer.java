@@ -94,6 +94,23 @@ final class SampleTracer {
         return integrator.rays;
     }
 
+    /**
+     * Whether the next calls' samples ask, of each shadow ray to a sphere or area light that something
+     * stopped, whether the light is wholly hidden there ({@link #penumbraLight}).
+     */
+    void watchPenumbrae(boolean watch) {
+        integrator.watchPenumbrae = watch;
+    }
+
+    /**
+     * The most a sphere or area light could have added, unshadowed, to one of the last call's
+     * samples whose shadow ray to it went dark without the light being wholly hidden (0 if none, or
+     * unless {@link #watchPenumbrae}): the sample's point lies in a penumbra.
+     */
+    double penumbraLight() {
+        return integrator.penumbraLight;
+    }
+
     void resetRange() {
         minR = minG = minB = Double.POSITIVE_INFINITY;
         maxR = maxG = maxB = Double.NEGATIVE_INFINITY;
@@ -137,6 +154,7 @@ final class SampleTracer {
             lightPoints.start(x, y, first, count, xs, ys);
         }
         double r = 0, g = 0, b = 0;
+        integrator.penumbraLight = 0;
         for (int s = first; s < first + count; s++) {
             stop.check();
             if (lightPoints != null) {

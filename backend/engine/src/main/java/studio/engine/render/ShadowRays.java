@@ -4,6 +4,7 @@ import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.RayBundle;
 import studio.engine.geometry.Rays;
+import studio.engine.light.LightSampler;
 import studio.engine.material.Fresnel;
 import studio.engine.material.Material;
 import studio.engine.material.MaterialKind;
@@ -39,6 +40,8 @@ final class ShadowRays {
     /** Per object, whether it is glass. */
     private final boolean[] isGlass;
     private final Hit shadowHit = new Hit();
+    /** The rays {@link #hidesAll} sends to the light's corners. */
+    private final Ray probe = new Ray();
     /** Per light, the ray object of its shadow rays, which keeps what blocked the last one ({@link Ray#blocker}). */
     private final Ray[] shadowRays;
     /**
@@ -138,6 +141,27 @@ final class ShadowRays {
             traced++;
         }
         return false;
+    }
+
+    /**
+     * Makes the next {@link #reach} of light i walk without its last blocker ({@link Ray#blocker}), so
+     * that the blocker it finds, which {@link #hidesAll} judges, is the walk's own and not the last
+     * ray's: an image must not depend on which rays a thread traced before.
+     */
+    void forgetBlocker(int light) {
+        shadowRays[light].blocker = -1;
+    }
+
+    /**
+     * After a {@link #reach} of light i that returned false: whether the opaque object that stopped
+     * it hides the whole light from the ray's origin ({@link LightSampler#hiddenBy}), so that the
+     * point is in the light's umbra. False where glass stopped it (its light too faint after many
+     * crossings): a penumbra for all this can tell.
+     */
+    boolean hidesAll(int light, LightSampler lights) {
+        Ray ray = shadowRays[light];
+        int blocker = ray.blocker;
+        return blocker >= 0 && !isGlass[blocker] && lights.hiddenBy(light, scene.shape(blocker), ray.ox, ray.oy, ray.oz, probe);
     }
 
     private static double distance(Ray ray, double tx, double ty, double tz) {

@@ -11,10 +11,11 @@ import java.lang.invoke.VarHandle;
  * 320x240 a one-pixel ring was 7% of all rays). Base samples are seeded by pixel, so both tiles would
  * get the same values: the image does not depend on which tile went first, nor on the thread count.
  *
- * <p>Per pixel near an edge: its base sum, smallest and largest sample per channel, and how many
- * samples came out non-finite. {@value #LINES} x 2 rows per row of tiles (its first and last) and as
- * many columns per column of tiles; a pixel near a corner is kept with its row. About 2 x 2 x
- * {@value #LINES} / size of the image's pixels at 80 bytes each: 20 bytes a pixel with 32-pixel tiles.
+ * <p>Per pixel near an edge: its base sum, smallest and largest sample per channel, how many
+ * samples came out non-finite, and the light its penumbra may hide ({@link SampleTracer#penumbraLight}).
+ * {@value #LINES} x 2 rows per row of tiles (its first and last) and as many columns per column of
+ * tiles; a pixel near a corner is kept with its row. About 2 x 2 x {@value #LINES} / size of the
+ * image's pixels at 88 bytes each: 22 bytes a pixel with 32-pixel tiles.
  */
 final class TileBorders {
 
@@ -29,6 +30,8 @@ final class TileBorders {
     /** Per entry: sum r, g, b, min r, g, b, max r, g, b; rows' entries first, then columns'. */
     private final double[] values;
     private final int[] nonFinite;
+    /** Per entry: {@link SampleTracer#penumbraLight} of its base samples. */
+    private final double[] penumbra;
     /** Per entry FREE, CLAIMED (a tile is tracing it) or STORED (its values are written: release/acquire). */
     private final int[] states;
 
@@ -41,6 +44,7 @@ final class TileBorders {
         int entries = rowEntries + 2 * LINES * tileColumns * height;
         values = new double[VALUES * entries];
         nonFinite = new int[entries];
+        penumbra = new double[entries];
         states = new int[entries];
     }
 
@@ -96,13 +100,19 @@ final class TileBorders {
         }
     }
 
+    /** The penumbra light stored with an entry that {@link #loadOrClaim} found stored. */
+    double penumbraLight(int entry) {
+        return penumbra[entry];
+    }
+
     /** Leaves a claimed entry's values for the neighbouring tile. */
-    void store(int entry, double[] sum, double[] min, double[] max, int at, int bad) {
+    void store(int entry, double[] sum, double[] min, double[] max, int at, int bad, double penumbraLight) {
         int v = VALUES * entry;
         System.arraycopy(sum, at, values, v, 3);
         System.arraycopy(min, at, values, v + 3, 3);
         System.arraycopy(max, at, values, v + 6, 3);
         nonFinite[entry] = bad;
+        penumbra[entry] = penumbraLight;
         STATE.setRelease(states, entry, STORED);
     }
 

@@ -53,13 +53,14 @@ class TileBordersTest {
     @Test
     void theSecondTileReadsWhatTheFirstStored() {
         assertEquals(-1, borders.loadOrClaim(entry, new double[3], new double[3], new double[3], 0, stop));
-        borders.store(entry, new double[] {1, 2, 3}, new double[] {0.1, 0.2, 0.3}, new double[] {4, 5, 6}, 0, 2);
+        borders.store(entry, new double[] {1, 2, 3}, new double[] {0.1, 0.2, 0.3}, new double[] {4, 5, 6}, 0, 2, 0.25);
 
         double[] sum = new double[3], min = new double[3], max = new double[3];
         assertEquals(2, borders.loadOrClaim(entry, sum, min, max, 0, stop));
         assertArrayEquals(new double[] {1, 2, 3}, sum);
         assertArrayEquals(new double[] {0.1, 0.2, 0.3}, min);
         assertArrayEquals(new double[] {4, 5, 6}, max);
+        assertEquals(0.25, borders.penumbraLight(entry));
     }
 
     @Test
