@@ -68,13 +68,13 @@ final class Integrator {
     long rays;
     /**
      * Whether {@link #direct} asks, of each shadow ray to a sphere or area light that something
-     * stopped, whether that hides the whole light ({@link ShadowRays#hidesAll}); set by the caller.
+     * stopped, whether the point sees part of the light ({@link ShadowRays#seesPart}); set by the caller.
      */
     boolean watchPenumbrae;
     /**
      * Since the caller last cleared it: the most any such light could have added, unshadowed, to a
-     * sample whose shadow ray to it was stopped without the light being wholly hidden (the sample's
-     * point lies in a penumbra, where its one shadow ray went dark by chance); 0 if none.
+     * sample whose shadow ray to it was stopped by a convex object that does not hide the whole light
+     * (the sample's point lies in a penumbra, where its one shadow ray went dark by chance); 0 if none.
      */
     double penumbraLight;
     /** Where the rays of the pixel being traced are recorded (null: nowhere), and that pixel's index. */
@@ -288,7 +288,7 @@ final class Integrator {
                 if (watch) {
                     // the light's diffuse part and its highlight at its brightest
                     double unshadowed = share * ((kd > 0 ? aMax * cos : 0) + sMax);
-                    if (unshadowed > penumbraLight && !shadows.hidesAll(i, light)) {
+                    if (unshadowed > penumbraLight && shadows.seesPart(i, light)) {
                         penumbraLight = unshadowed;
                     }
                 }

@@ -22,10 +22,10 @@ import studio.engine.sampler.PixelSamples;
  * umbra's value at any threshold. From threshold 0.035 up (the default is 0.05) S / 36 &lt;= L' and,
  * below, S / 32 &lt;= L' hold for any step up to white away from the image's border: only pixels
  * beside a light seen or on the border change there (11 of 19,200 on a held-out scene at 0.05).
- * Under a sphere or area light a base sample also tells an umbra from a penumbra: where something
- * stopped its shadow ray but does not hide the whole light ({@link ShadowRays#hidesAll}), its point
- * sees part of the light, and its pixel does not stop at its base sample however its neighbourhood
- * agrees; the light it could add there, counted whole as S, keeps it sampling until that over n is
+ * Under a sphere or area light a base sample also tells an umbra from a penumbra: where a convex
+ * object stopped its shadow ray but does not hide the whole light ({@link ShadowRays#seesPart}), its
+ * point sees part of the light, and its pixel does not stop at its base sample however its
+ * neighbourhood agrees; the light it could add there, counted whole as S, keeps it sampling until that over n is
  * within the limit. Where a floor sees a sliver of a light, all the base samples near a pixel are
  * often dark by chance, and it stopped at black (robustness case LIGHT-06).
  * Otherwise the pixel walks on along its sequence to {@value #FIRST_JUDGED} samples, then doubles:

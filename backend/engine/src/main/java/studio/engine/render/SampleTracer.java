@@ -96,7 +96,7 @@ final class SampleTracer {
 
     /**
      * Whether the next calls' samples ask, of each shadow ray to a sphere or area light that something
-     * stopped, whether the light is wholly hidden there ({@link #penumbraLight}).
+     * stopped, whether the point sees part of the light ({@link #penumbraLight}).
      */
     void watchPenumbrae(boolean watch) {
         integrator.watchPenumbrae = watch;
@@ -104,8 +104,8 @@ final class SampleTracer {
 
     /**
      * The most a sphere or area light could have added, unshadowed, to one of the last call's
-     * samples whose shadow ray to it went dark without the light being wholly hidden (0 if none, or
-     * unless {@link #watchPenumbrae}): the sample's point lies in a penumbra.
+     * samples whose shadow ray to it a convex object stopped without hiding the whole light (0 if
+     * none, or unless {@link #watchPenumbrae}): the sample's point lies in a penumbra.
      */
     double penumbraLight() {
         return integrator.penumbraLight;

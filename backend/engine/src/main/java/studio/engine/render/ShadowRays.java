@@ -4,6 +4,7 @@ import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.RayBundle;
 import studio.engine.geometry.Rays;
+import studio.engine.geometry.Shape;
 import studio.engine.light.LightSampler;
 import studio.engine.material.Fresnel;
 import studio.engine.material.Material;
@@ -40,7 +41,7 @@ final class ShadowRays {
     /** Per object, whether it is glass. */
     private final boolean[] isGlass;
     private final Hit shadowHit = new Hit();
-    /** The rays {@link #hidesAll} sends to the light's corners. */
+    /** The rays {@link #seesPart} sends to the light's corners. */
     private final Ray probe = new Ray();
     /** Per light, the ray object of its shadow rays, which keeps what blocked the last one ({@link Ray#blocker}). */
     private final Ray[] shadowRays;
@@ -145,7 +146,7 @@ final class ShadowRays {
 
     /**
      * Makes the next {@link #reach} of light i walk without its last blocker ({@link Ray#blocker}), so
-     * that the blocker it finds, which {@link #hidesAll} judges, is the walk's own and not the last
+     * that the blocker it finds, which {@link #seesPart} judges, is the walk's own and not the last
      * ray's: an image must not depend on which rays a thread traced before.
      */
     void forgetBlocker(int light) {
@@ -153,15 +154,21 @@ final class ShadowRays {
     }
 
     /**
-     * After a {@link #reach} of light i that returned false: whether the opaque object that stopped
-     * it hides the whole light from the ray's origin ({@link LightSampler#hiddenBy}), so that the
-     * point is in the light's umbra. False where glass stopped it (its light too faint after many
-     * crossings): a penumbra for all this can tell.
+     * After a {@link #reach} of light i that returned false: whether the point may see part of the
+     * light, in a penumbra. So it does where the opaque object that stopped the ray is convex and does
+     * not hide the whole light from the ray's origin ({@link LightSampler#hiddenBy}), and it may where
+     * no opaque object did (glass dimmed the light to nothing). Not where a mesh stopped it: a mesh
+     * need not be convex, so its corners tell nothing, and the pixel is judged by its neighbourhood
+     * alone, as under a point light.
      */
-    boolean hidesAll(int light, LightSampler lights) {
+    boolean seesPart(int light, LightSampler lights) {
         Ray ray = shadowRays[light];
         int blocker = ray.blocker;
-        return blocker >= 0 && !isGlass[blocker] && lights.hiddenBy(light, scene.shape(blocker), ray.ox, ray.oy, ray.oz, probe);
+        if (blocker < 0 || isGlass[blocker]) {
+            return true;
+        }
+        Shape shape = scene.shape(blocker);
+        return shape.convex() && !lights.hiddenBy(light, shape, ray.ox, ray.oy, ray.oz, probe);
     }
 
     private static double distance(Ray ray, double tx, double ty, double tz) {
