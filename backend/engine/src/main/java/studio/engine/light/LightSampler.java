@@ -205,6 +205,15 @@ public final class LightSampler {
     /** The sides of the polygon around a sphere light's cone that {@link #hiddenBy} tests. */
     static final int SPHERE_SIDES = 8;
     private static final double POLYGON_REACH = (1 + 1e-9) / Math.cos(Math.PI / SPHERE_SIDES);
+    /** The polygon's corners' directions around the axis: cosine and sine of 2 pi k / {@value #SPHERE_SIDES}. */
+    private static final double[] CORNER_COS = new double[SPHERE_SIDES], CORNER_SIN = new double[SPHERE_SIDES];
+
+    static {
+        for (int k = 0; k < SPHERE_SIDES; k++) {
+            CORNER_COS[k] = Math.cos(2 * Math.PI * k / SPHERE_SIDES);
+            CORNER_SIN[k] = Math.sin(2 * Math.PI * k / SPHERE_SIDES);
+        }
+    }
     /** As a shadow ray's: blocked only before this fraction of the way to the light. */
     private static final double SHADOW_END = 1 - 1e-9;
 
@@ -246,7 +255,7 @@ public final class LightSampler {
         double sx = 1 + sign * x * x * e, sy = sign * f, sz = -sign * x;
         double qx = f, qy = sign + y * y * e, qz = -y;
         for (int k = 0; k < SPHERE_SIDES; k++) {
-            double phi = 2 * Math.PI * k / SPHERE_SIDES, c = reach * Math.cos(phi), s = reach * Math.sin(phi);
+            double c = reach * CORNER_COS[k], s = reach * CORNER_SIN[k];
             double dx = x + c * sx + s * qx, dy = y + c * sy + s * qy, dz = z + c * sz + s * qz;
             double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
             if (!blocker.occluded(probe.set(ox, oy, oz, dx / len, dy / len, dz / len), d - rad)) {
