@@ -199,13 +199,13 @@ public final class Box implements Shape {
         return t > 0 && t < tMax;
     }
 
-    /** The rotated box's world-space extent: the centre plus or minus |R| times the half size. */
     /** {@inheritDoc} Here: a box, rotated or not. */
     @Override
     public boolean convex() {
         return true;
     }
 
+    /** The rotated box's world-space extent: the centre plus or minus |R| times the half size. */
     @Override
     public Aabb bounds() {
         double ex = Math.abs(m00) * hx + Math.abs(m01) * hy + Math.abs(m02) * hz;

@@ -39,13 +39,13 @@ public record Plane(Vec3 point, Vec3 normal) implements Shape {
         return !Double.isNaN(distance(ray, tMax));
     }
 
-    /** Unbounded: planes are tested beside a BVH, never in it. */
     /** {@inheritDoc} Here: a plane. */
     @Override
     public boolean convex() {
         return true;
     }
 
+    /** Unbounded: planes are tested beside a BVH, never in it. */
     @Override
     public Aabb bounds() {
         return Aabb.UNBOUNDED;

@@ -214,6 +214,7 @@ public final class LightSampler {
             CORNER_SIN[k] = Math.sin(2 * Math.PI * k / SPHERE_SIDES);
         }
     }
+
     /** As a shadow ray's: blocked only before this fraction of the way to the light. */
     private static final double SHADOW_END = 1 - 1e-9;
 

@@ -73,8 +73,8 @@ final class Integrator {
     boolean watchPenumbrae;
     /**
      * Since the caller last cleared it: the most any such light could have added, unshadowed, to a
-     * sample whose shadow ray to it was stopped by a convex object that does not hide the whole light
-     * (the sample's point lies in a penumbra, where its one shadow ray went dark by chance); 0 if none.
+     * sample whose shadow ray to it went dark where the point may see part of the light
+     * ({@link ShadowRays#seesPart}: a penumbra, where its one shadow ray went dark by chance); 0 if none.
      */
     double penumbraLight;
     /** Where the rays of the pixel being traced are recorded (null: nowhere), and that pixel's index. */

@@ -25,9 +25,9 @@ import studio.engine.sampler.PixelSamples;
  * Under a sphere or area light a base sample also tells an umbra from a penumbra: where a convex
  * object stopped its shadow ray but does not hide the whole light ({@link ShadowRays#seesPart}), its
  * point sees part of the light, and its pixel does not stop at its base sample however its
- * neighbourhood agrees; the light it could add there, counted whole as S, keeps it sampling until that over n is
- * within the limit. Where a floor sees a sliver of a light, all the base samples near a pixel are
- * often dark by chance, and it stopped at black (robustness case LIGHT-06).
+ * neighbourhood agrees; the light it could add there, counted whole as S, keeps it sampling until
+ * that over n is within the limit. Where a floor sees a sliver of a light, all the base samples near
+ * a pixel are often dark by chance, and it stopped at black (robustness case LIGHT-06).
  * Otherwise the pixel walks on along its sequence to {@value #FIRST_JUDGED} samples, then doubles:
  * after n = 2^k samples (8, 16, ...) the means A_c of the first and B_c of the second n/2 samples are
  * both estimates from a stratified (0, k-1, 2)-net, and the pixel stops when

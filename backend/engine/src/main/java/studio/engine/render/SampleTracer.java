@@ -104,8 +104,8 @@ final class SampleTracer {
 
     /**
      * The most a sphere or area light could have added, unshadowed, to one of the last call's
-     * samples whose shadow ray to it a convex object stopped without hiding the whole light (0 if
-     * none, or unless {@link #watchPenumbrae}): the sample's point lies in a penumbra.
+     * samples whose shadow ray to it went dark where the point may see part of the light (0 if none,
+     * or unless {@link #watchPenumbrae}): the sample's point lies in a penumbra.
      */
     double penumbraLight() {
         return integrator.penumbraLight;
