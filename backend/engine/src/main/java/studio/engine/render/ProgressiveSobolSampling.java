@@ -190,13 +190,13 @@ final class ProgressiveSobolSampling implements TileSampling {
                         // bundled whatever the count: the pass goes along rows, so one listing serves 4 pixels (docs/speed.md)
                         badHere = t.trace(x, y, xs, ys, 0, base, true);
                     } catch (RuntimeException | Error e) {
-                        t.watchPenumbrae(false);
                         if (entry >= 0) {
                             borders.abandon(entry);
                         }
                         throw e;
+                    } finally {
+                        t.watchPenumbrae(false); // refinement samples do not ask
                     }
-                    t.watchPenumbrae(false);
                     penumbra[i] = t.penumbraLight();
                     baseSum[3 * i] = t.sumR;
                     baseSum[3 * i + 1] = t.sumG;

@@ -70,8 +70,7 @@ class UmbraEdgeTest {
 
     @Test
     void theImageIsTheSameOnAnyThreadCount() {
-        // whichever tile traces a pixel's base sample first, and whatever rays its thread traced
-        // before, the same blocker is judged (ShadowRays.forgetBlocker)
+        // whichever tile traces a pixel's base sample first, the same penumbrae are found
         Scene scene = sliver();
         Film one = render(scene, new RenderSettings(W, H, new SobolSampler(64), 2, 1, 3, RenderSettings.DEFAULT_MIN_PATH_WEIGHT, DEFAULT_THRESHOLD));
         Film two = render(scene, new RenderSettings(W, H, new SobolSampler(64), 2, 2, 3, RenderSettings.DEFAULT_MIN_PATH_WEIGHT, DEFAULT_THRESHOLD));
