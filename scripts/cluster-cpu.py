@@ -7,7 +7,12 @@ ended during the job count under 'gone': one service's render threads). Prints a
 to --out as JSON; the busier member's CPU against one service's is the ratio to expect on idle cores.
 
   scripts/cluster-cpu.py --jar backend/server/target/studio.jar --scene JOB.json [--label L]
-      [--mode both|single|pair] [--jobs 2] [--jvm=OPT]... [--arg=ARG]...
+      [--mode both|single|pair|alternate] [--jobs 2] [--rounds 4] [--jvm=OPT]... [--arg=ARG]...
+      alternate: the one service and the two members all started at once (the service and the first member
+      share core 0; a JVM without a job only idles), then their jobs alternate, single and pair cold, then
+      --rounds rounds of warm jobs, pair and single in turns (ABBA), so that each pair of jobs compared ran
+      seconds apart: this machine's speed drifts by a third within minutes, which --mode both puts between
+      the one service's start and the members'.
   scripts/cluster-cpu.py --summary [--out FILE]   medians and ranges per scene, label and phase: the busier
       member against the same start's one service, and the pair's CPU beyond its tile workers'
 """
@@ -77,13 +82,14 @@ def start(args, core, i, extra, log):
           ['-jar', args.jar, '--server.port=%d' % (args.http + i), '--studio.render-threads=1'] + args.arg + extra
     return subprocess.Popen(cmd, stdout=open(log, 'w'), stderr=subprocess.STDOUT, start_new_session=True)
 
-def job(args, pids, scene):
+def job(args, pids, scene, port=None):
+    port = port or args.http
     befores = [(threads(p), proc_cpu(p)) for p in pids]
     t0 = time.time()
-    jid = post('http://127.0.0.1:%d/api/jobs' % args.http, scene)['id']
+    jid = post('http://127.0.0.1:%d/api/jobs' % port, scene)['id']
     while True:
-        time.sleep(1)
-        st = json.loads(get('http://127.0.0.1:%d/api/jobs/%s' % (args.http, jid)))
+        time.sleep(0.2)
+        st = json.loads(get('http://127.0.0.1:%d/api/jobs/%s' % (port, jid)))
         if st['state'] in ('done', 'failed', 'cancelled'):
             break
         if time.time() - t0 > 1200:
@@ -114,7 +120,7 @@ def summary(out):
                 pairs = [r for r in rows if (r['scene'], r['label'], r['phase'], r['kind']) == (scene, label, phase, 'pair')]
                 if not pairs:
                     continue
-                ratio, beyond, hz, compiler, loads = [], [], [], [], []
+                ratio, wall, beyond, hz, compiler, loads = [], [], [], [], [], []
                 for i, r in enumerate(pairs):
                     ms = [m['parts'] for m in r['members']]
                     total = {k: sum(m[k] for m in ms) for k in ms[0]}
@@ -122,10 +128,12 @@ def summary(out):
                     hz.append(total['hazelcast'])
                     compiler.append(total['compiler'])
                     loads.append(float(r['load']))
-                    if i < len(single):  # the one service of the same start
+                    if i < len(single):  # the one service of the same start (alternate: the job beside it)
                         ratio.append(max(m['all'] for m in ms) / single[i]['members'][0]['parts']['all'])
-                print('%s %s %s n=%d: busier/one %s | beyond the tiles %s | hazelcast %s | compiler %s | load %.0f-%.0f'
-                      % (scene, label, phase, len(pairs), span(ratio), span(beyond), span(hz), span(compiler),
+                        if r['ms'] and single[i]['ms']:
+                            wall.append(r['ms'] / single[i]['ms'])
+                print('%s %s %s n=%d: wall pair/one %s | busier/one %s | beyond the tiles %s | hazelcast %s | compiler %s | load %.0f-%.0f'
+                      % (scene, label, phase, len(pairs), span(wall), span(ratio), span(beyond), span(hz), span(compiler),
                          min(loads), max(loads)))
 
 def main():
@@ -141,6 +149,7 @@ def main():
     ap.add_argument('--http', type=int, default=8390)
     ap.add_argument('--cluster', type=int, default=5890)
     ap.add_argument('--jobs', type=int, default=2)
+    ap.add_argument('--rounds', type=int, default=4)
     ap.add_argument('--out', default='backend/server/target/cluster-cpu.jsonl')
     ap.add_argument('--logs', default='backend/server/target/cluster-cpu-logs')
     args = ap.parse_args()
@@ -152,6 +161,9 @@ def main():
     os.makedirs(args.logs, exist_ok=True)
     scene = open(args.scene, 'rb').read()
     env_secret = os.environ.setdefault('STUDIO_CLUSTER_SECRET', base64.b64encode(os.urandom(48)).decode())
+    if args.mode == 'alternate':
+        alternate(args, scene)
+        return
     runs = []
     if args.mode in ('both', 'single'):
         runs.append(('single', [(0, 0, [])]))
@@ -191,6 +203,49 @@ def main():
                 except subprocess.TimeoutExpired:
                     os.killpg(p.pid, signal.SIGKILL)
                     p.wait()
+
+def stop(procs):
+    for p in procs:
+        try:
+            os.killpg(p.pid, signal.SIGTERM)
+        except ProcessLookupError:
+            pass
+    for p in procs:
+        try:
+            p.wait(30)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
+
+def alternate(args, scene):
+    """The one service (HTTP port --http, core 0) and two members (--http + 1 and + 2, cores 0 and 1) at once."""
+    mem = '127.0.0.1:%d,127.0.0.1:%d' % (args.cluster, args.cluster + 1)
+    common = ['--studio.cluster.members=' + mem, '--studio.cluster.bind-address=127.0.0.1']
+    log = lambda name: '%s/%s-alternate-%s.log' % (args.logs, args.label, name)
+    single = start(args, 0, 0, [], log('single'))
+    pair = [start(args, 0, 1, ['--studio.cluster.port=%d' % args.cluster] + common, log('member-1')),
+            start(args, 1, 2, ['--studio.cluster.port=%d' % (args.cluster + 1)] + common, log('member-2'))]
+    try:
+        t0 = time.time()
+        while members(args.http) < 1 or members(args.http + 1) < 2 or members(args.http + 2) < 2:
+            if time.time() - t0 > 600:
+                raise SystemExit('services not up')
+            time.sleep(0.5)
+        kinds = {'single': ([single.pid], args.http), 'pair': ([p.pid for p in pair], args.http + 1)}
+        order = [('single', 'cold'), ('pair', 'cold')]
+        for k in range(args.rounds):
+            first, second = ('pair', 'single') if k % 2 == 0 else ('single', 'pair')
+            order += [(first, 'warm'), (second, 'warm')]
+        for kindname, phase in order:
+            load = open('/proc/loadavg').read().split()[0]
+            pids, port = kinds[kindname]
+            r = job(args, pids, scene, port)
+            r.update(label=args.label, kind=kindname, phase=phase, load=load, scene=os.path.basename(args.scene),
+                     time=time.strftime('%H:%M:%S'))
+            open(args.out, 'a').write(json.dumps(r) + '\n')
+            print('%-10s %-6s %-4s load %s  %s' % (args.label, kindname, phase, load, fmt(r)), flush=True)
+    finally:
+        stop([single] + pair)
 
 if __name__ == '__main__':
     main()
