@@ -4,11 +4,16 @@
 # Every line goes to WORK/runs-THREADS.txt; at the end a summary per scene: the median over the rounds
 # of each round's best frame, by CPU time and by wall clock, in millions of rays a second.
 #
+# Each side's figure is its best frame of FRAMES timed ones (default 15): this machine's speed changes for
+# seconds at a time (one JVM's frames of the same code: 32-34 ms, then 46-49, then back), so a longer run
+# of frames finds each side's fast spell.
+#
 # Run from anywhere, after building the bench jar and ./build.sh (see docs/speed.md):
-#   backend/bench/embree/compare.sh [ROUNDS] [THREADS]     (JAVA=..., WORK=... to change them)
+#   backend/bench/embree/compare.sh [ROUNDS] [THREADS]     (JAVA=..., WORK=..., FRAMES=... to change them)
 set -eu
 rounds=${1:-3}
 threads=${2:-1}
+frames=${FRAMES:-15}
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../../.." && pwd)
 work=${WORK:-${TMPDIR:-/tmp}/studio-kernel}
@@ -18,10 +23,10 @@ mkdir -p "$work"
 : > "$log"
 for round in $(seq "$rounds"); do
     echo "# round $round:$(uptime)" | tee -a "$log"
-    "$java" -jar "$root/backend/bench/target/studio-bench.jar" kernel --threads "$threads" --work "$work" \
+    "$java" -jar "$root/backend/bench/target/studio-bench.jar" kernel --threads "$threads" --frames "$frames" --work "$work" \
         --scenes-dir "$root/scenes" | tee -a "$log"
     for scene in still-life spheres-10k mesh-100k; do
-        "$here/embree_rays" "$work/$scene.kernel" --threads "$threads" | tee -a "$log"
+        "$here/embree_rays" "$work/$scene.kernel" --threads "$threads" --frames "$frames" | tee -a "$log"
         # cmp -l lists each differing byte: its two values in octal, 0 where a camera ray missed
         cmp -l "$work/$scene.ours.pgm" "$work/$scene.embree.pgm" | awk -v s="$scene" '
             $2 == 0 || $3 == 0 { hit++; next } { shadow++ }
