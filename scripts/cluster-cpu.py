@@ -192,17 +192,7 @@ def main():
                 print('%-10s %-6s %-4s load %s  %s' % (args.label, kindname, phase, load, fmt(r)), flush=True)
                 load = open('/proc/loadavg').read().split()[0]
         finally:
-            for p in procs:
-                try:
-                    os.killpg(p.pid, signal.SIGTERM)
-                except ProcessLookupError:
-                    pass
-            for p in procs:
-                try:
-                    p.wait(30)
-                except subprocess.TimeoutExpired:
-                    os.killpg(p.pid, signal.SIGKILL)
-                    p.wait()
+            stop(procs)
 
 def stop(procs):
     for p in procs:
