@@ -212,10 +212,12 @@ def alternate(args, scene):
     mem = '127.0.0.1:%d,127.0.0.1:%d' % (args.cluster, args.cluster + 1)
     common = ['--studio.cluster.members=' + mem, '--studio.cluster.bind-address=127.0.0.1']
     log = lambda name: '%s/%s-alternate-%s.log' % (args.logs, args.label, name)
-    single = start(args, 0, 0, [], log('single'))
-    pair = [start(args, 0, 1, ['--studio.cluster.port=%d' % args.cluster] + common, log('member-1')),
-            start(args, 1, 2, ['--studio.cluster.port=%d' % (args.cluster + 1)] + common, log('member-2'))]
+    procs = []
     try:
+        procs.append(start(args, 0, 0, [], log('single')))
+        procs.append(start(args, 0, 1, ['--studio.cluster.port=%d' % args.cluster] + common, log('member-1')))
+        procs.append(start(args, 1, 2, ['--studio.cluster.port=%d' % (args.cluster + 1)] + common, log('member-2')))
+        single, pair = procs[0], procs[1:]
         t0 = time.time()
         while members(args.http) < 1 or members(args.http + 1) < 2 or members(args.http + 2) < 2:
             if time.time() - t0 > 600:
@@ -235,7 +237,7 @@ def alternate(args, scene):
             open(args.out, 'a').write(json.dumps(r) + '\n')
             print('%-10s %-6s %-4s load %s  %s' % (args.label, kindname, phase, load, fmt(r)), flush=True)
     finally:
-        stop([single] + pair)
+        stop(procs)
 
 if __name__ == '__main__':
     main()
