@@ -100,6 +100,11 @@ final class TileBorders {
         }
     }
 
+    /** The bytes its arrays hold (the server's render estimate counts them per pixel: {@code RenderMemory}). */
+    long bytes() {
+        return 8L * values.length + 4L * nonFinite.length + 8L * penumbra.length + 4L * states.length;
+    }
+
     /** The penumbra light stored with an entry that {@link #loadOrClaim} found stored. */
     double penumbraLight(int entry) {
         return penumbra[entry];

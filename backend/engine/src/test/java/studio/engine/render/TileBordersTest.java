@@ -51,6 +51,14 @@ class TileBordersTest {
     }
 
     @Test
+    void holdsAtMost22BytesAPixelWith32PixelTiles() {
+        // the figure the server's render memory estimate counts (RenderMemory.BYTES_PER_PIXEL)
+        long bytes = new TileBorders(1024, 768, 32).bytes();
+        assertTrue(bytes <= 22L * 1024 * 768, bytes / (1024.0 * 768) + " bytes a pixel");
+        assertTrue(bytes > 20L * 1024 * 768, bytes / (1024.0 * 768) + " bytes a pixel: update the estimate's figure");
+    }
+
+    @Test
     void theSecondTileReadsWhatTheFirstStored() {
         assertEquals(-1, borders.loadOrClaim(entry, new double[3], new double[3], new double[3], 0, stop));
         borders.store(entry, new double[] {1, 2, 3}, new double[] {0.1, 0.2, 0.3}, new double[] {4, 5, 6}, 0, 2, 0.25);

@@ -11,8 +11,9 @@ import studio.server.scene.compiling.CompiledScene;
  * <li>per pixel {@value #BYTES_PER_PIXEL}: the film (three doubles, 24), the 8-bit image (4), the
  *     encoding (a PNG's filtered rows and compressed pieces, then the file with its growing buffer:
  *     up to 12), a job's tile previews until it ends (4) and,
- *     under adaptive sampling, the base samples on the tiles' edges (10 with 32-pixel tiles; the
- *     16-pixel tiles of small images take more, within the fixed part);</li>
+ *     under adaptive sampling, the base samples on the tiles' edges (22 with 32-pixel tiles: a ring
+ *     of {@code TileBorders.LINES} = 2 pixels, 88 bytes each, a quarter of the pixels; the 16-pixel
+ *     tiles of small images take more, within the fixed part);</li>
  * <li>per triangle {@value #BYTES_PER_TRIANGLE}: positions, normals and indices, the mesh's BVH and
  *     the build's temporary boxes (about 160 measured on a million-triangle mesh);</li>
  * <li>per object {@value #BYTES_PER_OBJECT}: the shape, its material and its place in the scene's BVH;</li>
@@ -21,7 +22,7 @@ import studio.server.scene.compiling.CompiledScene;
  */
 public final class RenderMemory {
 
-    static final long BYTES_PER_PIXEL = 54;
+    static final long BYTES_PER_PIXEL = 66;
     static final long BYTES_PER_TRIANGLE = 200;
     static final long BYTES_PER_OBJECT = 400;
     static final long FIXED_BYTES = 4L << 20;

@@ -310,8 +310,8 @@ class JobServiceTest {
 
     @Test
     void jobThatDoesNotFitTheFreeMemoryIsRefusedWithARetryDelay() {
-        // LARGE needs about 1024 x 768 x 54 bytes = 41 MiB; two do not fit in 48 MiB
-        MemoryBudget memory = new MemoryBudget(48L << 20);
+        // LARGE needs about 4 MiB + 1024 x 768 x 66 bytes = 54 MiB; two do not fit in 64 MiB
+        MemoryBudget memory = new MemoryBudget(64L << 20);
         JobService jobs = service(settings(1, 4), memory, Duration.ofSeconds(5));
         JobStatus running = jobs.submit(JobRequests.of(compile(LARGE)));
         JobQueueFullException full = assertThrows(JobQueueFullException.class, () -> jobs.submit(JobRequests.of(compile(LARGE))));
