@@ -284,4 +284,38 @@ public final class Traversal {
             node = stack[--sp];
         }
     }
+
+    /**
+     * Whether the pyramid, inside the box {@code reach} ({@link Frustum#bounds}), may meet the box
+     * of a slot other than {@code except} (-1: none): the walk of {@link #slotsIn}, a node first
+     * tested against {@code reach}, stopping at the first such slot.
+     */
+    public boolean anyIn(Frustum pyramid, double[] reach, double[] slotBoxes, int except, int[] stack) {
+        double[] nb = nodeBounds;
+        int[] links = this.links;
+        int sp = 0, node = 0;
+        double x0 = reach[0], y0 = reach[1], z0 = reach[2], x1 = reach[3], y1 = reach[4], z1 = reach[5];
+        while (true) {
+            int b = 6 * node;
+            if (nb[b] <= x1 && nb[b + 1] <= y1 && nb[b + 2] <= z1 && nb[b + 3] >= x0 && nb[b + 4] >= y0
+                    && nb[b + 5] >= z0 && pyramid.mayMeet(nb, b)) {
+                int o = 3 * node;
+                int count = links[o + 1];
+                if (count < 0) {
+                    stack[sp++] = links[o];
+                    node++;
+                    continue;
+                }
+                for (int slot = links[o], end = slot + count; slot < end; slot++) {
+                    if (slot != except && (count == 1 || pyramid.mayMeet(slotBoxes, 6 * slot))) {
+                        return true;
+                    }
+                }
+            }
+            if (sp == 0) {
+                return false;
+            }
+            node = stack[--sp];
+        }
+    }
 }

@@ -259,6 +259,28 @@ public final class Frustum {
     }
 
     /** Whether the pyramid has an end (made {@link #overBox}). */
+    /**
+     * Into {@code box} (minX, minY, minZ, maxX, maxY, maxZ): a box holding the pyramid, which must
+     * end: its apex and far corners, widened by {@value #MARGIN} of their magnitudes, far more than
+     * their rounding. A box that does not overlap it does not meet the pyramid.
+     */
+    public void bounds(double[] box) {
+        if (!ends()) {
+            throw new IllegalStateException("an endless pyramid has no bounds");
+        }
+        emptyHull();
+        addToHull(ox, oy, oz);
+        for (int c = 0; c < 12; c += 3) {
+            addToHull(ox + farEnd * edges[c], oy + farEnd * edges[c + 1], oz + farEnd * edges[c + 2]);
+        }
+        double widen = MARGIN * (Math.max(Math.max(Math.abs(hull[0]), Math.abs(hull[3])),
+                Math.max(Math.max(Math.abs(hull[1]), Math.abs(hull[4])), Math.max(Math.abs(hull[2]), Math.abs(hull[5])))));
+        for (int k = 0; k < 3; k++) {
+            box[k] = hull[k] - widen;
+            box[k + 3] = hull[k + 3] + widen;
+        }
+    }
+
     private boolean ends() {
         return planeCount == 5;
     }

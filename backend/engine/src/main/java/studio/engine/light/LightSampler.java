@@ -4,7 +4,6 @@ import java.util.List;
 
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Shape;
-import studio.engine.math.Vec3;
 
 /**
  * Picks the point of a light a shadow ray goes to, and what that sample gives: one per worker
@@ -35,7 +34,7 @@ import studio.engine.math.Vec3;
  */
 public final class LightSampler {
 
-    private static final int POINT = 0, SPHERE = 1, AREA = 2;
+    private static final int POINT = LightArrays.POINT, SPHERE = LightArrays.SPHERE, AREA = LightArrays.AREA;
     private static final double SHIFT_U = 0.7548776662466927, SHIFT_V = 0.5698402909980532;
 
     private final int[] kind;
@@ -52,39 +51,16 @@ public final class LightSampler {
     public double r, g, b;
 
     public LightSampler(List<? extends Light> lights) {
-        int n = lights.size();
-        kind = new int[n];
-        falloff = new boolean[n];
-        twoSided = new boolean[n];
-        cx = new double[n]; cy = new double[n]; cz = new double[n];
-        er = new double[n]; eg = new double[n]; eb = new double[n];
-        radius = new double[n];
-        nx = new double[n]; ny = new double[n]; nz = new double[n];
-        wx = new double[n]; wy = new double[n]; wz = new double[n];
-        hx = new double[n]; hy = new double[n]; hz = new double[n];
-        for (int i = 0; i < n; i++) {
-            Light light = lights.get(i);
-            Vec3 p = light.position();
-            cx[i] = p.x(); cy[i] = p.y(); cz[i] = p.z();
-            er[i] = light.color().r() * light.intensity();
-            eg[i] = light.color().g() * light.intensity();
-            eb[i] = light.color().b() * light.intensity();
-            falloff[i] = light.falloff();
-            if (light instanceof SphereLight sphere) {
-                kind[i] = SPHERE;
-                radius[i] = sphere.radius();
-            } else if (light instanceof AreaLight area) {
-                kind[i] = AREA;
-                twoSided[i] = area.twoSided();
-                Vec3 normal = area.normal(), w = area.widthAxis().times(area.width() / 2),
-                        h = area.heightAxis().times(area.height() / 2);
-                nx[i] = normal.x(); ny[i] = normal.y(); nz[i] = normal.z();
-                wx[i] = w.x(); wy[i] = w.y(); wz[i] = w.z();
-                hx[i] = h.x(); hy[i] = h.y(); hz[i] = h.z();
-            } else {
-                kind[i] = POINT;
-            }
-        }
+        LightArrays a = new LightArrays(lights);
+        kind = a.kind;
+        falloff = a.falloff;
+        twoSided = a.twoSided;
+        cx = a.cx; cy = a.cy; cz = a.cz;
+        er = a.er; eg = a.eg; eb = a.eb;
+        radius = a.radius;
+        nx = a.nx; ny = a.ny; nz = a.nz;
+        wx = a.wx; wy = a.wy; wz = a.wz;
+        hx = a.hx; hy = a.hy; hz = a.hz;
     }
 
     /**

@@ -9,7 +9,6 @@ import studio.engine.material.Fresnel;
 import studio.engine.material.Material;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
-import studio.engine.math.Vec3;
 import studio.engine.scene.Scene;
 import studio.engine.texture.Texture;
 import studio.engine.texture.TextureLookup;
@@ -61,6 +60,14 @@ final class Integrator {
     /** Where this sample's shadow rays go on each light, and what camera and specular rays see of them. */
     private final LightSampler lightSampler;
     private final Emitters emitters;
+    /**
+     * Whether a sphere or area light is first tried whole ({@link WholeLitPoints}): where sampling
+     * stops a pixel once its samples agree, a point that sees all of the light then has no noise
+     * from it and needs no shadow ray; a pixel that takes all its samples whatever (a fixed sampler)
+     * gains nothing for the try's cost. Set by the caller.
+     */
+    boolean wholeLights;
+    private final WholeLitPoints wholeLit;
     /** The current sample's 2D point in [0, 1)^2 for its light samples; set by the caller. */
     double lightU = 0.5, lightV = 0.5;
     /** The direct light found by {@link #direct}. */
@@ -111,6 +118,12 @@ final class Integrator {
         this.shadows = new ShadowRays(scene, minPathWeight);
         this.lightSampler = new LightSampler(scene.lights());
         this.emitters = new Emitters(scene.lights());
+        this.wholeLit = new WholeLitPoints(scene);
+    }
+
+    /** Starts a run of samples of one pixel ({@link WholeLitPoints#startRun}). */
+    void startRun() {
+        wholeLit.startRun();
     }
 
     /** The red, green and blue radiance found by the last {@link #trace} at depth 0. */
@@ -158,7 +171,7 @@ final class Integrator {
         } else {
             double dLen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
             textures.lookup(texture, scene.shape(hit.primitive), hit, ray.dx / dLen, ray.dy / dLen, ray.dz / dLen,
-                    coneSpread * pathLength(ray, depth));
+                    coneSpread * PathLength.to(hits, depth, ray, scene.camera().position()));
             cr *= textures.r;
             cg *= textures.g;
             cb *= textures.b;
@@ -206,31 +219,6 @@ final class Integrator {
         radiance[out + 2] = b;
     }
 
-    /**
-     * How far light travels from the camera to the hit at {@code depth} along the current path (the
-     * hits of shallower depths are its ancestors'): the ray cone's width there is the spread times
-     * this. Only a textured hit asks. (Curved mirrors and lenses widen a real cone further; the
-     * cone here spreads as through flat ones.)
-     */
-    private double pathLength(Ray ray, int depth) {
-        Hit hit = hits[depth];
-        if (depth == 0) {
-            return distance(ray, hit.px, hit.py, hit.pz);
-        }
-        Vec3 eye = scene.camera().position();
-        Hit first = hits[0];
-        double x = first.px - eye.x(), y = first.py - eye.y(), z = first.pz - eye.z();
-        double length = Math.sqrt(x * x + y * y + z * z);
-        for (int k = 1; k <= depth; k++) {
-            Hit from = hits[k - 1], to = hits[k];
-            x = to.px - from.px;
-            y = to.py - from.py;
-            z = to.pz - from.pz;
-            length += Math.sqrt(x * x + y * y + z * z);
-        }
-        return length;
-    }
-
     private void set(int out, Rgb c) {
         radiance[out] = c.r();
         radiance[out + 1] = c.g();
@@ -259,6 +247,13 @@ final class Integrator {
         double aMax = Math.max(ar, Math.max(ag, ab)), sMax = Math.max(sr, Math.max(sg, sb));
         LightSampler light = lightSampler;
         for (int i = 0; i < lightCount; i++) {
+            // a point that sees all of a light gets its diffuse part exact, and traces no shadow ray to it
+            boolean lit = wholeLights && light.soft(i) && wholeLit.lit(i, hit, nx, ny, nz, front);
+            if (lit && kd > 0) {
+                r += ar * wholeLit.r;
+                g += ag * wholeLit.g;
+                b += ab * wholeLit.b;
+            }
             if (!light.sample(i, hit.px, hit.py, hit.pz, lightU, lightV)) {
                 continue;
             }
@@ -278,12 +273,12 @@ final class Integrator {
             if (highlightDecides && diffuseShare + share * sMax * highlight < NEGLIGIBLE_LIGHT) {
                 continue;
             }
-            boolean watch = watchPenumbrae && light.soft(i);
+            boolean watch = watchPenumbrae && light.soft(i) && !lit;
             if (watch) {
                 shadows.forgetBlocker(i);
             }
-            boolean reached = shadows.reach(i, hit, light.tx, light.ty, light.tz);
-            rays += shadows.traced;
+            boolean reached = lit || shadows.reach(i, hit, light.tx, light.ty, light.tz);
+            rays += lit ? 0 : shadows.traced;
             if (!reached) {
                 if (watch) {
                     // the light's diffuse part and its highlight at its brightest
@@ -297,13 +292,15 @@ final class Integrator {
             if (!highlightDecides && ks > 0) {
                 highlight = highlight(nx, ny, nz, lx, ly, lz, vx, vy, vz, m.shininess());
             }
-            er *= shadows.throughR;
-            eg *= shadows.throughG;
-            eb *= shadows.throughB;
-            if (kd > 0) {
-                r += ar * er * cos;
-                g += ag * eg * cos;
-                b += ab * eb * cos;
+            if (!lit) {
+                er *= shadows.throughR;
+                eg *= shadows.throughG;
+                eb *= shadows.throughB;
+                if (kd > 0) {
+                    r += ar * er * cos;
+                    g += ag * eg * cos;
+                    b += ab * eb * cos;
+                }
             }
             if (highlight > 0) {
                 r += sr * er * highlight;
@@ -331,11 +328,6 @@ final class Integrator {
      */
     private double branchCount(double w) {
         return w > minPathWeight ? roulette.factor(w) : 0;
-    }
-
-    private static double distance(Ray ray, double tx, double ty, double tz) {
-        double x = tx - ray.ox, y = ty - ray.oy, z = tz - ray.oz;
-        return Math.sqrt(x * x + y * y + z * z);
     }
 
     /**

@@ -58,6 +58,7 @@ final class SampleTracer {
         this.stop = stop;
         integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight(),
                 new BranchRoulette(BranchRoulette.BELOW, settings.seed()));
+        integrator.wholeLights = settings.adaptiveThreshold() > 0;
         camera = scene.camera();
         lightPoints = scene.lights().stream().anyMatch(l -> l.soft())
                 ? new LightPoints(settings.sampler(), settings.seed()) : null;
@@ -155,6 +156,7 @@ final class SampleTracer {
         }
         double r = 0, g = 0, b = 0;
         integrator.penumbraLight = 0;
+        integrator.startRun();
         for (int s = first; s < first + count; s++) {
             stop.check();
             if (lightPoints != null) {

@@ -4,6 +4,7 @@ import java.util.List;
 
 import studio.engine.accel.ShapeLeaves;
 import studio.engine.camera.Camera;
+import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.Ray;
 import studio.engine.geometry.Shape;
@@ -98,6 +99,11 @@ public final class Scene {
     /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */
     public boolean occluded(Ray ray, double tMax) {
         return geometry.occluded(ray, tMax);
+    }
+
+    /** Whether no object but object {@code except} (-1: none) may lie in the pyramid ({@link ShapeSet#nothingIn}). */
+    public boolean nothingIn(Frustum pyramid, int except, double[] reach, int[] stack) {
+        return geometry.nothingIn(pyramid, except, reach, stack);
     }
 
     /**

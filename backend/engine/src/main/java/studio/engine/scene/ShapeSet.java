@@ -7,6 +7,7 @@ import studio.engine.accel.Bvh;
 import studio.engine.accel.PlaneLeaves;
 import studio.engine.accel.ShapeLeaves;
 import studio.engine.accel.Traversal;
+import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
 import studio.engine.geometry.LightBuffer;
 import studio.engine.geometry.Ray;
@@ -93,6 +94,8 @@ public final class ShapeSet {
      * where they were, so a shadow ray the buffers find nothing on tests these too ({@link StaleSlots}).
      */
     private final int[] staleSlots;
+    /** Answers {@link #nothingIn}. */
+    private final PyramidSearch pyramids;
 
     ShapeSet(Shape[] shapes, boolean useBvh, List<Vec3> lights) {
         this(shapes, null, useBvh, lights, null);
@@ -143,6 +146,7 @@ public final class ShapeSet {
             shadowBundles = false;
             lightBuffers = new LightBuffer[0];
             staleSlots = new int[0];
+            pyramids = new PyramidSearch(all, null, null, new int[0], listedIndex);
             return;
         }
         shapeTree = refitted != null ? refitted : ShapeTree.build(all, members);
@@ -159,6 +163,7 @@ public final class ShapeSet {
         planeCount = shapeTree.planeIndex.length;
         bounded = new ShapeLeaves(all, shapeTree.slotShapes);
         tree = new Traversal(nodeBounds, nodeLinks, bounded);
+        pyramids = new PyramidSearch(all, tree, slotBoxes, slotOfShape, shapeTree.planeIndex);
         bundles = BundleSearch.pays(memberCount, planeCount) ? new BundleSearch(tree, bounded, shapeTree.slotShapes,
                 slotBoxes, planes, shapeTree.planeIndex, largest, all) : null;
         LightBuffer.Primitives slots = (slot, ray, tMax) -> bounded.any(slot, slot + 1, ray, tMax);
@@ -316,6 +321,16 @@ public final class ShapeSet {
 
     private static boolean overlaps(double[] b, int o, double x0, double y0, double z0, double x1, double y1, double z1) {
         return b[o] <= x1 && b[o + 1] <= y1 && b[o + 2] <= z1 && b[o + 3] >= x0 && b[o + 4] >= y0 && b[o + 5] >= z0;
+    }
+
+    /**
+     * Whether no shape of the set but shape {@code except} (-1: none) may lie in the pyramid, so
+     * that nothing else can stop a segment inside it; conservative ({@link PyramidSearch}).
+     * The pyramid must end; {@code reach} (six doubles) and {@code stack}
+     * ({@link studio.engine.accel.Bvh#STACK_SIZE} ints) are the caller's scratch.
+     */
+    public boolean nothingIn(Frustum pyramid, int except, double[] reach, int[] stack) {
+        return pyramids.nothingIn(pyramid, except, reach, stack);
     }
 
     /** Whether anything lies on the ray with 0 &lt; t &lt; tMax. */
