@@ -254,6 +254,9 @@ final class Integrator {
                 g += ag * wholeLit.g;
                 b += ab * wholeLit.b;
             }
+            if (lit && ks == 0) {
+                continue; // no highlight to sample
+            }
             if (!light.sample(i, hit.px, hit.py, hit.pz, lightU, lightV)) {
                 continue;
             }

@@ -1,7 +1,5 @@
 package studio.engine.render;
 
-import java.util.Arrays;
-
 import studio.engine.accel.Bvh;
 import studio.engine.geometry.Frustum;
 import studio.engine.geometry.Hit;
@@ -29,20 +27,23 @@ final class WholeLitPoints {
     private final Frustum pyramid = new Frustum();
     private final double[] reach = new double[6];
     private final int[] stack = new int[Bvh.STACK_SIZE];
-    /** Per light: whether a point of this run could not be shown to see all of it. */
-    private final boolean[] failed;
+    /** Per light: the last run in which a point could not be shown to see all of it. */
+    private final long[] failedIn;
+    /** The run of samples being traced. */
+    private long run;
     /** What all of the light gives the point, per channel, its cosine included: set by a true {@link #lit}. */
     double r, g, b;
 
     WholeLitPoints(Scene scene) {
         this.scene = scene;
         this.whole = new WholeLight(scene.lights());
-        this.failed = new boolean[scene.lights().size()];
+        this.failedIn = new long[scene.lights().size()];
+        this.run = 1;
     }
 
     /** Starts a run of samples of one pixel: every light is tried again. */
     void startRun() {
-        Arrays.fill(failed, false);
+        run++;
     }
 
     /**
@@ -51,7 +52,7 @@ final class WholeLitPoints {
      * r, g, b to its diffuse light. False, untried, after a failed try of this run.
      */
     boolean lit(int i, Hit hit, double nx, double ny, double nz, boolean front) {
-        if (failed[i]) {
+        if (failedIn[i] == run) {
             return false;
         }
         double side = front ? 1 : -1;
@@ -60,7 +61,7 @@ final class WholeLitPoints {
                 // a convex surface, the light above its tangent plane there, does not stand in the way
                 && scene.nothingIn(pyramid, scene.shape(hit.primitive).convex() ? hit.primitive : -1, reach, stack);
         if (!lit) {
-            failed[i] = true;
+            failedIn[i] = run;
             return false;
         }
         whole.light(i);
