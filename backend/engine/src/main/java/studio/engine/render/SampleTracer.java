@@ -58,7 +58,7 @@ final class SampleTracer {
         this.stop = stop;
         integrator = new Integrator(scene, settings.maxDepth(), settings.minPathWeight(),
                 new BranchRoulette(BranchRoulette.BELOW, settings.seed()));
-        integrator.wholeLights = settings.adaptiveThreshold() > 0;
+        integrator.wholeLights = settings.adaptive();
         camera = scene.camera();
         lightPoints = scene.lights().stream().anyMatch(l -> l.soft())
                 ? new LightPoints(settings.sampler(), settings.seed()) : null;

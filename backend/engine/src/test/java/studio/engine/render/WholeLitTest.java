@@ -20,6 +20,7 @@ import studio.engine.material.MaterialDefaults;
 import studio.engine.material.MaterialKind;
 import studio.engine.math.Rgb;
 import studio.engine.math.Vec3;
+import studio.engine.sampler.SobolSampler;
 import studio.engine.scene.Scene;
 import studio.engine.scene.SceneObject;
 
@@ -85,6 +86,24 @@ class WholeLitTest {
         double a = at(integrator, 0.2, 0.1, 0.01, 0.02), b = at(integrator, 0.2, 0.1, 0.99, 0.98);
         assertEquals(4, integrator.rays - rays);
         assertTrue(a != b, "each sample its own light point");
+    }
+
+    @Test
+    void aOneSampleRenderIsTheSameWithOrWithoutAThreshold() {
+        // at one sample a pixel a threshold changes nothing (RenderSettings.adaptive), so neither does the whole light
+        for (Light light : LIGHTS) {
+            Film fixed = Renderer.render(RenderRequest.of(scene(light),
+                    new RenderSettings(40, 30, new SobolSampler(1), 2, 1, 7, 0, 0))).film();
+            Film thresholded = Renderer.render(RenderRequest.of(scene(light),
+                    new RenderSettings(40, 30, new SobolSampler(1), 2, 1, 7, 0, 0.05))).film();
+            for (int y = 0; y < 30; y++) {
+                for (int x = 0; x < 40; x++) {
+                    for (int c = 0; c < 3; c++) {
+                        assertEquals(fixed.get(x, y, c), thresholded.get(x, y, c), light + " at " + x + ", " + y);
+                    }
+                }
+            }
+        }
     }
 
     @Test
