@@ -14,7 +14,8 @@ import studio.engine.texture.Texture;
 import studio.engine.texture.TextureLookup;
 
 /**
- * Whitted-style ray tracing in linear light: direct light by one shadow ray a light ({@link LightSampler}),
+ * Whitted-style ray tracing in linear light: direct light by one shadow ray a light ({@link LightSampler};
+ * under adaptive sampling none to a light the point sees whole, {@link WholeLitPoints}),
  * lights with a surface seen by camera and specular rays ({@link Emitters}),
  * an ambient term, mirror reflection and Fresnel-weighted refraction, recursing up to maxDepth and
  * only where a material asks for it and the path's weight can still change the pixel. At glass,
