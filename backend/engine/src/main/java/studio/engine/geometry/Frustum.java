@@ -258,7 +258,6 @@ public final class Frustum {
         return true;
     }
 
-    /** Whether the pyramid has an end (made {@link #overBox}). */
     /**
      * Into {@code box} (minX, minY, minZ, maxX, maxY, maxZ): a box holding the pyramid, which must
      * end: its apex and far corners, widened by {@value #MARGIN} of their magnitudes, far more than
@@ -281,6 +280,7 @@ public final class Frustum {
         }
     }
 
+    /** Whether the pyramid has an end (made {@link #overBox}). */
     private boolean ends() {
         return planeCount == 5;
     }

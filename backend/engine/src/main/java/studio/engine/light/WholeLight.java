@@ -25,10 +25,8 @@ public final class WholeLight {
 
     /** What all of the light gives the point, per channel, its cosine included ({@link #light}). */
     public double r, g, b;
-    /** What the last true {@link #whole} found: the light's kind, and what {@link #light} needs. */
-    private int wholeKind;
-    private boolean wholeFalloff;
-    private double wholeFactor, wholeX0, wholeX1, wholeY0, wholeY1, wholeH, wholeArea, wholeA, wholeB, wholeC;
+    /** What the last true {@link #whole} found that {@link #light} needs. */
+    private double wholeFactor, wholeX0, wholeX1, wholeY0, wholeY1, wholeH, wholeA, wholeB, wholeC;
     private double wholeNx, wholeNy, wholeNz, wholeDx, wholeDy, wholeDz;
 
     public WholeLight(List<? extends Light> lights) {
@@ -41,10 +39,10 @@ public final class WholeLight {
      * {@link LightSampler#sample} gives times that cosine ({@link LightIntegrals}).
      */
     public void light(int i) {
-        double k;
-        if (wholeKind == SPHERE) {
+        double k, area = 4 * lights.halfWidth[i] * lights.halfHeight[i];
+        if (lights.kind[i] == SPHERE) {
             k = wholeFactor;
-        } else if (wholeFalloff) {
+        } else if (lights.falloff[i]) {
             for (int corner = 0; corner < 4; corner++) {
                 // in order around the rectangle: (-, -), (+, -), (+, +), (-, +)
                 double su = corner == 1 || corner == 2 ? 1 : -1, sv = corner >= 2 ? 1 : -1;
@@ -52,9 +50,9 @@ public final class WholeLight {
                 cornerY[corner] = wholeDy + su * lights.wy[i] + sv * lights.hy[i];
                 cornerZ[corner] = wholeDz + su * lights.wz[i] + sv * lights.hz[i];
             }
-            k = LightIntegrals.projectedSolidAngle(cornerX, cornerY, cornerZ, wholeNx, wholeNy, wholeNz) / wholeArea;
+            k = LightIntegrals.projectedSolidAngle(cornerX, cornerY, cornerZ, wholeNx, wholeNy, wholeNz) / area;
         } else {
-            k = LightIntegrals.cosineProduct(wholeX0, wholeX1, wholeY0, wholeY1, wholeH, wholeA, wholeB, wholeC) / wholeArea;
+            k = LightIntegrals.cosineProduct(wholeX0, wholeX1, wholeY0, wholeY1, wholeH, wholeA, wholeB, wholeC) / area;
         }
         r = lights.er[i] * k; g = lights.eg[i] * k; b = lights.eb[i] * k;
     }
@@ -84,14 +82,14 @@ public final class WholeLight {
             return false;
         }
         x /= d; y /= d; z /= d;
-        // the cone of half-angle theta_max around the axis lies above a horizon where the axis's cosine exceeds sin theta_max
+        // the cone of half-angle theta_max around the axis lies above a horizon where the axis's
+        // cosine exceeds sin theta_max
         double sinMax = rad / d, root = Math.sqrt((d - rad) * (d + rad));
         double cosAxis = nx * x + ny * y + nz * z;
         if (!(cosAxis > sinMax + ABOVE) || !(mx * x + my * y + mz * z > sinMax + ABOVE)) {
             return false;
         }
         // with fall-off the sample's 2 I / (d^2 (1 + cos theta_max)) times the mean cosine: I cos / d^2
-        wholeKind = SPHERE;
         wholeFactor = lights.falloff[i] ? cosAxis / (d * d) : LightIntegrals.sphere(cosAxis, root / d);
         double tan = rad / root;
         double sign = Math.copySign(1.0, z), e = -1 / (sign + z), f = x * y * e;
@@ -102,16 +100,18 @@ public final class WholeLight {
 
     private boolean wholeArea(int i, double px, double py, double pz, double nx, double ny, double nz,
                               double mx, double my, double mz, Frustum pyramid) {
-        // (ax, ay, az): unit, from the point towards the light's plane, at distance h
-        double side = lights.nx[i] * (px - lights.cx[i]) + lights.ny[i] * (py - lights.cy[i]) + lights.nz[i] * (pz - lights.cz[i]);
+        double dx = lights.cx[i] - px, dy = lights.cy[i] - py, dz = lights.cz[i] - pz;
+        double lnx = lights.nx[i], lny = lights.ny[i], lnz = lights.nz[i];
+        // the point's height in front of the light's plane; (ax, ay, az): unit, from the point towards the plane
+        double side = -(lnx * dx + lny * dy + lnz * dz);
         if (!(side > 0) && !(lights.twoSided[i] && side < 0)) {
             return false;
         }
         double h = Math.abs(side), toward = -Math.copySign(1.0, side);
-        double ax = toward * lights.nx[i], ay = toward * lights.ny[i], az = toward * lights.nz[i];
-        double w = lights.halfWidth[i], t = lights.halfHeight[i], area = 4 * w * t;
-        double ux = lights.wx[i] / w, uy = lights.wy[i] / w, uz = lights.wz[i] / w, vx = lights.hx[i] / t, vy = lights.hy[i] / t, vz = lights.hz[i] / t;
-        double dx = lights.cx[i] - px, dy = lights.cy[i] - py, dz = lights.cz[i] - pz;
+        double ax = toward * lnx, ay = toward * lny, az = toward * lnz;
+        double w = lights.halfWidth[i], t = lights.halfHeight[i];
+        double ux = lights.ux[i], uy = lights.uy[i], uz = lights.uz[i];
+        double vx = lights.vx[i], vy = lights.vy[i], vz = lights.vz[i];
         // the rectangle above both horizons: its lowest corner, at the centre's height less both half axes'
         double margin = ABOVE * (Math.abs(dx) + Math.abs(dy) + Math.abs(dz) + w + t);
         if (!(nx * dx + ny * dy + nz * dz - Math.abs(nx * lights.wx[i] + ny * lights.wy[i] + nz * lights.wz[i])
@@ -124,10 +124,10 @@ public final class WholeLight {
         if (!lights.falloff[i] && !LightIntegrals.answers(2 * w, 2 * t, h)) {
             return false;
         }
-        wholeKind = AREA;
-        wholeFalloff = lights.falloff[i];
-        wholeX0 = mid - w; wholeX1 = mid + w; wholeY0 = midV - t; wholeY1 = midV + t; wholeH = h; wholeArea = area;
-        wholeA = nx * ax + ny * ay + nz * az; wholeB = nx * ux + ny * uy + nz * uz; wholeC = nx * vx + ny * vy + nz * vz;
+        wholeX0 = mid - w; wholeX1 = mid + w; wholeY0 = midV - t; wholeY1 = midV + t; wholeH = h;
+        wholeA = nx * ax + ny * ay + nz * az;
+        wholeB = nx * ux + ny * uy + nz * uz;
+        wholeC = nx * vx + ny * vy + nz * vz;
         wholeNx = nx; wholeNy = ny; wholeNz = nz;
         wholeDx = dx; wholeDy = dy; wholeDz = dz;
         pyramid.set(px, py, pz, ax, ay, az, ux, uy, uz, vx, vy, vz, (mid - w) / h, (mid + w) / h,

@@ -29,10 +29,12 @@ final class PyramidSearch {
     private final double magnitude;
 
     /**
-     * Over {@code tree} (null: none) with its slots' boxes and each shape's slot, and the shapes
-     * {@code outside} (indices into {@code shapes}) tested one by one.
+     * Over {@code tree} (null: none) with its slots' boxes and each shape's slot, the largest
+     * magnitude of the tree's coordinates (its root box's), and the shapes {@code outside} (indices
+     * into {@code shapes}) tested one by one.
      */
-    PyramidSearch(Shape[] shapes, Traversal tree, double[] slotBoxes, int[] slotOfShape, int[] outside) {
+    PyramidSearch(Shape[] shapes, Traversal tree, double[] slotBoxes, int[] slotOfShape, double treeMagnitude,
+                  int[] outside) {
         this.tree = tree;
         this.slotBoxes = slotBoxes;
         this.slotOfShape = slotOfShape;
@@ -44,7 +46,7 @@ final class PyramidSearch {
         planeShapes = new int[planeCount];
         boxes = new double[6 * (outside.length - planeCount)];
         boxShapes = new int[outside.length - planeCount];
-        double largest = 0;
+        double largest = treeMagnitude;
         for (int k = 0, p = 0, b = 0; k < outside.length; k++) {
             Shape shape = shapes[outside[k]];
             if (shape instanceof Plane plane) {
@@ -60,9 +62,6 @@ final class PyramidSearch {
                 largest = finite ? Math.max(largest, Math.abs(corners[c])) : largest;
             }
             boxShapes[b++] = outside[k];
-        }
-        for (int k = 0; slotBoxes != null && k < slotBoxes.length; k++) {
-            largest = Math.max(largest, Math.abs(slotBoxes[k]));
         }
         this.magnitude = largest;
     }

@@ -146,7 +146,7 @@ public final class ShapeSet {
             shadowBundles = false;
             lightBuffers = new LightBuffer[0];
             staleSlots = new int[0];
-            pyramids = new PyramidSearch(all, null, null, new int[0], listedIndex);
+            pyramids = new PyramidSearch(all, null, null, new int[0], 0, listedIndex);
             return;
         }
         shapeTree = refitted != null ? refitted : ShapeTree.build(all, members);
@@ -163,7 +163,7 @@ public final class ShapeSet {
         planeCount = shapeTree.planeIndex.length;
         bounded = new ShapeLeaves(all, shapeTree.slotShapes);
         tree = new Traversal(nodeBounds, nodeLinks, bounded);
-        pyramids = new PyramidSearch(all, tree, slotBoxes, slotOfShape, shapeTree.planeIndex);
+        pyramids = new PyramidSearch(all, tree, slotBoxes, slotOfShape, largest, shapeTree.planeIndex);
         bundles = BundleSearch.pays(memberCount, planeCount) ? new BundleSearch(tree, bounded, shapeTree.slotShapes,
                 slotBoxes, planes, shapeTree.planeIndex, largest, all) : null;
         LightBuffer.Primitives slots = (slot, ray, tMax) -> bounded.any(slot, slot + 1, ray, tMax);
